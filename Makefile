@@ -1,0 +1,51 @@
+# fpmshell: the two everyday commands are `make run` and `make test` (README.md).
+#   make run       install missing Debian packages, build, run the example, plot its histories
+#   make test      install missing Debian packages, build, run the tests (slow validation excluded)
+#   make validate  build, run the slow validation problems, write the validation report
+#   make bench     build with benchmarks and run them
+#   make clean     remove the build folder
+
+BUILD   ?= build
+JOBS    ?= $(shell nproc 2>/dev/null || echo 2)
+# The Debian python3-numpy / python3-matplotlib packages belong to /usr/bin/python3; a python3
+# found earlier on PATH (pyenv, conda) may lack them.
+PYTHON  ?= $(shell test -x /usr/bin/python3 && echo /usr/bin/python3 || echo python3)
+EXAMPLE ?= examples/spherical_cap_elastic
+RESULTS ?= results/spherical_cap_elastic
+
+# Prerequisites run in the order written (dependencies, then configure, then build).
+.NOTPARALLEL:
+.PHONY: run test validate bench clean deps configure build
+
+run: deps build
+	./$(BUILD)/fpmshell run $(EXAMPLE)/model.yaml -o $(RESULTS) --overwrite
+	$(PYTHON) tools/plot_history.py $(RESULTS)
+	@echo
+	@echo "Results are in $(RESULTS)/:"
+	@echo "  history.csv, energy.csv  time histories (plotted by tools/plot_history.py)"
+	@echo "  fields.pvd               open in ParaView for the deformed shape and fields"
+	@echo "  summary.json, log.txt    run summary and what the run printed"
+
+test: deps build
+	ctest --test-dir $(BUILD) --output-on-failure -LE validation -j2
+
+validate: build
+	ctest --test-dir $(BUILD) -L validation --output-on-failure
+	$(PYTHON) tools/make_validation.py
+
+bench: deps
+	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release -DFPMSHELL_BENCHMARKS=ON
+	cmake --build $(BUILD) -j$(JOBS)
+	./$(BUILD)/bench/fpmshell_bench
+
+deps:
+	@scripts/install-deps.sh
+
+configure:
+	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release
+
+build: configure
+	cmake --build $(BUILD) -j$(JOBS)
+
+clean:
+	rm -rf $(BUILD)

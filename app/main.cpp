@@ -1,0 +1,75 @@
+// fpmshell command line (model-format.md): run, check, --version. Exit codes: 0 success,
+// 1 the run failed, 2 the model or a file it names is invalid.
+#include <CLI/CLI.hpp>
+#include <filesystem>
+#include <iostream>
+
+#include "fpmshell/core/errors.hpp"
+#include "fpmshell/driver/run_driver.hpp"
+#include "fpmshell/io/model_reader.hpp"
+
+namespace {
+
+constexpr int k_exit_invalid = 2;
+
+const char* k_footer = R"(Examples:
+  fpmshell check examples/spherical_cap_elastic/model.yaml
+  fpmshell run examples/spherical_cap_elastic/model.yaml -o results/cap --set control.end_time=5e-4
+Results: history.csv, energy.csv, fields.pvd (open in ParaView), summary.json, log.txt.)";
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    CLI::App app{"fpmshell — explicit finite particle method for the nonlinear dynamics of thin shells"};
+    app.footer(k_footer);
+    app.set_version_flag("--version", std::string("fpmshell ") + FPMSHELL_VERSION);
+    app.require_subcommand(1);
+
+    std::string model_path, out_dir;
+    std::vector<std::string> overrides;
+    int threads = 0;
+    bool quiet = false, overwrite = false;
+
+    CLI::App* run = app.add_subcommand("run", "run a model and write its results");
+    run->add_option("model", model_path, "model file (YAML)")->required();
+    run->add_option("-o,--output", out_dir, "result folder (default results/<model file stem>)");
+    run->add_option("--threads", threads, "number of threads (default: all)")->check(CLI::Range(1, 4096));
+    run->add_flag("--quiet", quiet, "a progress line every ~5 % instead of a live line");
+    run->add_flag("--overwrite", overwrite, "replace results of another model in the folder");
+    run->add_option("--set", overrides, "override a scalar of the model, e.g. control.end_time=2e-3");
+
+    CLI::App* check = app.add_subcommand("check", "parse and validate a model, print a summary");
+    check->add_option("model", model_path, "model file (YAML)")->required();
+    check->add_option("--set", overrides, "override a scalar of the model");
+
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::Success& e) {
+        return app.exit(e);
+    } catch (const CLI::ParseError& e) {
+        app.exit(e);
+        return k_exit_invalid;
+    }
+
+    try {
+        const fpmshell::Model model = fpmshell::read_model(model_path, overrides);
+        if (check->parsed()) {
+            std::cout << fpmshell::model_summary(model);
+            return 0;
+        }
+        fpmshell::RunOptions opt;
+        opt.output_dir = out_dir.empty()
+                             ? std::filesystem::path("results") / std::filesystem::path(model_path).stem()
+                             : std::filesystem::path(out_dir);
+        opt.threads = threads;
+        opt.quiet = quiet;
+        opt.overwrite = overwrite;
+        return fpmshell::run_model(model, opt);
+    } catch (const fpmshell::InputError& e) {
+        std::cerr << "error: " << e.what() << "\n";
+        return k_exit_invalid;
+    } catch (const std::exception& e) {
+        std::cerr << "error: " << e.what() << "\n";
+        return 1;
+    }
+}

@@ -1,0 +1,61 @@
+// Rotation algebra used by the reverse motion and the particle update (theory.md §1.4).
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+
+#include "fpmshell/core/types.hpp"
+
+namespace fpmshell {
+
+/// Skew matrix [v]x with [v]x u = v x u.
+[[nodiscard]] inline Mat3 skew(const Vec3& v) {
+    Mat3 s;
+    s << 0, -v.z(), v.y(), v.z(), 0, -v.x(), -v.y(), v.x(), 0;
+    return s;
+}
+
+/// R(phi) = I + a [phi]x + b [phi]x^2, a = sin t / t, b = (1 - cos t)/t^2 (theory.md §1.4).
+[[nodiscard]] inline Mat3 rotation_matrix(const Vec3& phi) {
+    const Real t2 = phi.squaredNorm();
+    Real a, b;
+    if (t2 < 1e-8) {  // series: |error| < t^4/120
+        a = 1.0 - t2 / 6.0;
+        b = 0.5 - t2 / 24.0;
+    } else {
+        const Real t = std::sqrt(t2);
+        a = std::sin(t) / t;
+        b = (1.0 - std::cos(t)) / t2;
+    }
+    const Mat3 k = skew(phi);
+    return Mat3::Identity() + a * k + b * k * k;
+}
+
+/// Rotation vector of a rotation matrix, log(R) (theory.md §1.4). Accurate for angles < pi - 1e-6;
+/// near pi the axis is taken from the symmetric part.
+[[nodiscard]] inline Vec3 rotation_vector(const Mat3& r) {
+    const Real c = std::clamp((r.trace() - 1.0) * 0.5, Real(-1), Real(1));
+    const Vec3 w(r(2, 1) - r(1, 2), r(0, 2) - r(2, 0), r(1, 0) - r(0, 1));
+    const Real s = 0.5 * w.norm();  // sin(theta)
+    const Real theta = std::atan2(s, c);
+    if (theta < 1e-4) return (0.5 + theta * theta / 12.0) * w;
+    if (c > -0.99) return (theta / (2.0 * std::sin(theta))) * w;
+    // Near pi: axis from R + R^T = 2 cos I + 2(1 - cos) e e^T, sign from the skew part.
+    const Mat3 sym = 0.5 * (r + r.transpose()) - c * Mat3::Identity();
+    Eigen::Index k = 0;
+    sym.diagonal().maxCoeff(&k);
+    Vec3 e = sym.col(k) / std::sqrt(std::max(sym(k, k), Real(1e-300)));
+    e.normalize();
+    if (e.dot(w) < 0) e = -e;
+    return theta * e;
+}
+
+/// Minimal rotation taking unit vector a to unit vector b (a.b > -1): I + [v]x + [v]x^2/(1+c).
+[[nodiscard]] inline Mat3 minimal_rotation(const Vec3& a, const Vec3& b) {
+    const Vec3 v = a.cross(b);
+    const Real c = a.dot(b);
+    const Mat3 k = skew(v);
+    return Mat3::Identity() + k + (k * k) / (1.0 + c);
+}
+
+}  // namespace fpmshell

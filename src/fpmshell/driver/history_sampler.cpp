@@ -1,0 +1,61 @@
+#include "fpmshell/driver/history_sampler.hpp"
+
+#include <algorithm>
+#include <limits>
+
+#include "fpmshell/core/rotation.hpp"
+
+namespace fpmshell {
+
+Real particle_quantity(const ExplicitSolver& solver, Quantity q, Index p) {
+    const ParticleState& s = solver.state();
+    const std::size_t up = static_cast<std::size_t>(p);
+    const Vec3 u = s.x[up] - s.x0[up];
+    switch (q) {
+        case Quantity::Ux: return u.x();
+        case Quantity::Uy: return u.y();
+        case Quantity::Uz: return u.z();
+        case Quantity::Umag: return u.norm();
+        case Quantity::Vx: return s.v[up].x();
+        case Quantity::Vy: return s.v[up].y();
+        case Quantity::Vz: return s.v[up].z();
+        case Quantity::Ax: return solver.acceleration(p).x();
+        case Quantity::Ay: return solver.acceleration(p).y();
+        case Quantity::Az: return solver.acceleration(p).z();
+        case Quantity::Rx: return rotation_vector(s.rotation[up]).x();
+        case Quantity::Ry: return rotation_vector(s.rotation[up]).y();
+        case Quantity::Rz: return rotation_vector(s.rotation[up]).z();
+        case Quantity::ReactionX: return s.reaction[up].x();
+        case Quantity::ReactionY: return s.reaction[up].y();
+        case Quantity::ReactionZ: return s.reaction[up].z();
+        case Quantity::ForceX: return s.f_ext[up].x();
+        case Quantity::ForceY: return s.f_ext[up].y();
+        case Quantity::ForceZ: return s.f_ext[up].z();
+    }
+    return 0;
+}
+
+std::vector<Real> sample_histories(const Model& model, const ExplicitSolver& solver) {
+    std::vector<Real> out;
+    out.reserve(model.output.histories.size());
+    for (const HistoryRequest& h : model.output.histories) {
+        Real acc = 0;
+        Real lo = std::numeric_limits<Real>::infinity(), hi = -lo;
+        for (Index p : h.nodes) {
+            const Real v = particle_quantity(solver, h.quantity, p);
+            acc += v;
+            lo = std::min(lo, v);
+            hi = std::max(hi, v);
+        }
+        switch (h.reduce) {
+            case Reduce::Single:
+            case Reduce::Sum: out.push_back(acc); break;
+            case Reduce::Mean: out.push_back(h.nodes.empty() ? 0 : acc / static_cast<Real>(h.nodes.size())); break;
+            case Reduce::Max: out.push_back(hi); break;
+            case Reduce::Min: out.push_back(lo); break;
+        }
+    }
+    return out;
+}
+
+}  // namespace fpmshell

@@ -1,0 +1,287 @@
+#include "fpmshell/driver/run_driver.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <fmt/format.h>
+#include <limits>
+#include <numeric>
+
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
+#include "fpmshell/core/errors.hpp"
+#include "fpmshell/core/rotation.hpp"
+#include "fpmshell/driver/history_sampler.hpp"
+#include "fpmshell/io/csv_table.hpp"
+#include "fpmshell/io/field_frame.hpp"
+#include "fpmshell/io/progress.hpp"
+#include "fpmshell/io/run_directory.hpp"
+#include "fpmshell/io/summary_json.hpp"
+#include "fpmshell/io/vtu_writer.hpp"
+#include "fpmshell/solver/explicit_solver.hpp"
+
+namespace fpmshell {
+namespace {
+
+std::string version() { return FPMSHELL_VERSION; }
+
+/// Field frame of the current state. positions_override: use these positions (last good
+/// state after a failure) instead of the solver's.
+FieldFrame make_frame(const Model& model, const ExplicitSolver& solver, Real time,
+                      const std::vector<Vec3>* positions_override = nullptr) {
+    const ParticleState& s = solver.state();
+    FieldFrame f;
+    f.time = time;
+    f.points = positions_override ? *positions_override : s.x;
+    f.triangles = model.triangles;
+    const std::size_t np = s.size(), ne = model.triangles.size();
+    FieldArray disp{"displacement", 3, {}}, vel{"velocity", 3, {}}, rot{"rotation", 3, {}};
+    for (std::size_t p = 0; p < np; ++p) {
+        const Vec3 u = f.points[p] - s.x0[p];
+        const Vec3 r = rotation_vector(s.rotation[p]);
+        for (int c = 0; c < 3; ++c) {
+            disp.values.push_back(u[c]);
+            vel.values.push_back(s.v[p][c]);
+            rot.values.push_back(r[c]);
+        }
+    }
+    f.point_data = {disp, vel, rot};
+    FieldArray nf{"membrane_force", 3, {}}, bm{"bending_moment", 3, {}}, th{"thickness", 1, {}};
+    FieldArray ep_top{"plastic_strain_top", 1, {}}, ep_mid{"plastic_strain_middle", 1, {}},
+        ep_bot{"plastic_strain_bottom", 1, {}};
+    const auto& n_el = solver.elements().membrane_force();
+    const auto& m_el = solver.elements().bending_moment();
+    for (std::size_t e = 0; e < ne; ++e) {
+        for (int c = 0; c < 3; ++c) {
+            nf.values.push_back(n_el[e][c]);
+            bm.values.push_back(m_el[e][c]);
+        }
+        th.values.push_back(solver.elements().thickness(static_cast<Index>(e)));
+        // Elastic material only in this version: no plastic strain anywhere.
+        ep_top.values.push_back(0);
+        ep_mid.values.push_back(0);
+        ep_bot.values.push_back(0);
+    }
+    f.cell_data = {nf, bm, th, ep_top, ep_mid, ep_bot};
+    return f;
+}
+
+bool all_finite(const std::vector<Vec3>& v) {
+    return std::all_of(v.begin(), v.end(), [](const Vec3& a) { return a.allFinite(); });
+}
+
+struct Peak {
+    Real value = 0;
+    Real time = 0;
+};
+
+/// Everything the run writes, kept together so that a failure can still flush it all.
+class ResultWriter {
+public:
+    ResultWriter(const Model& model, const RunOptions& opt, bool relaxation)
+        : model_(model), dir_(opt.output_dir), history_(history_header(model, relaxation)),
+          energy_({"time", "kinetic", "internal", "plastic", "external_work", "damping",
+                   "contact", "energy_error"}, 10),
+          pvd_(dir_ / "fields.pvd"), peaks_(model.output.histories.size()) {}
+
+    static std::vector<std::string> history_header(const Model& model, bool relaxation) {
+        std::vector<std::string> h{"time"};
+        for (const auto& r : model.output.histories) h.push_back(r.name);
+        if (relaxation) h.push_back("converged");
+        return h;
+    }
+
+    void sample(const ExplicitSolver& solver, Real time, std::optional<bool> converged = {}) {
+        std::vector<Real> row{time};
+        const std::vector<Real> vals = sample_histories(model_, solver);
+        for (std::size_t i = 0; i < vals.size(); ++i) {
+            row.push_back(vals[i]);
+            if (std::abs(vals[i]) > std::abs(peaks_[i].value)) peaks_[i] = {vals[i], time};
+        }
+        if (converged) row.push_back(*converged ? 1.0 : 0.0);
+        history_.add_row(row);
+        const EnergyBalance& e = solver.energy();
+        energy_.add_row({time, e.kinetic, e.internal, e.plastic, e.external_work, e.damping,
+                         e.contact, e.error()});
+    }
+
+    void frame(const ExplicitSolver& solver, Real time, const std::vector<Vec3>* positions = nullptr) {
+        const std::string rel = fmt::format("{}/frame_{:05d}.vtu", k_fields_folder, n_frames_++);
+        write_vtu(dir_ / rel, make_frame(model_, solver, time, positions));
+        pvd_.add(time, rel);
+    }
+
+    void flush() const {
+        history_.flush(dir_ / "history.csv");
+        energy_.flush(dir_ / "energy.csv");
+    }
+
+    void summary(const ExplicitSolver& solver, double wall, int threads, const std::string& reason) const {
+        JsonValue j = JsonValue::object();
+        j.set("title", model_.title);
+        j.set("particles", model_.n_particles());
+        j.set("elements", model_.n_elements());
+        j.set("steps", solver.steps());
+        j.set("end_time", solver.time());
+        j.set("wall_seconds", wall);
+        j.set("element_steps_per_second", wall > 0 ? static_cast<double>(solver.element_steps()) / wall : 0.0);
+        j.set("threads", threads);
+        j.set("energy_error", solver.energy().error());
+        JsonValue peaks = JsonValue::object();
+        for (std::size_t i = 0; i < peaks_.size(); ++i) {
+            JsonValue p = JsonValue::object();
+            p.set("value", peaks_[i].value);
+            p.set("time", peaks_[i].time);
+            peaks.set(model_.output.histories[i].name, p);
+        }
+        j.set("peaks", peaks);
+        j.set("version", version());
+        j.set("exit_reason", reason);
+        write_json_file(dir_ / "summary.json", j);
+    }
+
+private:
+    const Model& model_;
+    std::filesystem::path dir_;
+    CsvTable history_, energy_;
+    PvdSeries pvd_;
+    std::vector<Peak> peaks_;
+    int n_frames_ = 0;
+};
+
+}  // namespace
+
+std::string model_summary(const Model& model) {
+    const ExplicitSolver solver(model);
+    std::string out;
+    out += fmt::format("model      {}\n", model.source_file);
+    out += fmt::format("title      {}\n", model.title);
+    out += fmt::format("particles  {}\nelements   {}\n", model.n_particles(), model.n_elements());
+    const auto& m = solver.state().mass;
+    out += fmt::format("total mass {:.6g}\n", std::accumulate(m.begin(), m.end(), 0.0));
+    out += "node sets ";
+    for (const auto& [name, nodes] : model.node_sets) out += fmt::format(" {}({})", name, nodes.size());
+    out += "\nelement sets";
+    for (const auto& [name, elems] : model.element_sets) out += fmt::format(" {}({})", name, elems.size());
+    const Real dt = solver.stable_dt();
+    out += fmt::format("\nstable time step {:.6g} (time_step_scale {} x critical)\n", dt,
+                       model.control.time_step_scale);
+    if (model.control.mode == SolutionMode::Dynamic) {
+        out += fmt::format("steps      about {:.0f} to end_time {}\n", std::ceil(model.control.end_time / dt),
+                           model.control.end_time);
+    } else {
+        const Real every = model.output.every > 0 ? model.output.every : model.control.end_time;
+        out += fmt::format("relaxation {:.0f} load levels to load parameter {}\n",
+                           std::ceil(model.control.end_time / every - 1e-9), model.control.end_time);
+    }
+    return out;
+}
+
+int run_model(const Model& model, const RunOptions& opt) {
+#ifdef _OPENMP
+    if (opt.threads > 0) omp_set_num_threads(opt.threads);
+    const int threads = omp_get_max_threads();
+#else
+    const int threads = 1;
+#endif
+    prepare_run_directory(opt.output_dir, model.source_file, opt.overwrite);
+    LogFile log(opt.output_dir / "log.txt", opt.echo);
+    log.print("fpmshell {} — {}", version(), model.title);
+    log.print("model {}, {} particles, {} elements, {} thread(s)", model.source_file,
+              model.n_particles(), model.n_elements(), threads);
+
+    const bool relaxation = model.control.mode == SolutionMode::Relaxation;
+    ExplicitSolver solver(model);
+    ResultWriter out(model, opt, relaxation);
+    const Real end = model.control.end_time;
+    Progress progress(end, opt.quiet, [&log](const std::string& s) { log.line(s); });
+    log.set_progress(&progress);
+    log.print("stable time step {:.6g}", solver.stable_dt());
+
+    out.sample(solver, 0.0, relaxation ? std::optional<bool>(true) : std::nullopt);
+    out.frame(solver, 0.0);
+    out.flush();
+    const auto wall0 = std::chrono::steady_clock::now();
+    auto wall = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count(); };
+    std::string reason = "completed";
+    int code = 0;
+    std::vector<Vec3> last_good = solver.state().x;
+    try {
+        const Real every = model.output.every;
+        const Real fields_every = model.output.fields_every > 0 ? model.output.fields_every : end;
+        Real next_frame = fields_every;
+        double last_flush = 0;
+        if (!relaxation) {
+            Real next_row = every;
+            while (solver.time() < end * (1 - 1e-12)) {
+                last_good = solver.state().x;
+                solver.step(end - solver.time());
+                const Real t = solver.time();
+                const bool at_end = t >= end * (1 - 1e-12);
+                if (every <= 0 || t >= next_row * (1 - 1e-12) || at_end) {
+                    out.sample(solver, t);
+                    while (every > 0 && next_row <= t * (1 + 1e-12)) next_row += every;
+                }
+                if (t >= next_frame * (1 - 1e-12) || at_end) {
+                    out.frame(solver, t);
+                    while (next_frame <= t * (1 + 1e-12)) next_frame += fields_every;
+                    out.flush();
+                    last_flush = wall();
+                } else if (wall() - last_flush > 2.0) {
+                    out.flush();
+                    last_flush = wall();
+                }
+                progress.update(t, solver.steps(), solver.last_dt(), solver.energy().error());
+            }
+        } else {
+            const Real step = every > 0 ? every : end;
+            const long levels = static_cast<long>(std::ceil(end / step - 1e-9));
+            long unconverged = 0;
+            for (long k = 1; k <= levels; ++k) {
+                const Real t = std::min(end, static_cast<Real>(k) * step);
+                last_good = solver.state().x;
+                const ExplicitSolver::RelaxResult r = solver.relax(t);
+                if (!r.converged) {
+                    ++unconverged;
+                    log.print("warning: load level {:.6g} did not converge in {} iterations "
+                              "(residual ratio {:.3e} > tolerance {:.1e})",
+                              t, r.iterations, r.residual_ratio, model.control.tolerance);
+                }
+                out.sample(solver, t, r.converged);
+                if (t >= next_frame * (1 - 1e-12) || k == levels) {
+                    out.frame(solver, t);
+                    while (next_frame <= t * (1 + 1e-12)) next_frame += fields_every;
+                }
+                out.flush();
+                progress.update(t, solver.steps(), solver.last_dt(), r.residual_ratio);
+            }
+            if (unconverged > 0)
+                reason = fmt::format("completed; {} of {} load levels did not converge", unconverged, levels);
+        }
+    } catch (const RunFailure& failure) {
+        progress.finish();
+        log.print("error: {}", failure.what());
+        log.print("the last good state (t = {:.6g}) is in the last frame of fields.pvd", solver.time());
+        reason = std::string("failed: ") + failure.what();
+        code = 1;
+        const std::vector<Vec3>* pos = all_finite(solver.state().x) ? nullptr : &last_good;
+        try {
+            out.frame(solver, solver.time(), pos);
+        } catch (const std::exception& e) {
+            log.print("could not write the last frame: {}", e.what());
+        }
+    }
+    progress.finish();
+    const double seconds = wall();
+    out.flush();
+    out.summary(solver, seconds, threads, reason);
+    log.print("{} after {} steps, t = {:.6g}, energy error {:.3f} %, {:.2f} s wall, {:.3g} element-steps/s",
+              code == 0 ? "finished" : "stopped", solver.steps(), solver.time(),
+              100 * solver.energy().error(), seconds,
+              seconds > 0 ? static_cast<double>(solver.element_steps()) / seconds : 0.0);
+    log.print("results in {}", opt.output_dir.string());
+    return code;
+}
+
+}  // namespace fpmshell

@@ -1,0 +1,28 @@
+// Runs a validated model and writes every result file of model-format.md ("fpmshell run").
+// The solver is driven here and the writers observe it; neither knows the other.
+#pragma once
+
+#include <filesystem>
+#include <string>
+
+#include "fpmshell/model/model.hpp"
+
+namespace fpmshell {
+
+struct RunOptions {
+    std::filesystem::path output_dir;
+    int threads = 0;        ///< 0 = all available
+    bool quiet = false;     ///< plain progress lines every ~5 % instead of a live line
+    bool overwrite = false; ///< allow replacing another model's results in output_dir
+    bool echo = true;       ///< print the log to stdout as well as log.txt
+};
+
+/// Runs the model; returns the exit code (0 success, 1 the run failed: the last good state,
+/// the histories and summary.json are written all the same). Throws InputError when the
+/// output folder cannot be used (exit 2).
+int run_model(const Model& model, const RunOptions& options);
+
+/// The text `fpmshell check` prints: counts, total mass, sets, stable step, number of steps.
+[[nodiscard]] std::string model_summary(const Model& model);
+
+}  // namespace fpmshell

@@ -1,0 +1,117 @@
+// Internal forces of the FPM shell triangle over one path element (theory.md §3-§5):
+// CST membrane + rotation-only bending (BCIZ or DKT), stresses integrated at in-plane x
+// thickness points through a material, out-of-plane nodal forces from element equilibrium,
+// and the forward rotation of the local force system into the current configuration.
+#pragma once
+
+#include <array>
+#include <span>
+
+#include "fpmshell/core/types.hpp"
+#include "fpmshell/elements/quadrature.hpp"
+#include "fpmshell/elements/reverse_motion.hpp"
+#include "fpmshell/elements/triangle_shape.hpp"
+#include "fpmshell/materials/material_point.hpp"
+#include "fpmshell/model/model.hpp"
+
+namespace fpmshell {
+
+/// Integration layout of a section: points are stored [inplane g][thickness k].
+struct ShellRule {
+    Real thickness = 0;
+    std::span<const TrianglePoint> inplane;
+    std::span<const ThicknessPoint> through;
+    BendingKernel bending = BendingKernel::Bciz;
+
+    [[nodiscard]] int n_points() const {
+        return static_cast<int>(inplane.size() * through.size());
+    }
+};
+
+/// What one element returns for one step.
+struct ShellTriangleLoads {
+    std::array<Vec3, 3> force;   ///< internal (resisting) nodal forces, global frame, t_n
+    std::array<Vec3, 3> moment;  ///< internal nodal moments, global frame, t_n
+    Real strain_work = 0;        ///< work of the stresses over the step (trapezoidal), energy.csv
+    Real damping_work = 0;       ///< work of the viscous (stiffness-damping) stresses
+    Voigt3 membrane_force = Voigt3::Zero();  ///< N averaged over the element, local frame
+    Voigt3 bending_moment = Voigt3::Zero();  ///< M averaged over the element, local frame
+};
+
+/// Curvature matrix of the chosen bending kernel at area coordinates L.
+[[nodiscard]] inline Mat36 bending_b(BendingKernel kernel, const TriangleShape& s,
+                                     const std::array<Real, 3>& L) {
+    return kernel == BendingKernel::Dkt ? bending_b_dkt(s, L) : bending_b_bciz(s, L);
+}
+
+/// Element loads from the reversed path element rt.
+/// points: the element's material points (old state in, new state out).
+/// viscous_rate: a_s / dt_{n-1/2} (theory.md §6.5), 0 without stiffness damping.
+template <class Material>
+ShellTriangleLoads shell_triangle_loads(const ReversedTriangle& rt, const ShellRule& rule,
+                                        const Material& material,
+                                        std::span<MaterialPoint> points, Real viscous_rate) {
+    ShellTriangleLoads out;
+    const TriangleShape shape(rt.x2, rt.x3, rt.y3);
+    const Mat36 bm = membrane_b(shape);
+    Eigen::Matrix<Real, 6, 1> u_vec, th_vec;
+    for (int i = 0; i < 3; ++i) {
+        u_vec.segment<2>(2 * i) = rt.u[i];
+        th_vec.segment<2>(2 * i) = rt.theta[i];
+    }
+    const Voigt3 d_eps_m = bm * u_vec;  // §3.1 membrane strain increment
+    const Real h = rule.thickness, half_h = 0.5 * h;
+    const Mat3& c = material.stiffness();
+
+    Eigen::Matrix<Real, 6, 1> f_m = Eigen::Matrix<Real, 6, 1>::Zero();  // §3.3
+    Eigen::Matrix<Real, 6, 1> m_b = Eigen::Matrix<Real, 6, 1>::Zero();  // §4.5
+    const int nk = static_cast<int>(rule.through.size());
+    int g = 0;
+    for (const TrianglePoint& ip : rule.inplane) {
+        const Mat36 bb = bending_b(rule.bending, shape, ip.L);
+        const Voigt3 d_kappa = bb * th_vec;  // §4.3
+        Voigt3 n_g = Voigt3::Zero(), m_g = Voigt3::Zero();
+        Real work_g = 0;
+        for (int k = 0; k < nk; ++k) {
+            const ThicknessPoint& tp = rule.through[static_cast<std::size_t>(k)];
+            const Real z = tp.zeta * half_h;
+            const Voigt3 d_eps = d_eps_m + z * d_kappa;  // §4.4
+            MaterialPoint& mp = points[static_cast<std::size_t>(g * nk + k)];
+            const Voigt3 sigma_old = mp.stress;
+            material.update(mp, d_eps, mp);  // old and new may alias: update reads first
+            const Real wz = half_h * tp.weight;
+            n_g += wz * mp.stress;  // §3.2 resultants
+            m_g += (wz * z) * mp.stress;
+            work_g += wz * 0.5 * (sigma_old + mp.stress).dot(d_eps);
+        }
+        out.membrane_force += ip.weight * n_g;
+        out.bending_moment += ip.weight * m_g;
+        if (viscous_rate > 0) {  // §6.5 viscous resultants, force evaluation only
+            const Voigt3 n_v = viscous_rate * h * (c * d_eps_m);
+            const Voigt3 m_v = viscous_rate * (h * h * h / 12.0) * (c * d_kappa);
+            out.damping_work += rt.area * ip.weight * (n_v.dot(d_eps_m) + m_v.dot(d_kappa));
+            n_g += n_v;
+            m_g += m_v;
+        }
+        const Real wa = rt.area * ip.weight;
+        f_m += wa * (bm.transpose() * n_g);
+        m_b += wa * (bb.transpose() * m_g);
+        out.strain_work += rt.area * ip.weight * work_g;
+        ++g;
+    }
+    // §4.6 out-of-plane forces from the equilibrium of the element (node-1-origin frame).
+    const Real sum_mx = m_b(0) + m_b(2) + m_b(4), sum_my = m_b(1) + m_b(3) + m_b(5);
+    const Real f3z = -sum_mx / rt.y3;
+    const Real f2z = (sum_my - rt.x3 * f3z) / rt.x2;
+    const Real f1z = -f2z - f3z;
+    const std::array<Real, 3> fz{f1z, f2z, f3z};
+    // §5 forward rotation: global = T_t^T local.
+    const Mat3 to_global = rt.frame_current.transpose();
+    for (int i = 0; i < 3; ++i) {
+        out.force[i] = to_global * Vec3(f_m(2 * i), f_m(2 * i + 1), fz[i]);
+        out.moment[i] = to_global * Vec3(m_b(2 * i), m_b(2 * i + 1), 0.0);
+    }
+    return out;
+}
+
+}  // namespace fpmshell

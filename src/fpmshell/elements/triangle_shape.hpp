@@ -1,0 +1,33 @@
+// Shape-function derivatives of the flat triangle in its local frame, node 1 at the origin and
+// edge 1->2 along x (theory.md §3.1, §4.3, §4.7). The membrane part is the CST; the bending
+// part maps the 6 deformation rotations [thx1, thy1, thx2, thy2, thx3, thy3] to the curvature
+// [kxx, kyy, kxy] (kxy = -2 w,xy) at a point given by its area coordinates.
+#pragma once
+
+#include <array>
+
+#include "fpmshell/core/types.hpp"
+
+namespace fpmshell {
+
+using Mat36 = Eigen::Matrix<Real, 3, 6>;
+
+/// Local geometry: b_i = y_j - y_k, c_i = x_k - x_j (cyclic), 2A = x2 y3.
+struct TriangleShape {
+    std::array<Real, 3> x, y;  ///< local nodal coordinates
+    std::array<Real, 3> b, c;
+    Real two_area;
+
+    TriangleShape(Real x2, Real x3, Real y3);
+};
+
+/// CST strain matrix B_m (theory.md §3.1): eps = B_m [u1x u1y u2x u2y u3x u3y].
+[[nodiscard]] Mat36 membrane_b(const TriangleShape& s);
+
+/// BCIZ curvature matrix with the 6 rotation DOFs (theory.md §4.2-§4.3).
+[[nodiscard]] Mat36 bending_b_bciz(const TriangleShape& s, const std::array<Real, 3>& L);
+
+/// Rotation-only DKT curvature matrix (theory.md §4.7; Batoz, Bathe & Ho 1980).
+[[nodiscard]] Mat36 bending_b_dkt(const TriangleShape& s, const std::array<Real, 3>& L);
+
+}  // namespace fpmshell

@@ -1,0 +1,525 @@
+// YAML model file -> validated Model (see model_reader.hpp and model-format.md).
+// One function per top-level key; each checks its own keys, types and ranges.
+#include "fpmshell/io/model_reader.hpp"
+
+#include <yaml-cpp/yaml.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cstdint>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <optional>
+#include <sstream>
+
+#include "fpmshell/core/errors.hpp"
+#include "fpmshell/io/mesh_input.hpp"
+#include "fpmshell/io/overrides.hpp"
+#include "fpmshell/io/set_builder.hpp"
+#include "fpmshell/io/yaml_access.hpp"
+
+namespace fpmshell {
+namespace {
+
+constexpr std::uintmax_t k_max_model_file_bytes = 64U << 20U;
+
+const std::vector<std::string> k_top_keys = {"title",        "mesh",     "sets",
+                                             "materials",    "sections", "boundary",
+                                             "curves",       "loads",    "initial_conditions",
+                                             "rigid_bodies", "contact",  "damping",
+                                             "control",      "output"};
+
+std::string not_supported(const std::string& what) {
+    return what + " is not supported yet in this version of fpmshell";
+}
+
+std::vector<std::string> names_of(const std::map<std::string, std::vector<Index>>& sets) {
+    std::vector<std::string> names;
+    for (const auto& [name, members] : sets) names.push_back(name);
+    return names;
+}
+
+/// Everything the readers of the individual blocks share.
+class Reader {
+public:
+    explicit Reader(Model& model) : model_(model) {}
+
+    const std::vector<Index>& node_set(const YamlValue& v) const {
+        const std::string name = v.name();
+        const auto it = model_.node_sets.find(name);
+        if (it == model_.node_sets.end()) {
+            const auto names = names_of(model_.node_sets);
+            v.fail("unknown node set '" + name + "'" + did_you_mean(name, names) +
+                   "; the model defines the node sets " + join_names(names));
+        }
+        return it->second;
+    }
+
+    const std::vector<Index>& element_set(const YamlValue& v) const {
+        const std::string name = v.name();
+        const auto it = model_.element_sets.find(name);
+        const auto names = names_of(model_.element_sets);
+        if (it == model_.element_sets.end()) {
+            if (model_.node_sets.count(name) != 0)
+                v.fail("'" + name +
+                       "' is a node set, not an element set; the model defines the "
+                       "element sets " +
+                       join_names(names));
+            v.fail("unknown element set '" + name + "'" + did_you_mean(name, names) +
+                   "; the model defines the element sets " + join_names(names));
+        }
+        if (it->second.empty())
+            v.fail("the element set '" + name +
+                   "' contains no element (a near/plane set holds only the elements whose three "
+                   "nodes are all in it); use a box set or a mesh set");
+        return it->second;
+    }
+
+    Index curve(const YamlValue& v) const {
+        const std::string name = v.name();
+        std::vector<std::string> names;
+        for (std::size_t i = 0; i < model_.curves.size(); ++i) {
+            if (model_.curves[i].name == name) return static_cast<Index>(i);
+            names.push_back(model_.curves[i].name);
+        }
+        v.fail("unknown curve '" + name + "'" + did_you_mean(name, names) +
+               (names.empty() ? std::string("; the model defines no curves (add them under "
+                                            "`curves`)")
+                              : "; the model defines the curves " + join_names(names)));
+    }
+
+    Index material(const YamlValue& v) const {
+        const std::string name = v.name();
+        std::vector<std::string> names;
+        for (std::size_t i = 0; i < model_.materials.size(); ++i) {
+            if (model_.materials[i].name == name) return static_cast<Index>(i);
+            names.push_back(model_.materials[i].name);
+        }
+        v.fail("unknown material '" + name + "'" + did_you_mean(name, names) +
+               "; the model defines the materials " + join_names(names));
+    }
+
+    Index optional_curve(const YamlMap& m) const {
+        const auto c = m.find("curve");
+        return c ? curve(*c) : -1;
+    }
+
+    void control(const YamlValue& v) {
+        const YamlMap m = v.map({"end_time", "time_step_scale", "mode", "tolerance", "bending",
+                                 "energy_error_limit", "max_relaxation_iterations"});
+        Control& c = model_.control;
+        c.end_time = m.at("end_time", "the duration of the run, a number > 0").positive();
+        if (const auto s = m.find("time_step_scale")) {
+            c.time_step_scale = s->positive();
+            if (c.time_step_scale > 1)
+                s->fail("must be in (0, 1] (a fraction of the critical time step), got " +
+                        s->describe());
+        }
+        c.mode = m.choice_or("mode", {"dynamic", "relaxation"}, "dynamic") == "relaxation"
+                     ? SolutionMode::Relaxation
+                     : SolutionMode::Dynamic;
+        c.tolerance = m.positive_or("tolerance", c.tolerance);
+        c.bending = m.choice_or("bending", {"bciz", "dkt"}, "bciz") == "dkt" ? BendingKernel::Dkt
+                                                                             : BendingKernel::Bciz;
+        c.energy_error_limit = m.positive_or("energy_error_limit", c.energy_error_limit);
+        if (const auto s = m.find("max_relaxation_iterations"))
+            c.max_relaxation_iterations = static_cast<long>(s->integer(1, 1'000'000'000'000LL));
+    }
+
+    void materials(const YamlValue& v) {
+        const YamlMap all = v.open_map("material names to material definitions");
+        if (all.entries().empty())
+            v.fail(
+                "at least one material is required, e.g. steel: {type: elastic, density: "
+                "7.8e-9, youngs_modulus: 210000, poisson_ratio: 0.3}");
+        for (const auto& [name, def] : all.entries()) {
+            if (!def.is_map() && !def.is_null())
+                def.fail(
+                    "expected a map of material constants such as {type: elastic, density: "
+                    "..., youngs_modulus: ..., poisson_ratio: ...}, got " +
+                    def.describe());
+            const YamlMap any = def.open_map("material constants");
+            const YamlValue type = any.at("type", "elastic");
+            const std::string t = type.choice({"elastic", "j2_plastic", "johnson_cook"});
+            if (t != "elastic")
+                type.fail(not_supported("the material type '" + t + "'") + "; use type: elastic");
+            if (const auto cs = any.find("cowper_symonds"))
+                cs->fail(not_supported("the Cowper-Symonds rate factor"));
+            for (const auto& [key, value] : any.entries()) {
+                for (const char* plastic :
+                     {"yield_stress", "tangent_modulus", "hardening_mix", "A", "B", "n", "C",
+                      "reference_strain_rate", "m", "room_temperature", "melt_temperature"})
+                    if (key == plastic)
+                        value.fail(
+                            "belongs to plastic materials (j2_plastic, johnson_cook), "
+                            "which are not supported yet in this version of fpmshell; "
+                            "remove it for an elastic material");
+            }
+            const YamlMap m = def.map({"type", "density", "youngs_modulus", "poisson_ratio"});
+            Material mat;
+            mat.name = name;
+            mat.type = MaterialType::Elastic;
+            mat.density = m.at("density", "a number > 0").positive();
+            mat.youngs_modulus = m.at("youngs_modulus", "a number > 0").positive();
+            const YamlValue nu = m.at("poisson_ratio", "a number in (-1, 0.5)");
+            mat.poisson_ratio = nu.real();
+            if (!(mat.poisson_ratio > -1 && mat.poisson_ratio < 0.5))
+                nu.fail("must be greater than -1 and less than 0.5, got " + nu.describe());
+            model_.materials.push_back(mat);
+        }
+    }
+
+    void sections(const YamlValue& v) {
+        const auto items = v.list("sections");
+        if (items.empty())
+            v.fail(
+                "at least one section is required, e.g. - {elements: all, material: steel, "
+                "thickness: 1.0}");
+        model_.element_section.assign(model_.triangles.size(), -1);
+        for (const YamlValue& item : items) {
+            const YamlMap m = item.map(
+                {"elements", "material", "thickness", "thickness_points", "inplane_points"});
+            const auto& elements = element_set(m.at("elements", "an element set name such as all"));
+            Section s;
+            s.material = material(m.at("material", "a material name"));
+            s.thickness = m.at("thickness", "a number > 0").positive();
+            if (const auto tp = m.find("thickness_points")) {
+                const long long n = tp->integer(2, 5);
+                if (n == 4)
+                    tp->fail(
+                        "expected 2 (Gauss), 3 or 5 (Lobatto) points through the "
+                        "thickness, got 4");
+                s.thickness_points = static_cast<int>(n);
+            }
+            if (const auto ip = m.find("inplane_points")) {
+                const long long n = ip->integer(3, 7);
+                if (n != 3 && n != 7)
+                    ip->fail("expected 3 or 7 in-plane integration points, got " + ip->describe());
+                s.inplane_points = static_cast<int>(n);
+            }
+            const auto index = static_cast<Index>(model_.sections.size());
+            model_.sections.push_back(s);
+            for (const Index e : elements)
+                model_.element_section[static_cast<std::size_t>(e)] = index;
+        }
+        const auto missing =
+            std::find(model_.element_section.begin(), model_.element_section.end(), Index{-1});
+        if (missing != model_.element_section.end()) {
+            const auto e = missing - model_.element_section.begin();
+            const auto n_missing = std::count(missing, model_.element_section.end(), Index{-1});
+            v.fail("element " + std::to_string(e + 1) + " (and " + std::to_string(n_missing - 1) +
+                   " more) has no section; every element needs one, e.g. start with an entry "
+                   "for `elements: all`");
+        }
+    }
+
+    void curves(const YamlValue& v) {
+        const YamlMap all = v.open_map("curve names to [[time, factor], ...] lists");
+        for (const auto& [name, def] : all.entries()) {
+            Curve c;
+            c.name = name;
+            const auto points = def.list("[time, factor] pairs");
+            if (points.empty())
+                def.fail("a curve needs at least one [time, factor] pair, e.g. [[0, 0], [1, 1]]");
+            for (const YamlValue& p : points) {
+                const auto tf = p.list("two numbers [time, factor]");
+                if (tf.size() != 2)
+                    p.fail("expected a pair [time, factor], got " +
+                           (p.is_list() ? "a list of " + std::to_string(tf.size()) + " items"
+                                        : p.describe()));
+                const Real t = tf[0].real();
+                const Real f = tf[1].real();
+                if (!c.points.empty() && !(t > c.points.back().first))
+                    tf[0].fail("the times of a curve must increase strictly, but " +
+                               tf[0].describe() + " follows " +
+                               std::to_string(c.points.back().first));
+                c.points.emplace_back(t, f);
+            }
+            model_.curves.push_back(c);
+        }
+    }
+
+    void boundary(const YamlValue& v) {
+        static const std::vector<std::string> dofs = {"ux", "uy", "uz", "rx", "ry", "rz"};
+        for (const YamlValue& item : v.list("boundary conditions")) {
+            const YamlMap m = item.map({"nodes", "fix", "symmetry", "prescribe"});
+            BoundaryCondition bc;
+            bc.nodes = node_set(m.at("nodes", "a node set name"));
+            if (m.count({"fix", "symmetry", "prescribe"}) == 0)
+                item.fail(
+                    "a boundary condition needs at least one of fix, symmetry or "
+                    "prescribe");
+            if (const auto fix = m.find("fix")) {
+                if (fix->is_scalar()) {
+                    if (fix->choice({"all"}) == "all") bc.fixed.fill(true);
+                } else {
+                    const auto list = fix->list("degrees of freedom");
+                    if (list.empty())
+                        fix->fail("expected `all` or a non-empty list of ux, uy, uz, rx, ry, rz");
+                    for (const YamlValue& d : list) {
+                        const std::string name = d.choice(dofs);
+                        const auto k = std::find(dofs.begin(), dofs.end(), name) - dofs.begin();
+                        bc.fixed[static_cast<std::size_t>(k)] = true;
+                    }
+                }
+            }
+            if (const auto sym = m.find("symmetry")) {
+                const std::string axis = sym->choice({"x", "y", "z"});
+                // Plane normal to `axis`: no normal displacement, no rotation about the two
+                // in-plane axes.
+                const std::size_t a = axis == "x" ? 0 : axis == "y" ? 1 : 2;
+                bc.fixed[a] = true;
+                for (std::size_t r = 0; r < 3; ++r)
+                    if (r != a) bc.fixed[3 + r] = true;
+            }
+            if (const auto pre = m.find("prescribe")) {
+                const YamlMap p =
+                    pre->map({"displacement", "velocity", "angular_velocity", "curve"});
+                if (p.count({"displacement", "velocity", "angular_velocity"}) != 1)
+                    pre->fail(
+                        "needs exactly one of displacement, velocity or angular_velocity "
+                        "(a list of 3 numbers), optionally with a curve");
+                if (const auto d = p.find("displacement")) {
+                    bc.prescribed = PrescribedKind::Displacement;
+                    bc.value = d->vec3();
+                } else if (const auto vel = p.find("velocity")) {
+                    bc.prescribed = PrescribedKind::Velocity;
+                    bc.value = vel->vec3();
+                } else {
+                    bc.prescribed = PrescribedKind::AngularVelocity;
+                    bc.value = p.at("angular_velocity").vec3();
+                }
+                bc.curve = optional_curve(p);
+            }
+            model_.boundary.push_back(bc);
+        }
+    }
+
+    void loads(const YamlValue& v) {
+        for (const YamlValue& item : v.list("loads")) {
+            const YamlMap m = item.map({"type", "nodes", "elements", "value", "curve"});
+            const std::string type =
+                m.at("type", "pressure, force or moment").choice({"pressure", "force", "moment"});
+            Load load;
+            if (type == "pressure") {
+                load.type = LoadType::Pressure;
+                if (const auto n = m.find("nodes"))
+                    n->fail("a pressure acts on elements: use `elements: SET` instead of `nodes`");
+                load.elements = element_set(m.at("elements", "an element set name"));
+                load.pressure = m.at("value", "the pressure, a number").real();
+            } else {
+                load.type = type == "force" ? LoadType::Force : LoadType::Moment;
+                if (const auto e = m.find("elements"))
+                    e->fail("a " + type +
+                            " acts on each node of a set: use `nodes: SET` instead "
+                            "of `elements`");
+                load.nodes = node_set(m.at("nodes", "a node set name"));
+                load.vector = m.at("value", "a list of 3 numbers [x, y, z]").vec3();
+            }
+            load.curve = optional_curve(m);
+            model_.loads.push_back(load);
+        }
+    }
+
+    void initial_conditions(const YamlValue& v) {
+        for (const YamlValue& item : v.list("initial conditions")) {
+            const YamlMap m = item.map({"nodes", "velocity", "angular_velocity"});
+            InitialVelocity ic;
+            ic.nodes = node_set(m.at("nodes", "a node set name"));
+            if (m.count({"velocity", "angular_velocity"}) == 0)
+                item.fail(
+                    "an initial condition needs `velocity: [vx, vy, vz]` and/or "
+                    "`angular_velocity: [wx, wy, wz]`");
+            if (const auto vel = m.find("velocity")) ic.velocity = vel->vec3();
+            if (const auto w = m.find("angular_velocity")) ic.angular_velocity = w->vec3();
+            model_.initial_conditions.push_back(ic);
+        }
+    }
+
+    void damping(const YamlValue& v) {
+        const YamlMap m = v.map({"mass", "stiffness"});
+        model_.damping.mass = m.non_negative_or("mass", 0);
+        model_.damping.stiffness = m.non_negative_or("stiffness", 0);
+    }
+
+    void output(const std::optional<YamlValue>& v) {
+        OutputControl& o = model_.output;
+        o.every = model_.control.end_time / 200;
+        o.fields_every = model_.control.end_time / 20;
+        if (!v) return;
+        const YamlMap m = v->map({"every", "fields_every", "histories"});
+        o.every = m.non_negative_or("every", o.every);
+        o.fields_every = m.non_negative_or("fields_every", o.fields_every);
+        const auto h = m.find("histories");
+        if (!h) return;
+        static const std::vector<std::pair<std::string, Quantity>> quantities = {
+            {"ux", Quantity::Ux},
+            {"uy", Quantity::Uy},
+            {"uz", Quantity::Uz},
+            {"umag", Quantity::Umag},
+            {"vx", Quantity::Vx},
+            {"vy", Quantity::Vy},
+            {"vz", Quantity::Vz},
+            {"ax", Quantity::Ax},
+            {"ay", Quantity::Ay},
+            {"az", Quantity::Az},
+            {"rx", Quantity::Rx},
+            {"ry", Quantity::Ry},
+            {"rz", Quantity::Rz},
+            {"reaction_x", Quantity::ReactionX},
+            {"reaction_y", Quantity::ReactionY},
+            {"reaction_z", Quantity::ReactionZ},
+            {"force_x", Quantity::ForceX},
+            {"force_y", Quantity::ForceY},
+            {"force_z", Quantity::ForceZ}};
+        std::vector<std::string> quantity_names;
+        for (const auto& [name, q] : quantities) quantity_names.push_back(name);
+        static const std::vector<std::pair<std::string, Reduce>> reductions = {
+            {"sum", Reduce::Sum},
+            {"max", Reduce::Max},
+            {"min", Reduce::Min},
+            {"mean", Reduce::Mean}};
+
+        for (const YamlValue& item : h->list("history requests")) {
+            const YamlMap r = item.map({"name", "nodes", "quantity", "reduce"});
+            HistoryRequest req;
+            const YamlValue name = r.at("name", "a column name for history.csv");
+            req.name = name.name();
+            if (req.name.find_first_of(",\"\n\r") != std::string::npos)
+                name.fail(
+                    "a history name must not contain commas, quotes or line breaks (it "
+                    "becomes a column of history.csv), got " +
+                    name.describe());
+            if (req.name == "time")
+                name.fail("'time' is the first column of history.csv already; choose another name");
+            for (const auto& other : o.histories)
+                if (other.name == req.name)
+                    name.fail("the history name '" + req.name +
+                              "' is used twice; names must be "
+                              "unique");
+            const YamlValue nodes = r.at("nodes", "a node set name");
+            req.nodes = node_set(nodes);
+            const YamlValue q = r.at("quantity", "one of " + join_names(quantity_names));
+            const std::string qn = q.name();
+            if (qn.rfind("rigid_", 0) == 0)
+                q.fail(not_supported("the rigid-body quantity '" + qn + "'") +
+                       " (rigid bodies come later)");
+            const std::string chosen = q.choice(quantity_names);
+            for (const auto& [n, quantity] : quantities)
+                if (n == chosen) req.quantity = quantity;
+            if (const auto red = r.find("reduce")) {
+                const std::string rn = red->choice({"sum", "max", "min", "mean"});
+                for (const auto& [n, reduce] : reductions)
+                    if (n == rn) req.reduce = reduce;
+            } else if (req.nodes.size() > 1) {
+                nodes.fail("the set '" + nodes.name() + "' has " +
+                           std::to_string(req.nodes.size()) +
+                           " nodes, so the history needs `reduce: sum`, max, min or mean");
+            }
+            o.histories.push_back(req);
+        }
+    }
+
+private:
+    Model& model_;
+};
+
+YAML::Node load_yaml(const std::string& path) {
+    std::error_code ec;
+    if (std::filesystem::is_directory(path, ec))
+        throw InputError(input_error_text(path, 0, "",
+                                          "cannot open the model file: it is a "
+                                          "folder; expected a YAML file"));
+    std::ifstream in(path, std::ios::binary);
+    if (!in)
+        throw InputError(input_error_text(
+            path, 0, "", std::string("cannot open the model file (") + std::strerror(errno) + ")"));
+    const auto size = std::filesystem::file_size(path, ec);
+    if (!ec && size > k_max_model_file_bytes)
+        throw InputError(input_error_text(path, 0, "",
+                                          "the model file is larger than 64 MiB; "
+                                          "put big data in a mesh file"));
+    std::ostringstream content;
+    content << in.rdbuf();
+    try {
+        return YAML::Load(content.str());
+    } catch (const YAML::Exception& e) {
+        const int line = e.mark.is_null() ? 0 : e.mark.line + 1;
+        throw InputError(
+            input_error_text(path, line, "", "the file is not valid YAML (" + e.msg + ")"));
+    }
+}
+
+}  // namespace
+
+Model read_model(const std::string& path, const std::vector<std::string>& set_overrides) {
+    YamlContext ctx(path);
+    YAML::Node root = load_yaml(path);
+    if (!root.IsDefined() || root.IsNull())
+        throw InputError(input_error_text(path, 0, "",
+                                          "the model file is empty; expected a map "
+                                          "with at least mesh, materials, sections "
+                                          "and control"));
+    if (!root.IsMap())
+        throw InputError(input_error_text(
+            path, yaml_line(root), "",
+            std::string("the top level of the model file must be a map of keys (title, mesh, "
+                        "materials, ...), got ") +
+                (root.IsSequence() ? "a list" : "a single value")));
+    apply_overrides(root, set_overrides, ctx);
+
+    Model model;
+    model.source_file = path;
+    const YamlMap top = YamlValue(ctx, root, "").map(k_top_keys);
+    for (const char* later : {"rigid_bodies", "contact"}) {
+        const auto v = top.find(later);
+        if (v && !v->is_null() && !(v->is_list() && v->node().size() == 0))
+            v->fail(not_supported("`" + std::string(later) + "`"));
+    }
+    for (const char* required : {"mesh", "materials", "sections", "control"})
+        if (!top.has(required))
+            ctx.fail_at(1, required,
+                        "is required but missing; a model needs mesh, materials, "
+                        "sections and control");
+
+    model.title = std::filesystem::path(path).stem().string();
+    if (const auto t = top.find("title")) model.title = t->name();
+
+    Reader reader(model);
+    reader.control(top.at("control"));
+
+    // Mesh and sets.
+    const YamlValue mesh_key = top.at("mesh");
+    MeshData mesh = read_mesh_block(mesh_key, std::filesystem::path(path).parent_path().string());
+    if (mesh.node_sets.count("all") != 0 || mesh.element_sets.count("all") != 0)
+        mesh_key.fail(
+            "the mesh defines a set named 'all', which is reserved for the set of every "
+            "node and element; rename it in the mesh file");
+    if (const auto s = top.find("sets")) add_user_sets(*s, mesh);
+    model.nodes = std::move(mesh.nodes);
+    model.triangles = std::move(mesh.triangles);
+    model.node_sets = std::move(mesh.node_sets);
+    model.element_sets = std::move(mesh.element_sets);
+    for (auto* sets : {&model.node_sets, &model.element_sets})
+        for (auto& [name, members] : *sets) {
+            std::sort(members.begin(), members.end());
+            members.erase(std::unique(members.begin(), members.end()), members.end());
+        }
+    auto& all_nodes = model.node_sets["all"];
+    for (Index i = 0; i < model.n_particles(); ++i) all_nodes.push_back(i);
+    auto& all_elements = model.element_sets["all"];
+    for (Index e = 0; e < model.n_elements(); ++e) all_elements.push_back(e);
+
+    reader.materials(top.at("materials"));
+    if (const auto c = top.find("curves")) reader.curves(*c);
+    reader.sections(top.at("sections"));
+    if (const auto b = top.find("boundary")) reader.boundary(*b);
+    if (const auto l = top.find("loads")) reader.loads(*l);
+    if (const auto i = top.find("initial_conditions")) reader.initial_conditions(*i);
+    if (const auto d = top.find("damping")) reader.damping(*d);
+    reader.output(top.find("output"));
+    return model;
+}
+
+}  // namespace fpmshell

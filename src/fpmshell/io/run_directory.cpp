@@ -1,0 +1,179 @@
+// Output folder preparation and the log tee; behaviour described in run_directory.hpp.
+#include "fpmshell/io/run_directory.hpp"
+
+#include <cerrno>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+#include <system_error>
+
+#include "fpmshell/core/errors.hpp"
+#include "fpmshell/io/atomic_file.hpp"
+#include "fpmshell/io/progress.hpp"
+
+namespace fpmshell {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+[[noreturn]] void dir_error(const fs::path& dir, const std::string& message) {
+    throw InputError(input_error_text(dir.string(), 0, "", message));
+}
+
+/// Absolute, normalised path (symbolic links resolved where the path exists).
+fs::path absolute_model_path(const fs::path& model_file) {
+    std::error_code ec;
+    fs::path p = fs::weakly_canonical(fs::absolute(model_file), ec);
+    if (ec) p = fs::absolute(model_file).lexically_normal();
+    return p;
+}
+
+/// The model recorded in DIR's marker, or "" when there is none.
+std::string recorded_model(const fs::path& dir) {
+    std::ifstream in(dir / k_model_marker);
+    if (!in) return {};
+    std::stringstream ss;
+    ss << in.rdbuf();
+    std::string text = ss.str();
+    while (!text.empty() && (text.back() == '\n' || text.back() == '\r' || text.back() == ' ')) {
+        text.pop_back();
+    }
+    return text;
+}
+
+bool starts_with(const std::string& s, std::string_view prefix) {
+    return s.size() >= prefix.size() && s.compare(0, prefix.size(), prefix) == 0;
+}
+
+/// True for a VTU frame written by the run ("frame_*.vtu") or one's leftover temporary file.
+bool is_frame_file(const std::string& name) {
+    return starts_with(name, "frame_") &&
+           (name.ends_with(".vtu") || name.find(".vtu.tmp.") != std::string::npos);
+}
+
+bool holds_frames(const fs::path& fields) {
+    std::error_code ec;
+    if (!fs::is_directory(fields, ec)) return false;
+    for (const auto& entry : fs::directory_iterator(fields, ec)) {
+        if (is_frame_file(entry.path().filename().string())) return true;
+    }
+    return false;
+}
+
+bool holds_results(const fs::path& dir) {
+    std::error_code ec;
+    for (const char* name : k_result_files) {
+        if (fs::exists(dir / name, ec)) return true;
+    }
+    return holds_frames(dir / k_fields_folder);
+}
+
+void remove_file(const fs::path& dir, const fs::path& file) {
+    std::error_code ec;
+    fs::remove(file, ec);
+    if (ec) {
+        dir_error(dir, "cannot remove the old result '" + file.filename().string() + "' (" +
+                           ec.message() + "); check the folder's permissions.");
+    }
+}
+
+/// Deletes the previous results of a run in DIR: our named files, their temporaries and the
+/// VTU frames. Nothing else is touched.
+void clean_results(const fs::path& dir) {
+    std::error_code ec;
+    for (const auto& entry : fs::directory_iterator(dir, ec)) {
+        const std::string name = entry.path().filename().string();
+        bool ours = false;
+        for (const char* result : k_result_files) {
+            if (name == result || starts_with(name, std::string(result) + ".tmp.")) ours = true;
+        }
+        if (starts_with(name, std::string(k_model_marker) + ".tmp.")) ours = true;
+        if (ours && !entry.is_directory(ec)) remove_file(dir, entry.path());
+    }
+    const fs::path fields = dir / k_fields_folder;
+    if (fs::is_directory(fields, ec)) {
+        for (const auto& entry : fs::directory_iterator(fields, ec)) {
+            if (is_frame_file(entry.path().filename().string()) && !entry.is_directory(ec)) {
+                remove_file(dir, entry.path());
+            }
+        }
+    }
+}
+
+}  // namespace
+
+void prepare_run_directory(const fs::path& dir, const fs::path& model_file, bool overwrite) {
+    const std::string model = absolute_model_path(model_file).string();
+    std::error_code ec;
+    if (fs::exists(dir, ec) && !fs::is_directory(dir, ec)) {
+        dir_error(dir, "the output directory is an existing file; choose another path with -o.");
+    }
+    if (!fs::exists(dir, ec)) {
+        fs::create_directories(dir, ec);
+        if (ec) {
+            dir_error(dir, "cannot create the output directory (" + ec.message() +
+                               "); choose another path with -o.");
+        }
+    } else if (holds_results(dir)) {
+        const std::string recorded = recorded_model(dir);
+        if (recorded != model && !overwrite) {
+            const std::string other =
+                recorded.empty() ? "a model it cannot identify" : "'" + recorded + "'";
+            dir_error(dir, "the output directory holds results of " + other +
+                               "; use --overwrite to replace them or choose another directory "
+                               "with -o.");
+        }
+    }
+    clean_results(dir);
+
+    const fs::path fields = dir / k_fields_folder;
+    if (fs::exists(fields, ec) && !fs::is_directory(fields, ec)) {
+        dir_error(dir, "'" + fields.string() +
+                           "' is a file, but the VTU frames go into a folder "
+                           "of that name; remove it or choose another directory with -o.");
+    }
+    fs::create_directories(fields, ec);
+    if (ec) {
+        dir_error(dir,
+                  "cannot create the folder '" + fields.string() + "' (" + ec.message() + ").");
+    }
+    try {
+        write_file_atomic(dir / k_model_marker, model + "\n");
+    } catch (const std::runtime_error& e) {
+        dir_error(dir, std::string("cannot record the model in the output directory: ") + e.what());
+    }
+}
+
+LogFile::LogFile(const fs::path& path, bool echo) : path_(path), echo_(echo) {
+    file_ = std::fopen(path_.c_str(), "a");
+    if (file_ == nullptr) {
+        throw std::runtime_error("cannot open the log file '" + path_.string() + "' (" +
+                                 std::strerror(errno) + ").");
+    }
+}
+
+LogFile::~LogFile() {
+    if (file_ != nullptr) std::fclose(file_);
+}
+
+void LogFile::write(std::string_view text) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (echo_) {
+        if (progress_ != nullptr) progress_->clear_line();
+        std::fwrite(text.data(), 1, text.size(), stdout);
+        std::fflush(stdout);
+    }
+    // A failed log write must not stop the run; the text still reached stdout.
+    std::fwrite(text.data(), 1, text.size(), file_);
+    std::fflush(file_);
+}
+
+void LogFile::line(std::string_view text) {
+    std::string s(text);
+    s += '\n';
+    write(s);
+}
+
+}  // namespace fpmshell

@@ -1,0 +1,65 @@
+// ParaView output: one VTK XML UnstructuredGrid file (.vtu) per frame and a .pvd collection that
+// lists the frames with their times (model-format.md: fields.pvd + fields/frame_NNNNN.vtu).
+//
+// File layout written here (VTK XML format version 1.0, header_type UInt64):
+//  - Points: Float64 x 3. Cells: connectivity Int32, offsets Int64 (end of each cell), types
+//    UInt8 = 5 (VTK_TRIANGLE). Point and cell arrays: Float64 with NumberOfComponents.
+//  - FieldData "TimeValue" (Float64, 1 tuple) holds the frame time, so a lone .vtu knows it too.
+//  - Encoding Base64 (default): each DataArray is format="binary": base64 of one stream made of
+//    an 8-byte UInt64 byte count followed by the raw values, in the machine's byte order (stated
+//    in byte_order). This is what vtkXMLWriter writes for uncompressed inline data, and the file
+//    stays well-formed XML. Encoding Ascii writes format="ascii" values (shortest round-trip
+//    decimal form): larger, slower, for debugging and diffing.
+// Every file is replaced atomically (io/atomic_file.hpp).
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "fpmshell/core/types.hpp"
+#include "fpmshell/io/field_frame.hpp"
+
+namespace fpmshell {
+
+enum class VtuEncoding { Base64, Ascii };
+
+/// The text of the .vtu file for `frame`. Throws std::invalid_argument when an array's size is
+/// not n * components or a triangle names a point that does not exist.
+[[nodiscard]] std::string vtu_text(const FieldFrame& frame,
+                                   VtuEncoding encoding = VtuEncoding::Base64);
+
+/// Writes `frame` to `path` (atomically; the folder must exist). Throws std::invalid_argument
+/// for an inconsistent frame (see vtu_text) and std::runtime_error when the file cannot be
+/// written.
+void write_vtu(const std::filesystem::path& path, const FieldFrame& frame,
+               VtuEncoding encoding = VtuEncoding::Base64);
+
+/// A ParaView time series (.pvd). Every add() rewrites the whole file atomically, so the file
+/// on disk always lists exactly the frames written so far.
+class PvdSeries {
+public:
+    /// Starts an empty series and writes it at once (replacing any older file at that path,
+    /// whose frames would otherwise be listed with the new ones).
+    explicit PvdSeries(std::filesystem::path pvd_path);
+
+    /// Appends a frame. `relative_vtu_path` is relative to the folder of the .pvd file
+    /// (for example "fields/frame_00003.vtu"). Throws std::runtime_error on a write failure.
+    void add(Real time, const std::string& relative_vtu_path);
+
+    [[nodiscard]] const std::filesystem::path& path() const { return pvd_path_; }
+    [[nodiscard]] std::size_t size() const { return entries_.size(); }
+    /// (time, relative path) of every frame, in the order added.
+    [[nodiscard]] const std::vector<std::pair<Real, std::string>>& entries() const {
+        return entries_;
+    }
+
+private:
+    void write() const;
+
+    std::filesystem::path pvd_path_;
+    std::vector<std::pair<Real, std::string>> entries_;
+};
+
+}  // namespace fpmshell

@@ -1,0 +1,214 @@
+// Gmsh .msh reader (see gmsh_reader.hpp). Gmsh keeps global state, so every call initialises
+// it, reads, copies what we need and finalises it again, also when an error is thrown.
+#include "fpmshell/mesh/gmsh_reader.hpp"
+
+#include <gmsh.h>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <string>
+#include <unordered_map>
+
+#include "fpmshell/core/errors.hpp"
+
+namespace fpmshell {
+namespace {
+
+/// Initialises Gmsh quietly for the lifetime of the object.
+class GmshSession {
+public:
+    GmshSession() {
+        gmsh::initialize(0, nullptr, /*readConfigFiles=*/false);
+        gmsh::option::setNumber("General.Terminal", 0);
+        gmsh::option::setNumber("General.Verbosity", 0);
+    }
+    ~GmshSession() {
+        try {
+            gmsh::finalize();
+        } catch (...) {  // NOLINT(bugprone-empty-catch): nothing sensible to do in a destructor
+        }
+    }
+    GmshSession(const GmshSession&) = delete;
+    GmshSession& operator=(const GmshSession&) = delete;
+};
+
+[[noreturn]] void fail(const std::string& path, const std::string& msg) {
+    throw InputError(input_error_text(path, 0, "", msg));
+}
+
+/// Refuses what Gmsh would not read as a mesh: Gmsh falls back to interpreting unknown content
+/// as a .geo script, which can run for ever or call the shell, so only files that start like
+/// a .msh file are handed to it.
+void check_msh_header(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) fail(path, "cannot open the mesh file");
+    std::string first;
+    while (first.empty() && std::getline(in, first)) {
+        while (!first.empty() && (first.back() == '\r' || first.back() == ' ')) first.pop_back();
+    }
+    if (first.rfind("$MeshFormat", 0) != 0)
+        fail(path, "this is not a Gmsh mesh file (it does not start with $MeshFormat); "
+                   "expected a .msh file of format 2 or 4");
+}
+
+}  // namespace
+
+MeshData read_gmsh(const std::string& path) {
+    check_msh_header(path);
+    GmshSession session;
+    MeshData mesh;
+    try {
+        gmsh::open(path);
+
+        std::vector<std::size_t> node_tags;
+        std::vector<double> coords;
+        std::vector<double> parametric;
+        gmsh::model::mesh::getNodes(node_tags, coords, parametric, -1, -1, false, false);
+        std::unordered_map<std::size_t, std::size_t> position_of_tag;  // tag -> index in coords
+        position_of_tag.reserve(node_tags.size());
+        for (std::size_t k = 0; k < node_tags.size(); ++k) position_of_tag[node_tags[k]] = k;
+
+        // Surface elements. element_triangles maps a Gmsh element tag to its triangles.
+        std::vector<int> types;
+        std::vector<std::vector<std::size_t>> element_tags;
+        std::vector<std::vector<std::size_t>> element_nodes;
+        gmsh::model::mesh::getElements(types, element_tags, element_nodes, 2, -1);
+        std::vector<std::array<std::size_t, 3>> tagged_triangles;  // Gmsh node tags
+        std::unordered_map<std::size_t, std::vector<Index>> element_triangles;
+        auto coord = [&](std::size_t tag) {
+            const auto it = position_of_tag.find(tag);
+            if (it == position_of_tag.end())
+                fail(path, "an element refers to node " + std::to_string(tag) +
+                               ", which the file does not define");
+            const std::size_t k = it->second;
+            return Vec3(coords[3 * k], coords[3 * k + 1], coords[3 * k + 2]);
+        };
+        auto add = [&](std::size_t element, std::array<std::size_t, 3> t) {
+            element_triangles[element].push_back(static_cast<Index>(tagged_triangles.size()));
+            tagged_triangles.push_back(t);
+            mesh.element_tag.push_back(static_cast<std::int64_t>(element));
+        };
+        for (std::size_t g = 0; g < types.size(); ++g) {
+            const int type = types[g];
+            const auto& tags = element_tags[g];
+            const auto& nodes = element_nodes[g];
+            if (type == 2) {
+                for (std::size_t e = 0; e < tags.size(); ++e)
+                    add(tags[e], {nodes[3 * e], nodes[3 * e + 1], nodes[3 * e + 2]});
+            } else if (type == 3) {
+                for (std::size_t e = 0; e < tags.size(); ++e) {
+                    const std::size_t a = nodes[4 * e];
+                    const std::size_t b = nodes[4 * e + 1];
+                    const std::size_t c = nodes[4 * e + 2];
+                    const std::size_t d = nodes[4 * e + 3];
+                    // Split along the shorter diagonal; both halves keep the quad's orientation.
+                    if ((coord(c) - coord(a)).squaredNorm() <= (coord(d) - coord(b)).squaredNorm()) {
+                        add(tags[e], {a, b, c});
+                        add(tags[e], {a, c, d});
+                    } else {
+                        add(tags[e], {a, b, d});
+                        add(tags[e], {b, c, d});
+                    }
+                }
+            } else {
+                std::string name;
+                int dim = 0;
+                int order = 0;
+                int n_nodes = 0;
+                int n_primary = 0;
+                std::vector<double> local;
+                gmsh::model::mesh::getElementProperties(type, name, dim, order, n_nodes, local,
+                                                        n_primary);
+                fail(path, "surface elements of Gmsh type " + std::to_string(type) + " (" + name +
+                               ") are not supported; expected 3-node triangles or 4-node "
+                               "quadrangles (set Mesh.ElementOrder = 1)");
+            }
+        }
+        if (tagged_triangles.empty())
+            fail(path, "the file holds no triangle or quadrangle elements; expected a surface "
+                       "mesh (an empty or truncated file, or a mesh of lines or volumes only?)");
+
+        // Compact renumbering in increasing tag order of the nodes used by surface elements.
+        std::vector<std::size_t> used;
+        used.reserve(3 * tagged_triangles.size());
+        for (const auto& t : tagged_triangles) used.insert(used.end(), t.begin(), t.end());
+        std::sort(used.begin(), used.end());
+        used.erase(std::unique(used.begin(), used.end()), used.end());
+        std::unordered_map<std::size_t, Index> index_of_tag;
+        index_of_tag.reserve(used.size());
+        mesh.nodes.reserve(used.size());
+        for (const std::size_t tag : used) {
+            index_of_tag[tag] = static_cast<Index>(mesh.nodes.size());
+            mesh.nodes.push_back(coord(tag));
+        }
+        mesh.triangles.reserve(tagged_triangles.size());
+        for (const auto& t : tagged_triangles)
+            mesh.triangles.push_back({index_of_tag[t[0]], index_of_tag[t[1]], index_of_tag[t[2]]});
+
+        // Physical groups.
+        gmsh::vectorpair groups;
+        gmsh::model::getPhysicalGroups(groups, -1);
+        for (const auto& [dim, tag] : groups) {
+            if (dim > 2) continue;
+            std::string name;
+            gmsh::model::getPhysicalName(dim, tag, name);
+            if (name.empty()) name = "physical_" + std::to_string(tag);
+            std::vector<Index> node_set;
+            if (dim == 2) {
+                std::vector<Index> element_set;
+                std::vector<int> entities;
+                gmsh::model::getEntitiesForPhysicalGroup(dim, tag, entities);
+                for (const int entity : entities) {
+                    std::vector<int> etypes;
+                    std::vector<std::vector<std::size_t>> etags;
+                    std::vector<std::vector<std::size_t>> enodes;
+                    gmsh::model::mesh::getElements(etypes, etags, enodes, 2, entity);
+                    for (const auto& list : etags)
+                        for (const std::size_t e : list) {
+                            const auto it = element_triangles.find(e);
+                            if (it == element_triangles.end()) continue;
+                            element_set.insert(element_set.end(), it->second.begin(),
+                                               it->second.end());
+                        }
+                }
+                for (const Index t : element_set)
+                    for (const Index v : mesh.triangles[static_cast<std::size_t>(t)])
+                        node_set.push_back(v);
+                std::sort(element_set.begin(), element_set.end());
+                element_set.erase(std::unique(element_set.begin(), element_set.end()),
+                                  element_set.end());
+                if (!element_set.empty()) {
+                    auto& es = mesh.element_sets[name];
+                    es.insert(es.end(), element_set.begin(), element_set.end());
+                    std::sort(es.begin(), es.end());
+                    es.erase(std::unique(es.begin(), es.end()), es.end());
+                }
+            } else {
+                std::vector<std::size_t> tags;
+                std::vector<double> unused;
+                gmsh::model::mesh::getNodesForPhysicalGroup(dim, tag, tags, unused);
+                for (const std::size_t t : tags) {
+                    const auto it = index_of_tag.find(t);
+                    if (it != index_of_tag.end()) node_set.push_back(it->second);
+                }
+            }
+            if (node_set.empty()) continue;
+            auto& ns = mesh.node_sets[name];
+            ns.insert(ns.end(), node_set.begin(), node_set.end());
+            std::sort(ns.begin(), ns.end());
+            ns.erase(std::unique(ns.begin(), ns.end()), ns.end());
+        }
+    } catch (const std::string& gmsh_error) {  // Gmsh 4.8 throws its message as a string
+        fail(path, "Gmsh cannot read the mesh (" + gmsh_error + ")");
+    } catch (const InputError&) {
+        throw;
+    } catch (const std::exception& e) {
+        fail(path, std::string("Gmsh cannot read the mesh (") + e.what() + ")");
+    } catch (...) {
+        fail(path, "Gmsh cannot read the mesh");
+    }
+    return mesh;
+}
+
+}  // namespace fpmshell

@@ -1,0 +1,27 @@
+// A triangle mesh with named sets, as produced by the mesh generators and the mesh file readers
+// (model-format.md `mesh`). The model reader turns it into the nodes, triangles and sets of Model.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "fpmshell/core/types.hpp"
+
+namespace fpmshell {
+
+/// Plain mesh data. Triangles are counter-clockwise about the surface normal documented by
+/// the generator (files: as written in the file). Set members are 0-based, sorted and unique.
+struct MeshData {
+    std::vector<Vec3> nodes;
+    std::vector<std::array<Index, 3>> triangles;
+    std::map<std::string, std::vector<Index>> node_sets;
+    std::map<std::string, std::vector<Index>> element_sets;
+    /// For meshes read from a file: the element number (tag/id) in the file of each triangle,
+    /// for messages (both halves of a split quadrangle carry its number). Empty for generators.
+    std::vector<std::int64_t> element_tag;
+};
+
+}  // namespace fpmshell

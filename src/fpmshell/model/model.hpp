@@ -1,0 +1,140 @@
+// The Model: everything the solver needs, as plain validated data (model-format.md).
+// It is built once by io/model_reader from the YAML file and never changes during a run
+// (the "Starter" half of the OpenRadioss split; the solver is the "Engine").
+#pragma once
+
+#include <array>
+#include <map>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "fpmshell/core/types.hpp"
+
+namespace fpmshell {
+
+/// Piecewise-linear (time, factor) curve, held flat past its ends (model-format.md `curves`).
+struct Curve {
+    std::string name;
+    std::vector<std::pair<Real, Real>> points;  ///< sorted by time, at least one point
+
+    /// Factor at time t (flat extrapolation before the first and after the last point).
+    [[nodiscard]] Real value(Real t) const;
+};
+
+enum class MaterialType { Elastic };
+
+/// Material constants (units as in the model file; never converted).
+struct Material {
+    std::string name;
+    MaterialType type = MaterialType::Elastic;
+    Real density = 0;         ///< rho
+    Real youngs_modulus = 0;  ///< E
+    Real poisson_ratio = 0;   ///< nu
+};
+
+/// Shell section of a group of elements.
+struct Section {
+    Index material = -1;       ///< index into Model::materials
+    Real thickness = 0;        ///< h
+    int thickness_points = 2;  ///< 2 = Gauss (elastic default)
+    int inplane_points = 3;    ///< 3 or 7 (theory.md §4.5)
+};
+
+enum class PrescribedKind { None, Displacement, Velocity, AngularVelocity };
+
+/// One entry of `boundary`. Fixed degrees of freedom are global: ux uy uz rx ry rz.
+/// `symmetry: x` becomes fixed = {ux, ry, rz}; `fix: all` = all six.
+struct BoundaryCondition {
+    std::vector<Index> nodes;
+    std::array<bool, 6> fixed{};  ///< ux, uy, uz, rx, ry, rz
+    PrescribedKind prescribed = PrescribedKind::None;
+    Vec3 value = Vec3::Zero();  ///< displacement, velocity or angular velocity, times the curve
+    Index curve = -1;           ///< index into Model::curves; -1 = factor 1 at all times
+};
+
+enum class LoadType { Pressure, Force, Moment };
+
+/// One entry of `loads`. Pressure acts on elements (follower, positive pushes against the
+/// element normal); force and moment act on each node of the set (global components).
+struct Load {
+    LoadType type = LoadType::Force;
+    std::vector<Index> nodes;     ///< force, moment
+    std::vector<Index> elements;  ///< pressure
+    Real pressure = 0;            ///< pressure value
+    Vec3 vector = Vec3::Zero();   ///< force or moment value per node
+    Index curve = -1;             ///< -1 = factor 1 at all times
+};
+
+/// One entry of `initial_conditions`.
+struct InitialVelocity {
+    std::vector<Index> nodes;
+    Vec3 velocity = Vec3::Zero();
+    Vec3 angular_velocity = Vec3::Zero();
+};
+
+/// Rayleigh damping (theory.md §6.5): a_m (1/s) on mass, a_s (s) on stiffness.
+struct Damping {
+    Real mass = 0;
+    Real stiffness = 0;
+};
+
+enum class SolutionMode { Dynamic, Relaxation };
+enum class BendingKernel { Bciz, Dkt };
+
+struct Control {
+    Real end_time = 0;
+    Real time_step_scale = 0.9;
+    SolutionMode mode = SolutionMode::Dynamic;
+    Real tolerance = 1e-5;  ///< relaxation convergence: residual <= tolerance * |external force|
+    BendingKernel bending = BendingKernel::Bciz;
+    Real energy_error_limit = 0.5;  ///< dynamic runs stop (exit 1) past this relative error
+    long max_relaxation_iterations = 200000;  ///< per load level
+};
+
+enum class Quantity {
+    Ux, Uy, Uz, Umag, Vx, Vy, Vz, Ax, Ay, Az, Rx, Ry, Rz,
+    ReactionX, ReactionY, ReactionZ, ForceX, ForceY, ForceZ
+};
+enum class Reduce { Single, Sum, Max, Min, Mean };
+
+struct HistoryRequest {
+    std::string name;
+    std::vector<Index> nodes;
+    Quantity quantity = Quantity::Uz;
+    Reduce reduce = Reduce::Single;  ///< Single only when the set has one node
+};
+
+struct OutputControl {
+    Real every = 0;         ///< history sampling interval (0 = every step)
+    Real fields_every = 0;  ///< VTU frame interval (0 = first and last only)
+    std::vector<HistoryRequest> histories;
+};
+
+/// The whole validated model.
+struct Model {
+    std::string title;
+    std::string source_file;  ///< path of the YAML file, for messages
+
+    std::vector<Vec3> nodes;                         ///< initial particle positions
+    std::vector<std::array<Index, 3>> triangles;     ///< counter-clockwise about the normal
+    std::map<std::string, std::vector<Index>> node_sets;     ///< sorted, unique; has "all"
+    std::map<std::string, std::vector<Index>> element_sets;  ///< sorted, unique; has "all"
+
+    std::vector<Material> materials;
+    std::vector<Section> sections;
+    std::vector<Index> element_section;  ///< section index of every triangle
+
+    std::vector<Curve> curves;
+    std::vector<BoundaryCondition> boundary;
+    std::vector<Load> loads;
+    std::vector<InitialVelocity> initial_conditions;
+    Damping damping;
+    Control control;
+    OutputControl output;
+
+    [[nodiscard]] Index n_particles() const { return static_cast<Index>(nodes.size()); }
+    [[nodiscard]] Index n_elements() const { return static_cast<Index>(triangles.size()); }
+};
+
+}  // namespace fpmshell

@@ -1,0 +1,365 @@
+#include "fpmshell/solver/explicit_solver.hpp"
+
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+#include "fpmshell/core/errors.hpp"
+#include "fpmshell/core/rotation.hpp"
+
+namespace fpmshell {
+namespace {
+
+constexpr Real k_kink_cosine = 0.9397;  // cos 20 deg: beyond it a particle gets 3 rotations (§1.3)
+
+/// Removes from w its components along the constraint directions (Gram-Schmidt on the fly).
+Vec3 remove_components(Vec3 w, const std::array<Vec3, 4>& dirs, int n_dirs) {
+    std::array<Vec3, 3> basis;
+    int nb = 0;
+    for (int i = 0; i < n_dirs && nb < 3; ++i) {
+        Vec3 d = dirs[static_cast<std::size_t>(i)];
+        for (int j = 0; j < nb; ++j) d -= d.dot(basis[static_cast<std::size_t>(j)]) * basis[static_cast<std::size_t>(j)];
+        const Real len = d.norm();
+        if (len > 1e-8) basis[static_cast<std::size_t>(nb++)] = d / len;
+    }
+    for (int j = 0; j < nb; ++j) w -= w.dot(basis[static_cast<std::size_t>(j)]) * basis[static_cast<std::size_t>(j)];
+    return w;
+}
+
+}  // namespace
+
+ExplicitSolver::ExplicitSolver(const Model& model) : model_(model), elements_(model) {
+    const std::size_t np = model.nodes.size();
+    s_.resize(np);
+    s_.x0 = model.nodes;
+    s_.x = model.nodes;
+    s_.x_prev = model.nodes;
+    // §6.1 lumped mass, §6.2 option B rotary inertia: (rho h A / 3)(A/8 + h^2/12).
+    std::vector<Vec3> normal_sum(np, Vec3::Zero());
+    Real edge_sum = 0;
+    for (std::size_t e = 0; e < model.triangles.size(); ++e) {
+        const auto& t = model.triangles[e];
+        const Section& sec = model.sections[static_cast<std::size_t>(model.element_section[e])];
+        const Material& mat = model.materials[static_cast<std::size_t>(sec.material)];
+        const Vec3& p0 = model.nodes[static_cast<std::size_t>(t[0])];
+        const Vec3& p1 = model.nodes[static_cast<std::size_t>(t[1])];
+        const Vec3& p2 = model.nodes[static_cast<std::size_t>(t[2])];
+        const Vec3 cr = (p1 - p0).cross(p2 - p0);
+        const Real area = 0.5 * cr.norm();
+        const Real h = sec.thickness;
+        const Real m3 = mat.density * h * area / 3.0;
+        for (Index p : t) {
+            s_.mass[static_cast<std::size_t>(p)] += m3;
+            s_.inertia[static_cast<std::size_t>(p)] += m3 * (area / 8.0 + h * h / 12.0);
+            normal_sum[static_cast<std::size_t>(p)] += cr;
+        }
+        edge_sum += (p1 - p0).norm() + (p2 - p1).norm() + (p0 - p2).norm();
+    }
+    if (!model.triangles.empty()) length_scale_ = edge_sum / (3.0 * static_cast<Real>(model.triangles.size()));
+    // §1.3 kink particles: an attached element normal deviates by more than 20 degrees.
+    for (std::size_t p = 0; p < np; ++p) s_.normal[p] = normal_sum[p].normalized();
+    for (const auto& t : model.triangles) {
+        const Vec3 n = (model.nodes[static_cast<std::size_t>(t[1])] - model.nodes[static_cast<std::size_t>(t[0])])
+                           .cross(model.nodes[static_cast<std::size_t>(t[2])] - model.nodes[static_cast<std::size_t>(t[0])])
+                           .normalized();
+        for (Index p : t)
+            if (n.dot(s_.normal[static_cast<std::size_t>(p)]) < k_kink_cosine) s_.full_rotation[static_cast<std::size_t>(p)] = 1;
+    }
+    // Boundary conditions -> per-particle masks and prescribed motions.
+    fixed_.assign(np, {});
+    prescribed_translation_.assign(np, 0);
+    prescribed_rotation_.assign(np, 0);
+    prescribed_rotation_applied_.assign(np, Vec3::Zero());
+    for (const BoundaryCondition& bc : model.boundary) {
+        for (Index p : bc.nodes) {
+            const std::size_t up = static_cast<std::size_t>(p);
+            for (std::size_t d = 0; d < 6; ++d) fixed_[up][d] = fixed_[up][d] || bc.fixed[d];
+            if (bc.prescribed != PrescribedKind::None) {
+                prescribed_.push_back({p, bc.prescribed, bc.value, bc.curve});
+                if (bc.prescribed == PrescribedKind::AngularVelocity)
+                    prescribed_rotation_[up] = 1;
+                else
+                    prescribed_translation_[up] = 1;
+            }
+        }
+    }
+    // Initial conditions: v^0, w^0 (the first cycle uses v^{-1/2} := v^0).
+    for (const InitialVelocity& ic : model.initial_conditions)
+        for (Index p : ic.nodes) {
+            s_.v[static_cast<std::size_t>(p)] = ic.velocity;
+            s_.omega[static_cast<std::size_t>(p)] = ic.angular_velocity;
+        }
+    for (std::size_t p = 0; p < np; ++p) {
+        for (std::size_t d = 0; d < 3; ++d)
+            if (fixed_[p][d]) s_.v[p][static_cast<Eigen::Index>(d)] = 0;
+        s_.v_prev[p] = s_.v[p];
+        s_.omega_prev[p] = s_.omega[p];
+        energy_.external_work += 0.5 * s_.mass[p] * s_.v[p].squaredNorm() +
+                                 0.5 * s_.inertia[p] * s_.omega[p].squaredNorm();
+    }
+    energy_.kinetic = energy_.external_work;
+}
+
+Real ExplicitSolver::curve_value(Index curve, Real t) const {
+    return curve < 0 ? 1.0 : model_.curves[static_cast<std::size_t>(curve)].value(t);
+}
+
+Real ExplicitSolver::curve_integral(Index curve, Real t) const {
+    if (curve < 0) return t;
+    // Exact integral of the piecewise-linear curve from 0 to t (flat outside its points).
+    const auto& pts = model_.curves[static_cast<std::size_t>(curve)].points;
+    const Curve& c = model_.curves[static_cast<std::size_t>(curve)];
+    std::vector<Real> knots{0.0};
+    for (const auto& pt : pts)
+        if (pt.first > 0 && pt.first < t) knots.push_back(pt.first);
+    knots.push_back(t);
+    Real sum = 0;
+    for (std::size_t i = 1; i < knots.size(); ++i)
+        sum += 0.5 * (c.value(knots[i - 1]) + c.value(knots[i])) * (knots[i] - knots[i - 1]);
+    return sum;
+}
+
+Real ExplicitSolver::stable_dt() const {
+    return model_.control.time_step_scale * elements_.min_critical_dt(s_.x);
+}
+
+Vec3 ExplicitSolver::acceleration(Index p) const {
+    const std::size_t up = static_cast<std::size_t>(p);
+    if (dt_center_ <= 0) return Vec3::Zero();
+    return (s_.v[up] - s_.v_prev[up]) / dt_center_;
+}
+
+void ExplicitSolver::update_normals() {
+    // §1.3 area-weighted normal, recomputed from the current positions.
+    const std::size_t np = s_.size();
+    for (std::size_t p = 0; p < np; ++p) s_.normal[p] = Vec3::Zero();
+    for (const auto& t : model_.triangles) {
+        const Vec3 cr = (s_.x[static_cast<std::size_t>(t[1])] - s_.x[static_cast<std::size_t>(t[0])])
+                            .cross(s_.x[static_cast<std::size_t>(t[2])] - s_.x[static_cast<std::size_t>(t[0])]);
+        for (Index p : t) s_.normal[static_cast<std::size_t>(p)] += cr;
+    }
+    for (std::size_t p = 0; p < np; ++p) {
+        const Real len = s_.normal[p].norm();
+        s_.normal[p] = len > 0 ? Vec3(s_.normal[p] / len) : Vec3::UnitZ();
+    }
+}
+
+void ExplicitSolver::apply_external_loads(Real t) {
+    const std::size_t np = s_.size();
+    for (std::size_t p = 0; p < np; ++p) s_.f_ext[p] = s_.m_ext[p] = Vec3::Zero();
+    for (const Load& load : model_.loads) {
+        const Real factor = curve_value(load.curve, t);
+        switch (load.type) {
+            case LoadType::Pressure: {
+                // §6.7 follower pressure: f_i = -p A_t n_t / 3 (positive pushes against n).
+                for (Index e : load.elements) {
+                    const auto& tri = model_.triangles[static_cast<std::size_t>(e)];
+                    const Vec3 cr = (s_.x[static_cast<std::size_t>(tri[1])] - s_.x[static_cast<std::size_t>(tri[0])])
+                                        .cross(s_.x[static_cast<std::size_t>(tri[2])] - s_.x[static_cast<std::size_t>(tri[0])]);
+                    const Vec3 f = (-load.pressure * factor / 6.0) * cr;  // A n = cr / 2
+                    for (Index p : tri) s_.f_ext[static_cast<std::size_t>(p)] += f;
+                }
+                break;
+            }
+            case LoadType::Force:
+                for (Index p : load.nodes) s_.f_ext[static_cast<std::size_t>(p)] += factor * load.vector;
+                break;
+            case LoadType::Moment:
+                for (Index p : load.nodes) s_.m_ext[static_cast<std::size_t>(p)] += factor * load.vector;
+                break;
+        }
+    }
+}
+
+void ExplicitSolver::cycle(Real load_time, Real dt_new_cap, bool relaxation) {
+    // 1 element loop on the path element (x^{n-1}, x^n, dtheta^{n-1/2}) -> f_int^n, m_int^n.
+    const Real a_s = model_.damping.stiffness;
+    const Real viscous_rate = (a_s > 0 && dt_half_ > 0) ? a_s / dt_half_ : 0.0;
+    const ShellElements::StepTotals tot = elements_.compute(s_, viscous_rate);
+    element_steps_ += elements_.size();
+    if (tot.failed_element >= 0) {
+        std::ostringstream msg;
+        msg << "element " << tot.failed_element + 1 << " degenerated or turned inside out at step "
+            << steps_ << " (t = " << time_ << "): the step is too large or the structure has collapsed";
+        throw RunFailure(msg.str());
+    }
+    energy_.internal += tot.strain_work;
+    energy_.damping += tot.damping_work;
+
+    // 2 tangent planes and external loads at t_n.
+    update_normals();
+    apply_external_loads(load_time);
+
+    // 3 dt_{n+1/2} = s min dt_e, growth capped at 1.2 dt_{n-1/2} (§6.4).
+    Real dt_new = model_.control.time_step_scale * tot.min_dt;
+    if (dt_half_ > 0 && !relaxation) dt_new = std::min(dt_new, 1.2 * dt_half_);
+    dt_new = std::min(dt_new, dt_new_cap);
+    if (!(dt_new > 0) || !std::isfinite(dt_new)) {
+        std::ostringstream msg;
+        msg << "the stable time step became " << dt_new << " at step " << steps_ << " (element "
+            << tot.min_dt_element + 1 << ")";
+        throw RunFailure(msg.str());
+    }
+    const Real dt_n = dt_half_ > 0 ? 0.5 * (dt_half_ + dt_new) : 0.5 * dt_new;  // start: v^{1/2} = v^0 + dt/2 a^0
+    const Real a_m = relaxation ? 0.0 : model_.damping.mass;
+    const Real c1 = 1.0 / (1.0 + 0.5 * a_m * dt_n), c2 = 1.0 - 0.5 * a_m * dt_n;
+
+    // 4 central difference (§6.6) with boundary conditions (§6.7); constraint reactions.
+    const std::size_t np = s_.size();
+    const Real t_half = load_time + (relaxation ? 0.0 : 0.5 * dt_new);
+    const Real t_next = load_time + (relaxation ? 0.0 : dt_new);
+    residual2_ = reference2_ = 0;
+    Real kinetic = 0, damping_work = 0, ext_work = 0;
+    for (std::size_t p = 0; p < np; ++p) {
+        const Vec3 force = s_.f_ext[p] - s_.f_int[p];
+        const Real m = s_.mass[p];
+        s_.v_prev[p] = s_.v[p];
+        Vec3 v_new = c1 * (c2 * s_.v[p] + (dt_n / m) * force);  // v^{n+1/2}
+        const Vec3 v_free = v_new;
+        Vec3 force_free = force;
+        for (Eigen::Index d = 0; d < 3; ++d)
+            if (fixed_[p][static_cast<std::size_t>(d)]) {
+                v_new[d] = 0;
+                force_free[d] = 0;
+            }
+        if (prescribed_translation_[p]) force_free.setZero();
+        s_.v[p] = v_new;  // prescribed values are written below
+        s_.reaction[p] = (m / (c1 * dt_n)) * (v_new - v_free);
+        residual2_ += force_free.squaredNorm();
+        reference2_ += s_.f_ext[p].squaredNorm() + (force - force_free).squaredNorm();
+
+        // Rotations in the tangent plane: w^{n+1/2} = c1 [c2 P w^{n-1/2} + dt_n P M / J].
+        const Vec3 moment = s_.m_ext[p] - s_.m_int[p];
+        std::array<Vec3, 4> dirs;
+        int nd = 0;
+        if (!s_.full_rotation[p]) dirs[static_cast<std::size_t>(nd++)] = s_.normal[p];
+        for (std::size_t d = 0; d < 3; ++d)
+            if (fixed_[p][3 + d]) dirs[static_cast<std::size_t>(nd++)] = Vec3::Unit(static_cast<Eigen::Index>(d));
+        const Vec3 moment_tangent = s_.full_rotation[p] ? moment : Vec3(moment - moment.dot(s_.normal[p]) * s_.normal[p]);
+        const Vec3 omega_tangent = s_.full_rotation[p] ? s_.omega[p] : Vec3(s_.omega[p] - s_.omega[p].dot(s_.normal[p]) * s_.normal[p]);
+        s_.omega_prev[p] = s_.omega[p];
+        const Real j = s_.inertia[p];
+        const Vec3 w_free = c1 * (c2 * omega_tangent + (dt_n / j) * moment_tangent);
+        const Vec3 w_new = remove_components(w_free, dirs, nd);
+        const Vec3 moment_free = prescribed_rotation_[p] ? Vec3::Zero() : remove_components(moment_tangent, dirs, nd);
+        s_.omega[p] = w_new;
+        s_.reaction_moment[p] = (j / (c1 * dt_n)) * (w_new - w_free);
+        const Real ls2 = length_scale_ * length_scale_;
+        residual2_ += moment_free.squaredNorm() / ls2;
+        reference2_ += (s_.m_ext[p].squaredNorm() + (moment_tangent - moment_free).squaredNorm()) / ls2;
+    }
+    for (const Prescribed& pr : prescribed_) {
+        const std::size_t p = static_cast<std::size_t>(pr.particle);
+        const Real m = s_.mass[p];
+        const Vec3 v_before = s_.v[p];
+        if (pr.kind == PrescribedKind::Velocity) {
+            if (relaxation) {
+                const Vec3 target = s_.x0[p] + curve_integral(pr.curve, load_time) * pr.value;
+                s_.v[p] = (target - s_.x[p]) / dt_new;
+            } else {
+                s_.v[p] = curve_value(pr.curve, t_half) * pr.value;
+            }
+        } else if (pr.kind == PrescribedKind::Displacement) {
+            const Vec3 target = s_.x0[p] + curve_value(pr.curve, t_next) * pr.value;
+            s_.v[p] = (target - s_.x[p]) / dt_new;
+        } else {  // angular velocity: imposed about a fixed axis, no tangent-plane projection
+            if (relaxation) {
+                const Vec3 target = curve_integral(pr.curve, load_time) * pr.value;
+                s_.omega[p] = (target - prescribed_rotation_applied_[p]) / dt_new;
+            } else {
+                s_.omega[p] = curve_value(pr.curve, t_half) * pr.value;
+            }
+            prescribed_rotation_applied_[p] += dt_new * s_.omega[p];
+            continue;
+        }
+        s_.reaction[p] += (m / (c1 * dt_n)) * (s_.v[p] - v_before);
+    }
+    for (std::size_t p = 0; p < np; ++p) {
+        // Energies at t_n: leapfrog kinetic energy, work of loads and reactions over
+        // [t_{n-1}, t_n] (trapezoidal), mass-damping dissipation over dt_n.
+        kinetic += 0.5 * s_.mass[p] * s_.v_prev[p].dot(s_.v[p]) +
+                   0.5 * s_.inertia[p] * s_.omega_prev[p].dot(s_.omega[p]);
+        ext_work += 0.5 * (s_.f_ext_prev[p] + s_.f_ext[p] + s_.reaction_prev[p] + s_.reaction[p])
+                              .dot(s_.x[p] - s_.x_prev[p]) +
+                    0.5 * (s_.m_ext_prev[p] + s_.m_ext[p]).dot(s_.dtheta[p]);
+        if (a_m > 0) {
+            const Vec3 vbar = 0.5 * (s_.v_prev[p] + s_.v[p]);
+            const Vec3 wbar = 0.5 * (s_.omega_prev[p] + s_.omega[p]);
+            damping_work += a_m * dt_n * (s_.mass[p] * vbar.squaredNorm() + s_.inertia[p] * wbar.squaredNorm());
+        }
+        s_.f_ext_prev[p] = s_.f_ext[p];
+        s_.m_ext_prev[p] = s_.m_ext[p];
+        s_.reaction_prev[p] = s_.reaction[p];
+    }
+    energy_.kinetic = kinetic;
+    energy_.external_work += ext_work;
+    energy_.damping += damping_work;
+
+    // 5 positions x^{n+1} = x^n + dt v^{n+1/2}; rotation increments for the next path element.
+    for (std::size_t p = 0; p < np; ++p) {
+        s_.x_prev[p] = s_.x[p];
+        s_.x[p] += dt_new * s_.v[p];
+        s_.dtheta[p] = dt_new * s_.omega[p];
+        s_.rotation[p] = rotation_matrix(s_.dtheta[p]) * s_.rotation[p];
+    }
+    dt_center_ = dt_n;
+    dt_half_ = dt_new;
+    ++steps_;
+    check_state();
+}
+
+void ExplicitSolver::check_state() const {
+    const std::size_t np = s_.size();
+    for (std::size_t p = 0; p < np; ++p) {
+        if (!s_.x[p].allFinite() || !s_.omega[p].allFinite() || !s_.f_int[p].allFinite()) {
+            std::ostringstream msg;
+            msg << "the solution became NaN or infinite at step " << steps_ << " (t = " << time_
+                << ") at particle " << p + 1 << " (internal force " << s_.f_int[p].transpose() << ")";
+            throw RunFailure(msg.str());
+        }
+    }
+}
+
+void ExplicitSolver::step(Real max_dt) {
+    cycle(time_, max_dt, false);
+    time_ += dt_half_;
+    const Real err = energy_.error();
+    if (steps_ > 10 && std::abs(err) > model_.control.energy_error_limit) {
+        std::ostringstream msg;
+        msg << "the energy balance error reached " << err * 100 << " % at step " << steps_
+            << " (t = " << time_ << "), beyond the limit of " << model_.control.energy_error_limit * 100
+            << " % (control.energy_error_limit): the run is unstable";
+        throw RunFailure(msg.str());
+    }
+}
+
+ExplicitSolver::RelaxResult ExplicitSolver::relax(Real load_time) {
+    RelaxResult res;
+    time_ = load_time;
+    const Real tol = model_.control.tolerance;
+    Real ke_prev = 0;
+    for (long it = 1; it <= model_.control.max_relaxation_iterations; ++it) {
+        cycle(load_time, std::numeric_limits<Real>::infinity(), true);
+        res.iterations = it;
+        res.residual_ratio = reference2_ > 0 ? std::sqrt(residual2_ / reference2_) : 0.0;
+        // Kinetic damping: at a peak of the kinetic energy, stop every particle.
+        Real ke = 0;
+        for (std::size_t p = 0; p < s_.size(); ++p)
+            ke += s_.mass[p] * s_.v[p].squaredNorm() + s_.inertia[p] * s_.omega[p].squaredNorm();
+        if (ke < ke_prev) {
+            for (std::size_t p = 0; p < s_.size(); ++p) {
+                if (!prescribed_translation_[p]) s_.v[p].setZero();
+                if (!prescribed_rotation_[p]) s_.omega[p].setZero();
+            }
+            ke = 0;
+        }
+        ke_prev = ke;
+        if (it > 2 && (res.residual_ratio <= tol || reference2_ == 0)) {
+            res.converged = true;
+            break;
+        }
+    }
+    return res;
+}
+
+}  // namespace fpmshell

@@ -1,0 +1,85 @@
+// The explicit FPM cycle (theory.md §6.8): element loop -> external loads -> variable-step
+// central difference for translations and tangent-plane rotations -> boundary conditions ->
+// energy balance. Also dynamic relaxation (control.mode: relaxation) built on the same cycle.
+#pragma once
+
+#include <optional>
+#include <vector>
+
+#include "fpmshell/core/types.hpp"
+#include "fpmshell/model/model.hpp"
+#include "fpmshell/solver/energy_balance.hpp"
+#include "fpmshell/solver/particle_state.hpp"
+#include "fpmshell/solver/shell_elements.hpp"
+
+namespace fpmshell {
+
+class ExplicitSolver {
+public:
+    /// Sets up masses (§6.1), rotary inertia (§6.2 option B), kink particles (§1.3), boundary
+    /// masks and initial velocities. The model must outlive the solver.
+    explicit ExplicitSolver(const Model& model);
+
+    /// One dynamic cycle t_n -> t_{n+1}; the step is the stable one, limited to max_dt.
+    /// Throws RunFailure (with step, particle or element) when the state becomes invalid.
+    void step(Real max_dt);
+
+    struct RelaxResult {
+        bool converged = false;
+        long iterations = 0;
+        Real residual_ratio = 0;  ///< |out-of-balance| / |external + reactions|
+    };
+    /// Dynamic relaxation to static equilibrium under the loads at load parameter load_time
+    /// (kinetic damping: velocities are zeroed at every peak of the kinetic energy).
+    RelaxResult relax(Real load_time);
+
+    /// Stable step for the current geometry: time_step_scale * min element step (§6.4).
+    [[nodiscard]] Real stable_dt() const;
+
+    [[nodiscard]] Real time() const { return time_; }
+    [[nodiscard]] long steps() const { return steps_; }
+    [[nodiscard]] long element_steps() const { return element_steps_; }
+    [[nodiscard]] Real last_dt() const { return dt_half_; }
+    [[nodiscard]] const ParticleState& state() const { return s_; }
+    [[nodiscard]] const ShellElements& elements() const { return elements_; }
+    [[nodiscard]] const EnergyBalance& energy() const { return energy_; }
+    [[nodiscard]] const Model& model() const { return model_; }
+    /// a^n = (v^{n+1/2} - v^{n-1/2}) / dt_n of the last cycle.
+    [[nodiscard]] Vec3 acceleration(Index p) const;
+
+private:
+    struct Prescribed {
+        Index particle;
+        PrescribedKind kind;
+        Vec3 value;
+        Index curve;
+    };
+
+    /// The cycle shared by dynamic and relaxation modes. load_time: time at which loads and
+    /// prescribed motions are evaluated; advance: whether time moves on (dynamic) or not.
+    void cycle(Real load_time, Real dt_new_cap, bool relaxation);
+    void update_normals();
+    void apply_external_loads(Real t);
+    [[nodiscard]] Real curve_value(Index curve, Real t) const;
+    [[nodiscard]] Real curve_integral(Index curve, Real t) const;
+    void check_state() const;
+
+    const Model& model_;
+    ShellElements elements_;
+    ParticleState s_;
+    EnergyBalance energy_;
+    std::vector<std::array<bool, 6>> fixed_;  ///< per particle, ux uy uz rx ry rz
+    std::vector<std::uint8_t> prescribed_translation_, prescribed_rotation_;
+    std::vector<Prescribed> prescribed_;
+    std::vector<Vec3> prescribed_rotation_applied_;  ///< relaxation: rotation imposed so far
+    Real time_ = 0;
+    Real dt_half_ = 0;       ///< dt_{n-1/2} (0 before the first step)
+    Real dt_center_ = 0;     ///< dt_n of the last cycle
+    long steps_ = 0;
+    long element_steps_ = 0;
+    Real length_scale_ = 1;  ///< mean edge length: converts moments to forces in residuals
+    // Relaxation residual of the last cycle.
+    Real residual2_ = 0, reference2_ = 0;
+};
+
+}  // namespace fpmshell

@@ -1,0 +1,37 @@
+// State of the particles, one contiguous array per field (structure of arrays, style.md §4).
+// Time levels: x = x^n, x_prev = x^{n-1}, v = v^{n-1/2} (before the update) / v^{n+1/2} (after),
+// dtheta = rotation increment over the last step (input of the next path element, §6.6).
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "fpmshell/core/types.hpp"
+
+namespace fpmshell {
+
+struct ParticleState {
+    std::vector<Vec3> x0;         ///< initial positions
+    std::vector<Vec3> x;          ///< x^n
+    std::vector<Vec3> x_prev;     ///< x^{n-1}: base configuration of the path element
+    std::vector<Vec3> v;          ///< half-step velocity
+    std::vector<Vec3> v_prev;     ///< previous half-step velocity (accelerations, kinetic energy)
+    std::vector<Vec3> omega;      ///< half-step angular velocity (global vector, tangent plane)
+    std::vector<Vec3> omega_prev;
+    std::vector<Vec3> dtheta;     ///< rotation increment of the last step (global vector)
+    std::vector<Mat3> rotation;   ///< accumulated rotation (output only)
+    std::vector<Vec3> normal;     ///< tangent-plane normal n_alpha at t_n (§1.3)
+    std::vector<Vec3> f_int, m_int;      ///< internal force / moment at t_n
+    std::vector<Vec3> f_ext, m_ext;      ///< external force / moment at t_n
+    std::vector<Vec3> f_ext_prev, m_ext_prev;
+    std::vector<Vec3> reaction, reaction_moment;  ///< constraint force / moment at t_n
+    std::vector<Vec3> reaction_prev;
+    std::vector<Real> mass;       ///< m_alpha (§6.1)
+    std::vector<Real> inertia;    ///< J_alpha (§6.2, option B)
+    std::vector<std::uint8_t> full_rotation;  ///< kink particle: 3 rotations, no projection (§1.3)
+
+    void resize(std::size_t n);
+    [[nodiscard]] std::size_t size() const { return x.size(); }
+};
+
+}  // namespace fpmshell

@@ -1,0 +1,150 @@
+#include "fpmshell/solver/shell_elements.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace fpmshell {
+
+ShellElements::ShellElements(const Model& model)
+    : tri_(model.triangles), section_(model.element_section),
+      stiffness_damping_(model.damping.stiffness) {
+    for (const Section& sec : model.sections) {
+        const Material& mat = model.materials[static_cast<std::size_t>(sec.material)];
+        ShellRule rule;
+        rule.thickness = sec.thickness;
+        rule.inplane = triangle_rule(sec.inplane_points);
+        rule.through = thickness_rule(sec.thickness_points);
+        rule.bending = model.control.bending;
+        rules_.push_back(rule);
+        materials_.emplace_back(mat.youngs_modulus, mat.poisson_ratio);
+        wave_speed_.push_back(std::sqrt(mat.youngs_modulus /
+                                        (mat.density * (1.0 - mat.poisson_ratio * mat.poisson_ratio))));
+    }
+    const std::size_t ne = tri_.size();
+    point_offset_.resize(ne + 1);
+    point_offset_[0] = 0;
+    for (std::size_t e = 0; e < ne; ++e)
+        point_offset_[e + 1] =
+            point_offset_[e] + static_cast<std::size_t>(rules_[static_cast<std::size_t>(section_[e])].n_points());
+    points_.assign(point_offset_[ne], MaterialPoint{});
+    slot_force_.assign(3 * ne, Vec3::Zero());
+    slot_moment_.assign(3 * ne, Vec3::Zero());
+    elem_work_.assign(ne, 0.0);
+    elem_damp_work_.assign(ne, 0.0);
+    elem_dt_.assign(ne, 0.0);
+    elem_failed_.assign(ne, 0);
+    membrane_force_.assign(ne, Voigt3::Zero());
+    bending_moment_.assign(ne, Voigt3::Zero());
+    // CSR particle -> slots, slots in increasing element order (fixed summation order).
+    const std::size_t np = model.nodes.size();
+    csr_begin_.assign(np + 1, 0);
+    for (const auto& t : tri_)
+        for (Index p : t) ++csr_begin_[static_cast<std::size_t>(p) + 1];
+    for (std::size_t p = 0; p < np; ++p) csr_begin_[p + 1] += csr_begin_[p];
+    csr_slot_.assign(static_cast<std::size_t>(csr_begin_[np]), 0);
+    std::vector<Index> fill(csr_begin_.begin(), csr_begin_.end() - 1);
+    for (std::size_t e = 0; e < ne; ++e)
+        for (int i = 0; i < 3; ++i)
+            csr_slot_[static_cast<std::size_t>(fill[static_cast<std::size_t>(tri_[e][static_cast<std::size_t>(i)])]++)] =
+                static_cast<Index>(3 * e + static_cast<std::size_t>(i));
+}
+
+Real ShellElements::element_dt(Index e, const std::vector<Vec3>& x) const {
+    const auto& t = tri_[static_cast<std::size_t>(e)];
+    const Vec3& p0 = x[static_cast<std::size_t>(t[0])];
+    const Vec3& p1 = x[static_cast<std::size_t>(t[1])];
+    const Vec3& p2 = x[static_cast<std::size_t>(t[2])];
+    const Real two_area = (p1 - p0).cross(p2 - p0).norm();
+    const Real lmax = std::sqrt(std::max({(p1 - p0).squaredNorm(), (p2 - p1).squaredNorm(),
+                                          (p0 - p2).squaredNorm()}));
+    const std::size_t sec = static_cast<std::size_t>(section_[static_cast<std::size_t>(e)]);
+    Real dt = (two_area / lmax) / wave_speed_[sec];  // §6.4, L_c = 2A / l_max
+    if (stiffness_damping_ > 0) {  // §6.4: dt <= (2/w)(sqrt(1+xi^2) - xi), w = 2/dt
+        const Real xi = stiffness_damping_ / dt;
+        dt *= std::sqrt(1.0 + xi * xi) - xi;
+    }
+    return dt;
+}
+
+Real ShellElements::min_critical_dt(const std::vector<Vec3>& x, Index* where) const {
+    Real best = std::numeric_limits<Real>::infinity();
+    Index arg = -1;
+    for (Index e = 0; e < size(); ++e) {
+        const Real dt = element_dt(e, x);
+        if (dt < best) {
+            best = dt;
+            arg = e;
+        }
+    }
+    if (where) *where = arg;
+    return best;
+}
+
+ShellElements::StepTotals ShellElements::compute(ParticleState& s, Real viscous_rate) {
+    const Index ne = size();
+    // Phase 1: every triangle writes its 3 corner loads into its own slots.
+#pragma omp parallel for schedule(static)
+    for (Index e = 0; e < ne; ++e) {
+        const std::size_t ue = static_cast<std::size_t>(e);
+        const auto& t = tri_[ue];
+        std::array<Vec3, 3> base, cur, dth;
+        for (std::size_t i = 0; i < 3; ++i) {
+            const std::size_t p = static_cast<std::size_t>(t[i]);
+            base[i] = s.x_prev[p];
+            cur[i] = s.x[p];
+            dth[i] = s.dtheta[p];
+        }
+        const ReversedTriangle rt = reverse_motion(base, cur, dth);
+        elem_dt_[ue] = element_dt(e, s.x);
+        if (rt.degenerate || rt.normal_cosine < 0 || !std::isfinite(rt.area)) {
+            elem_failed_[ue] = 1;
+            elem_work_[ue] = elem_damp_work_[ue] = 0;
+            for (std::size_t i = 0; i < 3; ++i) slot_force_[3 * ue + i] = slot_moment_[3 * ue + i] = Vec3::Zero();
+            continue;
+        }
+        elem_failed_[ue] = 0;
+        const std::size_t sec = static_cast<std::size_t>(section_[ue]);
+        std::span<MaterialPoint> pts(points_.data() + point_offset_[ue],
+                                     point_offset_[ue + 1] - point_offset_[ue]);
+        const ShellTriangleLoads loads =
+            shell_triangle_loads(rt, rules_[sec], materials_[sec], pts, viscous_rate);
+        for (std::size_t i = 0; i < 3; ++i) {
+            slot_force_[3 * ue + i] = loads.force[i];
+            slot_moment_[3 * ue + i] = loads.moment[i];
+        }
+        elem_work_[ue] = loads.strain_work;
+        elem_damp_work_[ue] = loads.damping_work;
+        membrane_force_[ue] = loads.membrane_force;
+        bending_moment_[ue] = loads.bending_moment;
+    }
+    // Phase 2: every particle sums its slots in a fixed order (bitwise thread-independent).
+    const Index np = static_cast<Index>(s.size());
+#pragma omp parallel for schedule(static)
+    for (Index p = 0; p < np; ++p) {
+        const std::size_t up = static_cast<std::size_t>(p);
+        Vec3 f = Vec3::Zero(), m = Vec3::Zero();
+        for (Index k = csr_begin_[up]; k < csr_begin_[up + 1]; ++k) {
+            const std::size_t slot = static_cast<std::size_t>(csr_slot_[static_cast<std::size_t>(k)]);
+            f += slot_force_[slot];
+            m += slot_moment_[slot];
+        }
+        s.f_int[up] = f;
+        s.m_int[up] = m;
+    }
+    StepTotals tot;
+    tot.min_dt = std::numeric_limits<Real>::infinity();
+    for (Index e = 0; e < ne; ++e) {
+        const std::size_t ue = static_cast<std::size_t>(e);
+        if (elem_failed_[ue] && tot.failed_element < 0) tot.failed_element = e;
+        tot.strain_work += elem_work_[ue];
+        tot.damping_work += elem_damp_work_[ue];
+        if (elem_dt_[ue] < tot.min_dt) {
+            tot.min_dt = elem_dt_[ue];
+            tot.min_dt_element = e;
+        }
+    }
+    return tot;
+}
+
+}  // namespace fpmshell
