@@ -22,6 +22,7 @@ ReversedTriangle reverse_motion(const std::array<Vec3, 3>& base,
     }
     const Vec3 na = na_raw.normalized(), n = n_raw.normalized();
     out.area = 0.5 * na_raw.norm();
+    out.area_ratio = n_raw.norm() / na_raw.norm();
     out.normal_cosine = na.dot(n);
     // §2.2 reverse out-of-plane rotation R_op = R_{na -> n}. The trig-free form is used while
     // the tilt is below ~154 deg; beyond it (only in kernel tests: a stable step never tilts an

@@ -18,6 +18,7 @@ struct ReversedTriangle {
     std::array<Vec2, 3> theta;    ///< deformation rotations [theta_x, theta_y], §2.6
     Mat3 frame_current;           ///< T_t (rows x_t, y_t, z_t): local -> global is T_t^T, §2.7
     Real normal_cosine = 1;       ///< n_a . n: the solver treats < 0 (a tilt over 90 deg in one step) as a failure
+    Real area_ratio = 1;          ///< current / base area: far from 1 within one step = divergence
     bool degenerate = false;      ///< zero-area base or current triangle (§2.8)
 };
 

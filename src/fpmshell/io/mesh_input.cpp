@@ -7,8 +7,10 @@
 #include <filesystem>
 
 #include "fpmshell/core/errors.hpp"
+#include "fpmshell/mesh/abaqus_reader.hpp"
 #include "fpmshell/mesh/generators.hpp"
 #include "fpmshell/mesh/gmsh_reader.hpp"
+#include "fpmshell/mesh/lsdyna_reader.hpp"
 
 namespace fpmshell {
 namespace {
@@ -144,15 +146,13 @@ MeshData from_file(const YamlValue& mesh, const std::string& base_dir) {
     const std::string ext = lower_extension(path);
     try {
         if (ext == ".msh") return read_gmsh(path.string());
+        if (ext == ".inp") return read_abaqus(path.string());
+        if (ext == ".k" || ext == ".key" || ext == ".dyn") return read_lsdyna(path.string());
     } catch (const InputError& e) {
         file.fail(std::string("cannot use this mesh: ") + e.what());
     }
-    if (ext == ".inp" || ext == ".k" || ext == ".key" || ext == ".dyn")
-        file.fail("the " + std::string(ext == ".inp" ? "Abaqus .inp" : "LS-DYNA keyword") +
-                  " mesh format is not supported yet in this version of fpmshell; convert the "
-                  "mesh to Gmsh .msh");
     file.fail("unknown mesh file type '" + ext +
-              "'; expected a Gmsh .msh file (Abaqus .inp and LS-DYNA .k are planned)");
+              "'; expected a Gmsh .msh, an Abaqus .inp or an LS-DYNA .k file");
 }
 
 }  // namespace

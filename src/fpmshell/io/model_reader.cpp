@@ -11,7 +11,7 @@
 #include <filesystem>
 #include <fstream>
 #include <optional>
-#include <sstream>
+#include <vector>
 
 #include "fpmshell/core/errors.hpp"
 #include "fpmshell/io/mesh_input.hpp"
@@ -222,6 +222,7 @@ public:
             const auto points = def.list("[time, factor] pairs");
             if (points.empty())
                 def.fail("a curve needs at least one [time, factor] pair, e.g. [[0, 0], [1, 1]]");
+            std::string previous_time;
             for (const YamlValue& p : points) {
                 const auto tf = p.list("two numbers [time, factor]");
                 if (tf.size() != 2)
@@ -231,9 +232,9 @@ public:
                 const Real t = tf[0].real();
                 const Real f = tf[1].real();
                 if (!c.points.empty() && !(t > c.points.back().first))
-                    tf[0].fail("the times of a curve must increase strictly, but " +
-                               tf[0].describe() + " follows " +
-                               std::to_string(c.points.back().first));
+                    tf[0].fail("the times of a curve must increase strictly, but time " +
+                               tf[0].describe() + " follows time " + previous_time);
+                previous_time = tf[0].describe();
                 c.points.emplace_back(t, f);
             }
             model_.curves.push_back(c);
@@ -428,22 +429,25 @@ private:
 YAML::Node load_yaml(const std::string& path) {
     std::error_code ec;
     if (std::filesystem::is_directory(path, ec))
-        throw InputError(input_error_text(path, 0, "",
-                                          "cannot open the model file: it is a "
-                                          "folder; expected a YAML file"));
+        throw InputError(input_error_text(path, 0, "", "cannot open the model file: it is a "
+                                                       "folder; expected a YAML file"));
     std::ifstream in(path, std::ios::binary);
     if (!in)
-        throw InputError(input_error_text(
-            path, 0, "", std::string("cannot open the model file (") + std::strerror(errno) + ")"));
-    const auto size = std::filesystem::file_size(path, ec);
-    if (!ec && size > k_max_model_file_bytes)
         throw InputError(input_error_text(path, 0, "",
-                                          "the model file is larger than 64 MiB; "
-                                          "put big data in a mesh file"));
-    std::ostringstream content;
-    content << in.rdbuf();
+                                          std::string("cannot open the model file (") +
+                                              std::strerror(errno) + ")"));
+    // Read at most the limit (+1 byte to notice more): also safe on pipes and devices.
+    std::string content;
+    std::vector<char> chunk(1U << 16U);
+    while (in && content.size() <= k_max_model_file_bytes) {
+        in.read(chunk.data(), static_cast<std::streamsize>(chunk.size()));
+        content.append(chunk.data(), static_cast<std::size_t>(in.gcount()));
+    }
+    if (content.size() > k_max_model_file_bytes)
+        throw InputError(input_error_text(path, 0, "", "the model file is larger than 64 MiB; "
+                                                       "put big data in a mesh file"));
     try {
-        return YAML::Load(content.str());
+        return YAML::Load(content);
     } catch (const YAML::Exception& e) {
         const int line = e.mark.is_null() ? 0 : e.mark.line + 1;
         throw InputError(
@@ -472,10 +476,11 @@ Model read_model(const std::string& path, const std::vector<std::string>& set_ov
     Model model;
     model.source_file = path;
     const YamlMap top = YamlValue(ctx, root, "").map(k_top_keys);
-    for (const char* later : {"rigid_bodies", "contact"}) {
-        const auto v = top.find(later);
+    for (const auto& [key, what] : {std::pair<const char*, const char*>{"rigid_bodies", "the key rigid_bodies (impactors)"},
+                                    {"contact", "the key contact"}}) {
+        const auto v = top.find(key);
         if (v && !v->is_null() && !(v->is_list() && v->node().size() == 0))
-            v->fail(not_supported("`" + std::string(later) + "`"));
+            v->fail(not_supported(what) + "; remove it");
     }
     for (const char* required : {"mesh", "materials", "sections", "control"})
         if (!top.has(required))

@@ -25,20 +25,21 @@ std::string lower(std::string s) {
     return s;
 }
 
+/// Optimal string alignment distance (insertions, deletions, substitutions and swaps of
+/// neighbouring letters each cost 1), for "did you mean" suggestions.
 std::size_t edit_distance(const std::string& a, const std::string& b) {
-    std::vector<std::size_t> row(b.size() + 1);
-    for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+    std::vector<std::vector<std::size_t>> d(a.size() + 1, std::vector<std::size_t>(b.size() + 1));
+    for (std::size_t i = 0; i <= a.size(); ++i) d[i][0] = i;
+    for (std::size_t j = 0; j <= b.size(); ++j) d[0][j] = j;
     for (std::size_t i = 1; i <= a.size(); ++i) {
-        std::size_t diagonal = row[0];
-        row[0] = i;
         for (std::size_t j = 1; j <= b.size(); ++j) {
-            const std::size_t up = row[j];
-            row[j] =
-                std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0U : 1U)});
-            diagonal = up;
+            const std::size_t cost = a[i - 1] == b[j - 1] ? 0U : 1U;
+            d[i][j] = std::min({d[i - 1][j] + 1, d[i][j - 1] + 1, d[i - 1][j - 1] + cost});
+            if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1])
+                d[i][j] = std::min(d[i][j], d[i - 2][j - 2] + 1);
         }
     }
-    return row[b.size()];
+    return d[a.size()][b.size()];
 }
 
 enum class NumberStatus { Ok, NotANumber, NotFinite, OutOfRange };
@@ -87,8 +88,11 @@ std::string join_key(const std::string& parent, const std::string& key) {
 std::string closest_name(const std::string& word, const std::vector<std::string>& candidates) {
     std::string best;
     std::size_t best_distance = 0;
+    constexpr std::size_t k_max_length = 64;  // suggestions are for typos in short names
+    if (word.size() > k_max_length) return best;
     const std::string lw = lower(word);
     for (const auto& c : candidates) {
+        if (c.size() > k_max_length) continue;
         if (lower(c) == lw) return c;
         const std::size_t d = edit_distance(lw, lower(c));
         const std::size_t limit = std::max<std::size_t>(1, std::min(word.size(), c.size()) / 3);
@@ -138,7 +142,7 @@ void YamlContext::fail_at(int line, const std::string& path, const std::string& 
 
 // ---- YamlValue ----
 
-void YamlValue::fail(const std::string& message) const { ctx_->fail(node_, path_, message); }
+void YamlValue::fail(const std::string& message) const { ctx_->fail_at(line(), path_, message); }
 
 std::string YamlValue::describe() const {
     if (!node_.IsDefined() || node_.IsNull()) return "nothing";
@@ -272,7 +276,7 @@ YamlMap::YamlMap(const YamlValue& self, const std::vector<std::string>* allowed,
                      "unknown key" + did_you_mean(name, *allowed) + "; valid keys " + where +
                          " are " + join_names(*allowed));
         }
-        entries_.emplace_back(name, YamlValue(ctx, kv.second, path));
+        entries_.emplace_back(name, YamlValue(ctx, kv.second, path, yaml_line(key)));
     }
 }
 
@@ -286,8 +290,8 @@ std::optional<YamlValue> YamlMap::find(const std::string& key) const {
 
 YamlValue YamlMap::at(const std::string& key, const std::string& expected) const {
     if (auto v = find(key)) return *v;
-    self_.context().fail(
-        self_.node(), join_key(self_.path(), key),
+    self_.context().fail_at(
+        self_.line(), join_key(self_.path(), key),
         "is required but missing" + (expected.empty() ? std::string() : "; expected " + expected));
 }
 

@@ -62,13 +62,17 @@ class YamlMap;
 /// A value of the tree with its key path. Accessors check the type and throw InputError.
 class YamlValue {
 public:
-    YamlValue(const YamlContext& ctx, YAML::Node node, std::string path)
-        : ctx_(&ctx), node_(std::move(node)), path_(std::move(path)) {}
+    /// `key_line`: line of the key that holds this value in its map (0: none, a list item or
+    /// the root); messages about the value point there, since block maps and lists start on
+    /// the line after their key.
+    YamlValue(const YamlContext& ctx, YAML::Node node, std::string path, int key_line = 0)
+        : ctx_(&ctx), node_(std::move(node)), path_(std::move(path)), key_line_(key_line) {}
 
     [[nodiscard]] const std::string& path() const { return path_; }
     [[nodiscard]] const YAML::Node& node() const { return node_; }
     [[nodiscard]] const YamlContext& context() const { return *ctx_; }
-    [[nodiscard]] int line() const { return yaml_line(node_); }
+    /// Line of the key holding the value, else of the value itself (1-based, 0 if none).
+    [[nodiscard]] int line() const { return key_line_ > 0 ? key_line_ : yaml_line(node_); }
     [[noreturn]] void fail(const std::string& message) const;
 
     [[nodiscard]] bool is_map() const { return node_.IsMap(); }
@@ -105,6 +109,7 @@ private:
     const YamlContext* ctx_;
     YAML::Node node_;
     std::string path_;
+    int key_line_ = 0;
 };
 
 /// A YAML map with its entries in file order; duplicate and non-scalar keys are rejected.

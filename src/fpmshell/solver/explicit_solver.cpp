@@ -179,8 +179,11 @@ void ExplicitSolver::cycle(Real load_time, Real dt_new_cap, bool relaxation) {
     element_steps_ += elements_.size();
     if (tot.failed_element >= 0) {
         std::ostringstream msg;
-        msg << "element " << tot.failed_element + 1 << " degenerated or turned inside out at step "
-            << steps_ << " (t = " << time_ << "): the step is too large or the structure has collapsed";
+        msg << "element " << tot.failed_element + 1 << " (particles";
+        for (Index p : model_.triangles[static_cast<std::size_t>(tot.failed_element)]) msg << " " << p + 1;
+        msg << ") was crushed, stretched or turned over within one step at step " << steps_
+            << " (t = " << time_ << "): the solution has diverged (load beyond what the model can carry, "
+            << "or a time step too large)";
         throw RunFailure(msg.str());
     }
     energy_.internal += tot.strain_work;
@@ -200,7 +203,11 @@ void ExplicitSolver::cycle(Real load_time, Real dt_new_cap, bool relaxation) {
             << tot.min_dt_element + 1 << ")";
         throw RunFailure(msg.str());
     }
-    const Real dt_n = dt_half_ > 0 ? 0.5 * (dt_half_ + dt_new) : 0.5 * dt_new;  // start: v^{1/2} = v^0 + dt/2 a^0
+    // Start (and restart after a kinetic-damping reset, when v^{n-1/2} = 0 stands for v^n = 0):
+    // v^{1/2} = v^0 + dt/2 a^0. A full dt_n there would make the relaxation a gradient descent
+    // with step dt^2/m, unstable for dt omega_max > sqrt(2).
+    const Real dt_n = (dt_half_ > 0 && !restart_) ? 0.5 * (dt_half_ + dt_new) : 0.5 * dt_new;
+    restart_ = false;
     const Real a_m = relaxation ? 0.0 : model_.damping.mass;
     const Real c1 = 1.0 / (1.0 + 0.5 * a_m * dt_n), c2 = 1.0 - 0.5 * a_m * dt_n;
 
@@ -352,6 +359,7 @@ ExplicitSolver::RelaxResult ExplicitSolver::relax(Real load_time) {
                 if (!prescribed_rotation_[p]) s_.omega[p].setZero();
             }
             ke = 0;
+            restart_ = true;
         }
         ke_prev = ke;
         if (it > 2 && (res.residual_ratio <= tol || reference2_ == 0)) {

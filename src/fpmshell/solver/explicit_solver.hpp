@@ -76,6 +76,7 @@ private:
     Real dt_half_ = 0;       ///< dt_{n-1/2} (0 before the first step)
     Real dt_center_ = 0;     ///< dt_n of the last cycle
     long steps_ = 0;
+    bool restart_ = false;   ///< next cycle restarts from rest (kinetic damping)
     long element_steps_ = 0;
     Real length_scale_ = 1;  ///< mean edge length: converts moments to forces in residuals
     // Relaxation residual of the last cycle.

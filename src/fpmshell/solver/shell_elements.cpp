@@ -97,7 +97,9 @@ ShellElements::StepTotals ShellElements::compute(ParticleState& s, Real viscous_
         }
         const ReversedTriangle rt = reverse_motion(base, cur, dth);
         elem_dt_[ue] = element_dt(e, s.x);
-        if (rt.degenerate || rt.normal_cosine < 0 || !std::isfinite(rt.area)) {
+        // A tilt over 90 deg or an area change by a factor 2 within one step is no deformation a
+        // stable step can produce: the run has diverged (theory.md §2.8).
+        if (rt.degenerate || rt.normal_cosine < 0 || !(rt.area_ratio > 0.5 && rt.area_ratio < 2.0)) {
             elem_failed_[ue] = 1;
             elem_work_[ue] = elem_damp_work_[ue] = 0;
             for (std::size_t i = 0; i < 3; ++i) slot_force_[3 * ue + i] = slot_moment_[3 * ue + i] = Vec3::Zero();

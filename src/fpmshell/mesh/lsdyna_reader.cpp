@@ -1,0 +1,256 @@
+// LS-DYNA keyword shell-mesh reader (see lsdyna_reader.hpp).
+#include "fpmshell/mesh/lsdyna_reader.hpp"
+
+#include <algorithm>
+#include <fstream>
+#include <set>
+
+#include "fpmshell/core/errors.hpp"
+#include "fpmshell/mesh/raw_mesh.hpp"
+
+namespace fpmshell {
+namespace {
+
+using namespace text_mesh;
+
+enum class Format { Standard, Long, WideId };  // no suffix, '+', '%'
+
+std::vector<std::string> columns(const std::string& line, const std::vector<std::size_t>& widths) {
+    std::vector<std::string> out;
+    std::size_t pos = 0;
+    for (const std::size_t w : widths) {
+        out.push_back(pos < line.size() ? trim(line.substr(pos, w)) : "");
+        pos += w;
+    }
+    return out;
+}
+
+bool blank_or_id(const std::string& f) {
+    long long v = 0;
+    return f.empty() || parse_id(f, v);
+}
+
+bool blank_or_real(const std::string& f) {
+    Real v = 0;
+    return f.empty() || parse_real(f, v);
+}
+
+/// Fields of a card: split at commas when it has any; else the fixed columns when each field
+/// passes `ok`; else the blank-separated tokens (hand-written files).
+template <typename Ok>
+std::vector<std::string> card_fields(const std::string& line,
+                                     const std::vector<std::size_t>& widths, Ok ok) {
+    if (line.find(',') != std::string::npos) return split_commas(line);
+    auto fixed = columns(line, widths);
+    bool good = true;
+    for (std::size_t k = 0; k < fixed.size(); ++k) good = good && ok(k, fixed[k]);
+    if (good) return fixed;
+    return split_blanks(line);
+}
+
+enum class Block { Skip, Node, Shell, NodeSet, ShellSet };
+
+class LsDynaReader {
+public:
+    explicit LsDynaReader(const std::string& path) { raw_.path = path; }
+
+    MeshData read() {
+        std::ifstream in(raw_.path, std::ios::binary);
+        if (!in) raw_.fail(0, "cannot open the mesh file");
+        std::string text;
+        int number = 0;
+        while (std::getline(in, text)) {
+            ++number;
+            if (!text.empty() && text.back() == '\r') text.pop_back();
+            if (trim(text).empty() || text.front() == '$') continue;
+            if (text.front() == '*') {
+                start(text, number);
+                continue;
+            }
+            card(text, number);
+        }
+        return finish_raw_mesh(raw_);
+    }
+
+private:
+    std::size_t width(std::size_t standard) const {
+        if (format_ == Format::Long) return 20;
+        if (format_ == Format::WideId) return std::max<std::size_t>(standard, 10);
+        return standard;
+    }
+
+    void start(const std::string& line, int number) {
+        std::string name = upper(trim(line.substr(1)));
+        format_ = Format::Standard;
+        if (!name.empty() && (name.back() == '+' || name.back() == '%')) {
+            format_ = name.back() == '+' ? Format::Long : Format::WideId;
+            name = trim(name.substr(0, name.size() - 1));
+        }
+        block_ = Block::Skip;
+        card_ = 0;
+        if (name.rfind("INCLUDE", 0) == 0)
+            raw_.fail(number, "*INCLUDE is not supported; put the whole mesh in one file");
+        std::vector<std::string> parts;
+        for (std::size_t start = 0;;) {
+            const auto u = name.find('_', start);
+            parts.push_back(name.substr(start, u == std::string::npos ? std::string::npos : u - start));
+            if (u == std::string::npos) break;
+            start = u + 1;
+        }
+        if (name == "NODE") {
+            block_ = Block::Node;
+        } else if (name.rfind("ELEMENT_SHELL", 0) == 0) {
+            block_ = Block::Shell;
+            const std::set<std::string> options(parts.begin() + 2, parts.end());
+            cards_per_element_ = 1;
+            if (options.count("THICKNESS") || options.count("BETA") || options.count("MCID"))
+                ++cards_per_element_;
+            if (options.count("OFFSET")) ++cards_per_element_;
+            for (const auto& o : options)
+                if (o != "THICKNESS" && o != "BETA" && o != "MCID" && o != "OFFSET")
+                    raw_.fail(number, "*" + name + " is not supported; use *ELEMENT_SHELL "
+                                                   "(optionally _THICKNESS, _BETA, _MCID, _OFFSET)");
+        } else if (name.rfind("SET_NODE", 0) == 0 || name.rfind("SET_SHELL", 0) == 0) {
+            block_ = parts[1] == "NODE" ? Block::NodeSet : Block::ShellSet;
+            title_ = generate_ = false;
+            for (std::size_t k = 2; k < parts.size(); ++k) {
+                if (parts[k] == "TITLE") {
+                    title_ = true;
+                } else if (parts[k] == "GENERATE") {
+                    generate_ = true;
+                } else if (parts[k] != "LIST") {
+                    raw_.fail(number, "*" + name + " is not supported; use *SET_NODE_LIST or "
+                                                   "*SET_SHELL_LIST (optionally _TITLE, "
+                                                   "_GENERATE)");
+                }
+            }
+            set_title_.clear();
+        }
+    }
+
+    long long id(const std::string& field, int line, const char* what) const {
+        long long v = 0;
+        if (!parse_id(field, v))
+            raw_.fail(line, std::string("expected ") + what + ", got '" + field + "'");
+        return v;
+    }
+
+    void card(const std::string& line, int number) {
+        const int index = card_++;
+        switch (block_) {
+            case Block::Skip: return;
+            case Block::Node: {
+                const std::vector<std::size_t> widths = {width(8), width(16), width(16),
+                                                         width(16), width(8), width(8)};
+                const auto f = card_fields(line, widths, [](std::size_t k, const std::string& s) {
+                    return k == 0 ? blank_or_id(s) && !s.empty() : k <= 3 ? blank_or_real(s) : true;
+                });
+                if (f.empty()) raw_.fail(number, "a *NODE card needs: NID, X, Y, Z");
+                Vec3 x = Vec3::Zero();
+                for (std::size_t k = 1; k <= 3 && k < f.size(); ++k)
+                    if (!f[k].empty() && !parse_real(f[k], x[static_cast<Index>(k - 1)]))
+                        raw_.fail(number, "coordinate '" + f[k] + "' is not a finite number");
+                raw_.add_node(id(f[0], number, "a node number"), x, number);
+                return;
+            }
+            case Block::Shell: {
+                if (index % cards_per_element_ != 0) return;  // thickness/offset cards
+                const auto f = card_fields(line, std::vector<std::size_t>(10, width(8)),
+                                           [](std::size_t, const std::string& s) {
+                                               return blank_or_id(s);
+                                           });
+                if (f.size() < 5)
+                    raw_.fail(number, "an *ELEMENT_SHELL card needs: EID, PID, N1, N2, N3, N4");
+                const long long e = id(f[0], number, "an element number");
+                const long long pid = id(f[1], number, "a part number");
+                std::vector<long long> nodes;
+                for (std::size_t k = 2; k < 6; ++k) {
+                    long long n = 0;
+                    if (k < f.size() && !f[k].empty()) n = id(f[k], number, "a node number");
+                    nodes.push_back(n);
+                }
+                for (std::size_t k = 6; k < f.size(); ++k) {
+                    long long n = 0;
+                    if (!f[k].empty() && parse_id(f[k], n) && n != 0)
+                        raw_.fail(number, "shells with more than 4 nodes are not supported");
+                }
+                if (nodes[3] == 0 || nodes[3] == nodes[2]) nodes.pop_back();
+                for (const long long n : nodes)
+                    if (n <= 0) raw_.fail(number, "element " + std::to_string(e) +
+                                                      " needs at least 3 node numbers");
+                raw_.add_shell(e, nodes, number);
+                const std::string part = "part_" + std::to_string(pid);
+                raw_.element_sets[part].push_back(e);
+                raw_.set_lines.try_emplace(part, number);
+                return;
+            }
+            case Block::NodeSet:
+            case Block::ShellSet: {
+                if (title_ && index == 0) {
+                    set_title_ = trim(line);
+                    return;
+                }
+                const auto f = card_fields(line, std::vector<std::size_t>(8, width(10)),
+                                           [](std::size_t, const std::string& s) {
+                                               return blank_or_id(s);
+                                           });
+                if (index == (title_ ? 1 : 0)) {  // header card: SID, DA1..DA4, SOLVER
+                    if (f.empty()) raw_.fail(number, "a set card needs its SID first");
+                    const long long sid = id(f[0], number, "a set number (SID)");
+                    const bool nodes = block_ == Block::NodeSet;
+                    set_ = !set_title_.empty()
+                               ? set_title_
+                               : (nodes ? "node_set_" : "shell_set_") + std::to_string(sid);
+                    auto& sets = nodes ? raw_.node_sets : raw_.element_sets;
+                    (void)sets[set_];
+                    raw_.set_lines.try_emplace(set_, number);
+                    return;
+                }
+                auto& members =
+                    block_ == Block::NodeSet ? raw_.node_sets[set_] : raw_.element_sets[set_];
+                std::vector<long long> ids;
+                for (const std::string& s : f) {
+                    long long v = 0;
+                    if (s.empty()) {
+                        ids.push_back(0);
+                    } else if (parse_id(s, v)) {
+                        ids.push_back(v);
+                    } else {
+                        raw_.fail(number, "expected a number, got '" + s + "'");
+                    }
+                }
+                if (!generate_) {
+                    for (const long long v : ids)
+                        if (v > 0) members.push_back(v);
+                    return;
+                }
+                for (std::size_t k = 0; k + 1 < ids.size(); k += 2) {
+                    const long long first = ids[k];
+                    const long long last = ids[k + 1];
+                    if (first == 0 && last == 0) continue;
+                    if (first <= 0 || last < first || last - first > 100'000'000)
+                        raw_.fail(number, "a GENERATE range needs 0 < first <= last (at most 1e8 "
+                                          "members)");
+                    for (long long v = first; v <= last; ++v) members.push_back(v);
+                }
+                return;
+            }
+        }
+    }
+
+    RawMesh raw_;
+    Block block_ = Block::Skip;
+    Format format_ = Format::Standard;
+    int card_ = 0;
+    int cards_per_element_ = 1;
+    bool title_ = false;
+    bool generate_ = false;
+    std::string set_title_;
+    std::string set_;
+};
+
+}  // namespace
+
+MeshData read_lsdyna(const std::string& path) { return LsDynaReader(path).read(); }
+
+}  // namespace fpmshell

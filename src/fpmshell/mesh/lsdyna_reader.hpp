@@ -1,0 +1,20 @@
+// Reader of LS-DYNA keyword files (.k, .key, .dyn) for shell meshes.
+#pragma once
+
+#include <string>
+
+#include "fpmshell/mesh/mesh_data.hpp"
+
+namespace fpmshell {
+
+/// Reads *NODE, *ELEMENT_SHELL (also _THICKNESS, _BETA, _MCID, _OFFSET: the extra cards are
+/// skipped), *SET_NODE_LIST and *SET_SHELL_LIST (also _TITLE and _GENERATE variants). Cards
+/// are fixed-width (standard, '+' long or '%' wide-id format) or comma-separated; a card that
+/// does not parse in columns is also tried split at blanks. Shells with n3 = n4 are triangles,
+/// the others quadrangles (split into two triangles). Sets are named by their title
+/// (_TITLE variants), else "node_set_<SID>" / "shell_set_<SID>"; every part gives the element
+/// and node set "part_<PID>". Every other keyword is skipped; *INCLUDE is refused.
+/// Throws InputError "PATH:LINE: ..." on error.
+[[nodiscard]] MeshData read_lsdyna(const std::string& path);
+
+}  // namespace fpmshell

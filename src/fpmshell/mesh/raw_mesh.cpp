@@ -1,0 +1,195 @@
+// Raw text-mesh data -> MeshData (see raw_mesh.hpp).
+#include "fpmshell/mesh/raw_mesh.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <charconv>
+#include <cmath>
+
+#include "fpmshell/core/errors.hpp"
+
+namespace fpmshell {
+
+namespace text_mesh {
+
+std::string trim(const std::string& s) {
+    const auto begin = s.find_first_not_of(" \t\r\n");
+    if (begin == std::string::npos) return "";
+    const auto end = s.find_last_not_of(" \t\r\n");
+    return s.substr(begin, end - begin + 1);
+}
+
+std::string upper(std::string s) {
+    std::transform(s.begin(), s.end(), s.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::toupper(c)); });
+    return s;
+}
+
+std::vector<std::string> split_commas(const std::string& s) {
+    std::vector<std::string> out;
+    if (trim(s).empty()) return out;
+    std::size_t start = 0;
+    while (true) {
+        const auto comma = s.find(',', start);
+        out.push_back(trim(s.substr(start, comma == std::string::npos ? std::string::npos
+                                                                      : comma - start)));
+        if (comma == std::string::npos) break;
+        start = comma + 1;
+    }
+    return out;
+}
+
+std::vector<std::string> split_blanks(const std::string& s) {
+    std::vector<std::string> out;
+    std::size_t i = 0;
+    while (i < s.size()) {
+        while (i < s.size() && std::isspace(static_cast<unsigned char>(s[i]))) ++i;
+        const std::size_t start = i;
+        while (i < s.size() && !std::isspace(static_cast<unsigned char>(s[i]))) ++i;
+        if (i > start) out.push_back(s.substr(start, i - start));
+    }
+    return out;
+}
+
+bool parse_id(const std::string& field, long long& value) {
+    const std::string f = trim(field);
+    if (f.empty()) return false;
+    const char* first = f.data() + (f.front() == '+' ? 1 : 0);
+    const char* last = f.data() + f.size();
+    const auto [ptr, ec] = std::from_chars(first, last, value);
+    return ec == std::errc() && ptr == last;
+}
+
+bool parse_real(const std::string& field, Real& value) {
+    std::string f = trim(field);
+    if (f.empty()) return false;
+    for (char& c : f)
+        if (c == 'd' || c == 'D') c = 'e';
+    const char* first = f.data() + (f.front() == '+' ? 1 : 0);
+    const char* last = f.data() + f.size();
+    const auto [ptr, ec] = std::from_chars(first, last, value, std::chars_format::general);
+    return ec == std::errc() && ptr == last && std::isfinite(value);
+}
+
+}  // namespace text_mesh
+
+void RawMesh::fail(int line, const std::string& message) const {
+    throw InputError(input_error_text(path, line, "", message));
+}
+
+void RawMesh::add_node(long long id, const Vec3& x, int line) {
+    const auto [it, inserted] = nodes.try_emplace(id, Node{x, line});
+    if (!inserted)
+        fail(line, "node " + std::to_string(id) + " is defined twice (first at line " +
+                       std::to_string(it->second.line) + "); node numbers must be unique");
+}
+
+void RawMesh::add_shell(long long id, std::vector<long long> node_ids, int line) {
+    shells.push_back({id, std::move(node_ids), line});
+}
+
+MeshData finish_raw_mesh(const RawMesh& raw) {
+    if (raw.shells.empty())
+        raw.fail(0, "the file holds no shell element (triangles or quadrangles); expected a "
+                    "surface mesh");
+    // Duplicate element ids.
+    std::unordered_map<long long, std::size_t> shell_of_id;  // id -> index in raw.shells
+    shell_of_id.reserve(raw.shells.size());
+    for (std::size_t k = 0; k < raw.shells.size(); ++k) {
+        const auto& e = raw.shells[k];
+        const auto [it, inserted] = shell_of_id.try_emplace(e.id, k);
+        if (!inserted || raw.other_elements.count(e.id) != 0)
+            raw.fail(e.line, "element " + std::to_string(e.id) +
+                                 " is defined twice; element numbers must be unique");
+        for (const long long n : e.nodes)
+            if (raw.nodes.count(n) == 0)
+                raw.fail(e.line, "element " + std::to_string(e.id) + " refers to node " +
+                                     std::to_string(n) + ", which the file does not define");
+    }
+
+    // Compact node numbering, in increasing id order, of the nodes used by shells.
+    std::vector<long long> used;
+    for (const auto& e : raw.shells) used.insert(used.end(), e.nodes.begin(), e.nodes.end());
+    std::sort(used.begin(), used.end());
+    used.erase(std::unique(used.begin(), used.end()), used.end());
+    MeshData mesh;
+    std::unordered_map<long long, Index> index_of;
+    index_of.reserve(used.size());
+    for (const long long id : used) {
+        index_of[id] = static_cast<Index>(mesh.nodes.size());
+        mesh.nodes.push_back(raw.nodes.at(id).x);
+    }
+
+    // Triangles; shell k gives the triangles first_triangle[k] .. first_triangle[k+1]-1.
+    std::vector<Index> first_triangle;
+    first_triangle.reserve(raw.shells.size() + 1);
+    for (const auto& e : raw.shells) {
+        first_triangle.push_back(static_cast<Index>(mesh.triangles.size()));
+        const Index a = index_of.at(e.nodes[0]);
+        const Index b = index_of.at(e.nodes[1]);
+        const Index c = index_of.at(e.nodes[2]);
+        if (e.nodes.size() == 3) {
+            mesh.triangles.push_back({a, b, c});
+        } else {
+            const Index d = index_of.at(e.nodes[3]);
+            const auto x = [&](Index i) { return mesh.nodes[static_cast<std::size_t>(i)]; };
+            if ((x(c) - x(a)).squaredNorm() <= (x(d) - x(b)).squaredNorm()) {
+                mesh.triangles.push_back({a, b, c});
+                mesh.triangles.push_back({a, c, d});
+            } else {
+                mesh.triangles.push_back({a, b, d});
+                mesh.triangles.push_back({b, c, d});
+            }
+        }
+        while (mesh.element_tag.size() < mesh.triangles.size())
+            mesh.element_tag.push_back(static_cast<std::int64_t>(e.id));
+    }
+    first_triangle.push_back(static_cast<Index>(mesh.triangles.size()));
+
+    auto add_nodes = [&](const std::string& name, const std::vector<long long>& ids) {
+        auto& set = mesh.node_sets[name];
+        for (const long long id : ids) {
+            const auto it = index_of.find(id);
+            if (it != index_of.end()) set.push_back(it->second);
+        }
+    };
+    for (const auto& [name, ids] : raw.node_sets) {
+        for (const long long id : ids)
+            if (raw.nodes.count(id) == 0)
+                raw.fail(raw.set_lines.count(name) ? raw.set_lines.at(name) : 0,
+                         "the node set '" + name + "' lists node " + std::to_string(id) +
+                             ", which the file does not define");
+        add_nodes(name, ids);
+    }
+    for (const auto& [name, ids] : raw.element_sets) {
+        auto& elements = mesh.element_sets[name];
+        std::vector<long long> nodes;
+        for (const long long id : ids) {
+            if (const auto it = shell_of_id.find(id); it != shell_of_id.end()) {
+                for (Index t = first_triangle[it->second]; t < first_triangle[it->second + 1]; ++t)
+                    elements.push_back(t);
+                const auto& e = raw.shells[it->second];
+                nodes.insert(nodes.end(), e.nodes.begin(), e.nodes.end());
+            } else if (const auto other = raw.other_elements.find(id);
+                       other != raw.other_elements.end()) {
+                nodes.insert(nodes.end(), other->second.begin(), other->second.end());
+            } else {
+                raw.fail(raw.set_lines.count(name) ? raw.set_lines.at(name) : 0,
+                         "the element set '" + name + "' lists element " + std::to_string(id) +
+                             ", which the file does not define");
+            }
+        }
+        add_nodes(name, nodes);
+    }
+    for (auto* sets : {&mesh.node_sets, &mesh.element_sets}) {
+        for (auto it = sets->begin(); it != sets->end();) {
+            auto& members = it->second;
+            std::sort(members.begin(), members.end());
+            members.erase(std::unique(members.begin(), members.end()), members.end());
+            it = members.empty() ? sets->erase(it) : std::next(it);
+        }
+    }
+    return mesh;
+}
+
+}  // namespace fpmshell

@@ -1,0 +1,68 @@
+// Mesh data as read from a text mesh file (Abaqus .inp, LS-DYNA .k), still with the file's own
+// node and element numbers; finish_raw_mesh turns it into a MeshData with compact indices.
+#pragma once
+
+#include <map>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include "fpmshell/core/types.hpp"
+#include "fpmshell/mesh/mesh_data.hpp"
+
+namespace fpmshell {
+
+/// Node, element and set definitions by file id. Sets may name ids of elements that are not
+/// shells (line elements): their nodes then go to the node set of the same name.
+struct RawMesh {
+    struct Node {
+        Vec3 x = Vec3::Zero();
+        int line = 0;
+    };
+    struct Element {
+        long long id = 0;
+        std::vector<long long> nodes;  ///< 3 (triangle) or 4 (quadrangle) node ids
+        int line = 0;
+    };
+
+    std::string path;  ///< the mesh file, for messages
+    std::unordered_map<long long, Node> nodes;
+    std::vector<Element> shells;
+    std::unordered_map<long long, std::vector<long long>> other_elements;  ///< id -> node ids
+    std::map<std::string, std::vector<long long>> node_sets;     ///< name -> node ids
+    std::map<std::string, std::vector<long long>> element_sets;  ///< name -> element ids
+    std::map<std::string, int> set_lines;                         ///< name -> first line
+
+    /// Adds a node; a second definition of the same id is an InputError.
+    void add_node(long long id, const Vec3& x, int line);
+    /// Adds a 3- or 4-node shell element (duplicate ids are reported by finish_raw_mesh).
+    void add_shell(long long id, std::vector<long long> node_ids, int line);
+    /// Throws InputError "PATH:LINE: message".
+    [[noreturn]] void fail(int line, const std::string& message) const;
+};
+
+/// Compacts the raw mesh: nodes used by shells, renumbered 0..n-1 in increasing id order;
+/// quadrangles split along their shorter diagonal (keeping their orientation); sets mapped to
+/// indices. An element set of shells gives an element set and a node set (its nodes); a set
+/// of other elements gives a node set; members that are not shells nor nodes of shells are
+/// dropped, and a set left empty is dropped. Throws InputError for an element that refers to an
+/// undefined node, a set member that is not defined at all, or a file without shells.
+[[nodiscard]] MeshData finish_raw_mesh(const RawMesh& raw);
+
+/// Helpers shared by the text readers.
+namespace text_mesh {
+/// Removes leading and trailing blanks (spaces, tabs, carriage returns).
+[[nodiscard]] std::string trim(const std::string& s);
+/// Upper-case copy.
+[[nodiscard]] std::string upper(std::string s);
+/// Splits at commas, trimming each field (an empty line gives no field).
+[[nodiscard]] std::vector<std::string> split_commas(const std::string& s);
+/// Splits at blanks.
+[[nodiscard]] std::vector<std::string> split_blanks(const std::string& s);
+/// Parses a whole integer field; false when it is not one.
+[[nodiscard]] bool parse_id(const std::string& field, long long& value);
+/// Parses a real field (also Fortran exponents 1.0D+3); false when it is not a finite number.
+[[nodiscard]] bool parse_real(const std::string& field, Real& value);
+}  // namespace text_mesh
+
+}  // namespace fpmshell

@@ -1,0 +1,176 @@
+"""Command-line contract tests (model-format.md): exit codes 0/1/2, one-sentence errors naming
+file, line and key, result files of a run, refusal to overwrite another model's results, and a
+diverging run that stops with exit 1 and leaves its last good state on disk.
+
+usage: cli_test.py FPMSHELL WORKDIR
+"""
+import json
+import os
+import shutil
+import subprocess
+import sys
+
+FPM, WORK = sys.argv[1], sys.argv[2]
+ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+failures = []
+passed = 0
+
+BASE = """title: small plate
+mesh: {generator: plate, length_x: 1.0, length_y: 1.0, nx: 4, ny: 4}
+materials:
+  s: {type: elastic, density: 7800, youngs_modulus: 2.1e11, poisson_ratio: 0.3}
+sections:
+  - {elements: all, material: s, thickness: 0.01}
+boundary:
+  - {nodes: boundary, fix: all}
+loads:
+  - {type: pressure, elements: all, value: 100}
+control: {end_time: 1.0e-4}
+output:
+  every: 1.0e-5
+  histories:
+    - {name: w, nodes: all, quantity: uz, reduce: min}
+"""
+
+
+def write(name, text):
+    path = os.path.join(WORK, name)
+    with open(path, "w") as f:
+        f.write(text)
+    return path
+
+
+def fpm(*args):
+    p = subprocess.run([FPM, *args], capture_output=True, text=True, timeout=300)
+    return p.returncode, p.stdout + p.stderr
+
+
+def check(name, cond, detail=""):
+    global passed
+    if cond:
+        passed += 1
+        print("ok   ", name)
+    else:
+        failures.append(name)
+        print("FAIL ", name, detail[-1500:])
+
+
+def expect_invalid(name, text, must_contain, *extra):
+    path = write(name + ".yaml", text)
+    code, out = fpm("check", path, *extra)
+    lines = [l for l in out.strip().splitlines() if l.strip()]
+    ok = code == 2 and all(s in out for s in must_contain) and len(lines) == 1
+    check("invalid model: " + name, ok, "exit %d, output: %s" % (code, out))
+
+
+shutil.rmtree(WORK, ignore_errors=True)
+os.makedirs(WORK)
+
+code, out = fpm("--version")
+check("--version", code == 0 and "fpmshell" in out, out)
+code, out = fpm("frobnicate")
+check("unknown sub-command exits 2", code == 2, out)
+
+good = write("good.yaml", BASE)
+code, out = fpm("check", good)
+check("check a valid model", code == 0 and "particles" in out and "stable time step" in out, out)
+
+# Each bad model: exit 2 and one sentence naming the file, the line and the key.
+expect_invalid("unknown_key", BASE.replace("control: {end_time: 1.0e-4}", "control: {end_time: 1.0e-4, endtime: 3}"),
+               ["unknown_key.yaml:11", "endtime"])
+expect_invalid("wrong_type", BASE.replace("thickness: 0.01", "thickness: thin"), ["wrong_type.yaml:6", "thickness"])
+expect_invalid("missing_required", BASE.replace("density: 7800, ", ""), ["missing_required.yaml:4", "density"])
+expect_invalid("unknown_set", BASE.replace("{nodes: boundary, fix: all}", "{nodes: rim, fix: all}"),
+               ["unknown_set.yaml:8", "rim"])
+expect_invalid("unknown_material", BASE.replace("material: s,", "material: steel,"),
+               ["unknown_material.yaml:6", "steel"])
+expect_invalid("negative_thickness", BASE.replace("thickness: 0.01", "thickness: -0.01"),
+               ["negative_thickness.yaml:6", "thickness"])
+expect_invalid("negative_density", BASE.replace("density: 7800", "density: -7800"),
+               ["negative_density.yaml:4", "density"])
+expect_invalid("missing_mesh_file", BASE.replace(
+    "mesh: {generator: plate, length_x: 1.0, length_y: 1.0, nx: 4, ny: 4}", "mesh: {file: nowhere.msh}"),
+    ["missing_mesh_file.yaml:2", "nowhere.msh"])
+write("not_a_mesh.msh", "this is not a mesh\n")
+expect_invalid("not_a_mesh", BASE.replace(
+    "mesh: {generator: plate, length_x: 1.0, length_y: 1.0, nx: 4, ny: 4}", "mesh: {file: not_a_mesh.msh}"),
+    ["not_a_mesh.yaml:2", "not_a_mesh.msh"])
+# A Gmsh 4 file with a zero-area triangle (three collinear nodes).
+write("degenerate.msh", """$MeshFormat
+4.1 0 8
+$EndMeshFormat
+$Nodes
+1 4 1 4
+2 1 0 4
+1
+2
+3
+4
+0 0 0
+1 0 0
+2 0 0
+0 1 0
+$EndNodes
+$Elements
+1 2 1 2
+2 1 2 2
+1 1 2 3
+2 1 2 4
+$EndElements
+""")
+expect_invalid("degenerate_element", BASE.replace(
+    "mesh: {generator: plate, length_x: 1.0, length_y: 1.0, nx: 4, ny: 4}", "mesh: {file: degenerate.msh}")
+    .replace("{nodes: boundary, fix: all}", "{nodes: all, fix: [uz]}"),
+    ["degenerate_element.yaml", "mesh", "element"])
+expect_invalid("yaml_syntax", BASE.replace("control: {end_time: 1.0e-4}", "control: {end_time: [1.0e-4}"),
+               ["yaml_syntax.yaml:11"])
+expect_invalid("bad_override", BASE, ["--set", "control.nothing"], "--set", "control.nothing=3")
+code, out = fpm("check", os.path.join(WORK, "does_not_exist.yaml"))
+check("missing model file exits 2", code == 2 and "does_not_exist.yaml" in out, out)
+write("empty.yaml", "")
+code, out = fpm("check", os.path.join(WORK, "empty.yaml"))
+check("empty model file exits 2", code == 2 and "empty.yaml" in out, out)
+
+# A successful run writes every result file of the contract.
+res = os.path.join(WORK, "res")
+code, out = fpm("run", good, "-o", res, "--quiet", "--threads", "1")
+files = ["history.csv", "energy.csv", "fields.pvd", "summary.json", "log.txt"]
+check("run exits 0 and writes the result files", code == 0 and all(os.path.exists(os.path.join(res, f)) for f in files), out)
+if code == 0:
+    summary = json.load(open(os.path.join(res, "summary.json")))
+    keys = ["title", "particles", "elements", "steps", "end_time", "wall_seconds", "element_steps_per_second",
+            "threads", "energy_error", "peaks", "version", "exit_reason"]
+    check("summary.json has every key", all(k in summary for k in keys), str(summary))
+    head = open(os.path.join(res, "history.csv")).readline().strip()
+    check("history.csv header", head == "time,w", head)
+    head = open(os.path.join(res, "energy.csv")).readline().strip()
+    check("energy.csv header", head == "time,kinetic,internal,plastic,external_work,damping,contact,energy_error", head)
+    check("VTU frames written", len(os.listdir(os.path.join(res, "fields"))) >= 2)
+
+# Another model's results are not overwritten silently.
+other = write("other.yaml", BASE.replace("small plate", "other plate"))
+code, out = fpm("run", other, "-o", res, "--quiet")
+check("refuses another model's result folder (exit 2)", code == 2 and "--overwrite" in out, out)
+code, out = fpm("run", other, "-o", res, "--quiet", "--overwrite", "--threads", "1")
+check("--overwrite allows it", code == 0, out)
+code, out = fpm("run", other, "-o", res, "--quiet", "--threads", "1", "--set", "control.end_time=2e-5")
+check("re-running the same model replaces its results", code == 0, out)
+
+# A diverging run: a load far beyond collapse turns an element inside out within a few steps.
+boom = write("boom.yaml", BASE.replace("value: 100", "value: 1.0e12"))
+bres = os.path.join(WORK, "boom")
+code, out = fpm("run", boom, "-o", bres, "--quiet", "--threads", "1")
+ok = code == 1 and "step" in out and ("element" in out or "particle" in out)
+check("diverging run exits 1 and says where", ok, "exit %d: %s" % (code, out))
+if os.path.exists(os.path.join(bres, "summary.json")):
+    s = json.load(open(os.path.join(bres, "summary.json")))
+    check("diverging run: summary says failed", s["exit_reason"].startswith("failed"), str(s))
+    rows = open(os.path.join(bres, "history.csv")).read().strip().splitlines()
+    check("diverging run: histories kept", len(rows) >= 2, str(rows))
+    pvd = open(os.path.join(bres, "fields.pvd")).read()
+    check("diverging run: last good frame kept", pvd.count("<DataSet") >= 2, pvd)
+else:
+    check("diverging run: summary written", False)
+
+print("%d passed, %d failed" % (passed, len(failures)))
+sys.exit(1 if failures else 0)

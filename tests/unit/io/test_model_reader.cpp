@@ -1,0 +1,544 @@
+// Unit tests of the YAML model reader (io/model_reader.hpp): a complete model is read into the
+// documented Model fields, every error category gives one sentence with the file, the line and
+// the key, --set overrides work, and malformed input never crashes or hangs.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include <unistd.h>
+
+#include "fpmshell/core/errors.hpp"
+#include "fpmshell/io/model_reader.hpp"
+
+namespace fpmshell {
+namespace {
+
+/// A fresh folder for the running test, removed at the end of the test.
+class TempDir {
+public:
+    TempDir() {
+        const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+        path_ = std::filesystem::temp_directory_path() /
+                ("fpmshell_reader_" + std::string(info->name()) + "_" +
+                 std::to_string(::getpid()) + "_" + std::to_string(counter_++));
+        std::filesystem::create_directories(path_);
+    }
+    ~TempDir() {
+        std::error_code ec;
+        std::filesystem::remove_all(path_, ec);
+    }
+    TempDir(const TempDir&) = delete;
+    TempDir& operator=(const TempDir&) = delete;
+    [[nodiscard]] std::string write(const std::string& name, const std::string& text) const {
+        const auto p = path_ / name;
+        std::ofstream(p, std::ios::binary) << text;
+        return p.string();
+    }
+    [[nodiscard]] std::string path(const std::string& name) const { return (path_ / name).string(); }
+
+private:
+    static inline int counter_ = 0;
+    std::filesystem::path path_;
+};
+
+// The smallest valid model; line numbers matter for the error tests below.
+const std::string k_base = R"(title: t
+mesh: {generator: plate, length_x: 2, length_y: 1, nx: 4, ny: 2}
+materials:
+  steel: {type: elastic, density: 7.8e-9, youngs_modulus: 210000, poisson_ratio: 0.3}
+sections:
+  - {elements: all, material: steel, thickness: 0.1}
+control:
+  end_time: 1.0e-3
+)";
+
+std::string replaced(std::string text, const std::string& from, const std::string& to) {
+    const auto at = text.find(from);
+    if (at == std::string::npos) throw std::logic_error("test bug: '" + from + "' not in model");
+    return text.replace(at, from.size(), to);
+}
+
+/// Reads `text` as model.yaml; expects an InputError starting with model.yaml:LINE (no line
+/// when line == 0, any line when line < 0), key 'KEY' (when not empty) and `part`.
+void expect_error(const std::string& text, int line, const std::string& key,
+                  const std::string& part, const std::vector<std::string>& overrides = {}) {
+    const TempDir dir;
+    const std::string file = dir.write("model.yaml", text);
+    try {
+        (void)read_model(file, overrides);
+        ADD_FAILURE() << "no error; expected one about key '" << key << "'";
+    } catch (const InputError& e) {
+        const std::string what = e.what();
+        const std::string where = line > 0 ? file + ":" + std::to_string(line) + ": " : file + ": ";
+        if (line >= 0) {
+            EXPECT_EQ(what.rfind(where, 0), 0U) << what << "\n  expected start: " << where;
+        } else {
+            EXPECT_EQ(what.rfind(file + ":", 0), 0U) << what;
+        }
+        if (!key.empty()) {
+            EXPECT_NE(what.find("key '" + key + "': "), std::string::npos) << what;
+        }
+        EXPECT_NE(what.find(part), std::string::npos) << what << "\n  expected: " << part;
+        EXPECT_EQ(what.find('\n'), std::string::npos) << what;
+    } catch (const std::exception& e) {
+        ADD_FAILURE() << "not an InputError: " << e.what();
+    }
+}
+
+/// Same for an error reported against an override ("--set: key 'KEY': ...").
+void expect_override_error(const std::vector<std::string>& overrides, const std::string& key,
+                           const std::string& part) {
+    const TempDir dir;
+    try {
+        (void)read_model(dir.write("model.yaml", k_base), overrides);
+        ADD_FAILURE() << "no error for the override of '" << key << "'";
+    } catch (const InputError& e) {
+        const std::string what = e.what();
+        EXPECT_EQ(what.rfind("--set: key '" + key + "': ", 0), 0U) << what;
+        EXPECT_NE(what.find(part), std::string::npos) << what << "\n  expected: " << part;
+    }
+}
+
+// A model using every block is read into the documented Model fields: sets (generator, near
+// with and without tolerance, plane, box), the section override rule, boundary kinds, loads,
+// curves, initial conditions, damping, control and output.
+TEST(ModelReader, ReadsACompleteModel) {
+    const TempDir dir;
+    const std::string file = dir.write("full.yaml", R"(title: Full model
+mesh:
+  generator: plate
+  length_x: 2
+  length_y: 1
+  nx: 4
+  ny: 2
+sets:
+  corner: {near: [2, 1, 0]}
+  middle: {near: [1, 0.5, 0], tolerance: 0.6}
+  x0: {plane: {point: [0, 0, 0], normal: [2, 0, 0]}}
+  left_half: {box: [[-1, -1, -1], [1, 2, 1]]}
+materials:
+  steel: {type: elastic, density: 7.8e-9, youngs_modulus: 210000, poisson_ratio: 0.3}
+  soft: {type: elastic, density: 1e-9, youngs_modulus: 1000, poisson_ratio: -0.2}
+sections:
+  - {elements: all, material: steel, thickness: 0.1}
+  - {elements: left_half, material: soft, thickness: 0.2, thickness_points: 5, inplane_points: 7}
+boundary:
+  - {nodes: xmin, fix: all}
+  - {nodes: ymin, fix: [uz, rx]}
+  - {nodes: x0, symmetry: x}
+  - {nodes: xmax, symmetry: y, prescribe: {velocity: [1, 0, 0], curve: ramp}}
+  - {nodes: corner, prescribe: {angular_velocity: [0, 0, 3]}}
+curves:
+  ramp: [[0, 0], [1.0e-3, 1]]
+  step: [[0, 1]]
+loads:
+  - {type: pressure, elements: all, value: 600, curve: step}
+  - {type: force, nodes: corner, value: [0, 0, -1]}
+  - {type: moment, nodes: corner, value: [0, 1, 0], curve: ramp}
+initial_conditions:
+  - {nodes: middle, velocity: [0, 0, -5]}
+  - {nodes: corner, angular_velocity: [1, 2, 3]}
+damping: {mass: 2.0}
+control:
+  end_time: 1.0e-3
+  time_step_scale: 0.5
+  mode: relaxation
+  tolerance: 1.0e-4
+  bending: dkt
+  energy_error_limit: 0.1
+  max_relaxation_iterations: 1000
+output:
+  every: 1.0e-5
+  histories:
+    - {name: tip_w, nodes: corner, quantity: uz}
+    - {name: edge_fz, nodes: xmin, quantity: reaction_z, reduce: sum}
+)");
+    const Model m = read_model(file);
+    EXPECT_EQ(m.title, "Full model");
+    EXPECT_EQ(m.source_file, file);
+    EXPECT_EQ(m.n_particles(), 15);
+    EXPECT_EQ(m.n_elements(), 16);
+
+    using V = std::vector<Index>;
+    EXPECT_EQ(m.node_sets.at("corner"), (V{14}));
+    EXPECT_EQ(m.node_sets.at("middle"), (V{2, 6, 7, 8, 12}));
+    EXPECT_EQ(m.element_sets.at("middle").size(), 2U);  // the two triangles inside the 5 nodes
+    EXPECT_EQ(m.node_sets.at("x0"), (V{0, 5, 10}));
+    EXPECT_TRUE(m.element_sets.at("x0").empty());
+    EXPECT_EQ(m.node_sets.at("left_half").size(), 9U);
+    EXPECT_EQ(m.element_sets.at("left_half").size(), 8U);  // centroids with x <= 1
+    EXPECT_EQ(m.node_sets.at("all").size(), 15U);
+    EXPECT_EQ(m.element_sets.at("all").size(), 16U);
+    for (const char* name : {"xmin", "xmax", "ymin", "ymax", "boundary"})
+        EXPECT_EQ(m.node_sets.count(name), 1U) << name;
+
+    ASSERT_EQ(m.materials.size(), 2U);
+    EXPECT_EQ(m.materials[1].name, "soft");
+    EXPECT_EQ(m.materials[1].poisson_ratio, -0.2);
+    EXPECT_EQ(m.materials[0].density, 7.8e-9);
+    ASSERT_EQ(m.sections.size(), 2U);
+    EXPECT_EQ(m.sections[1].material, 1);
+    EXPECT_EQ(m.sections[1].thickness_points, 5);
+    EXPECT_EQ(m.sections[1].inplane_points, 7);
+    EXPECT_EQ(m.sections[0].thickness_points, 2);
+    EXPECT_EQ(m.sections[0].inplane_points, 3);
+    // The later section entry wins on the elements it shares with the earlier one.
+    for (Index e = 0; e < m.n_elements(); ++e) {
+        const auto& half = m.element_sets.at("left_half");
+        const bool in_half = std::binary_search(half.begin(), half.end(), e);
+        EXPECT_EQ(m.element_section[static_cast<std::size_t>(e)], in_half ? 1 : 0);
+    }
+
+    ASSERT_EQ(m.boundary.size(), 5U);
+    EXPECT_EQ(m.boundary[0].fixed, (std::array<bool, 6>{true, true, true, true, true, true}));
+    EXPECT_EQ(m.boundary[1].fixed, (std::array<bool, 6>{false, false, true, true, false, false}));
+    EXPECT_EQ(m.boundary[2].fixed, (std::array<bool, 6>{true, false, false, false, true, true}));
+    EXPECT_EQ(m.boundary[3].fixed, (std::array<bool, 6>{false, true, false, true, false, true}));
+    EXPECT_EQ(m.boundary[3].prescribed, PrescribedKind::Velocity);
+    EXPECT_EQ(m.boundary[3].value, Vec3(1, 0, 0));
+    EXPECT_EQ(m.boundary[3].curve, 0);
+    EXPECT_EQ(m.boundary[4].prescribed, PrescribedKind::AngularVelocity);
+    EXPECT_EQ(m.boundary[4].curve, -1);
+    EXPECT_EQ(m.boundary[0].nodes, (V{0, 5, 10}));
+
+    ASSERT_EQ(m.curves.size(), 2U);
+    EXPECT_EQ(m.curves[0].name, "ramp");
+    EXPECT_DOUBLE_EQ(m.curves[0].value(0.5e-3), 0.5);
+
+    ASSERT_EQ(m.loads.size(), 3U);
+    EXPECT_EQ(m.loads[0].type, LoadType::Pressure);
+    EXPECT_EQ(m.loads[0].pressure, 600.0);
+    EXPECT_EQ(m.loads[0].elements.size(), 16U);
+    EXPECT_EQ(m.loads[0].curve, 1);
+    EXPECT_EQ(m.loads[1].type, LoadType::Force);
+    EXPECT_EQ(m.loads[1].vector, Vec3(0, 0, -1));
+    EXPECT_EQ(m.loads[1].curve, -1);
+    EXPECT_EQ(m.loads[2].type, LoadType::Moment);
+    EXPECT_EQ(m.loads[2].nodes, (V{14}));
+
+    ASSERT_EQ(m.initial_conditions.size(), 2U);
+    EXPECT_EQ(m.initial_conditions[0].velocity, Vec3(0, 0, -5));
+    EXPECT_EQ(m.initial_conditions[0].nodes.size(), 5U);
+    EXPECT_EQ(m.initial_conditions[1].angular_velocity, Vec3(1, 2, 3));
+    EXPECT_EQ(m.initial_conditions[1].velocity, Vec3::Zero());
+
+    EXPECT_EQ(m.damping.mass, 2.0);
+    EXPECT_EQ(m.damping.stiffness, 0.0);
+    EXPECT_EQ(m.control.end_time, 1.0e-3);
+    EXPECT_EQ(m.control.time_step_scale, 0.5);
+    EXPECT_EQ(m.control.mode, SolutionMode::Relaxation);
+    EXPECT_EQ(m.control.tolerance, 1.0e-4);
+    EXPECT_EQ(m.control.bending, BendingKernel::Dkt);
+    EXPECT_EQ(m.control.energy_error_limit, 0.1);
+    EXPECT_EQ(m.control.max_relaxation_iterations, 1000);
+    EXPECT_EQ(m.output.every, 1.0e-5);
+    EXPECT_DOUBLE_EQ(m.output.fields_every, 1.0e-3 / 20);
+    ASSERT_EQ(m.output.histories.size(), 2U);
+    EXPECT_EQ(m.output.histories[0].reduce, Reduce::Single);
+    EXPECT_EQ(m.output.histories[0].quantity, Quantity::Uz);
+    EXPECT_EQ(m.output.histories[1].reduce, Reduce::Sum);
+    EXPECT_EQ(m.output.histories[1].quantity, Quantity::ReactionZ);
+    EXPECT_EQ(m.output.histories[1].nodes.size(), 3U);
+}
+
+// Defaults: title = file stem, control and output defaults of model-format.md, no damping.
+TEST(ModelReader, AppliesDefaults) {
+    const TempDir dir;
+    const Model m = read_model(dir.write("my_case.yaml", replaced(k_base, "title: t\n", "")));
+    EXPECT_EQ(m.title, "my_case");
+    EXPECT_EQ(m.control.time_step_scale, 0.9);
+    EXPECT_EQ(m.control.mode, SolutionMode::Dynamic);
+    EXPECT_EQ(m.control.tolerance, 1e-5);
+    EXPECT_EQ(m.control.bending, BendingKernel::Bciz);
+    EXPECT_EQ(m.control.energy_error_limit, 0.5);
+    EXPECT_EQ(m.control.max_relaxation_iterations, 200000);
+    EXPECT_DOUBLE_EQ(m.output.every, 1.0e-3 / 200);
+    EXPECT_DOUBLE_EQ(m.output.fields_every, 1.0e-3 / 20);
+    EXPECT_EQ(m.damping.mass, 0.0);
+    EXPECT_TRUE(m.boundary.empty());
+    EXPECT_TRUE(m.loads.empty());
+    EXPECT_EQ(m.element_section, std::vector<Index>(16, 0));
+}
+
+// Each generator is reachable from the model file with its keys, and its sets are usable.
+TEST(ModelReader, ReadsEveryGenerator) {
+    const TempDir dir;
+    auto read_mesh = [&](const std::string& mesh) {
+        return read_model(dir.write("gen.yaml", replaced(k_base,
+            "mesh: {generator: plate, length_x: 2, length_y: 1, nx: 4, ny: 2}", mesh)));
+    };
+    const Model cap = read_mesh("mesh: {generator: spherical_cap, radius: 22.27, half_angle_deg: "
+                                "26.67, sector_deg: 90, divisions: 12}");
+    EXPECT_EQ(cap.n_particles(), 1 + 12 * 13 + 12);
+    EXPECT_EQ(cap.node_sets.count("edge0"), 1U);
+    const Model hex = read_mesh("mesh: {generator: spherical_cap, radius: 22.27, half_angle_deg: "
+                                "26.67, divisions: 6}");
+    EXPECT_EQ(hex.n_particles(), 127);
+    const Model cyl = read_mesh("mesh: {generator: cylinder_panel, radius: 300, length: 600, "
+                                "angle_deg: 80, divisions_arc: 4, divisions_length: 3, "
+                                "pattern: alternate}");
+    EXPECT_EQ(cyl.n_particles(), 20);
+    EXPECT_EQ(cyl.node_sets.count("arc1"), 1U);
+    const Model tube = read_mesh("mesh: {generator: cylinder_panel, radius: 1, length: 2, "
+                                 "angle_deg: 360, divisions_arc: 6, divisions_length: 2}");
+    EXPECT_EQ(tube.n_particles(), 18);
+    const Model ring = read_mesh("mesh: {generator: annulus, inner_radius: 6, outer_radius: 10, "
+                                 "divisions_radial: 2, divisions_angle: 8, pattern: cross}");
+    EXPECT_EQ(ring.n_particles(), 3 * 9 + 16);
+    EXPECT_EQ(ring.node_sets.at("edge1").size(), 3U);
+    const Model plate = read_mesh("mesh: {generator: plate, length_x: 1, length_y: 1, nx: 2, "
+                                  "ny: 1, origin: [0, 0, 5], pattern: left}");
+    EXPECT_EQ(plate.nodes[0].z(), 5.0);
+}
+
+// A mesh file is found relative to the model file; its physical groups become sets that the
+// model can use, and a degenerate element in it is reported with its number and key `mesh`.
+TEST(ModelReader, ReadsAGmshFileAndRefusesDegenerateElements) {
+    const TempDir dir;
+    const std::string msh = R"($MeshFormat
+2.2 0 8
+$EndMeshFormat
+$PhysicalNames
+2
+1 1 "clamp"
+2 2 "skin"
+$EndPhysicalNames
+$Nodes
+4
+1 0 0 0
+2 1 0 0
+3 1 1 0
+4 0 1 0
+$EndNodes
+$Elements
+3
+1 1 2 1 1 1 4
+2 2 2 2 1 1 2 3
+3 2 2 2 1 1 3 4
+$EndElements
+)";
+    (void)dir.write("plate.msh", msh);
+    const std::string yaml = replaced(
+        k_base, "mesh: {generator: plate, length_x: 2, length_y: 1, nx: 4, ny: 2}",
+        "mesh: {file: plate.msh}\nboundary:\n  - {nodes: clamp, fix: all}");
+    const Model m = read_model(dir.write("model.yaml", yaml));
+    EXPECT_EQ(m.n_particles(), 4);
+    EXPECT_EQ(m.n_elements(), 2);
+    EXPECT_EQ(m.boundary[0].nodes, (std::vector<Index>{0, 3}));
+    EXPECT_EQ(m.element_sets.at("skin").size(), 2U);
+
+    (void)dir.write("plate.msh", replaced(msh, "3 2 2 2 1 1 3 4", "3 2 2 2 1 1 2 2"));
+    expect_error(replaced(k_base, "mesh: {generator: plate, length_x: 2, length_y: 1, nx: 4, ny: 2}",
+                          "mesh: {file: " + dir.path("plate.msh") + "}"),
+                 2, "mesh", "element 2 (number 3 in the mesh file) is degenerate");
+}
+
+// Every error category names the file, the line and the key in one sentence.
+TEST(ModelReader, EveryErrorNamesFileLineAndKey) {
+    struct Case {
+        std::string yaml;
+        int line;
+        std::string key;
+        std::string part;
+    };
+    const std::string plate = "mesh: {generator: plate, length_x: 2, length_y: 1, nx: 4, ny: 2}";
+    const std::string steel = "poisson_ratio: 0.3}";
+    const std::string section = "  - {elements: all, material: steel, thickness: 0.1}";
+    const std::vector<Case> cases = {
+        // unknown keys, with a suggestion and the valid keys
+        {k_base + "contorl: 1\n", 9, "contorl", "unknown key (did you mean 'control'?); valid keys at the top level are title, mesh"},
+        {k_base + "  end_tme: 2\n", 9, "control.end_tme", "(did you mean 'end_time'?)"},
+        {replaced(k_base, "nx: 4", "nxx: 4"), 2, "mesh.nxx", "valid keys under 'mesh' are"},
+        {replaced(k_base, steel, "poisson_ratio: 0.3, colour: red}"), 4, "materials.steel.colour", "unknown key"},
+        // wrong types, missing keys, scalars where maps or lists are expected
+        {replaced(k_base, "end_time: 1.0e-3", "end_time: abc"), 8, "control.end_time", "expected a number, got 'abc'"},
+        {replaced(k_base, "end_time: 1.0e-3", "end_time: [1, 2]"), 8, "control.end_time", "expected a number, got a list"},
+        {replaced(k_base, "end_time: 1.0e-3", "mode: dynamic"), 7, "control.end_time", "is required but missing"},
+        {replaced(k_base, "control:\n  end_time: 1.0e-3", "control: 5"), 7, "control", "expected a map"},
+        {replaced(k_base, plate, "mesh: 5"), 2, "mesh", "expected a map"},
+        {replaced(k_base, section, "  - 5"), 6, "sections.0", "expected a map"},
+        {replaced(k_base, "sections:\n" + section, "sections: all"), 5, "sections", "expected a list"},
+        {replaced(k_base, "sections:\n" + section + "\n", ""), 1, "sections", "is required but missing"},
+        {replaced(k_base, "control:\n  end_time: 1.0e-3\n", "control:\n  end_time: 1\n  end_time: 2\n"), 9, "control.end_time", "appears twice"},
+        // numbers out of range
+        {replaced(k_base, "end_time: 1.0e-3", "end_time: 0"), 8, "control.end_time", "greater than 0"},
+        {replaced(k_base, "end_time: 1.0e-3", "end_time: -1"), 8, "control.end_time", "greater than 0"},
+        {replaced(k_base, "end_time: 1.0e-3", "end_time: .nan"), 8, "control.end_time", "finite number"},
+        {replaced(k_base, "end_time: 1.0e-3", "end_time: .inf"), 8, "control.end_time", "finite number"},
+        {replaced(k_base, "end_time: 1.0e-3", "end_time: 1e999"), 8, "control.end_time", "out of the range"},
+        {k_base + "  time_step_scale: 1.5\n", 9, "control.time_step_scale", "(0, 1]"},
+        {k_base + "  time_step_scale: 0\n", 9, "control.time_step_scale", "greater than 0"},
+        {k_base + "  tolerance: 0\n", 9, "control.tolerance", "greater than 0"},
+        {k_base + "  mode: static\n", 9, "control.mode", "expected one of dynamic, relaxation"},
+        {k_base + "  bending: dtk\n", 9, "control.bending", "did you mean 'dkt'"},
+        {k_base + "  max_relaxation_iterations: 0.5\n", 9, "control.max_relaxation_iterations", "whole number"},
+        {replaced(k_base, "thickness: 0.1", "thickness: 0"), 6, "sections.0.thickness", "greater than 0"},
+        {replaced(k_base, "thickness: 0.1", "thickness: -0.1"), 6, "sections.0.thickness", "greater than 0"},
+        {replaced(k_base, "thickness: 0.1", "thickness: 0.1, thickness_points: 4"), 6, "sections.0.thickness_points", "2 (Gauss), 3 or 5"},
+        {replaced(k_base, "thickness: 0.1", "thickness: 0.1, inplane_points: 6"), 6, "sections.0.inplane_points", "3 or 7"},
+        {replaced(k_base, "density: 7.8e-9", "density: 0"), 4, "materials.steel.density", "greater than 0"},
+        {replaced(k_base, "youngs_modulus: 210000", "youngs_modulus: -1"), 4, "materials.steel.youngs_modulus", "greater than 0"},
+        {replaced(k_base, "poisson_ratio: 0.3", "poisson_ratio: 0.5"), 4, "materials.steel.poisson_ratio", "less than 0.5"},
+        {replaced(k_base, "poisson_ratio: 0.3", "poisson_ratio: -1"), 4, "materials.steel.poisson_ratio", "greater than -1"},
+        {replaced(k_base, ", poisson_ratio: 0.3", ""), 4, "materials.steel.poisson_ratio", "is required"},
+        // not supported yet
+        {replaced(k_base, "type: elastic", "type: j2_plastic"), 4, "materials.steel.type", "is not supported yet in this version of fpmshell"},
+        {replaced(k_base, "type: elastic", "type: johnson_cook"), 4, "materials.steel.type", "is not supported yet"},
+        {replaced(k_base, steel, "poisson_ratio: 0.3, cowper_symonds: {D: 6500, q: 4}}"), 4, "materials.steel.cowper_symonds", "is not supported yet"},
+        {replaced(k_base, steel, "poisson_ratio: 0.3, yield_stress: 200}"), 4, "materials.steel.yield_stress", "not supported yet"},
+        {k_base + "rigid_bodies:\n  - {name: striker, mass: 800}\n", 9, "rigid_bodies", "is not supported yet"},
+        {k_base + "contact: [{type: self, elements: all}]\n", 9, "contact", "is not supported yet"},
+        {k_base + "output:\n  histories:\n    - {name: s, nodes: all, quantity: rigid_striker_uz, reduce: max}\n", 11, "output.histories.0.quantity", "is not supported yet"},
+        {replaced(k_base, plate, "mesh: {generator: square_tube}"), 2, "mesh.generator", "is not supported yet"},
+        // unknown names of sets, materials and curves
+        {replaced(k_base, "material: steel", "material: stel"), 6, "sections.0.material", "unknown material 'stel' (did you mean 'steel'?)"},
+        {replaced(k_base, "elements: all", "elements: al"), 6, "sections.0.elements", "unknown element set 'al'"},
+        {replaced(k_base, "elements: all", "elements: xmin"), 6, "sections.0.elements", "'xmin' is a node set, not an element set"},
+        {k_base + "boundary:\n  - {nodes: rim, fix: all}\n", 10, "boundary.0.nodes", "unknown node set 'rim'; the model defines the node sets all, boundary, xmax"},
+        {k_base + "loads:\n  - {type: force, nodes: all, value: [0, 0, 1], curve: stp}\ncurves:\n  step: [[0, 1]]\n", 10, "loads.0.curve", "unknown curve 'stp' (did you mean 'step'?)"},
+        {k_base + "loads:\n  - {type: force, nodes: all, value: [0, 0, 1], curve: c}\n", 10, "loads.0.curve", "defines no curves"},
+        // boundary, curves, loads, initial conditions, damping
+        {k_base + "boundary:\n  - {nodes: all}\n", 10, "boundary.0", "at least one of fix, symmetry or prescribe"},
+        {k_base + "boundary:\n  - {nodes: all, fix: [ux, uw]}\n", 10, "boundary.0.fix.1", "expected one of ux, uy, uz, rx, ry, rz"},
+        {k_base + "boundary:\n  - {nodes: all, fix: some}\n", 10, "boundary.0.fix", "expected one of all"},
+        {k_base + "boundary:\n  - {nodes: all, symmetry: w}\n", 10, "boundary.0.symmetry", "expected one of x, y, z"},
+        {k_base + "boundary:\n  - {nodes: all, prescribe: {velocity: [1, 0, 0], displacement: [0, 0, 1]}}\n", 10, "boundary.0.prescribe", "exactly one of displacement, velocity or angular_velocity"},
+        {k_base + "boundary:\n  - {nodes: all, prescribe: {velocity: [1, 0]}}\n", 10, "boundary.0.prescribe.velocity", "3 numbers"},
+        {k_base + "curves:\n  c: [[0, 0], [1, 1], [1, 2]]\n", 10, "curves.c.2.0", "increase strictly"},
+        {k_base + "curves:\n  c: [[0, 0], [1]]\n", 10, "curves.c.1", "pair [time, factor]"},
+        {k_base + "curves:\n  c: []\n", 10, "curves.c", "at least one"},
+        {k_base + "loads:\n  - {type: pressure, nodes: all, value: 1}\n", 10, "loads.0.nodes", "use `elements: SET`"},
+        {k_base + "loads:\n  - {type: pressure, elements: all, value: [1, 2, 3]}\n", 10, "loads.0.value", "expected a number"},
+        {k_base + "loads:\n  - {type: force, nodes: all, value: 5}\n", 10, "loads.0.value", "3 numbers"},
+        {k_base + "loads:\n  - {type: gravity, nodes: all, value: 5}\n", 10, "loads.0.type", "expected one of pressure, force, moment"},
+        {k_base + "initial_conditions:\n  - {nodes: all}\n", 10, "initial_conditions.0", "velocity"},
+        {k_base + "damping: {mass: -1}\n", 9, "damping.mass", "0 or more"},
+        // output histories
+        {k_base + "output:\n  histories:\n    - {name: w, nodes: xmin, quantity: uz}\n", 11, "output.histories.0.nodes", "needs `reduce: sum`"},
+        {k_base + "output:\n  histories:\n    - {name: w, nodes: all, quantity: uz, reduce: max}\n    - {name: w, nodes: all, quantity: ux, reduce: max}\n", 12, "output.histories.1.name", "used twice"},
+        {k_base + "output:\n  histories:\n    - {name: 'a,b', nodes: all, quantity: uz, reduce: max}\n", 11, "output.histories.0.name", "commas"},
+        {k_base + "output:\n  histories:\n    - {name: '', nodes: all, quantity: uz, reduce: max}\n", 11, "output.histories.0.name", "empty"},
+        {k_base + "output:\n  histories:\n    - {name: time, nodes: all, quantity: uz, reduce: max}\n", 11, "output.histories.0.name", "first column"},
+        {k_base + "output:\n  histories:\n    - {name: w, nodes: all, quantity: uzz, reduce: max}\n", 11, "output.histories.0.quantity", "did you mean 'uz'"},
+        {k_base + "output:\n  histories:\n    - {name: w, nodes: all, quantity: uz, reduce: avg}\n", 11, "output.histories.0.reduce", "sum, max, min, mean"},
+        {k_base + "output: {every: -1}\n", 9, "output.every", "0 or more"},
+        // sets
+        {k_base + "sets:\n  far: {near: [9, 9, 9], tolerance: 0.1}\n", 10, "sets.far", "the set is empty"},
+        {k_base + "sets:\n  xmin: {near: [0, 0, 0]}\n", 10, "sets.xmin", "already defined by the mesh"},
+        {k_base + "sets:\n  all: {near: [0, 0, 0]}\n", 10, "sets.all", "reserved"},
+        {k_base + "sets:\n  s: {near: [0, 0, 0], box: [[0, 0, 0], [1, 1, 1]]}\n", 10, "sets.s", "exactly one of near"},
+        {k_base + "sets:\n  s: {box: [[1, 0, 0], [0, 1, 1]]}\n", 10, "sets.s.box", "the first corner must be the minimum"},
+        {k_base + "sets:\n  s: {plane: {point: [0, 0, 0], normal: [0, 0, 0]}}\n", 10, "sets.s.plane.normal", "zero vector"},
+        {k_base + "sets:\n  s: {plane: {point: [0, 0, 0]}}\n", 10, "sets.s.plane.normal", "is required"},
+        {k_base + "sets:\n  s: {near: [0, 0, 0]}\nloads:\n  - {type: pressure, elements: s, value: 1}\n", 12, "loads.0.elements", "contains no element"},
+        // sections must cover every element
+        {replaced(k_base, "elements: all", "elements: half") + "sets:\n  half: {box: [[0, 0, -1], [1, 1, 1]]}\n", 5, "sections", "has no section"},
+        // mesh generators
+        {replaced(k_base, "nx: 4", "nx: -3"), 2, "mesh.nx", "whole number from 1"},
+        {replaced(k_base, "nx: 4", "nx: 2.5"), 2, "mesh.nx", "whole number"},
+        {replaced(k_base, "nx: 4", "nx: many"), 2, "mesh.nx", "whole number"},
+        {replaced(k_base, "nx: 4, ny: 2", "nx: 1e7, ny: 1e7"), 2, "mesh", "more than the limit"},
+        {replaced(k_base, "nx: 4", "nx: 1e30"), 2, "mesh.nx", "whole number"},
+        {replaced(k_base, "length_x: 2", "length_x: 0"), 2, "mesh.length_x", "greater than 0"},
+        {replaced(k_base, ", ny: 2", ""), 2, "mesh.ny", "is required"},
+        {replaced(k_base, "generator: plate", "generator: plat"), 2, "mesh.generator", "did you mean 'plate'"},
+        {replaced(k_base, plate, "mesh: {generator: plate, file: a.msh}"), 2, "mesh", "keep exactly one"},
+        {replaced(k_base, plate, "mesh: {nx: 3}"), 2, "mesh", "needs either `generator` or `file`"},
+        {replaced(k_base, "nx: 4", "nx: 4, pattern: diagonal"), 2, "mesh.pattern", "right, left, alternate, cross"},
+        {replaced(k_base, plate, "mesh: {generator: spherical_cap, radius: 1, half_angle_deg: 30, sector_deg: 45, divisions: 3}"), 2, "mesh.sector_deg", "multiple of 60"},
+        {replaced(k_base, plate, "mesh: {generator: spherical_cap, radius: 1, half_angle_deg: 180, divisions: 3}"), 2, "mesh.half_angle_deg", "less than 180"},
+        {replaced(k_base, plate, "mesh: {generator: cylinder_panel, radius: 1, length: 1, angle_deg: 400, divisions_arc: 3, divisions_length: 1}"), 2, "mesh.angle_deg", "at most 360"},
+        {replaced(k_base, plate, "mesh: {generator: cylinder_panel, radius: 1, length: 1, angle_deg: 360, divisions_arc: 2, divisions_length: 1}"), 2, "mesh.divisions_arc", "from 3"},
+        {replaced(k_base, plate, "mesh: {generator: annulus, inner_radius: 2, outer_radius: 1, divisions_radial: 1, divisions_angle: 4}"), 2, "mesh.outer_radius", "greater than inner_radius"},
+        {replaced(k_base, plate, "mesh: {file: nothere.msh}"), 2, "mesh.file", "does not exist"},
+        {replaced(k_base, plate, "mesh: {file: .}"), 2, "mesh.file", "not a regular file"},
+    };
+    for (std::size_t i = 0; i < cases.size(); ++i) {
+        SCOPED_TRACE("case " + std::to_string(i) + ": " + cases[i].key);
+        expect_error(cases[i].yaml, cases[i].line, cases[i].key, cases[i].part);
+    }
+}
+
+// A mesh file of an unknown type, or one that is not a usable mesh, is refused with the key
+// mesh.file and the reason found in the mesh file.
+TEST(ModelReader, RefusesMeshFilesThatAreNotMeshes) {
+    const TempDir dir;
+    (void)dir.write("plate.inp", "*NODE\n1, 0, 0, 0\n");
+    (void)dir.write("plate.stl", "solid x\n");
+    (void)dir.write("fake.msh", "Point(1) = {0, 0, 0};\n");
+    const std::string plate = "mesh: {generator: plate, length_x: 2, length_y: 1, nx: 4, ny: 2}";
+    expect_error(replaced(k_base, plate, "mesh: {file: " + dir.path("plate.inp") + "}"), 2,
+                 "mesh.file", "plate.inp: the file holds no shell element");
+    expect_error(replaced(k_base, plate, "mesh: {file: " + dir.path("plate.stl") + "}"), 2,
+                 "mesh.file", "unknown mesh file type '.stl'");
+    expect_error(replaced(k_base, plate, "mesh: {file: " + dir.path("fake.msh") + "}"), 2,
+                 "mesh.file", "not a Gmsh mesh file");
+}
+
+// Problems with the file itself: missing, a folder, empty, YAML syntax errors (with their
+// line), a list or a scalar at the top level, binary garbage, runaway nesting and cyclic
+// aliases all give an InputError and never a crash or a hang.
+TEST(ModelReader, MalformedFilesGiveInputErrors) {
+    {
+        const TempDir dir;
+        const std::string missing = dir.path("missing.yaml");
+        try {
+            (void)read_model(missing);
+            ADD_FAILURE() << "no error for a missing file";
+        } catch (const InputError& e) {
+            EXPECT_EQ(std::string(e.what()).rfind(missing + ": cannot open", 0), 0U) << e.what();
+        }
+        EXPECT_THROW((void)read_model(dir.path("")), InputError);  // a folder
+    }
+    expect_error("", 0, "", "empty");
+    expect_error("# only a comment\n", 0, "", "empty");
+    expect_error("title: x\nmesh: [1, 2\n", 3, "", "not valid YAML");
+    expect_error("title: x\n  bad indentation: 1\n", 2, "", "not valid YAML");
+    expect_error("- 1\n- 2\n", 1, "", "must be a map");
+    expect_error("hello\n", 1, "", "must be a map");
+    expect_error(std::string("\0\x01\xff\xfe garbage \x80", 16), -1, "", "");
+    expect_error(std::string(20000, '['), -1, "", "");
+    expect_error(k_base + "damping: &d {mass: *d}\n", 9, "damping.mass", "expected a number");
+    expect_error(replaced(k_base, "control:\n  end_time: 1.0e-3\n", ""), 1, "control",
+                 "is required but missing");
+    expect_error(k_base + "? [a, b]\n: 1\n", 9, "", "plain names");
+}
+
+// --set overrides replace scalars and vectors by key path (list items by index) before the
+// model is read; bad paths, maps and malformed overrides are refused naming "--set" and the key.
+TEST(ModelReader, AppliesSetOverrides) {
+    const TempDir dir;
+    const std::string file = dir.write(
+        "model.yaml", k_base + "loads:\n  - {type: pressure, elements: all, value: 600}\n"
+                               "  - {type: force, nodes: all, value: [0, 0, -1]}\n");
+    const Model m = read_model(file, {"control.end_time=2e-3", "loads.0.value=700",
+                                      "loads.1.value=[0, 0, -3]", "mesh.nx=8",
+                                      "materials.steel.poisson_ratio = 0.25",
+                                      "control.end_time=4e-3"});
+    EXPECT_EQ(m.control.end_time, 4e-3);  // the later override wins
+    EXPECT_EQ(m.loads[0].pressure, 700.0);
+    EXPECT_EQ(m.loads[1].vector, Vec3(0, 0, -3));
+    EXPECT_EQ(m.n_particles(), 9 * 3);
+    EXPECT_EQ(m.materials[0].poisson_ratio, 0.25);
+    EXPECT_DOUBLE_EQ(m.output.every, 4e-3 / 200);  // defaults follow the overridden end_time
+
+    expect_override_error({"control.end_time=-1"}, "control.end_time", "greater than 0");
+    expect_override_error({"control.end_time=abc"}, "control.end_time", "expected a number");
+    expect_override_error({"control.time_step_scale=0.5"}, "control.time_step_scale",
+                          "does not exist");
+    expect_override_error({"sections.3.thickness=1"}, "sections.3.thickness", "does not exist");
+    expect_override_error({"sections.x.thickness=1"}, "sections.x.thickness", "does not exist");
+    expect_override_error({"control=1"}, "control", "holds a map");
+    expect_override_error({"sections=1"}, "sections", "holds a map or a list of lists or maps");
+    expect_override_error({"control.end_time"}, "control.end_time", "key.path=value");
+    expect_override_error({"control.end_time="}, "control.end_time", "no value");
+    expect_override_error({"control.end_time=[1"}, "control.end_time", "not valid YAML");
+    expect_override_error({"control..end_time=1"}, "control..end_time", "empty component");
+    expect_override_error({"mesh.nx=0"}, "mesh.nx", "whole number");
+}
+
+}  // namespace
+}  // namespace fpmshell

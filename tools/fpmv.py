@@ -1,0 +1,101 @@
+"""Shared helpers of the verification/validation problem scripts (validation/<name>/run.py).
+
+Protocol of a problem script (see validation/README.md):
+    run.py --fpmshell PATH --out DIR [--quick]
+runs fpmshell on its model(s), compares with the reference, writes DIR/rows.json (one row per
+compared quantity, fields below), draws its plots into docs/validation/, prints one line per row
+and a closing 'N passed, M failed' line, and exits 0 only when every row passed.
+"""
+import argparse
+import csv
+import json
+import os
+import subprocess
+import sys
+import time
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+PLOT_DIR = os.path.join(ROOT, "docs", "validation")
+
+
+def parse_args(description):
+    ap = argparse.ArgumentParser(description=description)
+    ap.add_argument("--fpmshell", default=os.path.join(ROOT, "build", "fpmshell"))
+    ap.add_argument("--out", required=True, help="folder for the runs and rows.json")
+    ap.add_argument("--quick", action="store_true", help="coarse meshes only (make test)")
+    return ap.parse_args()
+
+
+def run(fpmshell, model, out_dir, overrides=(), threads=None):
+    """Runs fpmshell on model into out_dir with --set overrides; returns (results dict, wall s).
+    Raises RuntimeError with the log tail when fpmshell fails."""
+    cmd = [fpmshell, "run", model, "-o", out_dir, "--quiet", "--overwrite"]
+    for o in overrides:
+        cmd += ["--set", o]
+    if threads:
+        cmd += ["--threads", str(threads)]
+    t0 = time.time()
+    p = subprocess.run(cmd, capture_output=True, text=True)
+    wall = time.time() - t0
+    if p.returncode != 0:
+        raise RuntimeError("fpmshell failed (exit %d): %s\n%s" % (p.returncode, " ".join(cmd),
+                                                                  (p.stdout + p.stderr)[-3000:]))
+    return read_results(out_dir), wall
+
+
+def read_csv(path):
+    """CSV with one header line -> dict column name -> list of floats."""
+    with open(path) as f:
+        rows = list(csv.reader(f))
+    head, data = rows[0], rows[1:]
+    return {h: [float(r[i]) for r in data] for i, h in enumerate(head)}
+
+
+def read_results(out_dir):
+    res = {"history": read_csv(os.path.join(out_dir, "history.csv")),
+           "energy": read_csv(os.path.join(out_dir, "energy.csv"))}
+    with open(os.path.join(out_dir, "summary.json")) as f:
+        res["summary"] = json.load(f)
+    return res
+
+
+def row(problem, quantity, reference, value, tolerance, mesh="", wall=0.0, plot="", note="",
+        relative=True, unit=""):
+    """One compared quantity. relative: error = |value - reference| / |reference|, else absolute.
+    tolerance is on the same scale as error; a None tolerance means 'reported, not tested'."""
+    err = abs(value - reference) / abs(reference) if relative and reference != 0 else abs(value - reference)
+    ok = True if tolerance is None else err <= tolerance
+    return {"problem": problem, "quantity": quantity, "reference": reference, "value": value,
+            "error": err, "relative": relative, "tolerance": tolerance, "unit": unit, "mesh": mesh,
+            "wall_seconds": wall, "plot": plot, "note": note, "pass": ok}
+
+
+def finish(out_dir, rows):
+    """Writes rows.json, prints the rows and the closing line; returns the exit code."""
+    os.makedirs(out_dir, exist_ok=True)
+    with open(os.path.join(out_dir, "rows.json"), "w") as f:
+        json.dump(rows, f, indent=1)
+    n_fail = 0
+    for r in rows:
+        status = "ok  " if r["pass"] else "FAIL"
+        if not r["pass"]:
+            n_fail += 1
+        tol = "report only" if r["tolerance"] is None else "tol %.3g" % r["tolerance"]
+        print("%s %s | %s | mesh %s: ref %.6g, got %.6g, error %.3g (%s)" % (
+            status, r["problem"], r["quantity"], r["mesh"], r["reference"], r["value"],
+            r["error"], tol))
+    print("%d passed, %d failed" % (len(rows) - n_fail, n_fail))
+    return 0 if n_fail == 0 else 1
+
+
+def plot_path(name):
+    os.makedirs(PLOT_DIR, exist_ok=True)
+    return os.path.join(PLOT_DIR, name)
+
+
+def pyplot():
+    """matplotlib.pyplot with a non-interactive backend."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    return plt
