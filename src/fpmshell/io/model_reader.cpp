@@ -429,13 +429,13 @@ private:
 YAML::Node load_yaml(const std::string& path) {
     std::error_code ec;
     if (std::filesystem::is_directory(path, ec))
-        throw InputError(input_error_text(path, 0, "", "cannot open the model file: it is a "
-                                                       "folder; expected a YAML file"));
+        throw InputError(input_error_text(path, 0, "",
+                                          "cannot open the model file: it is a "
+                                          "folder; expected a YAML file"));
     std::ifstream in(path, std::ios::binary);
     if (!in)
-        throw InputError(input_error_text(path, 0, "",
-                                          std::string("cannot open the model file (") +
-                                              std::strerror(errno) + ")"));
+        throw InputError(input_error_text(
+            path, 0, "", std::string("cannot open the model file (") + std::strerror(errno) + ")"));
     // Read at most the limit (+1 byte to notice more): also safe on pipes and devices.
     std::string content;
     std::vector<char> chunk(1U << 16U);
@@ -444,14 +444,17 @@ YAML::Node load_yaml(const std::string& path) {
         content.append(chunk.data(), static_cast<std::size_t>(in.gcount()));
     }
     if (content.size() > k_max_model_file_bytes)
-        throw InputError(input_error_text(path, 0, "", "the model file is larger than 64 MiB; "
-                                                       "put big data in a mesh file"));
+        throw InputError(input_error_text(path, 0, "",
+                                          "the model file is larger than 64 MiB; "
+                                          "put big data in a mesh file"));
     try {
         return YAML::Load(content);
     } catch (const YAML::Exception& e) {
         const int line = e.mark.is_null() ? 0 : e.mark.line + 1;
-        throw InputError(
-            input_error_text(path, line, "", "the file is not valid YAML (" + e.msg + ")"));
+        throw InputError(input_error_text(path, line, "",
+                                          "the file is not valid YAML (" + e.msg +
+                                              "); check the indentation, colons, quotes and "
+                                              "brackets on this line and the lines just before"));
     }
 }
 
@@ -476,8 +479,9 @@ Model read_model(const std::string& path, const std::vector<std::string>& set_ov
     Model model;
     model.source_file = path;
     const YamlMap top = YamlValue(ctx, root, "").map(k_top_keys);
-    for (const auto& [key, what] : {std::pair<const char*, const char*>{"rigid_bodies", "the key rigid_bodies (impactors)"},
-                                    {"contact", "the key contact"}}) {
+    for (const auto& [key, what] :
+         {std::pair<const char*, const char*>{"rigid_bodies", "the key rigid_bodies (impactors)"},
+          {"contact", "the key contact"}}) {
         const auto v = top.find(key);
         if (v && !v->is_null() && !(v->is_list() && v->node().size() == 0))
             v->fail(not_supported(what) + "; remove it");

@@ -15,10 +15,10 @@ using namespace text_mesh;
 
 /// Number of nodes of a supported surface element type, 0 for a line element, -1 otherwise.
 int element_nodes(const std::string& type) {
-    static const std::vector<std::string> tri = {"S3",   "S3R", "S3RS", "CPS3",  "CPE3",
+    static const std::vector<std::string> tri = {"S3",   "S3R",  "S3RS",  "CPS3",  "CPE3",
                                                  "M3D3", "R3D3", "STRI3", "SFM3D3"};
-    static const std::vector<std::string> quad = {"S4",    "S4R",  "S4RS",  "S4R5",   "CPS4",
-                                                  "CPS4R", "CPE4", "CPE4R", "M3D4",   "M3D4R",
+    static const std::vector<std::string> quad = {"S4",    "S4R",    "S4RS",   "S4R5", "CPS4",
+                                                  "CPS4R", "CPE4",   "CPE4R",  "M3D4", "M3D4R",
                                                   "R3D4",  "SFM3D4", "SFM3D4R"};
     if (std::find(tri.begin(), tri.end(), type) != tri.end()) return 3;
     if (std::find(quad.begin(), quad.end(), type) != quad.end()) return 4;
@@ -67,8 +67,10 @@ public:
             const std::string t = trim(text);
             if (t.empty() || t.rfind("**", 0) == 0) continue;
             if (t.front() == '*') {
-                if (!pending.empty()) raw_.fail(pending_line, "the element card ends with a comma "
-                                                              "but is not continued");
+                if (!pending.empty())
+                    raw_.fail(pending_line,
+                              "the element card ends with a comma "
+                              "but is not continued");
                 start(parse_keyword(t), number);
                 continue;
             }
@@ -141,7 +143,8 @@ private:
         auto fields = split_commas(t);
         while (!fields.empty() && fields.back().empty()) fields.pop_back();
         switch (block_) {
-            case Block::Skip: return;
+            case Block::Skip:
+                return;
             case Block::Node: {
                 if (fields.size() < 3 || fields.size() > 4)
                     raw_.fail(line, "a *NODE line needs: node number, x, y[, z]");
@@ -181,10 +184,12 @@ private:
                         raw_.fail(line, "a GENERATE line needs: first, last[, increment]");
                     const long long first = id(fields[0], line, "first");
                     const long long last = id(fields[1], line, "last");
-                    const long long step = fields.size() == 3 ? id(fields[2], line, "increment") : 1;
+                    const long long step =
+                        fields.size() == 3 ? id(fields[2], line, "increment") : 1;
                     if (step <= 0 || last < first || (last - first) / step > 100'000'000)
-                        raw_.fail(line, "GENERATE needs first <= last and an increment >= 1 "
-                                        "(at most 1e8 members)");
+                        raw_.fail(line,
+                                  "GENERATE needs first <= last and an increment >= 1 "
+                                  "(at most 1e8 members)");
                     for (long long v = first; v <= last; v += step) members.push_back(v);
                     return;
                 }
@@ -197,8 +202,9 @@ private:
                     }
                     const auto other = names_.find(upper(f));
                     if (other == names_.end() || sets.count(other->second) == 0)
-                        raw_.fail(line, "'" + f + "' is neither a number nor the name of a set "
-                                                  "defined above");
+                        raw_.fail(line, "'" + f +
+                                            "' is neither a number nor the name of a set "
+                                            "defined above");
                     const auto copy = sets.at(other->second);
                     members.insert(members.end(), copy.begin(), copy.end());
                 }

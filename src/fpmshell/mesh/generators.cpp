@@ -180,8 +180,8 @@ MeshData generate_annulus(const AnnulusParams& p) {
     const Real dr = (p.outer_radius - p.inner_radius) / static_cast<Real>(p.divisions_radial);
     const Real dtheta = deg_to_rad(p.sector_deg) / static_cast<Real>(p.divisions_angle);
     MeshData m = map_grid(g, [&](Real u, Real v) {
-        const Real r = u == static_cast<Real>(p.divisions_radial) ? p.outer_radius
-                                                                  : p.inner_radius + u * dr;
+        const Real r =
+            u == static_cast<Real>(p.divisions_radial) ? p.outer_radius : p.inner_radius + u * dr;
         const Real theta = v * dtheta;
         return Vec3(r * std::cos(theta), r * std::sin(theta), 0.0);
     });
@@ -196,7 +196,8 @@ MeshData generate_annulus(const AnnulusParams& p) {
 Index spherical_cap_ring_segments(Real sector_deg, Index k) {
     if (!(sector_deg > 0 && sector_deg <= 360)) return 0;
     const Real sixty = sector_deg / 60.0;
-    if (std::abs(sixty - std::round(sixty)) < 1e-9) return k * static_cast<Index>(std::round(sixty));
+    if (std::abs(sixty - std::round(sixty)) < 1e-9)
+        return k * static_cast<Index>(std::round(sixty));
     const Real ninety = sector_deg / 90.0;
     if (std::abs(ninety - std::round(ninety)) < 1e-9)
         return 2 * k * static_cast<Index>(std::round(ninety));
@@ -266,7 +267,8 @@ MeshData generate_spherical_cap(const SphericalCapParams& p) {
                 advance_outer = lhs < rhs;
             }
             if (advance_outer) {
-                m.triangles.push_back({ring_node(k - 1, pi), ring_node(k, qo), ring_node(k, qo + 1)});
+                m.triangles.push_back(
+                    {ring_node(k - 1, pi), ring_node(k, qo), ring_node(k, qo + 1)});
                 ++qo;
             } else {
                 m.triangles.push_back(

@@ -48,8 +48,9 @@ void check_msh_header(const std::string& path) {
         while (!first.empty() && (first.back() == '\r' || first.back() == ' ')) first.pop_back();
     }
     if (first.rfind("$MeshFormat", 0) != 0)
-        fail(path, "this is not a Gmsh mesh file (it does not start with $MeshFormat); "
-                   "expected a .msh file of format 2 or 4");
+        fail(path,
+             "this is not a Gmsh mesh file (it does not start with $MeshFormat); "
+             "expected a .msh file of format 2 or 4");
 }
 
 }  // namespace
@@ -103,7 +104,8 @@ MeshData read_gmsh(const std::string& path) {
                     const std::size_t c = nodes[4 * e + 2];
                     const std::size_t d = nodes[4 * e + 3];
                     // Split along the shorter diagonal; both halves keep the quad's orientation.
-                    if ((coord(c) - coord(a)).squaredNorm() <= (coord(d) - coord(b)).squaredNorm()) {
+                    if ((coord(c) - coord(a)).squaredNorm() <=
+                        (coord(d) - coord(b)).squaredNorm()) {
                         add(tags[e], {a, b, c});
                         add(tags[e], {a, c, d});
                     } else {
@@ -126,8 +128,9 @@ MeshData read_gmsh(const std::string& path) {
             }
         }
         if (tagged_triangles.empty())
-            fail(path, "the file holds no triangle or quadrangle elements; expected a surface "
-                       "mesh (an empty or truncated file, or a mesh of lines or volumes only?)");
+            fail(path,
+                 "the file holds no triangle or quadrangle elements; expected a surface "
+                 "mesh (an empty or truncated file, or a mesh of lines or volumes only?)");
 
         // Compact renumbering in increasing tag order of the nodes used by surface elements.
         std::vector<std::size_t> used;

@@ -93,7 +93,8 @@ private:
         std::vector<std::string> parts;
         for (std::size_t start = 0;;) {
             const auto u = name.find('_', start);
-            parts.push_back(name.substr(start, u == std::string::npos ? std::string::npos : u - start));
+            parts.push_back(
+                name.substr(start, u == std::string::npos ? std::string::npos : u - start));
             if (u == std::string::npos) break;
             start = u + 1;
         }
@@ -108,8 +109,9 @@ private:
             if (options.count("OFFSET")) ++cards_per_element_;
             for (const auto& o : options)
                 if (o != "THICKNESS" && o != "BETA" && o != "MCID" && o != "OFFSET")
-                    raw_.fail(number, "*" + name + " is not supported; use *ELEMENT_SHELL "
-                                                   "(optionally _THICKNESS, _BETA, _MCID, _OFFSET)");
+                    raw_.fail(number, "*" + name +
+                                          " is not supported; use *ELEMENT_SHELL "
+                                          "(optionally _THICKNESS, _BETA, _MCID, _OFFSET)");
         } else if (name.rfind("SET_NODE", 0) == 0 || name.rfind("SET_SHELL", 0) == 0) {
             block_ = parts[1] == "NODE" ? Block::NodeSet : Block::ShellSet;
             title_ = generate_ = false;
@@ -119,9 +121,10 @@ private:
                 } else if (parts[k] == "GENERATE") {
                     generate_ = true;
                 } else if (parts[k] != "LIST") {
-                    raw_.fail(number, "*" + name + " is not supported; use *SET_NODE_LIST or "
-                                                   "*SET_SHELL_LIST (optionally _TITLE, "
-                                                   "_GENERATE)");
+                    raw_.fail(number, "*" + name +
+                                          " is not supported; use *SET_NODE_LIST or "
+                                          "*SET_SHELL_LIST (optionally _TITLE, "
+                                          "_GENERATE)");
                 }
             }
             set_title_.clear();
@@ -138,10 +141,11 @@ private:
     void card(const std::string& line, int number) {
         const int index = card_++;
         switch (block_) {
-            case Block::Skip: return;
+            case Block::Skip:
+                return;
             case Block::Node: {
-                const std::vector<std::size_t> widths = {width(8), width(16), width(16),
-                                                         width(16), width(8), width(8)};
+                const std::vector<std::size_t> widths = {width(8),  width(16), width(16),
+                                                         width(16), width(8),  width(8)};
                 const auto f = card_fields(line, widths, [](std::size_t k, const std::string& s) {
                     return k == 0 ? blank_or_id(s) && !s.empty() : k <= 3 ? blank_or_real(s) : true;
                 });
@@ -155,10 +159,9 @@ private:
             }
             case Block::Shell: {
                 if (index % cards_per_element_ != 0) return;  // thickness/offset cards
-                const auto f = card_fields(line, std::vector<std::size_t>(10, width(8)),
-                                           [](std::size_t, const std::string& s) {
-                                               return blank_or_id(s);
-                                           });
+                const auto f =
+                    card_fields(line, std::vector<std::size_t>(10, width(8)),
+                                [](std::size_t, const std::string& s) { return blank_or_id(s); });
                 if (f.size() < 5)
                     raw_.fail(number, "an *ELEMENT_SHELL card needs: EID, PID, N1, N2, N3, N4");
                 const long long e = id(f[0], number, "an element number");
@@ -176,8 +179,9 @@ private:
                 }
                 if (nodes[3] == 0 || nodes[3] == nodes[2]) nodes.pop_back();
                 for (const long long n : nodes)
-                    if (n <= 0) raw_.fail(number, "element " + std::to_string(e) +
-                                                      " needs at least 3 node numbers");
+                    if (n <= 0)
+                        raw_.fail(number, "element " + std::to_string(e) +
+                                              " needs at least 3 node numbers");
                 raw_.add_shell(e, nodes, number);
                 const std::string part = "part_" + std::to_string(pid);
                 raw_.element_sets[part].push_back(e);
@@ -190,10 +194,9 @@ private:
                     set_title_ = trim(line);
                     return;
                 }
-                const auto f = card_fields(line, std::vector<std::size_t>(8, width(10)),
-                                           [](std::size_t, const std::string& s) {
-                                               return blank_or_id(s);
-                                           });
+                const auto f =
+                    card_fields(line, std::vector<std::size_t>(8, width(10)),
+                                [](std::size_t, const std::string& s) { return blank_or_id(s); });
                 if (index == (title_ ? 1 : 0)) {  // header card: SID, DA1..DA4, SOLVER
                     if (f.empty()) raw_.fail(number, "a set card needs its SID first");
                     const long long sid = id(f[0], number, "a set number (SID)");
@@ -229,8 +232,9 @@ private:
                     const long long last = ids[k + 1];
                     if (first == 0 && last == 0) continue;
                     if (first <= 0 || last < first || last - first > 100'000'000)
-                        raw_.fail(number, "a GENERATE range needs 0 < first <= last (at most 1e8 "
-                                          "members)");
+                        raw_.fail(number,
+                                  "a GENERATE range needs 0 < first <= last (at most 1e8 "
+                                  "members)");
                     for (long long v = first; v <= last; ++v) members.push_back(v);
                 }
                 return;

@@ -31,8 +31,8 @@ std::vector<std::string> split_commas(const std::string& s) {
     std::size_t start = 0;
     while (true) {
         const auto comma = s.find(',', start);
-        out.push_back(trim(s.substr(start, comma == std::string::npos ? std::string::npos
-                                                                      : comma - start)));
+        out.push_back(
+            trim(s.substr(start, comma == std::string::npos ? std::string::npos : comma - start)));
         if (comma == std::string::npos) break;
         start = comma + 1;
     }
@@ -90,8 +90,9 @@ void RawMesh::add_shell(long long id, std::vector<long long> node_ids, int line)
 
 MeshData finish_raw_mesh(const RawMesh& raw) {
     if (raw.shells.empty())
-        raw.fail(0, "the file holds no shell element (triangles or quadrangles); expected a "
-                    "surface mesh");
+        raw.fail(0,
+                 "the file holds no shell element (triangles or quadrangles); expected a "
+                 "surface mesh");
     // Duplicate element ids.
     std::unordered_map<long long, std::size_t> shell_of_id;  // id -> index in raw.shells
     shell_of_id.reserve(raw.shells.size());

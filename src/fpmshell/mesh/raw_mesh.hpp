@@ -29,9 +29,9 @@ struct RawMesh {
     std::unordered_map<long long, Node> nodes;
     std::vector<Element> shells;
     std::unordered_map<long long, std::vector<long long>> other_elements;  ///< id -> node ids
-    std::map<std::string, std::vector<long long>> node_sets;     ///< name -> node ids
-    std::map<std::string, std::vector<long long>> element_sets;  ///< name -> element ids
-    std::map<std::string, int> set_lines;                         ///< name -> first line
+    std::map<std::string, std::vector<long long>> node_sets;               ///< name -> node ids
+    std::map<std::string, std::vector<long long>> element_sets;            ///< name -> element ids
+    std::map<std::string, int> set_lines;                                  ///< name -> first line
 
     /// Adds a node; a second definition of the same id is an InputError.
     void add_node(long long id, const Vec3& x, int line);

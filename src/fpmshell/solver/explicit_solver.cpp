@@ -354,6 +354,9 @@ ExplicitSolver::RelaxResult ExplicitSolver::relax(Real load_time) {
         for (std::size_t p = 0; p < s_.size(); ++p)
             ke += s_.mass[p] * s_.v[p].squaredNorm() + s_.inertia[p] * s_.omega[p].squaredNorm();
         if (ke < ke_prev) {
+            // The kinetic energy taken out is dissipated, like damping: the balance stays closed.
+            energy_.damping += energy_.kinetic;
+            energy_.kinetic = 0;
             for (std::size_t p = 0; p < s_.size(); ++p) {
                 if (!prescribed_translation_[p]) s_.v[p].setZero();
                 if (!prescribed_rotation_[p]) s_.omega[p].setZero();

@@ -2,13 +2,12 @@
 // documented Model fields, every error category gives one sentence with the file, the line and
 // the key, --set overrides work, and malformed input never crashes or hangs.
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
 #include <string>
 #include <vector>
-
-#include <unistd.h>
 
 #include "fpmshell/core/errors.hpp"
 #include "fpmshell/io/model_reader.hpp"
@@ -22,8 +21,8 @@ public:
     TempDir() {
         const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
         path_ = std::filesystem::temp_directory_path() /
-                ("fpmshell_reader_" + std::string(info->name()) + "_" +
-                 std::to_string(::getpid()) + "_" + std::to_string(counter_++));
+                ("fpmshell_reader_" + std::string(info->name()) + "_" + std::to_string(::getpid()) +
+                 "_" + std::to_string(counter_++));
         std::filesystem::create_directories(path_);
     }
     ~TempDir() {
@@ -37,7 +36,9 @@ public:
         std::ofstream(p, std::ios::binary) << text;
         return p.string();
     }
-    [[nodiscard]] std::string path(const std::string& name) const { return (path_ / name).string(); }
+    [[nodiscard]] std::string path(const std::string& name) const {
+        return (path_ / name).string();
+    }
 
 private:
     static inline int counter_ = 0;
@@ -267,30 +268,38 @@ TEST(ModelReader, AppliesDefaults) {
 TEST(ModelReader, ReadsEveryGenerator) {
     const TempDir dir;
     auto read_mesh = [&](const std::string& mesh) {
-        return read_model(dir.write("gen.yaml", replaced(k_base,
-            "mesh: {generator: plate, length_x: 2, length_y: 1, nx: 4, ny: 2}", mesh)));
+        return read_model(dir.write(
+            "gen.yaml",
+            replaced(k_base, "mesh: {generator: plate, length_x: 2, length_y: 1, nx: 4, ny: 2}",
+                     mesh)));
     };
-    const Model cap = read_mesh("mesh: {generator: spherical_cap, radius: 22.27, half_angle_deg: "
-                                "26.67, sector_deg: 90, divisions: 12}");
+    const Model cap = read_mesh(
+        "mesh: {generator: spherical_cap, radius: 22.27, half_angle_deg: "
+        "26.67, sector_deg: 90, divisions: 12}");
     EXPECT_EQ(cap.n_particles(), 1 + 12 * 13 + 12);
     EXPECT_EQ(cap.node_sets.count("edge0"), 1U);
-    const Model hex = read_mesh("mesh: {generator: spherical_cap, radius: 22.27, half_angle_deg: "
-                                "26.67, divisions: 6}");
+    const Model hex = read_mesh(
+        "mesh: {generator: spherical_cap, radius: 22.27, half_angle_deg: "
+        "26.67, divisions: 6}");
     EXPECT_EQ(hex.n_particles(), 127);
-    const Model cyl = read_mesh("mesh: {generator: cylinder_panel, radius: 300, length: 600, "
-                                "angle_deg: 80, divisions_arc: 4, divisions_length: 3, "
-                                "pattern: alternate}");
+    const Model cyl = read_mesh(
+        "mesh: {generator: cylinder_panel, radius: 300, length: 600, "
+        "angle_deg: 80, divisions_arc: 4, divisions_length: 3, "
+        "pattern: alternate}");
     EXPECT_EQ(cyl.n_particles(), 20);
     EXPECT_EQ(cyl.node_sets.count("arc1"), 1U);
-    const Model tube = read_mesh("mesh: {generator: cylinder_panel, radius: 1, length: 2, "
-                                 "angle_deg: 360, divisions_arc: 6, divisions_length: 2}");
+    const Model tube = read_mesh(
+        "mesh: {generator: cylinder_panel, radius: 1, length: 2, "
+        "angle_deg: 360, divisions_arc: 6, divisions_length: 2}");
     EXPECT_EQ(tube.n_particles(), 18);
-    const Model ring = read_mesh("mesh: {generator: annulus, inner_radius: 6, outer_radius: 10, "
-                                 "divisions_radial: 2, divisions_angle: 8, pattern: cross}");
+    const Model ring = read_mesh(
+        "mesh: {generator: annulus, inner_radius: 6, outer_radius: 10, "
+        "divisions_radial: 2, divisions_angle: 8, pattern: cross}");
     EXPECT_EQ(ring.n_particles(), 3 * 9 + 16);
     EXPECT_EQ(ring.node_sets.at("edge1").size(), 3U);
-    const Model plate = read_mesh("mesh: {generator: plate, length_x: 1, length_y: 1, nx: 2, "
-                                  "ny: 1, origin: [0, 0, 5], pattern: left}");
+    const Model plate = read_mesh(
+        "mesh: {generator: plate, length_x: 1, length_y: 1, nx: 2, "
+        "ny: 1, origin: [0, 0, 5], pattern: left}");
     EXPECT_EQ(plate.nodes[0].z(), 5.0);
 }
 
@@ -321,9 +330,9 @@ $Elements
 $EndElements
 )";
     (void)dir.write("plate.msh", msh);
-    const std::string yaml = replaced(
-        k_base, "mesh: {generator: plate, length_x: 2, length_y: 1, nx: 4, ny: 2}",
-        "mesh: {file: plate.msh}\nboundary:\n  - {nodes: clamp, fix: all}");
+    const std::string yaml =
+        replaced(k_base, "mesh: {generator: plate, length_x: 2, length_y: 1, nx: 4, ny: 2}",
+                 "mesh: {file: plate.msh}\nboundary:\n  - {nodes: clamp, fix: all}");
     const Model m = read_model(dir.write("model.yaml", yaml));
     EXPECT_EQ(m.n_particles(), 4);
     EXPECT_EQ(m.n_elements(), 2);
@@ -331,9 +340,10 @@ $EndElements
     EXPECT_EQ(m.element_sets.at("skin").size(), 2U);
 
     (void)dir.write("plate.msh", replaced(msh, "3 2 2 2 1 1 3 4", "3 2 2 2 1 1 2 2"));
-    expect_error(replaced(k_base, "mesh: {generator: plate, length_x: 2, length_y: 1, nx: 4, ny: 2}",
-                          "mesh: {file: " + dir.path("plate.msh") + "}"),
-                 2, "mesh", "element 2 (number 3 in the mesh file) is degenerate");
+    expect_error(
+        replaced(k_base, "mesh: {generator: plate, length_x: 2, length_y: 1, nx: 4, ny: 2}",
+                 "mesh: {file: " + dir.path("plate.msh") + "}"),
+        2, "mesh", "element 2 (number 3 in the mesh file) is degenerate");
 }
 
 // Every error category names the file, the line and the key in one sentence.
@@ -349,93 +359,168 @@ TEST(ModelReader, EveryErrorNamesFileLineAndKey) {
     const std::string section = "  - {elements: all, material: steel, thickness: 0.1}";
     const std::vector<Case> cases = {
         // unknown keys, with a suggestion and the valid keys
-        {k_base + "contorl: 1\n", 9, "contorl", "unknown key (did you mean 'control'?); valid keys at the top level are title, mesh"},
+        {k_base + "contorl: 1\n", 9, "contorl",
+         "unknown key (did you mean 'control'?); valid keys at the top level are title, mesh"},
         {k_base + "  end_tme: 2\n", 9, "control.end_tme", "(did you mean 'end_time'?)"},
         {replaced(k_base, "nx: 4", "nxx: 4"), 2, "mesh.nxx", "valid keys under 'mesh' are"},
-        {replaced(k_base, steel, "poisson_ratio: 0.3, colour: red}"), 4, "materials.steel.colour", "unknown key"},
+        {replaced(k_base, steel, "poisson_ratio: 0.3, colour: red}"), 4, "materials.steel.colour",
+         "unknown key"},
         // wrong types, missing keys, scalars where maps or lists are expected
-        {replaced(k_base, "end_time: 1.0e-3", "end_time: abc"), 8, "control.end_time", "expected a number, got 'abc'"},
-        {replaced(k_base, "end_time: 1.0e-3", "end_time: [1, 2]"), 8, "control.end_time", "expected a number, got a list"},
-        {replaced(k_base, "end_time: 1.0e-3", "mode: dynamic"), 7, "control.end_time", "is required but missing"},
-        {replaced(k_base, "control:\n  end_time: 1.0e-3", "control: 5"), 7, "control", "expected a map"},
+        {replaced(k_base, "end_time: 1.0e-3", "end_time: abc"), 8, "control.end_time",
+         "expected a number, got 'abc'"},
+        {replaced(k_base, "end_time: 1.0e-3", "end_time: [1, 2]"), 8, "control.end_time",
+         "expected a number, got a list"},
+        {replaced(k_base, "end_time: 1.0e-3", "mode: dynamic"), 7, "control.end_time",
+         "is required but missing"},
+        {replaced(k_base, "control:\n  end_time: 1.0e-3", "control: 5"), 7, "control",
+         "expected a map"},
         {replaced(k_base, plate, "mesh: 5"), 2, "mesh", "expected a map"},
         {replaced(k_base, section, "  - 5"), 6, "sections.0", "expected a map"},
-        {replaced(k_base, "sections:\n" + section, "sections: all"), 5, "sections", "expected a list"},
-        {replaced(k_base, "sections:\n" + section + "\n", ""), 1, "sections", "is required but missing"},
-        {replaced(k_base, "control:\n  end_time: 1.0e-3\n", "control:\n  end_time: 1\n  end_time: 2\n"), 9, "control.end_time", "appears twice"},
+        {replaced(k_base, "sections:\n" + section, "sections: all"), 5, "sections",
+         "expected a list"},
+        {replaced(k_base, "sections:\n" + section + "\n", ""), 1, "sections",
+         "is required but missing"},
+        {replaced(k_base, "control:\n  end_time: 1.0e-3\n",
+                  "control:\n  end_time: 1\n  end_time: 2\n"),
+         9, "control.end_time", "appears twice"},
         // numbers out of range
-        {replaced(k_base, "end_time: 1.0e-3", "end_time: 0"), 8, "control.end_time", "greater than 0"},
-        {replaced(k_base, "end_time: 1.0e-3", "end_time: -1"), 8, "control.end_time", "greater than 0"},
-        {replaced(k_base, "end_time: 1.0e-3", "end_time: .nan"), 8, "control.end_time", "finite number"},
-        {replaced(k_base, "end_time: 1.0e-3", "end_time: .inf"), 8, "control.end_time", "finite number"},
-        {replaced(k_base, "end_time: 1.0e-3", "end_time: 1e999"), 8, "control.end_time", "out of the range"},
+        {replaced(k_base, "end_time: 1.0e-3", "end_time: 0"), 8, "control.end_time",
+         "greater than 0"},
+        {replaced(k_base, "end_time: 1.0e-3", "end_time: -1"), 8, "control.end_time",
+         "greater than 0"},
+        {replaced(k_base, "end_time: 1.0e-3", "end_time: .nan"), 8, "control.end_time",
+         "finite number"},
+        {replaced(k_base, "end_time: 1.0e-3", "end_time: .inf"), 8, "control.end_time",
+         "finite number"},
+        {replaced(k_base, "end_time: 1.0e-3", "end_time: 1e999"), 8, "control.end_time",
+         "out of the range"},
         {k_base + "  time_step_scale: 1.5\n", 9, "control.time_step_scale", "(0, 1]"},
         {k_base + "  time_step_scale: 0\n", 9, "control.time_step_scale", "greater than 0"},
         {k_base + "  tolerance: 0\n", 9, "control.tolerance", "greater than 0"},
         {k_base + "  mode: static\n", 9, "control.mode", "expected one of dynamic, relaxation"},
         {k_base + "  bending: dtk\n", 9, "control.bending", "did you mean 'dkt'"},
-        {k_base + "  max_relaxation_iterations: 0.5\n", 9, "control.max_relaxation_iterations", "whole number"},
-        {replaced(k_base, "thickness: 0.1", "thickness: 0"), 6, "sections.0.thickness", "greater than 0"},
-        {replaced(k_base, "thickness: 0.1", "thickness: -0.1"), 6, "sections.0.thickness", "greater than 0"},
-        {replaced(k_base, "thickness: 0.1", "thickness: 0.1, thickness_points: 4"), 6, "sections.0.thickness_points", "2 (Gauss), 3 or 5"},
-        {replaced(k_base, "thickness: 0.1", "thickness: 0.1, inplane_points: 6"), 6, "sections.0.inplane_points", "3 or 7"},
-        {replaced(k_base, "density: 7.8e-9", "density: 0"), 4, "materials.steel.density", "greater than 0"},
-        {replaced(k_base, "youngs_modulus: 210000", "youngs_modulus: -1"), 4, "materials.steel.youngs_modulus", "greater than 0"},
-        {replaced(k_base, "poisson_ratio: 0.3", "poisson_ratio: 0.5"), 4, "materials.steel.poisson_ratio", "less than 0.5"},
-        {replaced(k_base, "poisson_ratio: 0.3", "poisson_ratio: -1"), 4, "materials.steel.poisson_ratio", "greater than -1"},
-        {replaced(k_base, ", poisson_ratio: 0.3", ""), 4, "materials.steel.poisson_ratio", "is required"},
+        {k_base + "  max_relaxation_iterations: 0.5\n", 9, "control.max_relaxation_iterations",
+         "whole number"},
+        {replaced(k_base, "thickness: 0.1", "thickness: 0"), 6, "sections.0.thickness",
+         "greater than 0"},
+        {replaced(k_base, "thickness: 0.1", "thickness: -0.1"), 6, "sections.0.thickness",
+         "greater than 0"},
+        {replaced(k_base, "thickness: 0.1", "thickness: 0.1, thickness_points: 4"), 6,
+         "sections.0.thickness_points", "2 (Gauss), 3 or 5"},
+        {replaced(k_base, "thickness: 0.1", "thickness: 0.1, inplane_points: 6"), 6,
+         "sections.0.inplane_points", "3 or 7"},
+        {replaced(k_base, "density: 7.8e-9", "density: 0"), 4, "materials.steel.density",
+         "greater than 0"},
+        {replaced(k_base, "youngs_modulus: 210000", "youngs_modulus: -1"), 4,
+         "materials.steel.youngs_modulus", "greater than 0"},
+        {replaced(k_base, "poisson_ratio: 0.3", "poisson_ratio: 0.5"), 4,
+         "materials.steel.poisson_ratio", "less than 0.5"},
+        {replaced(k_base, "poisson_ratio: 0.3", "poisson_ratio: -1"), 4,
+         "materials.steel.poisson_ratio", "greater than -1"},
+        {replaced(k_base, ", poisson_ratio: 0.3", ""), 4, "materials.steel.poisson_ratio",
+         "is required"},
         // not supported yet
-        {replaced(k_base, "type: elastic", "type: j2_plastic"), 4, "materials.steel.type", "is not supported yet in this version of fpmshell"},
-        {replaced(k_base, "type: elastic", "type: johnson_cook"), 4, "materials.steel.type", "is not supported yet"},
-        {replaced(k_base, steel, "poisson_ratio: 0.3, cowper_symonds: {D: 6500, q: 4}}"), 4, "materials.steel.cowper_symonds", "is not supported yet"},
-        {replaced(k_base, steel, "poisson_ratio: 0.3, yield_stress: 200}"), 4, "materials.steel.yield_stress", "not supported yet"},
-        {k_base + "rigid_bodies:\n  - {name: striker, mass: 800}\n", 9, "rigid_bodies", "is not supported yet"},
+        {replaced(k_base, "type: elastic", "type: j2_plastic"), 4, "materials.steel.type",
+         "is not supported yet in this version of fpmshell"},
+        {replaced(k_base, "type: elastic", "type: johnson_cook"), 4, "materials.steel.type",
+         "is not supported yet"},
+        {replaced(k_base, steel, "poisson_ratio: 0.3, cowper_symonds: {D: 6500, q: 4}}"), 4,
+         "materials.steel.cowper_symonds", "is not supported yet"},
+        {replaced(k_base, steel, "poisson_ratio: 0.3, yield_stress: 200}"), 4,
+         "materials.steel.yield_stress", "not supported yet"},
+        {k_base + "rigid_bodies:\n  - {name: striker, mass: 800}\n", 9, "rigid_bodies",
+         "is not supported yet"},
         {k_base + "contact: [{type: self, elements: all}]\n", 9, "contact", "is not supported yet"},
-        {k_base + "output:\n  histories:\n    - {name: s, nodes: all, quantity: rigid_striker_uz, reduce: max}\n", 11, "output.histories.0.quantity", "is not supported yet"},
-        {replaced(k_base, plate, "mesh: {generator: square_tube}"), 2, "mesh.generator", "is not supported yet"},
+        {k_base + "output:\n  histories:\n    - {name: s, nodes: all, quantity: rigid_striker_uz, "
+                  "reduce: max}\n",
+         11, "output.histories.0.quantity", "is not supported yet"},
+        {replaced(k_base, plate, "mesh: {generator: square_tube}"), 2, "mesh.generator",
+         "is not supported yet"},
         // unknown names of sets, materials and curves
-        {replaced(k_base, "material: steel", "material: stel"), 6, "sections.0.material", "unknown material 'stel' (did you mean 'steel'?)"},
-        {replaced(k_base, "elements: all", "elements: al"), 6, "sections.0.elements", "unknown element set 'al'"},
-        {replaced(k_base, "elements: all", "elements: xmin"), 6, "sections.0.elements", "'xmin' is a node set, not an element set"},
-        {k_base + "boundary:\n  - {nodes: rim, fix: all}\n", 10, "boundary.0.nodes", "unknown node set 'rim'; the model defines the node sets all, boundary, xmax"},
-        {k_base + "loads:\n  - {type: force, nodes: all, value: [0, 0, 1], curve: stp}\ncurves:\n  step: [[0, 1]]\n", 10, "loads.0.curve", "unknown curve 'stp' (did you mean 'step'?)"},
-        {k_base + "loads:\n  - {type: force, nodes: all, value: [0, 0, 1], curve: c}\n", 10, "loads.0.curve", "defines no curves"},
+        {replaced(k_base, "material: steel", "material: stel"), 6, "sections.0.material",
+         "unknown material 'stel' (did you mean 'steel'?)"},
+        {replaced(k_base, "elements: all", "elements: al"), 6, "sections.0.elements",
+         "unknown element set 'al'"},
+        {replaced(k_base, "elements: all", "elements: xmin"), 6, "sections.0.elements",
+         "'xmin' is a node set, not an element set"},
+        {k_base + "boundary:\n  - {nodes: rim, fix: all}\n", 10, "boundary.0.nodes",
+         "unknown node set 'rim'; the model defines the node sets all, boundary, xmax"},
+        {k_base + "loads:\n  - {type: force, nodes: all, value: [0, 0, 1], curve: stp}\ncurves:\n  "
+                  "step: [[0, 1]]\n",
+         10, "loads.0.curve", "unknown curve 'stp' (did you mean 'step'?)"},
+        {k_base + "loads:\n  - {type: force, nodes: all, value: [0, 0, 1], curve: c}\n", 10,
+         "loads.0.curve", "defines no curves"},
         // boundary, curves, loads, initial conditions, damping
-        {k_base + "boundary:\n  - {nodes: all}\n", 10, "boundary.0", "at least one of fix, symmetry or prescribe"},
-        {k_base + "boundary:\n  - {nodes: all, fix: [ux, uw]}\n", 10, "boundary.0.fix.1", "expected one of ux, uy, uz, rx, ry, rz"},
-        {k_base + "boundary:\n  - {nodes: all, fix: some}\n", 10, "boundary.0.fix", "expected one of all"},
-        {k_base + "boundary:\n  - {nodes: all, symmetry: w}\n", 10, "boundary.0.symmetry", "expected one of x, y, z"},
-        {k_base + "boundary:\n  - {nodes: all, prescribe: {velocity: [1, 0, 0], displacement: [0, 0, 1]}}\n", 10, "boundary.0.prescribe", "exactly one of displacement, velocity or angular_velocity"},
-        {k_base + "boundary:\n  - {nodes: all, prescribe: {velocity: [1, 0]}}\n", 10, "boundary.0.prescribe.velocity", "3 numbers"},
-        {k_base + "curves:\n  c: [[0, 0], [1, 1], [1, 2]]\n", 10, "curves.c.2.0", "increase strictly"},
+        {k_base + "boundary:\n  - {nodes: all}\n", 10, "boundary.0",
+         "at least one of fix, symmetry or prescribe"},
+        {k_base + "boundary:\n  - {nodes: all, fix: [ux, uw]}\n", 10, "boundary.0.fix.1",
+         "expected one of ux, uy, uz, rx, ry, rz"},
+        {k_base + "boundary:\n  - {nodes: all, fix: some}\n", 10, "boundary.0.fix",
+         "expected one of all"},
+        {k_base + "boundary:\n  - {nodes: all, symmetry: w}\n", 10, "boundary.0.symmetry",
+         "expected one of x, y, z"},
+        {k_base + "boundary:\n  - {nodes: all, prescribe: {velocity: [1, 0, 0], displacement: [0, "
+                  "0, 1]}}\n",
+         10, "boundary.0.prescribe", "exactly one of displacement, velocity or angular_velocity"},
+        {k_base + "boundary:\n  - {nodes: all, prescribe: {velocity: [1, 0]}}\n", 10,
+         "boundary.0.prescribe.velocity", "3 numbers"},
+        {k_base + "curves:\n  c: [[0, 0], [1, 1], [1, 2]]\n", 10, "curves.c.2.0",
+         "increase strictly"},
         {k_base + "curves:\n  c: [[0, 0], [1]]\n", 10, "curves.c.1", "pair [time, factor]"},
         {k_base + "curves:\n  c: []\n", 10, "curves.c", "at least one"},
-        {k_base + "loads:\n  - {type: pressure, nodes: all, value: 1}\n", 10, "loads.0.nodes", "use `elements: SET`"},
-        {k_base + "loads:\n  - {type: pressure, elements: all, value: [1, 2, 3]}\n", 10, "loads.0.value", "expected a number"},
-        {k_base + "loads:\n  - {type: force, nodes: all, value: 5}\n", 10, "loads.0.value", "3 numbers"},
-        {k_base + "loads:\n  - {type: gravity, nodes: all, value: 5}\n", 10, "loads.0.type", "expected one of pressure, force, moment"},
-        {k_base + "initial_conditions:\n  - {nodes: all}\n", 10, "initial_conditions.0", "velocity"},
+        {k_base + "loads:\n  - {type: pressure, nodes: all, value: 1}\n", 10, "loads.0.nodes",
+         "use `elements: SET`"},
+        {k_base + "loads:\n  - {type: pressure, elements: all, value: [1, 2, 3]}\n", 10,
+         "loads.0.value", "expected a number"},
+        {k_base + "loads:\n  - {type: force, nodes: all, value: 5}\n", 10, "loads.0.value",
+         "3 numbers"},
+        {k_base + "loads:\n  - {type: gravity, nodes: all, value: 5}\n", 10, "loads.0.type",
+         "expected one of pressure, force, moment"},
+        {k_base + "initial_conditions:\n  - {nodes: all}\n", 10, "initial_conditions.0",
+         "velocity"},
         {k_base + "damping: {mass: -1}\n", 9, "damping.mass", "0 or more"},
         // output histories
-        {k_base + "output:\n  histories:\n    - {name: w, nodes: xmin, quantity: uz}\n", 11, "output.histories.0.nodes", "needs `reduce: sum`"},
-        {k_base + "output:\n  histories:\n    - {name: w, nodes: all, quantity: uz, reduce: max}\n    - {name: w, nodes: all, quantity: ux, reduce: max}\n", 12, "output.histories.1.name", "used twice"},
-        {k_base + "output:\n  histories:\n    - {name: 'a,b', nodes: all, quantity: uz, reduce: max}\n", 11, "output.histories.0.name", "commas"},
-        {k_base + "output:\n  histories:\n    - {name: '', nodes: all, quantity: uz, reduce: max}\n", 11, "output.histories.0.name", "empty"},
-        {k_base + "output:\n  histories:\n    - {name: time, nodes: all, quantity: uz, reduce: max}\n", 11, "output.histories.0.name", "first column"},
-        {k_base + "output:\n  histories:\n    - {name: w, nodes: all, quantity: uzz, reduce: max}\n", 11, "output.histories.0.quantity", "did you mean 'uz'"},
-        {k_base + "output:\n  histories:\n    - {name: w, nodes: all, quantity: uz, reduce: avg}\n", 11, "output.histories.0.reduce", "sum, max, min, mean"},
+        {k_base + "output:\n  histories:\n    - {name: w, nodes: xmin, quantity: uz}\n", 11,
+         "output.histories.0.nodes", "needs `reduce: sum`"},
+        {k_base + "output:\n  histories:\n    - {name: w, nodes: all, quantity: uz, reduce: max}\n "
+                  "   - {name: w, nodes: all, quantity: ux, reduce: max}\n",
+         12, "output.histories.1.name", "used twice"},
+        {k_base +
+             "output:\n  histories:\n    - {name: 'a,b', nodes: all, quantity: uz, reduce: max}\n",
+         11, "output.histories.0.name", "commas"},
+        {k_base +
+             "output:\n  histories:\n    - {name: '', nodes: all, quantity: uz, reduce: max}\n",
+         11, "output.histories.0.name", "empty"},
+        {k_base +
+             "output:\n  histories:\n    - {name: time, nodes: all, quantity: uz, reduce: max}\n",
+         11, "output.histories.0.name", "first column"},
+        {k_base +
+             "output:\n  histories:\n    - {name: w, nodes: all, quantity: uzz, reduce: max}\n",
+         11, "output.histories.0.quantity", "did you mean 'uz'"},
+        {k_base + "output:\n  histories:\n    - {name: w, nodes: all, quantity: uz, reduce: avg}\n",
+         11, "output.histories.0.reduce", "sum, max, min, mean"},
         {k_base + "output: {every: -1}\n", 9, "output.every", "0 or more"},
         // sets
-        {k_base + "sets:\n  far: {near: [9, 9, 9], tolerance: 0.1}\n", 10, "sets.far", "the set is empty"},
-        {k_base + "sets:\n  xmin: {near: [0, 0, 0]}\n", 10, "sets.xmin", "already defined by the mesh"},
+        {k_base + "sets:\n  far: {near: [9, 9, 9], tolerance: 0.1}\n", 10, "sets.far",
+         "the set is empty"},
+        {k_base + "sets:\n  xmin: {near: [0, 0, 0]}\n", 10, "sets.xmin",
+         "already defined by the mesh"},
         {k_base + "sets:\n  all: {near: [0, 0, 0]}\n", 10, "sets.all", "reserved"},
-        {k_base + "sets:\n  s: {near: [0, 0, 0], box: [[0, 0, 0], [1, 1, 1]]}\n", 10, "sets.s", "exactly one of near"},
-        {k_base + "sets:\n  s: {box: [[1, 0, 0], [0, 1, 1]]}\n", 10, "sets.s.box", "the first corner must be the minimum"},
-        {k_base + "sets:\n  s: {plane: {point: [0, 0, 0], normal: [0, 0, 0]}}\n", 10, "sets.s.plane.normal", "zero vector"},
-        {k_base + "sets:\n  s: {plane: {point: [0, 0, 0]}}\n", 10, "sets.s.plane.normal", "is required"},
-        {k_base + "sets:\n  s: {near: [0, 0, 0]}\nloads:\n  - {type: pressure, elements: s, value: 1}\n", 12, "loads.0.elements", "contains no element"},
+        {k_base + "sets:\n  s: {near: [0, 0, 0], box: [[0, 0, 0], [1, 1, 1]]}\n", 10, "sets.s",
+         "exactly one of near"},
+        {k_base + "sets:\n  s: {box: [[1, 0, 0], [0, 1, 1]]}\n", 10, "sets.s.box",
+         "the first corner must be the minimum"},
+        {k_base + "sets:\n  s: {plane: {point: [0, 0, 0], normal: [0, 0, 0]}}\n", 10,
+         "sets.s.plane.normal", "zero vector"},
+        {k_base + "sets:\n  s: {plane: {point: [0, 0, 0]}}\n", 10, "sets.s.plane.normal",
+         "is required"},
+        {k_base +
+             "sets:\n  s: {near: [0, 0, 0]}\nloads:\n  - {type: pressure, elements: s, value: 1}\n",
+         12, "loads.0.elements", "contains no element"},
         // sections must cover every element
-        {replaced(k_base, "elements: all", "elements: half") + "sets:\n  half: {box: [[0, 0, -1], [1, 1, 1]]}\n", 5, "sections", "has no section"},
+        {replaced(k_base, "elements: all", "elements: half") +
+             "sets:\n  half: {box: [[0, 0, -1], [1, 1, 1]]}\n",
+         5, "sections", "has no section"},
         // mesh generators
         {replaced(k_base, "nx: 4", "nx: -3"), 2, "mesh.nx", "whole number from 1"},
         {replaced(k_base, "nx: 4", "nx: 2.5"), 2, "mesh.nx", "whole number"},
@@ -444,15 +529,32 @@ TEST(ModelReader, EveryErrorNamesFileLineAndKey) {
         {replaced(k_base, "nx: 4", "nx: 1e30"), 2, "mesh.nx", "whole number"},
         {replaced(k_base, "length_x: 2", "length_x: 0"), 2, "mesh.length_x", "greater than 0"},
         {replaced(k_base, ", ny: 2", ""), 2, "mesh.ny", "is required"},
-        {replaced(k_base, "generator: plate", "generator: plat"), 2, "mesh.generator", "did you mean 'plate'"},
-        {replaced(k_base, plate, "mesh: {generator: plate, file: a.msh}"), 2, "mesh", "keep exactly one"},
+        {replaced(k_base, "generator: plate", "generator: plat"), 2, "mesh.generator",
+         "did you mean 'plate'"},
+        {replaced(k_base, plate, "mesh: {generator: plate, file: a.msh}"), 2, "mesh",
+         "keep exactly one"},
         {replaced(k_base, plate, "mesh: {nx: 3}"), 2, "mesh", "needs either `generator` or `file`"},
-        {replaced(k_base, "nx: 4", "nx: 4, pattern: diagonal"), 2, "mesh.pattern", "right, left, alternate, cross"},
-        {replaced(k_base, plate, "mesh: {generator: spherical_cap, radius: 1, half_angle_deg: 30, sector_deg: 45, divisions: 3}"), 2, "mesh.sector_deg", "multiple of 60"},
-        {replaced(k_base, plate, "mesh: {generator: spherical_cap, radius: 1, half_angle_deg: 180, divisions: 3}"), 2, "mesh.half_angle_deg", "less than 180"},
-        {replaced(k_base, plate, "mesh: {generator: cylinder_panel, radius: 1, length: 1, angle_deg: 400, divisions_arc: 3, divisions_length: 1}"), 2, "mesh.angle_deg", "at most 360"},
-        {replaced(k_base, plate, "mesh: {generator: cylinder_panel, radius: 1, length: 1, angle_deg: 360, divisions_arc: 2, divisions_length: 1}"), 2, "mesh.divisions_arc", "from 3"},
-        {replaced(k_base, plate, "mesh: {generator: annulus, inner_radius: 2, outer_radius: 1, divisions_radial: 1, divisions_angle: 4}"), 2, "mesh.outer_radius", "greater than inner_radius"},
+        {replaced(k_base, "nx: 4", "nx: 4, pattern: diagonal"), 2, "mesh.pattern",
+         "right, left, alternate, cross"},
+        {replaced(k_base, plate,
+                  "mesh: {generator: spherical_cap, radius: 1, half_angle_deg: 30, sector_deg: 45, "
+                  "divisions: 3}"),
+         2, "mesh.sector_deg", "multiple of 60"},
+        {replaced(k_base, plate,
+                  "mesh: {generator: spherical_cap, radius: 1, half_angle_deg: 180, divisions: 3}"),
+         2, "mesh.half_angle_deg", "less than 180"},
+        {replaced(k_base, plate,
+                  "mesh: {generator: cylinder_panel, radius: 1, length: 1, angle_deg: 400, "
+                  "divisions_arc: 3, divisions_length: 1}"),
+         2, "mesh.angle_deg", "at most 360"},
+        {replaced(k_base, plate,
+                  "mesh: {generator: cylinder_panel, radius: 1, length: 1, angle_deg: 360, "
+                  "divisions_arc: 2, divisions_length: 1}"),
+         2, "mesh.divisions_arc", "from 3"},
+        {replaced(k_base, plate,
+                  "mesh: {generator: annulus, inner_radius: 2, outer_radius: 1, divisions_radial: "
+                  "1, divisions_angle: 4}"),
+         2, "mesh.outer_radius", "greater than inner_radius"},
         {replaced(k_base, plate, "mesh: {file: nothere.msh}"), 2, "mesh.file", "does not exist"},
         {replaced(k_base, plate, "mesh: {file: .}"), 2, "mesh.file", "not a regular file"},
     };
@@ -511,13 +613,13 @@ TEST(ModelReader, MalformedFilesGiveInputErrors) {
 // model is read; bad paths, maps and malformed overrides are refused naming "--set" and the key.
 TEST(ModelReader, AppliesSetOverrides) {
     const TempDir dir;
-    const std::string file = dir.write(
-        "model.yaml", k_base + "loads:\n  - {type: pressure, elements: all, value: 600}\n"
-                               "  - {type: force, nodes: all, value: [0, 0, -1]}\n");
-    const Model m = read_model(file, {"control.end_time=2e-3", "loads.0.value=700",
-                                      "loads.1.value=[0, 0, -3]", "mesh.nx=8",
-                                      "materials.steel.poisson_ratio = 0.25",
-                                      "control.end_time=4e-3"});
+    const std::string file =
+        dir.write("model.yaml", k_base +
+                                    "loads:\n  - {type: pressure, elements: all, value: 600}\n"
+                                    "  - {type: force, nodes: all, value: [0, 0, -1]}\n");
+    const Model m = read_model(
+        file, {"control.end_time=2e-3", "loads.0.value=700", "loads.1.value=[0, 0, -3]",
+               "mesh.nx=8", "materials.steel.poisson_ratio = 0.25", "control.end_time=4e-3"});
     EXPECT_EQ(m.control.end_time, 4e-3);  // the later override wins
     EXPECT_EQ(m.loads[0].pressure, 700.0);
     EXPECT_EQ(m.loads[1].vector, Vec3(0, 0, -3));

@@ -95,8 +95,10 @@ TEST(Generators, PlateCountsAreaNormalsAndEdgeSets) {
         EXPECT_EQ(s.at("boundary").size(), 16U);
         for (const Index i : s.at("xmin")) EXPECT_EQ(m.nodes[static_cast<std::size_t>(i)].x(), 1.0);
         for (const Index i : s.at("xmax")) EXPECT_EQ(m.nodes[static_cast<std::size_t>(i)].x(), 4.0);
-        for (const Index i : s.at("ymin")) EXPECT_EQ(m.nodes[static_cast<std::size_t>(i)].y(), -2.0);
-        for (const Index i : s.at("ymax")) EXPECT_EQ(m.nodes[static_cast<std::size_t>(i)].y(), -2.0 + 1.7);
+        for (const Index i : s.at("ymin"))
+            EXPECT_EQ(m.nodes[static_cast<std::size_t>(i)].y(), -2.0);
+        for (const Index i : s.at("ymax"))
+            EXPECT_EQ(m.nodes[static_cast<std::size_t>(i)].y(), -2.0 + 1.7);
         for (const auto& [name, members] : s) EXPECT_TRUE(is_sorted_unique(members)) << name;
         EXPECT_EQ(boundary_edge_count(m), 16U);
     }
@@ -204,8 +206,8 @@ TEST(Generators, HexagonalSphericalCapCountsPatternAndArea) {
     const Real alpha = 26.67 * k_pi / 180.0;
     const Real exact = 2 * k_pi * r * r * (1 - std::cos(alpha));
     std::map<Index, Real> error;
-    for (const auto& [n, expected_nodes] : {std::pair<Index, std::size_t>{6, 127},
-                                            {12, 469}, {14, 631}}) {
+    for (const auto& [n, expected_nodes] :
+         {std::pair<Index, std::size_t>{6, 127}, {12, 469}, {14, 631}}) {
         SphericalCapParams p;
         p.radius = r;
         p.half_angle_deg = 26.67;
@@ -308,9 +310,10 @@ TEST(Generators, AnnulusAreaNormalsAndSlit) {
     ASSERT_EQ(e1.size(), 5U);
     for (std::size_t k = 0; k < 5; ++k) {
         EXPECT_NE(e0[k], e1[k]);
-        EXPECT_NEAR((m.nodes[static_cast<std::size_t>(e0[k])] -
-                     m.nodes[static_cast<std::size_t>(e1[k])]).norm(),
-                    0.0, 1e-12);
+        EXPECT_NEAR(
+            (m.nodes[static_cast<std::size_t>(e0[k])] - m.nodes[static_cast<std::size_t>(e1[k])])
+                .norm(),
+            0.0, 1e-12);
     }
     // Open ring: inner 25 + outer 25 + 2 x 4 slit edges.
     EXPECT_EQ(boundary_edge_count(m), 24U + 24U + 8U);

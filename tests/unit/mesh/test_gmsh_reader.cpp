@@ -1,11 +1,10 @@
 // Unit tests of the Gmsh .msh reader (mesh/gmsh_reader.hpp) on small files written here.
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
 #include <string>
-
-#include <unistd.h>
 
 #include "fpmshell/core/errors.hpp"
 #include "fpmshell/mesh/gmsh_reader.hpp"
@@ -108,15 +107,17 @@ TEST(GmshReader, ReadsTrianglesSplitsQuadsAndMapsPhysicalGroups) {
     int from_quad = 0;
     for (std::size_t e = 0; e < m.triangles.size(); ++e) {
         const auto& t = m.triangles[e];
-        const Vec3 n = (m.nodes[static_cast<std::size_t>(t[1])] - m.nodes[static_cast<std::size_t>(t[0])])
-                           .cross(m.nodes[static_cast<std::size_t>(t[2])] -
-                                  m.nodes[static_cast<std::size_t>(t[0])]);
+        const Vec3 n =
+            (m.nodes[static_cast<std::size_t>(t[1])] - m.nodes[static_cast<std::size_t>(t[0])])
+                .cross(m.nodes[static_cast<std::size_t>(t[2])] -
+                       m.nodes[static_cast<std::size_t>(t[0])]);
         EXPECT_GT(n.z(), 0.0) << "triangle " << e;
         area += 0.5 * n.norm();
         if (m.element_tag[e] == 3) {
             ++from_quad;
             // Equal diagonals: split along the first one, (a, b, c) and (a, c, d).
-            EXPECT_TRUE(t == (std::array<Index, 3>{0, 1, 4}) || t == (std::array<Index, 3>{0, 4, 3}));
+            EXPECT_TRUE(t == (std::array<Index, 3>{0, 1, 4}) ||
+                        t == (std::array<Index, 3>{0, 4, 3}));
         }
     }
     EXPECT_EQ(from_quad, 2);
@@ -175,8 +176,8 @@ TEST(GmshReader, RefusesWhatIsNotASurfaceMesh) {
     expect_error(write(dir / "empty.msh", ""), "not a Gmsh mesh file");
     expect_error(write(dir / "truncated.msh", "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n$Nodes\n1 2"),
                  "cannot read");
-    expect_error(write(dir / "garbage.msh", "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n$Elements\nxx\n"),
-                 "");
+    expect_error(
+        write(dir / "garbage.msh", "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n$Elements\nxx\n"), "");
     expect_error(write(dir / "lines.msh", R"($MeshFormat
 2.2 0 8
 $EndMeshFormat

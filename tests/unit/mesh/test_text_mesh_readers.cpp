@@ -1,12 +1,11 @@
 // Unit tests of the Abaqus .inp and LS-DYNA .k shell-mesh readers (mesh/abaqus_reader.hpp,
 // mesh/lsdyna_reader.hpp) on small files written here.
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
 #include <string>
-
-#include <unistd.h>
 
 #include "fpmshell/core/errors.hpp"
 #include "fpmshell/mesh/abaqus_reader.hpp"
@@ -20,9 +19,9 @@ class TempDir {
 public:
     TempDir() {
         const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-        path_ = std::filesystem::temp_directory_path() /
-                ("fpmshell_text_mesh_" + std::string(info->name()) + "_" +
-                 std::to_string(::getpid()));
+        path_ =
+            std::filesystem::temp_directory_path() /
+            ("fpmshell_text_mesh_" + std::string(info->name()) + "_" + std::to_string(::getpid()));
         std::filesystem::create_directories(path_);
     }
     ~TempDir() {
@@ -44,9 +43,10 @@ private:
 Real area_and_check_normals(const MeshData& m) {
     Real area = 0;
     for (const auto& t : m.triangles) {
-        const Vec3 n = (m.nodes[static_cast<std::size_t>(t[1])] - m.nodes[static_cast<std::size_t>(t[0])])
-                           .cross(m.nodes[static_cast<std::size_t>(t[2])] -
-                                  m.nodes[static_cast<std::size_t>(t[0])]);
+        const Vec3 n =
+            (m.nodes[static_cast<std::size_t>(t[1])] - m.nodes[static_cast<std::size_t>(t[0])])
+                .cross(m.nodes[static_cast<std::size_t>(t[2])] -
+                       m.nodes[static_cast<std::size_t>(t[0])]);
         EXPECT_GT(n.z(), 0.0);
         area += 0.5 * n.norm();
     }
@@ -128,17 +128,17 @@ TEST(AbaqusReader, ReportsErrorsWithLines) {
                  ":5: ", "element type C3D8 is not supported");
     expect_error(read_abaqus, dir.write("b.inp", nodes + "*ELEMENT, TYPE=S3\n1, 1, 2, 9\n"),
                  ":6: ", "refers to node 9");
-    expect_error(read_abaqus, dir.write("c.inp", "*INCLUDE, INPUT=mesh.inp\n"), ":1: ",
-                 "*INCLUDE is not supported");
-    expect_error(read_abaqus, dir.write("d.inp", "*NODE\n1, 0, abc, 0\n"), ":2: ",
-                 "'abc' is not a finite number");
-    expect_error(read_abaqus, dir.write("e.inp", nodes + "*NSET, NSET=A\nB\n"), ":6: ",
-                 "neither a number nor the name of a set");
+    expect_error(read_abaqus, dir.write("c.inp", "*INCLUDE, INPUT=mesh.inp\n"),
+                 ":1: ", "*INCLUDE is not supported");
+    expect_error(read_abaqus, dir.write("d.inp", "*NODE\n1, 0, abc, 0\n"),
+                 ":2: ", "'abc' is not a finite number");
+    expect_error(read_abaqus, dir.write("e.inp", nodes + "*NSET, NSET=A\nB\n"),
+                 ":6: ", "neither a number nor the name of a set");
     expect_error(read_abaqus, dir.write("f.inp", nodes), ": ", "no shell element");
-    expect_error(read_abaqus, dir.write("g.inp", nodes + "*ELEMENT, TYPE=S3\n1, 1, 2\n"), ":6: ",
-                 "needs its number and 3 node numbers");
-    expect_error(read_abaqus, dir.write("h.inp", nodes + "*NODE\n2, 5, 5, 5\n"), ":6: ",
-                 "node 2 is defined twice");
+    expect_error(read_abaqus, dir.write("g.inp", nodes + "*ELEMENT, TYPE=S3\n1, 1, 2\n"),
+                 ":6: ", "needs its number and 3 node numbers");
+    expect_error(read_abaqus, dir.write("h.inp", nodes + "*NODE\n2, 5, 5, 5\n"),
+                 ":6: ", "node 2 is defined twice");
     expect_error(read_abaqus,
                  (std::filesystem::temp_directory_path() / "fpmshell_no_such_mesh.inp").string(),
                  ": ", "cannot open");
@@ -193,18 +193,20 @@ clamp
 TEST(LsDynaReader, ReportsErrorsWithLines) {
     const TempDir dir;
     const std::string nodes = "*NODE\n1,0,0,0\n2,1,0,0\n3,0,1,0\n";
-    expect_error(read_lsdyna, dir.write("a.k", nodes + "*ELEMENT_SHELL\n1,1,1,2,7,7\n"), ":6: ",
-                 "refers to node 7");
+    expect_error(read_lsdyna, dir.write("a.k", nodes + "*ELEMENT_SHELL\n1,1,1,2,7,7\n"),
+                 ":6: ", "refers to node 7");
     expect_error(read_lsdyna, dir.write("b.k", "*INCLUDE\nother.k\n"), ":1: ", "not supported");
-    expect_error(read_lsdyna, dir.write("c.k", nodes + "*SET_NODE_LIST\n1\n1,2,x\n"), ":7: ",
-                 "expected a number");
-    expect_error(read_lsdyna, dir.write("d.k", nodes + "*SET_NODE_ADD\n1\n"), ":5: ",
-                 "not supported");
+    expect_error(read_lsdyna, dir.write("c.k", nodes + "*SET_NODE_LIST\n1\n1,2,x\n"),
+                 ":7: ", "expected a number");
+    expect_error(read_lsdyna, dir.write("d.k", nodes + "*SET_NODE_ADD\n1\n"),
+                 ":5: ", "not supported");
     expect_error(read_lsdyna, dir.write("e.k", nodes), ": ", "no shell element");
-    expect_error(read_lsdyna, dir.write("f.k", nodes + "*ELEMENT_SHELL\n1,1,1,2,3,3,4\n"), ":6: ",
-                 "more than 4 nodes");
-    expect_error(read_lsdyna, dir.write("g.k", nodes + "*SET_NODE_LIST\n1\n1,2,9\n*ELEMENT_SHELL\n1,1,1,2,3,3\n"),
-                 ":6: ", "lists node 9");
+    expect_error(read_lsdyna, dir.write("f.k", nodes + "*ELEMENT_SHELL\n1,1,1,2,3,3,4\n"),
+                 ":6: ", "more than 4 nodes");
+    expect_error(
+        read_lsdyna,
+        dir.write("g.k", nodes + "*SET_NODE_LIST\n1\n1,2,9\n*ELEMENT_SHELL\n1,1,1,2,3,3\n"),
+        ":6: ", "lists node 9");
 }
 
 }  // namespace
