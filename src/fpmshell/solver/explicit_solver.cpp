@@ -236,14 +236,19 @@ void ExplicitSolver::cycle(Real load_time, Real dt_new_cap, bool relaxation) {
         reference2_ += s_.f_ext[p].squaredNorm() + (force - force_free).squaredNorm();
 
         // Rotations in the tangent plane: w^{n+1/2} = c1 [c2 P w^{n-1/2} + dt_n P M / J].
+        // With at most one free rotation axis (symmetry planes, §6.7) the rotation is about that
+        // axis alone; the tangent-plane projection is skipped because the one-sided normal of a
+        // particle on a symmetry plane is tilted out of the plane and would also block it.
         const Vec3 moment = s_.m_ext[p] - s_.m_int[p];
         std::array<Vec3, 4> dirs;
         int nd = 0;
-        if (!s_.full_rotation[p]) dirs[static_cast<std::size_t>(nd++)] = s_.normal[p];
+        const int n_fixed_rot = fixed_[p][3] + fixed_[p][4] + fixed_[p][5];
+        const bool project = !s_.full_rotation[p] && n_fixed_rot < 2;
+        if (project) dirs[static_cast<std::size_t>(nd++)] = s_.normal[p];
         for (std::size_t d = 0; d < 3; ++d)
             if (fixed_[p][3 + d]) dirs[static_cast<std::size_t>(nd++)] = Vec3::Unit(static_cast<Eigen::Index>(d));
-        const Vec3 moment_tangent = s_.full_rotation[p] ? moment : Vec3(moment - moment.dot(s_.normal[p]) * s_.normal[p]);
-        const Vec3 omega_tangent = s_.full_rotation[p] ? s_.omega[p] : Vec3(s_.omega[p] - s_.omega[p].dot(s_.normal[p]) * s_.normal[p]);
+        const Vec3 moment_tangent = project ? Vec3(moment - moment.dot(s_.normal[p]) * s_.normal[p]) : moment;
+        const Vec3 omega_tangent = project ? Vec3(s_.omega[p] - s_.omega[p].dot(s_.normal[p]) * s_.normal[p]) : s_.omega[p];
         s_.omega_prev[p] = s_.omega[p];
         const Real j = s_.inertia[p];
         const Vec3 w_free = c1 * (c2 * omega_tangent + (dt_n / j) * moment_tangent);

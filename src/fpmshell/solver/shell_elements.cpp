@@ -5,6 +5,11 @@
 #include <limits>
 
 namespace fpmshell {
+namespace {
+
+constexpr Index k_parallel_min_elements = 2000;
+
+}  // namespace
 
 ShellElements::ShellElements(const Model& model)
     : tri_(model.triangles), section_(model.element_section),
@@ -83,8 +88,10 @@ Real ShellElements::min_critical_dt(const std::vector<Vec3>& x, Index* where) co
 
 ShellElements::StepTotals ShellElements::compute(ParticleState& s, Real viscous_rate) {
     const Index ne = size();
+    // Small models stay serial: a parallel region per step costs more than it saves there.
+    const bool parallel = ne >= k_parallel_min_elements;
     // Phase 1: every triangle writes its 3 corner loads into its own slots.
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (parallel)
     for (Index e = 0; e < ne; ++e) {
         const std::size_t ue = static_cast<std::size_t>(e);
         const auto& t = tri_[ue];
@@ -122,7 +129,7 @@ ShellElements::StepTotals ShellElements::compute(ParticleState& s, Real viscous_
     }
     // Phase 2: every particle sums its slots in a fixed order (bitwise thread-independent).
     const Index np = static_cast<Index>(s.size());
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (parallel)
     for (Index p = 0; p < np; ++p) {
         const std::size_t up = static_cast<std::size_t>(p);
         Vec3 f = Vec3::Zero(), m = Vec3::Zero();
