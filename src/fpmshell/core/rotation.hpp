@@ -19,9 +19,9 @@ namespace fpmshell {
 [[nodiscard]] inline Mat3 rotation_matrix(const Vec3& phi) {
     const Real t2 = phi.squaredNorm();
     Real a, b;
-    if (t2 < 1e-8) {  // series: |error| < t^4/120
-        a = 1.0 - t2 / 6.0;
-        b = 0.5 - t2 / 24.0;
+    if (t2 < 1e-4) {  // t < 0.01 (every step of a stable run): series, next terms < 1e-21
+        a = 1.0 - t2 / 6.0 * (1.0 - t2 / 20.0 * (1.0 - t2 / 42.0));
+        b = 0.5 - t2 / 24.0 * (1.0 - t2 / 30.0 * (1.0 - t2 / 56.0));
     } else {
         const Real t = std::sqrt(t2);
         a = std::sin(t) / t;
@@ -36,9 +36,12 @@ namespace fpmshell {
 [[nodiscard]] inline Vec3 rotation_vector(const Mat3& r) {
     const Real c = std::clamp((r.trace() - 1.0) * 0.5, Real(-1), Real(1));
     const Vec3 w(r(2, 1) - r(1, 2), r(0, 2) - r(2, 0), r(1, 0) - r(0, 1));
-    const Real s = 0.5 * w.norm();  // sin(theta)
+    const Real s2 = 0.25 * w.squaredNorm();  // sin^2(theta)
+    if (c > 0 && s2 < 1e-4) {  // theta / sin(theta) = asin(s)/s series, next term < 1e-17
+        return (0.5 * (1.0 + s2 * (1.0 / 6.0 + s2 * (3.0 / 40.0 + s2 * (5.0 / 112.0))))) * w;
+    }
+    const Real s = std::sqrt(s2);
     const Real theta = std::atan2(s, c);
-    if (theta < 1e-4) return (0.5 + theta * theta / 12.0) * w;
     if (c > -0.99) return (theta / (2.0 * std::sin(theta))) * w;
     // Near pi: axis from R + R^T = 2 cos I + 2(1 - cos) e e^T, sign from the skew part.
     const Mat3 sym = 0.5 * (r + r.transpose()) - c * Mat3::Identity();

@@ -1,12 +1,25 @@
-// Gmsh .msh reader (see gmsh_reader.hpp). Gmsh keeps global state, so every call initialises
+// Gmsh .msh reader (see gmsh_reader.hpp). Gmsh keeps global state, so every read initialises
 // it, reads, copies what we need and finalises it again, also when an error is thrown.
+// Gmsh 4.8 crashes (double free, segmentation fault) on some malformed files (about 1 in 150
+// randomly damaged files when fuzzed), so the read runs in a child process whose result comes
+// back through a pipe: a crash or a hang of Gmsh becomes an InputError instead.
 #include "fpmshell/mesh/gmsh_reader.hpp"
 
+#include <fcntl.h>
 #include <gmsh.h>
+#include <poll.h>
+#include <signal.h>
+#include <sys/types.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include <algorithm>
+#include <cerrno>
+#include <chrono>
 #include <cmath>
+#include <cstring>
 #include <fstream>
+#include <map>
 #include <string>
 #include <unordered_map>
 
@@ -53,10 +66,8 @@ void check_msh_header(const std::string& path) {
              "expected a .msh file of format 2 or 4");
 }
 
-}  // namespace
-
-MeshData read_gmsh(const std::string& path) {
-    check_msh_header(path);
+/// Reads the mesh with Gmsh in this process.
+MeshData read_in_process(const std::string& path) {
     GmshSession session;
     MeshData mesh;
     try {
@@ -211,6 +222,175 @@ MeshData read_gmsh(const std::string& path) {
     } catch (...) {
         fail(path, "Gmsh cannot read the mesh");
     }
+    return mesh;
+}
+
+// ---- transport of a MeshData from the child process ----
+
+template <typename T>
+void put(std::string& out, const T& value) {
+    out.append(reinterpret_cast<const char*>(&value), sizeof value);
+}
+
+template <typename T>
+void put_vector(std::string& out, const std::vector<T>& v) {
+    put(out, static_cast<std::uint64_t>(v.size()));
+    out.append(reinterpret_cast<const char*>(v.data()), v.size() * sizeof(T));
+}
+
+void put_sets(std::string& out, const std::map<std::string, std::vector<Index>>& sets) {
+    put(out, static_cast<std::uint64_t>(sets.size()));
+    for (const auto& [name, members] : sets) {
+        put(out, static_cast<std::uint64_t>(name.size()));
+        out += name;
+        put_vector(out, members);
+    }
+}
+
+std::string serialize(const MeshData& m) {
+    std::string out;
+    put_vector(out, m.nodes);
+    put_vector(out, m.triangles);
+    put_vector(out, m.element_tag);
+    put_sets(out, m.node_sets);
+    put_sets(out, m.element_sets);
+    return out;
+}
+
+/// Reads back what serialize wrote; false when the data is cut short.
+class Reader {
+public:
+    explicit Reader(const std::string& data) : data_(data) {}
+    template <typename T>
+    bool get(T& value) {
+        if (data_.size() - pos_ < sizeof value) return false;
+        std::memcpy(&value, data_.data() + pos_, sizeof value);
+        pos_ += sizeof value;
+        return true;
+    }
+    template <typename T>
+    bool get_vector(std::vector<T>& v) {
+        std::uint64_t n = 0;
+        if (!get(n) || n > (data_.size() - pos_) / sizeof(T)) return false;
+        v.resize(static_cast<std::size_t>(n));
+        std::memcpy(static_cast<void*>(v.data()), data_.data() + pos_, v.size() * sizeof(T));
+        pos_ += v.size() * sizeof(T);
+        return true;
+    }
+    bool get_sets(std::map<std::string, std::vector<Index>>& sets) {
+        std::uint64_t count = 0;
+        if (!get(count)) return false;
+        for (std::uint64_t k = 0; k < count; ++k) {
+            std::uint64_t length = 0;
+            if (!get(length) || length > data_.size() - pos_) return false;
+            std::string name = data_.substr(pos_, static_cast<std::size_t>(length));
+            pos_ += static_cast<std::size_t>(length);
+            if (!get_vector(sets[name])) return false;
+        }
+        return true;
+    }
+    [[nodiscard]] bool at_end() const { return pos_ == data_.size(); }
+
+private:
+    const std::string& data_;
+    std::size_t pos_ = 0;
+};
+
+bool deserialize(const std::string& data, MeshData& m) {
+    Reader r(data);
+    return r.get_vector(m.nodes) && r.get_vector(m.triangles) && r.get_vector(m.element_tag) &&
+           r.get_sets(m.node_sets) && r.get_sets(m.element_sets) && r.at_end();
+}
+
+/// Longest a Gmsh read may take before it is considered hung.
+constexpr auto k_read_time_limit = std::chrono::minutes(10);
+
+/// Child side: read, send 'M' + mesh or 'E' + message, exit without running destructors.
+[[noreturn]] void child(const std::string& path, int fd) {
+    const int null_fd = ::open("/dev/null", O_WRONLY);
+    if (null_fd >= 0) {  // Gmsh and the C library may print on crashes; keep the terminal clean
+        ::dup2(null_fd, STDOUT_FILENO);
+        ::dup2(null_fd, STDERR_FILENO);
+    }
+    std::string out;
+    try {
+        out = "M" + serialize(read_in_process(path));
+    } catch (const InputError& e) {
+        out = std::string("E") + e.what();
+    } catch (const std::exception& e) {
+        out = std::string("E") +
+              input_error_text(path, 0, "", std::string("cannot read the mesh (") + e.what() + ")");
+    } catch (...) {
+        out = "E" + input_error_text(path, 0, "", "cannot read the mesh");
+    }
+    const char* p = out.data();
+    std::size_t left = out.size();
+    while (left > 0) {
+        const ssize_t n = ::write(fd, p, left);
+        if (n < 0 && errno == EINTR) continue;
+        if (n <= 0) ::_exit(3);
+        p += n;
+        left -= static_cast<std::size_t>(n);
+    }
+    ::_exit(0);
+}
+
+}  // namespace
+
+MeshData read_gmsh(const std::string& path) {
+    check_msh_header(path);
+    int fds[2];
+    if (::pipe(fds) != 0) return read_in_process(path);  // no isolation possible: read here
+    const pid_t pid = ::fork();
+    if (pid < 0) {
+        ::close(fds[0]);
+        ::close(fds[1]);
+        return read_in_process(path);
+    }
+    if (pid == 0) {
+        ::close(fds[0]);
+        child(path, fds[1]);
+    }
+    ::close(fds[1]);
+
+    std::string data;
+    bool timed_out = false;
+    const auto deadline = std::chrono::steady_clock::now() + k_read_time_limit;
+    char buffer[1 << 16];
+    while (true) {
+        const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(
+            deadline - std::chrono::steady_clock::now());
+        if (left.count() <= 0) {
+            timed_out = true;
+            break;
+        }
+        pollfd pfd{fds[0], POLLIN, 0};
+        const int ready =
+            ::poll(&pfd, 1, static_cast<int>(std::min<long long>(left.count(), 1000)));
+        if (ready < 0 && errno != EINTR) break;
+        if (ready <= 0) continue;
+        const ssize_t n = ::read(fds[0], buffer, sizeof buffer);
+        if (n < 0 && errno == EINTR) continue;
+        if (n <= 0) break;  // end of data (or a read error)
+        data.append(buffer, static_cast<std::size_t>(n));
+    }
+    ::close(fds[0]);
+    if (timed_out) ::kill(pid, SIGKILL);
+    int status = 0;
+    while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+    }
+    if (timed_out)
+        fail(path,
+             "Gmsh did not finish reading the file within 10 minutes; the file is probably "
+             "corrupt");
+    if (WIFSIGNALED(status))
+        fail(path, "Gmsh crashed while reading the file (signal " +
+                       std::to_string(WTERMSIG(status)) +
+                       "); the file is probably corrupt, check it by opening it in Gmsh");
+    if (!data.empty() && data.front() == 'E') throw InputError(data.substr(1));
+    MeshData mesh;
+    if (data.empty() || data.front() != 'M' || !deserialize(data.substr(1), mesh))
+        fail(path, "reading the file with Gmsh failed unexpectedly");
     return mesh;
 }
 
