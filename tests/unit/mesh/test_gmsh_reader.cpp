@@ -213,5 +213,22 @@ $EndElements
     EXPECT_EQ(read_gmsh(write(dir / "again.msh", k_msh41)).triangles.size(), 4U);
 }
 
+// A file that makes Gmsh 4.8 itself crash (a physical name of dimension 23: segmentation fault
+// inside GModel::setPhysicalName, found by fuzzing) gives an InputError naming the file, and
+// the program goes on: the read runs in a child process.
+TEST(GmshReader, SurvivesAGmshCrash) {
+    const TempDir dir;
+    std::string text = k_msh41;
+    text.replace(text.find("2 2 \"skin\""), 1, "23");
+    const std::string path = write(dir / "crash.msh", text);
+    try {
+        (void)read_gmsh(path);
+        ADD_FAILURE() << "no error";
+    } catch (const InputError& e) {
+        EXPECT_EQ(std::string(e.what()).rfind(path + ": ", 0), 0U) << e.what();
+    }
+    EXPECT_EQ(read_gmsh(write(dir / "good.msh", k_msh41)).triangles.size(), 4U);
+}
+
 }  // namespace
 }  // namespace fpmshell
