@@ -82,9 +82,12 @@ def main():
             rows.append(r)
         if len(meshes) == 3:
             p = observed_order([results[(kernel, n)] for n in meshes])
-            rows.append(fpmv.row(PROBLEM, "observed order %s" % kernel, 2.0, p, None,
-                                 mesh="%d/%d/%d" % tuple(meshes), plot=plot_name,
-                                 note="log2((w1-w2)/(w2-w3)); report only (expected 2)"))
+            if math.isnan(p):     # not monotone: no order (and no NaN in rows.json)
+                rows[-1]["note"] += "; meshes not monotone, no observed order"
+            else:
+                rows.append(fpmv.row(PROBLEM, "observed order %s" % kernel, 2.0, p, None,
+                                     mesh="%d/%d/%d" % tuple(meshes), plot=plot_name,
+                                     note="log2((w1-w2)/(w2-w3)); report only (expected 2)"))
 
     draw(plot, meshes, results)
     return fpmv.finish(args.out, rows)

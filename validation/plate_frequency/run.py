@@ -1,0 +1,117 @@
+#!/usr/bin/env python3
+"""Simply supported rectangular plate: period of the first mode vs Kirchhoff plate theory.
+
+Quarter model (model.yaml), a small step pressure, no damping; the period of the centre
+deflection is fitted on about five cycles. BCIZ and DKT, three meshes. See README.md.
+Protocol: validation/README.md.
+"""
+import math
+import os
+import sys
+
+import numpy as np
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(HERE, "..", "..", "tools"))
+import fpmv  # noqa: E402
+
+PROBLEM = "plate_frequency"
+E, NU, RHO, H, A, B = 2.1e11, 0.3, 7850.0, 0.01, 1.0, 0.6     # model.yaml (full plate)
+D = E * H**3 / (12 * (1 - NU**2))
+OMEGA_11 = math.pi**2 * (1 / A**2 + 1 / B**2) * math.sqrt(D / (RHO * H))
+T_REF = 2 * math.pi / OMEGA_11        # 10.766 ms
+
+KERNELS = ["bciz", "dkt"]
+MESHES_FULL = [5, 10, 20]     # nx of the quarter (ny = 0.6 nx): element size a/10 ... a/40
+MESHES_QUICK = [10]
+# 2 % on the finest (quarter 20x12, h = a/40; measured error 0.4 % BCIZ, 0.2 % DKT) and on
+# the quick 10x6 (h = a/20; measured 1.1 % / 0.7 %): the period converges from above at about
+# O(h^2) (3.5 %, 1.1 %, 0.4 %), lumped masses and the rotary inertia (rho h A/3)(A/8 + h^2/12)
+# being part of that discretisation error. The fit over five cycles is accurate to < 0.1 %
+# (the higher modes, about 4 % of the response at >= 2.4 x the frequency, hardly bias it:
+# fits of the first and the second half of the record agree within 0.05 %). 2 % is the
+# benchmark's criterion and leaves the quick mesh a margin of about 2x.
+TOL = 0.02
+
+
+def fit_period(t, w, guess):
+    """Period of the dominant harmonic of w(t): least-squares fit of C + a cos(wt) + b sin(wt),
+    golden-section search of omega within +-30 % of 2 pi / guess."""
+    t = np.asarray(t)
+    w = np.asarray(w)
+
+    def residual(om):
+        m = np.column_stack([np.ones_like(t), np.cos(om * t), np.sin(om * t)])
+        c, *_ = np.linalg.lstsq(m, w, rcond=None)
+        return float(np.sum((m @ c - w) ** 2))
+
+    om0 = 2 * math.pi / guess
+    grid = np.linspace(0.7 * om0, 1.3 * om0, 241)
+    res = [residual(o) for o in grid]
+    k = int(np.argmin(res))
+    lo, hi = grid[max(k - 1, 0)], grid[min(k + 1, len(grid) - 1)]
+    g = (math.sqrt(5) - 1) / 2
+    for _ in range(80):
+        x1, x2 = hi - g * (hi - lo), lo + g * (hi - lo)
+        if residual(x1) < residual(x2):
+            hi = x2
+        else:
+            lo = x1
+    return float(2 * math.pi / (0.5 * (lo + hi)))
+
+
+def main():
+    args = fpmv.parse_args(__doc__)
+    meshes = MESHES_QUICK if args.quick else MESHES_FULL
+    model = os.path.join(HERE, "model.yaml")
+    plot = fpmv.plot_path(PROBLEM + ".png")
+    plot_name = os.path.basename(plot)
+    rows, curves, periods = [], {}, {}
+    for kernel in KERNELS:
+        for n in meshes:
+            ny = n * 6 // 10
+            out = os.path.join(args.out, "%s-%d" % (kernel, n))
+            res, wall = fpmv.run(args.fpmshell, model, out,
+                                 ["mesh.nx=%d" % n, "mesh.ny=%d" % ny, "control.bending=" + kernel],
+                                 threads=1)
+            t, w = res["history"]["time"], res["history"]["w_centre"]
+            period = fit_period(t, w, T_REF)
+            curves[(kernel, n)] = (t, w)
+            periods[(kernel, n)] = period
+            tol = TOL if n == meshes[-1] else None
+            rows.append(fpmv.row(PROBLEM, "first-mode period %s" % kernel, T_REF * 1e3,
+                                 period * 1e3, tol, mesh="quarter %dx%d (h=a/%d)" % (n, ny, 2 * n),
+                                 wall=wall, plot=plot_name, unit="ms",
+                                 note="2 pi / omega_11, omega_11 = pi^2 (1/a^2 + 1/b^2) sqrt(D/rho h)"))
+        if len(meshes) == 3:
+            t1, t2, t3 = [periods[(kernel, n)] for n in meshes]
+            if (t1 - t2) * (t2 - t3) > 0:
+                rows.append(fpmv.row(PROBLEM, "observed order %s" % kernel, 2.0,
+                                     math.log((t1 - t2) / (t2 - t3), 2), None,
+                                     mesh="%d/%d/%d" % tuple(meshes), plot=plot_name,
+                                     note="log2((T1-T2)/(T2-T3)); report only"))
+    draw(plot, meshes, curves, periods)
+    return fpmv.finish(args.out, rows)
+
+
+def draw(path, meshes, curves, periods):
+    plt = fpmv.pyplot()
+    fig, ax = plt.subplots(figsize=(8, 4.5))
+    for (kernel, n), (t, w) in sorted(curves.items()):
+        ax.plot([x * 1e3 for x in t], [x * 1e6 for x in w], "-" if kernel == "bciz" else "--",
+                lw=1, label="fpmshell %s quarter %dx%d: T = %.4f ms" % (kernel, n, n * 6 // 10,
+                                                                       periods[(kernel, n)] * 1e3))
+    for k in range(1, 6):
+        ax.axvline(k * T_REF * 1e3, color="k", lw=0.6, ls=":",
+                   label="reference period %.4f ms" % (T_REF * 1e3) if k == 1 else None)
+    ax.set_xlabel("time [ms]")
+    ax.set_ylabel("centre deflection [$\\mu$m]")
+    ax.set_title("Simply supported 1 x 0.6 m plate, step pressure: first-mode period")
+    ax.legend(fontsize=7, loc="lower right")
+    fig.tight_layout()
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
+
+
+if __name__ == "__main__":
+    sys.exit(main())

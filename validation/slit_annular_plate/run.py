@@ -1,0 +1,104 @@
+#!/usr/bin/env python3
+"""Slit annular plate under a lifting line force (Sze, Liu & Lo 2004, problem 3.3; benchmarks.md 4).
+
+Runs fpmshell in relaxation mode along q/qmax = 0..1 and compares the lift of the inner (A, r = 6)
+and outer (B, r = 10) corner of the loaded slit edge with Sze's table at every computed level,
+plots the whole path and writes rows.json. Protocol: validation/README.md.
+"""
+import csv
+import os
+import sys
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(HERE)), "tools"))
+import fpmv  # noqa: E402
+
+PROBLEM = "slit_annular_plate"
+Q_MAX = 0.8
+WIDTH = 4.0  # R_o - R_i
+TOL = 0.02   # done-criterion of benchmarks.md: the path within 2 % of Sze's table
+
+# (divisions_radial, divisions_angle, bending, load-level spacing, tolerance or None, why).
+QUICK = [(4, 32, "dkt", 0.5, 0.07,
+          "coarse 4x32 mesh: measured discretization error -5.4 % (w_A) / -4.2 % (w_B), decreasing "
+          "with refinement (8x64: -3.8/-3.4 %, 10x80: -3.2/-2.9 %); 7 % bounds the coarse mesh")]
+FULL = [(4, 32, "dkt", 0.25, None, "coarse mesh of the convergence study: reported, not tested"),
+        (8, 64, "dkt", 0.5, TOL, "done-criterion of benchmarks.md: 2 % of Sze's table"),
+        (4, 32, "bciz", 0.5, None, "BCIZ, coarse mesh: reported, not tested")]
+
+
+def reference():
+    with open(os.path.join(HERE, "reference.csv")) as f:
+        rows = [r for r in csv.reader(line for line in f if not line.startswith("#"))][1:]
+    return [tuple(float(x) for x in r) for r in rows]
+
+
+def overrides(nr, na, bending, every):
+    per_node = Q_MAX * WIDTH / nr  # q x tributary length; the corners get half
+    return ["mesh.divisions_radial=%d" % nr, "mesh.divisions_angle=%d" % na,
+            "control.bending=%s" % bending, "output.every=%g" % every,
+            "loads.0.value=[0, 0, %.17g]" % per_node,
+            "loads.1.value=[0, 0, %.17g]" % (-0.5 * per_node),
+            "loads.2.value=[0, 0, %.17g]" % (-0.5 * per_node)]
+
+
+def main():
+    args = fpmv.parse_args(__doc__)
+    cases = QUICK if args.quick else FULL
+    ref = reference()
+    plot = fpmv.plot_path(PROBLEM + ("-quick" if args.quick else "") + ".png")
+    rows, runs = [], []
+    for nr, na, bending, every, tol, why in cases:
+        mesh = "%dx%d right, %s" % (nr, na, bending)
+        out = os.path.join(args.out, "%s_%dx%d" % (bending, nr, na))
+        try:
+            res, wall = fpmv.run(args.fpmshell, os.path.join(HERE, "model.yaml"), out,
+                                 overrides(nr, na, bending, every), threads=1)
+        except RuntimeError as e:
+            print(e)
+            rows.append(fpmv.row(PROBLEM, "fpmshell run", 0.0, 1.0, 0.0, mesh=mesh, relative=False,
+                                 note="fpmshell failed: see %s/log.txt" % out))
+            continue
+        h = res["history"]
+        runs.append((mesh, h))
+        n_levels = len(h["time"]) - 1
+        rows.append(fpmv.row(PROBLEM, "converged load levels", n_levels, int(sum(h["converged"][1:])),
+                             0.0, mesh=mesh, wall=wall, plot=plot,
+                             relative=False, note="levels whose relaxation met control.tolerance"))
+        for t, wa, wb in ref:
+            if t == 0:
+                continue
+            k = [i for i, tt in enumerate(h["time"]) if abs(tt - t) < 1e-9]
+            if not k:
+                continue
+            i = k[0]
+            flag = "" if h["converged"][i] else " (level NOT converged)"
+            for name, val, r in (("w_A (r = 6)", h["w_a"][i], wa), ("w_B (r = 10)", h["w_b"][i], wb)):
+                rows.append(fpmv.row(PROBLEM, "%s at q/qmax = %.2f" % (name, t), r, val, tol,
+                                     mesh=mesh, wall=wall, plot=plot, note=why + flag))
+    draw(plot, ref, runs)
+    return fpmv.finish(args.out, rows)
+
+
+def draw(path, ref, runs):
+    plt = fpmv.pyplot()
+    fig, ax = plt.subplots(figsize=(7, 5))
+    t = [r[0] * Q_MAX for r in ref]
+    ax.plot([r[1] for r in ref], t, "ko", mfc="none", label="Sze et al. 2004 (S4R 10x80): w_A")
+    ax.plot([r[2] for r in ref], t, "ks", mfc="none", label="Sze et al. 2004 (S4R 10x80): w_B")
+    for (mesh, h), c in zip(runs, ["C0", "C1", "C2", "C3"]):
+        q = [x * Q_MAX for x in h["time"]]
+        ax.plot(h["w_a"], q, "-", color=c, marker=".", label="fpmshell %s" % mesh)
+        ax.plot(h["w_b"], q, "--", color=c, marker=".")
+    ax.set_xlabel("lift of the loaded edge: w_A at r = 6 (solid), w_B at r = 10 (dashed)")
+    ax.set_ylabel("line force q")
+    ax.set_title("Slit annular plate under a lifting line force")
+    ax.grid(True, alpha=0.3)
+    ax.legend(fontsize=8, loc="lower right")
+    fig.tight_layout()
+    fig.savefig(path, dpi=120)
+    plt.close(fig)
+
+
+if __name__ == "__main__":
+    sys.exit(main())
