@@ -170,6 +170,8 @@ def write(found, out_path, command):
                 plots.append(name)
         for extra in sorted(glob.glob(os.path.join(PLOT_DIR, p + "*.png"))):
             name = os.path.basename(extra)
+            if (name.endswith("-quick.png")) != (variant == "quick"):
+                continue   # the other variant's plot
             if name not in plots:
                 plots.append(name)
         for name in plots:

@@ -64,7 +64,8 @@ def main():
     args = fpmv.parse_args(__doc__)
     meshes = MESHES_QUICK if args.quick else MESHES_FULL
     model = os.path.join(HERE, "model.yaml")
-    plot = fpmv.plot_path(PROBLEM + ".png")
+    # the quick variant (make test) draws its own file so that it keeps the full one
+    plot = fpmv.plot_path(PROBLEM + ("-quick" if args.quick else "") + ".png")
     plot_name = os.path.basename(plot)
     rows, curves, periods = [], {}, {}
     for kernel in KERNELS:
@@ -89,7 +90,7 @@ def main():
 
 def draw(path, curves, periods):
     plt = fpmv.pyplot()
-    fig, ax = plt.subplots(figsize=(8, 4.5))
+    fig, ax = plt.subplots(figsize=(8, 5.5))
     for (kernel, nx, ny), (t, w) in sorted(curves.items()):
         ax.plot([x * 1e3 for x in t], [x * 1e6 for x in w], "-" if kernel == "bciz" else "--",
                 lw=1, label="fpmshell %s %dx%d: T = %.3f ms" % (kernel, nx, ny,
@@ -100,7 +101,7 @@ def draw(path, curves, periods):
     ax.set_xlabel("time [ms]")
     ax.set_ylabel("tip deflection [$\\mu$m]")
     ax.set_title("Cantilever strip, step tip force: first bending period")
-    ax.legend(fontsize=7, loc="lower right")
+    ax.legend(fontsize=7, loc="upper center", bbox_to_anchor=(0.5, -0.14), ncol=2)
     fig.tight_layout()
     fig.savefig(path, dpi=110)
     plt.close(fig)

@@ -18,11 +18,15 @@ W_REF = 1.8248e-5       # Belytschko et al. (1985), thin shell (Flügge series),
 KERNELS = ["bciz", "dkt"]
 MESHES_FULL = [8, 16, 24, 32]    # divisions of the 1/8 model (arc x length)
 MESHES_QUICK = [16]
-# Finest mesh (32x32): 2 %, the benchmark's criterion.
+# Finest mesh (32x32): 2 %, the benchmark's criterion. The meshes converge (non-monotonically
+# near the end) to about 1.3 % (BCIZ) / 0.6 % (DKT) above the thin-shell reference; 2 % holds
+# that offset of the Kirchhoff-type facets plus the remaining 32x32 discretisation error.
 TOL_FINE = 0.02
-# Quick, 16x16: if the 32x32 met 2 % and the error fell as h^2, the 16x16 error would be at
-# most 4 x 2 % = 8 %. (This element converges more slowly and from above here: see README.)
-TOL_QUICK = 0.08
+# Quick, 16x16: 4 %. Measured: 1.1 % (BCIZ) / 0.6 % (DKT) below the reference; the values
+# converge to about 1.3 % / 0.6 % above it (BCIZ 48x48: 1.8481e-5), so the 16x16 error is the
+# sum of a -2.4 % discretisation error and that offset; 4 % holds both with a margin and still
+# catches any regression of the boundary conditions (the old symmetry treatment gave +10 %).
+TOL_QUICK = 0.04
 
 
 def observed_order(w1, w2, w3, r1, r2):
@@ -49,7 +53,8 @@ def main():
     args = fpmv.parse_args(__doc__)
     meshes = MESHES_QUICK if args.quick else MESHES_FULL
     model = os.path.join(HERE, "model.yaml")
-    plot = fpmv.plot_path(PROBLEM + ".png")
+    # the quick variant (make test) draws its own file so that it keeps the full one
+    plot = fpmv.plot_path(PROBLEM + ("-quick" if args.quick else "") + ".png")
     plot_name = os.path.basename(plot)
     rows, results = [], {}
     for kernel in KERNELS:

@@ -53,7 +53,8 @@ def main():
     args = fpmv.parse_args(__doc__)
     meshes = MESHES_QUICK if args.quick else MESHES_FULL
     model = os.path.join(HERE, "model.yaml")
-    plot = fpmv.plot_path(PROBLEM + ".png")
+    # the quick variant (make test) draws its own file so that it keeps the full one
+    plot = fpmv.plot_path(PROBLEM + ("-quick" if args.quick else "") + ".png")
     plot_name = os.path.basename(plot)
     rows, results = [], {}
     for kernel in KERNELS:

@@ -73,7 +73,8 @@ def main():
     args = fpmv.parse_args(__doc__)
     runs = RUNS_QUICK if args.quick else RUNS_FULL
     model = os.path.join(HERE, "model.yaml")
-    plot = fpmv.plot_path(PROBLEM + ".png")
+    # the quick variant (make test) draws its own file so that it keeps the full one
+    plot = fpmv.plot_path(PROBLEM + ("-quick" if args.quick else "") + ".png")
     plot_name = os.path.basename(plot)
     rows, curves = [], {}
     for n, kernel in runs:
