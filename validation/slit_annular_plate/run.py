@@ -88,8 +88,9 @@ def draw(path, ref, runs):
     ax.plot([r[2] for r in ref], t, "ks", mfc="none", label="Sze et al. 2004 (S4R 10x80): w_B")
     for (mesh, h), c in zip(runs, ["C0", "C1", "C2", "C3"]):
         q = [x * Q_MAX for x in h["time"]]
-        ax.plot(h["w_a"], q, "-", color=c, marker=".", label="fpmshell %s" % mesh)
-        ax.plot(h["w_b"], q, "--", color=c, marker=".")
+        # equilibrium points only at the computed levels: thin lines just link them
+        ax.plot(h["w_a"], q, "-", color=c, lw=0.7, marker="o", ms=5, label="fpmshell %s" % mesh)
+        ax.plot(h["w_b"], q, "--", color=c, lw=0.7, marker="s", ms=5)
     ax.set_xlabel("lift of the loaded edge: w_A at r = 6 (solid), w_B at r = 10 (dashed)")
     ax.set_ylabel("line force q")
     ax.set_title("Slit annular plate under a lifting line force")
