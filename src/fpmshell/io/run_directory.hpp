@@ -19,10 +19,11 @@ class Progress;
 
 /// Marker file in DIR holding the absolute path of the model whose results DIR holds.
 inline constexpr const char* k_model_marker = ".fpmshell_model";
-/// Result files a run writes in DIR (besides fields/frame_NNNNN.vtu and the marker). Their
-/// presence means "DIR holds results"; a run of the same model removes them first.
-inline constexpr std::array<const char*, 5> k_result_files = {
-    "summary.json", "history.csv", "energy.csv", "fields.pvd", "log.txt"};
+/// Result files a run writes in DIR (besides fields/frame_NNNNN.vtu and the marker), and the
+/// plots tools/plot_history.py adds. Their presence means "DIR holds results"; a run of the
+/// same model removes them first (so no plot of an older run is left beside new results).
+inline constexpr std::array<const char*, 7> k_result_files = {
+    "summary.json", "history.csv", "energy.csv", "fields.pvd", "log.txt", "history.png", "energy.png"};
 /// Folder of the VTU frames, inside DIR.
 inline constexpr const char* k_fields_folder = "fields";
 
