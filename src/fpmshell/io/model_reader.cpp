@@ -120,7 +120,7 @@ public:
                      ? SolutionMode::Relaxation
                      : SolutionMode::Dynamic;
         c.tolerance = m.positive_or("tolerance", c.tolerance);
-        c.bending = m.choice_or("bending", {"bciz", "dkt"}, "bciz") == "dkt" ? BendingKernel::Dkt
+        c.bending = m.choice_or("bending", {"bciz", "dkt"}, "dkt") == "dkt" ? BendingKernel::Dkt
                                                                              : BendingKernel::Bciz;
         c.energy_error_limit = m.positive_or("energy_error_limit", c.energy_error_limit);
         if (const auto s = m.find("max_relaxation_iterations"))
