@@ -253,7 +253,7 @@ TEST(ModelReader, AppliesDefaults) {
     EXPECT_EQ(m.control.time_step_scale, 0.9);
     EXPECT_EQ(m.control.mode, SolutionMode::Dynamic);
     EXPECT_EQ(m.control.tolerance, 1e-5);
-    EXPECT_EQ(m.control.bending, BendingKernel::Bciz);
+    EXPECT_EQ(m.control.bending, BendingKernel::Dkt);
     EXPECT_EQ(m.control.energy_error_limit, 0.5);
     EXPECT_EQ(m.control.max_relaxation_iterations, 200000);
     EXPECT_DOUBLE_EQ(m.output.every, 1.0e-3 / 200);
