@@ -9,6 +9,7 @@ and a closing 'N passed, M failed' line, and exits 0 only when every row passed.
 import argparse
 import csv
 import json
+import math
 import os
 import subprocess
 import sys
@@ -86,6 +87,15 @@ def finish(out_dir, rows):
             r["error"], tol))
     print("%d passed, %d failed" % (len(rows) - n_fail, n_fail))
     return 0 if n_fail == 0 else 1
+
+
+def observed_order(w1, w2, w3):
+    """Convergence order from three meshes, each halving the element size:
+    log2((w1 - w2) / (w2 - w3)); nan when the sequence is not monotone."""
+    d1, d2 = w1 - w2, w2 - w3
+    if d2 == 0 or d1 / d2 <= 0:
+        return float("nan")
+    return math.log(d1 / d2, 2)
 
 
 def plot_path(name):

@@ -39,14 +39,6 @@ def centre_w(res):
     return -h["w_centre"][-1], bool(h["converged"][-1])
 
 
-def observed_order(values, ref=None):
-    """Order from three meshes each halving h: log2((w1 - w2) / (w2 - w3))."""
-    w1, w2, w3 = values
-    if (w2 - w3) == 0 or (w1 - w2) / (w2 - w3) <= 0:
-        return float("nan")
-    return math.log((w1 - w2) / (w2 - w3), 2)
-
-
 def main():
     args = fpmv.parse_args(__doc__)
     meshes = MESHES_QUICK if args.quick else MESHES_FULL
@@ -73,7 +65,7 @@ def main():
                 r["pass"] = False
             rows.append(r)
         if len(meshes) == 3:
-            p = observed_order([results[(kernel, n)] for n in meshes])
+            p = fpmv.observed_order(*[results[(kernel, n)] for n in meshes])
             if math.isnan(p):     # not monotone: no order (and no NaN in rows.json)
                 rows[-1]["note"] += "; meshes not monotone, no observed order"
             else:

@@ -42,13 +42,6 @@ def force_overrides(n):
     return ov
 
 
-def observed_order(w1, w2, w3):
-    d1, d2 = w1 - w2, w2 - w3
-    if d2 == 0 or d1 / d2 <= 0:
-        return float("nan")
-    return math.log(d1 / d2, 2)
-
-
 def main():
     args = fpmv.parse_args(__doc__)
     meshes = MESHES_QUICK if args.quick else MESHES_FULL
@@ -76,7 +69,7 @@ def main():
                 r["pass"] = False
             rows.append(r)
         if len(meshes) >= 3:
-            p = observed_order(*[results[(kernel, n)] for n in meshes[-3:]])
+            p = fpmv.observed_order(*[results[(kernel, n)] for n in meshes[-3:]])
             if math.isnan(p):     # not monotone: no order (and no NaN in rows.json)
                 rows[-1]["note"] += "; meshes not monotone, no observed order"
             else:
