@@ -6,6 +6,7 @@
 
 #include "fpmshell/core/errors.hpp"
 #include "fpmshell/core/rotation.hpp"
+#include "fpmshell/elements/lumped_inertia.hpp"
 
 namespace fpmshell {
 namespace {
@@ -47,11 +48,10 @@ ExplicitSolver::ExplicitSolver(const Model& model) : model_(model), elements_(mo
         const Vec3& p2 = model.nodes[static_cast<std::size_t>(t[2])];
         const Vec3 cr = (p1 - p0).cross(p2 - p0);
         const Real area = 0.5 * cr.norm();
-        const Real h = sec.thickness;
-        const Real m3 = mat.density * h * area / 3.0;
+        const NodeInertiaShare share = lumped_node_share(mat.density, sec.thickness, area);
         for (Index p : t) {
-            s_.mass[static_cast<std::size_t>(p)] += m3;
-            s_.inertia[static_cast<std::size_t>(p)] += m3 * (area / 8.0 + h * h / 12.0);
+            s_.mass[static_cast<std::size_t>(p)] += share.mass;
+            s_.inertia[static_cast<std::size_t>(p)] += share.inertia;
             normal_sum[static_cast<std::size_t>(p)] += cr;
         }
         edge_sum += (p1 - p0).norm() + (p2 - p1).norm() + (p0 - p2).norm();

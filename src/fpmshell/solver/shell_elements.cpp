@@ -4,16 +4,40 @@
 #include <cmath>
 #include <limits>
 
+#include "fpmshell/elements/bending_time_step.hpp"
+#include "fpmshell/elements/lumped_inertia.hpp"
+
 namespace fpmshell {
 namespace {
 
 constexpr Index k_parallel_min_elements = 2000;
+// The bending step ratio depends on the element shape and h / L_c only; it is re-evaluated (a
+// 9x9 eigenproblem) when L_c has changed by more than this fraction since the last evaluation,
+// which bounds the ratio's staleness to a few per cent of the step.
+constexpr Real k_bending_ratio_drift = 0.05;
+
+/// Local flat shape of the triangle (p0, p1, p2): node 1 at the origin, edge 1-2 along x.
+TriangleShape local_shape(const Vec3& p0, const Vec3& p1, const Vec3& p2) {
+    const Vec3 e1 = p1 - p0;
+    const Real x2 = e1.norm();
+    const Vec3 ex = e1 / x2;
+    const Vec3 d = p2 - p0;
+    return TriangleShape(x2, d.dot(ex), ex.cross(d).norm());
+}
+
+Real characteristic_length(const Vec3& p0, const Vec3& p1, const Vec3& p2) {
+    const Real two_area = (p1 - p0).cross(p2 - p0).norm();
+    const Real lmax = std::sqrt(std::max({(p1 - p0).squaredNorm(), (p2 - p1).squaredNorm(),
+                                          (p0 - p2).squaredNorm()}));
+    return two_area / lmax;  // §6.4, L_c = 2A / l_max
+}
 
 }  // namespace
 
 ShellElements::ShellElements(const Model& model)
     : tri_(model.triangles), section_(model.element_section),
       stiffness_damping_(model.damping.stiffness) {
+    bending_kernel_ = model.control.bending;
     for (const Section& sec : model.sections) {
         const Material& mat = model.materials[static_cast<std::size_t>(sec.material)];
         ShellRule rule;
@@ -25,8 +49,26 @@ ShellElements::ShellElements(const Model& model)
         materials_.emplace_back(mat.youngs_modulus, mat.poisson_ratio);
         wave_speed_.push_back(std::sqrt(mat.youngs_modulus /
                                         (mat.density * (1.0 - mat.poisson_ratio * mat.poisson_ratio))));
+        bending_rigidity_.push_back(materials_.back().stiffness() * (sec.thickness * sec.thickness * sec.thickness / 12.0));
     }
     const std::size_t ne = tri_.size();
+    node_mass_.resize(ne);
+    node_inertia_.resize(ne);
+    bend_ratio_.assign(ne, 1.0);
+    bend_lc_.assign(ne, 0.0);
+    for (std::size_t e = 0; e < ne; ++e) {
+        const auto& t = tri_[e];
+        const Vec3& p0 = model.nodes[static_cast<std::size_t>(t[0])];
+        const Vec3& p1 = model.nodes[static_cast<std::size_t>(t[1])];
+        const Vec3& p2 = model.nodes[static_cast<std::size_t>(t[2])];
+        const Section& sec = model.sections[static_cast<std::size_t>(section_[e])];
+        const Material& mat = model.materials[static_cast<std::size_t>(sec.material)];
+        const NodeInertiaShare share =
+            lumped_node_share(mat.density, sec.thickness, 0.5 * (p1 - p0).cross(p2 - p0).norm());
+        node_mass_[e] = share.mass;
+        node_inertia_[e] = share.inertia;
+        refresh_bending_ratio(static_cast<Index>(e), model.nodes);
+    }
     point_offset_.resize(ne + 1);
     point_offset_[0] = 0;
     for (std::size_t e = 0; e < ne; ++e)
@@ -55,16 +97,38 @@ ShellElements::ShellElements(const Model& model)
                 static_cast<Index>(3 * e + static_cast<std::size_t>(i));
 }
 
-Real ShellElements::element_dt(Index e, const std::vector<Vec3>& x) const {
-    const auto& t = tri_[static_cast<std::size_t>(e)];
+Real ShellElements::bending_ratio(Index e, const std::vector<Vec3>& x) const {
+    const std::size_t ue = static_cast<std::size_t>(e);
+    const auto& t = tri_[ue];
     const Vec3& p0 = x[static_cast<std::size_t>(t[0])];
     const Vec3& p1 = x[static_cast<std::size_t>(t[1])];
     const Vec3& p2 = x[static_cast<std::size_t>(t[2])];
-    const Real two_area = (p1 - p0).cross(p2 - p0).norm();
-    const Real lmax = std::sqrt(std::max({(p1 - p0).squaredNorm(), (p2 - p1).squaredNorm(),
-                                          (p0 - p2).squaredNorm()}));
-    const std::size_t sec = static_cast<std::size_t>(section_[static_cast<std::size_t>(e)]);
-    Real dt = (two_area / lmax) / wave_speed_[sec];  // §6.4, L_c = 2A / l_max
+    const std::size_t sec = static_cast<std::size_t>(section_[ue]);
+    const Real membrane_dt = characteristic_length(p0, p1, p2) / wave_speed_[sec];
+    const Real bending_dt = bending_critical_dt(bending_kernel_, local_shape(p0, p1, p2), bending_rigidity_[sec],
+                                                node_mass_[ue], node_inertia_[ue]);
+    return membrane_dt > 0 ? bending_dt / membrane_dt : 1.0;
+}
+
+void ShellElements::refresh_bending_ratio(Index e, const std::vector<Vec3>& x) {
+    const std::size_t ue = static_cast<std::size_t>(e);
+    const auto& t = tri_[ue];
+    const Real lc = characteristic_length(x[static_cast<std::size_t>(t[0])], x[static_cast<std::size_t>(t[1])],
+                                          x[static_cast<std::size_t>(t[2])]);
+    if (!(lc > 0) || std::abs(lc - bend_lc_[ue]) <= k_bending_ratio_drift * bend_lc_[ue]) return;
+    bend_ratio_[ue] = bending_ratio(e, x);
+    bend_lc_[ue] = lc;
+}
+
+Real ShellElements::element_dt(Index e, const std::vector<Vec3>& x) const {
+    const std::size_t ue = static_cast<std::size_t>(e);
+    const auto& t = tri_[ue];
+    const std::size_t sec = static_cast<std::size_t>(section_[ue]);
+    // §6.4 membrane step L_c / c; the bending modes of thick elements (h / L_c > ~0.5) are
+    // slower to integrate, bend_ratio_ < 1 (bending_time_step.hpp).
+    Real dt = characteristic_length(x[static_cast<std::size_t>(t[0])], x[static_cast<std::size_t>(t[1])],
+                                    x[static_cast<std::size_t>(t[2])]) /
+              wave_speed_[sec] * std::min(Real{1}, bend_ratio_[ue]);
     if (stiffness_damping_ > 0) {  // §6.4: dt <= (2/w)(sqrt(1+xi^2) - xi), w = 2/dt
         const Real xi = stiffness_damping_ / dt;
         dt *= std::sqrt(1.0 + xi * xi) - xi;
@@ -103,6 +167,7 @@ ShellElements::StepTotals ShellElements::compute(ParticleState& s, Real viscous_
             dth[i] = s.dtheta[p];
         }
         const ReversedTriangle rt = reverse_motion(base, cur, dth);
+        refresh_bending_ratio(e, s.x);
         elem_dt_[ue] = element_dt(e, s.x);
         // A tilt over 90 deg or an area change by a factor 2 within one step is no deformation a
         // stable step can produce: the run has diverged (theory.md §2.8).

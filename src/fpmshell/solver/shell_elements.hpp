@@ -38,13 +38,24 @@ public:
     [[nodiscard]] Real thickness(Index e) const { return rules_[static_cast<std::size_t>(section_[static_cast<std::size_t>(e)])].thickness; }
 
 private:
+    /// Critical step of element e at positions x: the smaller of the membrane step L_c / c and
+    /// the bending step (the stored ratio bend_ratio_ times L_c / c), reduced for stiffness
+    /// damping (§6.4).
     [[nodiscard]] Real element_dt(Index e, const std::vector<Vec3>& x) const;
+    /// Re-evaluates bend_ratio_[e] when L_c has drifted from the length it was computed at.
+    void refresh_bending_ratio(Index e, const std::vector<Vec3>& x);
+    [[nodiscard]] Real bending_ratio(Index e, const std::vector<Vec3>& x) const;
 
     std::vector<std::array<Index, 3>> tri_;
     std::vector<Index> section_;               ///< per element
     std::vector<ShellRule> rules_;             ///< per section
     std::vector<LinearElastic> materials_;     ///< per section
     std::vector<Real> wave_speed_;             ///< per section, c = sqrt(E / rho (1 - nu^2))
+    std::vector<Mat3> bending_rigidity_;       ///< per section, D_b = (h^3 / 12) C (§4.1)
+    std::vector<Real> node_mass_, node_inertia_;  ///< per element, its share at each node (§6.1-6.2)
+    std::vector<Real> bend_ratio_;  ///< per element, bending critical step / (L_c / c)
+    std::vector<Real> bend_lc_;     ///< per element, the L_c bend_ratio_ was evaluated at
+    BendingKernel bending_kernel_ = BendingKernel::Dkt;
     std::vector<std::size_t> point_offset_;    ///< first material point of every element
     std::vector<MaterialPoint> points_;
     std::vector<Vec3> slot_force_, slot_moment_;  ///< 3 slots per element
