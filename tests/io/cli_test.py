@@ -172,5 +172,16 @@ if os.path.exists(os.path.join(bres, "summary.json")):
 else:
     check("diverging run: summary written", False)
 
+# The energy-balance stop (control.energy_error_limit) names the step, particle and element;
+# a limit far below round-off triggers it on a healthy model.
+eres = os.path.join(WORK, "energy_stop")
+strict = write("strict.yaml", BASE.replace("control: {end_time: 1.0e-4}",
+                                           "control: {end_time: 1.0e-3, energy_error_limit: 1.0e-15}"))
+code, out = fpm("run", strict, "-o", eres, "--quiet", "--threads", "1")
+ok = (code == 1 and "energy balance error" in out and "step" in out and "particle" in out
+      and "element" in out)
+check("energy-balance stop exits 1 and names step, particle and element", ok,
+      "exit %d: %s" % (code, out))
+
 print("%d passed, %d failed" % (passed, len(failures)))
 sys.exit(1 if failures else 0)

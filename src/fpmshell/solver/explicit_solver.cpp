@@ -342,10 +342,24 @@ void ExplicitSolver::step(Real max_dt) {
     time_ += dt_half_;
     const Real err = energy_.error();
     if (steps_ > 10 && std::abs(err) > model_.control.energy_error_limit) {
+        // Where: the particle with the largest kinetic energy (an instability grows fastest
+        // there) and the element that sets the stable step.
+        std::size_t hot = 0;
+        Real hot_ke = -1;
+        for (std::size_t p = 0; p < s_.size(); ++p) {
+            const Real ke = s_.mass[p] * s_.v[p].squaredNorm() + s_.inertia[p] * s_.omega[p].squaredNorm();
+            if (ke > hot_ke) {
+                hot_ke = ke;
+                hot = p;
+            }
+        }
+        Index critical = -1;
+        (void)elements_.min_critical_dt(s_.x, &critical);
         std::ostringstream msg;
         msg << "the energy balance error reached " << err * 100 << " % at step " << steps_
             << " (t = " << time_ << "), beyond the limit of " << model_.control.energy_error_limit * 100
-            << " % (control.energy_error_limit): the run is unstable";
+            << " % (control.energy_error_limit): the run is unstable; the largest kinetic energy is at particle "
+            << hot + 1 << ", the smallest stable step at element " << critical + 1;
         throw RunFailure(msg.str());
     }
 }
