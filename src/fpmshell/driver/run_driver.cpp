@@ -58,10 +58,15 @@ FieldFrame make_frame(const Model& model, const ExplicitSolver& solver, Real tim
             bm.values.push_back(m_el[e][c]);
         }
         th.values.push_back(solver.elements().thickness(static_cast<Index>(e)));
-        // Elastic material only in this version: no plastic strain anywhere.
-        ep_top.values.push_back(0);
-        ep_mid.values.push_back(0);
-        ep_bot.values.push_back(0);
+        // Equivalent plastic strain at the bottom, middle and top thickness points, averaged
+        // over the in-plane points (2 Gauss points: the middle is their mean).
+        const Index ie = static_cast<Index>(e);
+        const int nk = solver.elements().thickness_points(ie);
+        const Real bottom = solver.elements().plastic_strain(ie, 0);
+        const Real top = solver.elements().plastic_strain(ie, nk - 1);
+        ep_bot.values.push_back(bottom);
+        ep_top.values.push_back(top);
+        ep_mid.values.push_back(nk % 2 == 1 ? solver.elements().plastic_strain(ie, nk / 2) : 0.5 * (bottom + top));
     }
     f.cell_data = {nf, bm, th, ep_top, ep_mid, ep_bot};
     return f;

@@ -34,6 +34,7 @@ struct ShellTriangleLoads {
     std::array<Vec3, 3> moment;  ///< internal nodal moments, global frame, t_n
     Real strain_work = 0;        ///< work of the stresses over the step (trapezoidal), energy.csv
     Real damping_work = 0;       ///< work of the viscous (stiffness-damping) stresses
+    Real plastic_work = 0;       ///< plastic dissipation over the step (part of strain_work)
     Voigt3 membrane_force = Voigt3::Zero();  ///< N averaged over the element, local frame
     Voigt3 bending_moment = Voigt3::Zero();  ///< M averaged over the element, local frame
 };
@@ -47,10 +48,12 @@ struct ShellTriangleLoads {
 /// Element loads from the reversed path element rt.
 /// points: the element's material points (old state in, new state out).
 /// viscous_rate: a_s / dt_{n-1/2} (theory.md §6.5), 0 without stiffness damping.
+/// dt: duration of the path element, for rate-dependent materials (0: no rate).
 template <class Material>
 ShellTriangleLoads shell_triangle_loads(const ReversedTriangle& rt, const ShellRule& rule,
                                         const Material& material,
-                                        std::span<MaterialPoint> points, Real viscous_rate) {
+                                        std::span<MaterialPoint> points, Real viscous_rate,
+                                        Real dt = 0) {
     ShellTriangleLoads out;
     const TriangleShape shape(rt.x2, rt.x3, rt.y3);
     const Mat36 bm = membrane_b(shape);
@@ -71,15 +74,17 @@ ShellTriangleLoads shell_triangle_loads(const ReversedTriangle& rt, const ShellR
         const Mat36 bb = bending_b(rule.bending, shape, ip.L);
         const Voigt3 d_kappa = bb * th_vec;  // §4.3
         Voigt3 n_g = Voigt3::Zero(), m_g = Voigt3::Zero();
-        Real work_g = 0;
+        Real work_g = 0, plastic_g = 0;
         for (int k = 0; k < nk; ++k) {
             const ThicknessPoint& tp = rule.through[static_cast<std::size_t>(k)];
             const Real z = tp.zeta * half_h;
             const Voigt3 d_eps = d_eps_m + z * d_kappa;  // §4.4
             MaterialPoint& mp = points[static_cast<std::size_t>(g * nk + k)];
             const Voigt3 sigma_old = mp.stress;
-            material.update(mp, d_eps, mp);  // old and new may alias: update reads first
+            const Real plastic_old = mp.plastic_work;
+            material.update(mp, d_eps, dt, mp);  // old and new may alias: update reads first
             const Real wz = half_h * tp.weight;
+            plastic_g += wz * (mp.plastic_work - plastic_old);
             n_g += wz * mp.stress;  // §3.2 resultants
             m_g += (wz * z) * mp.stress;
             work_g += wz * 0.5 * (sigma_old + mp.stress).dot(d_eps);
@@ -97,6 +102,7 @@ ShellTriangleLoads shell_triangle_loads(const ReversedTriangle& rt, const ShellR
         f_m += wa * (bm.transpose() * n_g);
         m_b += wa * (bb.transpose() * m_g);
         out.strain_work += rt.area * ip.weight * work_g;
+        out.plastic_work += rt.area * ip.weight * plastic_g;
         ++g;
     }
     // §4.6 out-of-plane forces from the equilibrium of the element (node-1-origin frame).

@@ -142,30 +142,68 @@ public:
             const YamlMap any = def.open_map("material constants");
             const YamlValue type = any.at("type", "elastic");
             const std::string t = type.choice({"elastic", "j2_plastic", "johnson_cook"});
-            if (t != "elastic")
-                type.fail(not_supported("the material type '" + t + "'") + "; use type: elastic");
-            if (const auto cs = any.find("cowper_symonds"))
-                cs->fail(not_supported("the Cowper-Symonds rate factor"));
-            for (const auto& [key, value] : any.entries()) {
-                for (const char* plastic :
-                     {"yield_stress", "tangent_modulus", "hardening_mix", "A", "B", "n", "C",
-                      "reference_strain_rate", "m", "room_temperature", "melt_temperature"})
-                    if (key == plastic)
-                        value.fail(
-                            "belongs to plastic materials (j2_plastic, johnson_cook), "
-                            "which are not supported yet in this version of fpmshell; "
-                            "remove it for an elastic material");
+            std::vector<std::string> keys{"type", "density", "youngs_modulus", "poisson_ratio"};
+            if (t == "elastic") {
+                for (const auto& [key, value] : any.entries())
+                    for (const char* plastic :
+                         {"yield_stress", "tangent_modulus", "hardening_mix", "cowper_symonds", "A", "B",
+                          "n", "C", "reference_strain_rate", "m", "room_temperature", "melt_temperature"})
+                        if (key == plastic)
+                            value.fail(
+                                "belongs to plastic materials (type: j2_plastic or johnson_cook); "
+                                "remove it or change the type");
+            } else if (t == "j2_plastic") {
+                keys.insert(keys.end(), {"yield_stress", "tangent_modulus", "hardening_mix", "cowper_symonds"});
+            } else {
+                for (const char* thermal : {"m", "room_temperature", "melt_temperature"})
+                    if (const auto th = any.find(thermal))
+                        th->fail(not_supported("the thermal softening term of Johnson-Cook") +
+                                "; remove m, room_temperature and melt_temperature");
+                if (const auto cs = any.find("cowper_symonds"))
+                    cs->fail("is a rate factor for j2_plastic; johnson_cook has its own rate term C");
+                keys.insert(keys.end(), {"A", "B", "n", "C", "reference_strain_rate", "hardening_mix"});
             }
-            const YamlMap m = def.map({"type", "density", "youngs_modulus", "poisson_ratio"});
+            const YamlMap m = def.map(keys);
             Material mat;
             mat.name = name;
-            mat.type = MaterialType::Elastic;
+            mat.type = t == "elastic" ? MaterialType::Elastic
+                     : t == "j2_plastic" ? MaterialType::J2Plastic
+                                         : MaterialType::JohnsonCook;
             mat.density = m.at("density", "a number > 0").positive();
             mat.youngs_modulus = m.at("youngs_modulus", "a number > 0").positive();
             const YamlValue nu = m.at("poisson_ratio", "a number in (-1, 0.5)");
             mat.poisson_ratio = nu.real();
             if (!(mat.poisson_ratio > -1 && mat.poisson_ratio < 0.5))
                 nu.fail("must be greater than -1 and less than 0.5, got " + nu.describe());
+            if (mat.plastic()) {
+                if (const auto mix = m.find("hardening_mix")) {
+                    mat.hardening_mix = mix->real();
+                    if (!(mat.hardening_mix >= 0 && mat.hardening_mix <= 1))
+                        mix->fail("must be in [0, 1] (1 isotropic, 0 kinematic hardening), got " + mix->describe());
+                }
+            }
+            if (mat.type == MaterialType::J2Plastic) {
+                mat.yield_stress = m.at("yield_stress", "the initial yield stress, a number > 0").positive();
+                if (const auto et = m.find("tangent_modulus")) {
+                    mat.tangent_modulus = et->non_negative();
+                    if (!(mat.tangent_modulus < mat.youngs_modulus))
+                        et->fail("must be below youngs_modulus (the slope of the bilinear curve past "
+                                 "yield; 0 = perfectly plastic), got " + et->describe());
+                }
+                if (const auto cs = m.find("cowper_symonds")) {
+                    const YamlMap c = cs->map({"D", "q"});
+                    mat.cowper_symonds = true;
+                    mat.cs_d = c.at("D", "the Cowper-Symonds rate constant D [1/time], a number > 0").positive();
+                    mat.cs_q = c.at("q", "the Cowper-Symonds exponent q, a number > 0").positive();
+                }
+            }
+            if (mat.type == MaterialType::JohnsonCook) {
+                mat.jc_a = m.at("A", "the Johnson-Cook yield stress A, a number > 0").positive();
+                mat.jc_b = m.at("B", "the Johnson-Cook hardening modulus B, a number >= 0").non_negative();
+                mat.jc_n = m.at("n", "the Johnson-Cook hardening exponent n, a number > 0").positive();
+                mat.jc_c = m.non_negative_or("C", 0.0);
+                mat.reference_strain_rate = m.positive_or("reference_strain_rate", 1.0);
+            }
             model_.materials.push_back(mat);
         }
     }
@@ -183,6 +221,10 @@ public:
             const auto& elements = element_set(m.at("elements", "an element set name such as all"));
             Section s;
             s.material = material(m.at("material", "a material name"));
+            if (model_.materials[static_cast<std::size_t>(s.material)].plastic()) {
+                s.thickness_points = 5;  // Lobatto: the surfaces yield first (theory.md §7.5)
+                s.inplane_points = 7;
+            }
             s.thickness = m.at("thickness", "a number > 0").positive();
             if (const auto tp = m.find("thickness_points")) {
                 const long long n = tp->integer(2, 5);

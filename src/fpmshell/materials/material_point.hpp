@@ -7,7 +7,11 @@
 namespace fpmshell {
 
 struct MaterialPoint {
-    Voigt3 stress = Voigt3::Zero();  ///< [sxx, syy, sxy]
+    Voigt3 stress = Voigt3::Zero();       ///< [sxx, syy, sxy]
+    Voigt3 back_stress = Voigt3::Zero();  ///< b of theory.md §7.2 (kinematic hardening)
+    Real plastic_strain = 0;              ///< equivalent plastic strain alpha (§7.2)
+    Real plastic_work = 0;                ///< plastic work per unit volume, sum of sigma . d_eps_p
+    Real strain_rate = 0;                 ///< filtered effective total strain rate (§7.4 option a)
 };
 
 }  // namespace fpmshell

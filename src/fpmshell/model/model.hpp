@@ -22,7 +22,7 @@ struct Curve {
     [[nodiscard]] Real value(Real t) const;
 };
 
-enum class MaterialType { Elastic };
+enum class MaterialType { Elastic, J2Plastic, JohnsonCook };
 
 /// Material constants (units as in the model file; never converted).
 struct Material {
@@ -31,6 +31,16 @@ struct Material {
     Real density = 0;         ///< rho
     Real youngs_modulus = 0;  ///< E
     Real poisson_ratio = 0;   ///< nu
+    // Plastic materials (theory.md §7).
+    Real yield_stress = 0;     ///< j2_plastic: initial yield stress
+    Real tangent_modulus = 0;  ///< j2_plastic: slope E_t of the bilinear curve; 0 = perfectly plastic
+    Real hardening_mix = 1;    ///< beta: 1 isotropic, 0 kinematic
+    Real jc_a = 0, jc_b = 0, jc_n = 1, jc_c = 0;  ///< johnson_cook A, B, n, C
+    Real reference_strain_rate = 1;             ///< johnson_cook eps_dot_0
+    bool cowper_symonds = false;                ///< j2_plastic: Cowper-Symonds rate factor on
+    Real cs_d = 0, cs_q = 1;                    ///< its D and q
+
+    [[nodiscard]] bool plastic() const { return type != MaterialType::Elastic; }
 };
 
 /// Shell section of a group of elements.

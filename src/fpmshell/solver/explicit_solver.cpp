@@ -1,5 +1,6 @@
 #include "fpmshell/solver/explicit_solver.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -176,7 +177,8 @@ void ExplicitSolver::cycle(Real load_time, Real dt_new_cap, bool relaxation) {
     // 1 element loop on the path element (x^{n-1}, x^n, dtheta^{n-1/2}) -> f_int^n, m_int^n.
     const Real a_s = model_.damping.stiffness;
     const Real viscous_rate = (a_s > 0 && dt_half_ > 0) ? a_s / dt_half_ : 0.0;
-    const ShellElements::StepTotals tot = elements_.compute(s_, viscous_rate);
+    // The path element lasts dt_{n-1/2}; relaxation steps are fictitious time: no rate effects.
+    const ShellElements::StepTotals tot = elements_.compute(s_, viscous_rate, relaxation ? 0.0 : dt_half_);
     element_steps_ += elements_.size();
     if (tot.failed_element >= 0) {
         std::ostringstream msg;
@@ -187,7 +189,8 @@ void ExplicitSolver::cycle(Real load_time, Real dt_new_cap, bool relaxation) {
             << "or a time step too large)";
         throw RunFailure(msg.str());
     }
-    energy_.internal += tot.strain_work;
+    energy_.internal += tot.strain_work;  // includes the plastic dissipation, like LS-DYNA's
+    energy_.plastic += tot.plastic_work;  // internal energy; reported on its own as well
     energy_.damping += tot.damping_work;
 
     // 2 tangent planes and external loads at t_n.
@@ -320,6 +323,7 @@ void ExplicitSolver::cycle(Real load_time, Real dt_new_cap, bool relaxation) {
         s_.rotation[p] = rotation_matrix(s_.dtheta[p]) * s_.rotation[p];
     }
     dt_center_ = dt_n;
+    dt_half_prev_ = dt_half_;
     dt_half_ = dt_new;
     ++steps_;
     check_state();
@@ -364,11 +368,34 @@ void ExplicitSolver::step(Real max_dt) {
     }
 }
 
+void ExplicitSolver::move_to_kinetic_energy_peak(Real ke_before, Real ke_peak, Real ke_after) {
+    // Barnes (1988) kinetic damping: the kinetic energies of the last three half steps
+    // (tau = -1, 0, +1 around t_{n-1/2}) bracket a peak; the parabola through them puts it at
+    // tau*, where the dominant mode passes its equilibrium. Stopping the particles there, not at
+    // x_{n+1}, removes that mode's energy entirely; stopping at x_{n+1} leaves a part of it,
+    // and a mode with a period of a few steps can then be re-excited at every restart (the
+    // relaxation stalls with a reset every 4 steps). Motion over [t_{n-1}, t_n] is v_{n-1/2}:
+    // x(t_{n-1/2} + tau dt) = x_n + (tau - 1/2) dt_{n-1/2} v_{n-1/2}.
+    const Real curvature = 2.0 * ke_peak - ke_before - ke_after;
+    const Real tau = curvature > 0 ? std::clamp(0.5 * (ke_after - ke_before) / curvature, -0.5, 0.5) : 0.5;
+    const Real back = (tau - 0.5) * dt_half_prev_;
+    for (std::size_t p = 0; p < s_.size(); ++p) {
+        if (!prescribed_translation_[p]) s_.x[p] = s_.x_prev[p] + back * s_.v_prev[p];
+        if (!prescribed_rotation_[p]) {
+            // undo the last increment, apply the one to the peak; the next path element goes
+            // from x_n to the peak state
+            const Vec3 dtheta_peak = back * s_.omega_prev[p];
+            s_.rotation[p] = rotation_matrix(dtheta_peak) * rotation_matrix(s_.dtheta[p]).transpose() * s_.rotation[p];
+            s_.dtheta[p] = dtheta_peak;
+        }
+    }
+}
+
 ExplicitSolver::RelaxResult ExplicitSolver::relax(Real load_time) {
     RelaxResult res;
     time_ = load_time;
     const Real tol = model_.control.tolerance;
-    Real ke_prev = 0;
+    Real ke_prev = 0, ke_prev2 = 0;
     for (long it = 1; it <= model_.control.max_relaxation_iterations; ++it) {
         cycle(load_time, std::numeric_limits<Real>::infinity(), true);
         res.iterations = it;
@@ -378,6 +405,7 @@ ExplicitSolver::RelaxResult ExplicitSolver::relax(Real load_time) {
         for (std::size_t p = 0; p < s_.size(); ++p)
             ke += s_.mass[p] * s_.v[p].squaredNorm() + s_.inertia[p] * s_.omega[p].squaredNorm();
         if (ke < ke_prev) {
+            move_to_kinetic_energy_peak(ke_prev2, ke_prev, ke);
             // The kinetic energy taken out is dissipated, like damping: the balance stays closed.
             energy_.damping += energy_.kinetic;
             energy_.kinetic = 0;
@@ -388,6 +416,7 @@ ExplicitSolver::RelaxResult ExplicitSolver::relax(Real load_time) {
             ke = 0;
             restart_ = true;
         }
+        ke_prev2 = ke_prev;
         ke_prev = ke;
         if (it > 2 && (res.residual_ratio <= tol || reference2_ == 0)) {
             res.converged = true;

@@ -63,6 +63,9 @@ private:
     [[nodiscard]] Real curve_value(Index curve, Real t) const;
     [[nodiscard]] Real curve_integral(Index curve, Real t) const;
     void check_state() const;
+    /// Kinetic damping: moves the state back to the kinetic-energy peak bracketed by the last
+    /// three half steps (Barnes 1988).
+    void move_to_kinetic_energy_peak(Real ke_before, Real ke_peak, Real ke_after);
 
     const Model& model_;
     ShellElements elements_;
@@ -74,6 +77,7 @@ private:
     std::vector<Vec3> prescribed_rotation_applied_;  ///< relaxation: rotation imposed so far
     Real time_ = 0;
     Real dt_half_ = 0;       ///< dt_{n-1/2} (0 before the first step)
+    Real dt_half_prev_ = 0;  ///< the step before dt_half_
     Real dt_center_ = 0;     ///< dt_n of the last cycle
     long steps_ = 0;
     bool restart_ = false;   ///< next cycle restarts from rest (kinetic damping)

@@ -46,10 +46,10 @@ ShellElements::ShellElements(const Model& model)
         rule.through = thickness_rule(sec.thickness_points);
         rule.bending = model.control.bending;
         rules_.push_back(rule);
-        materials_.emplace_back(mat.youngs_modulus, mat.poisson_ratio);
+        materials_.push_back(make_section_material(mat));
         wave_speed_.push_back(std::sqrt(mat.youngs_modulus /
                                         (mat.density * (1.0 - mat.poisson_ratio * mat.poisson_ratio))));
-        bending_rigidity_.push_back(materials_.back().stiffness() * (sec.thickness * sec.thickness * sec.thickness / 12.0));
+        bending_rigidity_.push_back(elastic_stiffness(materials_.back()) * (sec.thickness * sec.thickness * sec.thickness / 12.0));
     }
     const std::size_t ne = tri_.size();
     node_mass_.resize(ne);
@@ -79,6 +79,7 @@ ShellElements::ShellElements(const Model& model)
     slot_moment_.assign(3 * ne, Vec3::Zero());
     elem_work_.assign(ne, 0.0);
     elem_damp_work_.assign(ne, 0.0);
+    elem_plastic_work_.assign(ne, 0.0);
     elem_dt_.assign(ne, 0.0);
     elem_failed_.assign(ne, 0);
     membrane_force_.assign(ne, Voigt3::Zero());
@@ -136,6 +137,16 @@ Real ShellElements::element_dt(Index e, const std::vector<Vec3>& x) const {
     return dt;
 }
 
+Real ShellElements::plastic_strain(Index e, int k) const {
+    const std::size_t ue = static_cast<std::size_t>(e);
+    const std::size_t nk = rules_[static_cast<std::size_t>(section_[ue])].through.size();
+    const std::size_t begin = point_offset_[ue], end = point_offset_[ue + 1];
+    Real sum = 0;
+    std::size_t n = 0;
+    for (std::size_t i = begin + static_cast<std::size_t>(k); i < end; i += nk, ++n) sum += points_[i].plastic_strain;
+    return n > 0 ? sum / static_cast<Real>(n) : 0.0;
+}
+
 Real ShellElements::min_critical_dt(const std::vector<Vec3>& x, Index* where) const {
     Real best = std::numeric_limits<Real>::infinity();
     Index arg = -1;
@@ -150,7 +161,7 @@ Real ShellElements::min_critical_dt(const std::vector<Vec3>& x, Index* where) co
     return best;
 }
 
-ShellElements::StepTotals ShellElements::compute(ParticleState& s, Real viscous_rate) {
+ShellElements::StepTotals ShellElements::compute(ParticleState& s, Real viscous_rate, Real dt) {
     const Index ne = size();
     // Small models stay serial: a parallel region per step costs more than it saves there.
     const bool parallel = ne >= k_parallel_min_elements;
@@ -173,7 +184,7 @@ ShellElements::StepTotals ShellElements::compute(ParticleState& s, Real viscous_
         // stable step can produce: the run has diverged (theory.md §2.8).
         if (rt.degenerate || rt.normal_cosine < 0 || !(rt.area_ratio > 0.5 && rt.area_ratio < 2.0)) {
             elem_failed_[ue] = 1;
-            elem_work_[ue] = elem_damp_work_[ue] = 0;
+            elem_work_[ue] = elem_damp_work_[ue] = elem_plastic_work_[ue] = 0;
             for (std::size_t i = 0; i < 3; ++i) slot_force_[3 * ue + i] = slot_moment_[3 * ue + i] = Vec3::Zero();
             continue;
         }
@@ -182,13 +193,16 @@ ShellElements::StepTotals ShellElements::compute(ParticleState& s, Real viscous_
         std::span<MaterialPoint> pts(points_.data() + point_offset_[ue],
                                      point_offset_[ue + 1] - point_offset_[ue]);
         const ShellTriangleLoads loads =
-            shell_triangle_loads(rt, rules_[sec], materials_[sec], pts, viscous_rate);
+            std::visit([&](const auto& material) {
+                return shell_triangle_loads(rt, rules_[sec], material, pts, viscous_rate, dt);
+            }, materials_[sec]);
         for (std::size_t i = 0; i < 3; ++i) {
             slot_force_[3 * ue + i] = loads.force[i];
             slot_moment_[3 * ue + i] = loads.moment[i];
         }
         elem_work_[ue] = loads.strain_work;
         elem_damp_work_[ue] = loads.damping_work;
+        elem_plastic_work_[ue] = loads.plastic_work;
         membrane_force_[ue] = loads.membrane_force;
         bending_moment_[ue] = loads.bending_moment;
     }
@@ -213,6 +227,7 @@ ShellElements::StepTotals ShellElements::compute(ParticleState& s, Real viscous_
         if (elem_failed_[ue] && tot.failed_element < 0) tot.failed_element = e;
         tot.strain_work += elem_work_[ue];
         tot.damping_work += elem_damp_work_[ue];
+        tot.plastic_work += elem_plastic_work_[ue];
         if (elem_dt_[ue] < tot.min_dt) {
             tot.min_dt = elem_dt_[ue];
             tot.min_dt_element = e;

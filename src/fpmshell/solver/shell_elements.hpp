@@ -3,11 +3,12 @@
 // (element-corner slots + ordered gather through a particle->slot CSR map, style.md §4).
 #pragma once
 
+#include <variant>
 #include <vector>
 
 #include "fpmshell/core/types.hpp"
 #include "fpmshell/elements/shell_triangle.hpp"
-#include "fpmshell/materials/linear_elastic.hpp"
+#include "fpmshell/materials/section_material.hpp"
 #include "fpmshell/model/model.hpp"
 #include "fpmshell/solver/particle_state.hpp"
 
@@ -20,14 +21,16 @@ public:
     struct StepTotals {
         Real strain_work = 0;     ///< sum of element strain work over the step
         Real damping_work = 0;    ///< sum of viscous work over the step
+        Real plastic_work = 0;    ///< sum of plastic dissipation over the step (in strain_work)
         Real min_dt = 0;          ///< smallest element critical step at t_n (§6.4), unscaled
         Index min_dt_element = -1;
         Index failed_element = -1;  ///< first degenerate or flipped element, -1 if none
     };
 
     /// Internal forces and moments at t_n from the path element (x_prev, x, dtheta); writes
-    /// s.f_int, s.m_int and updates the material points. viscous_rate = a_s / dt_{n-1/2}.
-    StepTotals compute(ParticleState& s, Real viscous_rate);
+    /// s.f_int, s.m_int and updates the material points. viscous_rate = a_s / dt_{n-1/2};
+    /// dt = dt_{n-1/2} for rate-dependent materials (0 in relaxation: no rate effects).
+    StepTotals compute(ParticleState& s, Real viscous_rate, Real dt);
 
     /// Critical step of every element from the current geometry (§6.4), unscaled, minimum.
     [[nodiscard]] Real min_critical_dt(const std::vector<Vec3>& x, Index* where = nullptr) const;
@@ -35,6 +38,12 @@ public:
     [[nodiscard]] Index size() const { return static_cast<Index>(tri_.size()); }
     [[nodiscard]] const std::vector<Voigt3>& membrane_force() const { return membrane_force_; }
     [[nodiscard]] const std::vector<Voigt3>& bending_moment() const { return bending_moment_; }
+    /// Equivalent plastic strain of element e averaged over its in-plane points, at the
+    /// thickness point of index k (0 = bottom, n-1 = top).
+    [[nodiscard]] Real plastic_strain(Index e, int k) const;
+    [[nodiscard]] int thickness_points(Index e) const {
+        return static_cast<int>(rules_[static_cast<std::size_t>(section_[static_cast<std::size_t>(e)])].through.size());
+    }
     [[nodiscard]] Real thickness(Index e) const { return rules_[static_cast<std::size_t>(section_[static_cast<std::size_t>(e)])].thickness; }
 
 private:
@@ -49,7 +58,7 @@ private:
     std::vector<std::array<Index, 3>> tri_;
     std::vector<Index> section_;               ///< per element
     std::vector<ShellRule> rules_;             ///< per section
-    std::vector<LinearElastic> materials_;     ///< per section
+    std::vector<SectionMaterial> materials_;   ///< per section
     std::vector<Real> wave_speed_;             ///< per section, c = sqrt(E / rho (1 - nu^2))
     std::vector<Mat3> bending_rigidity_;       ///< per section, D_b = (h^3 / 12) C (§4.1)
     std::vector<Real> node_mass_, node_inertia_;  ///< per element, its share at each node (§6.1-6.2)
@@ -60,7 +69,7 @@ private:
     std::vector<MaterialPoint> points_;
     std::vector<Vec3> slot_force_, slot_moment_;  ///< 3 slots per element
     std::vector<Index> csr_begin_, csr_slot_;     ///< particle -> slots
-    std::vector<Real> elem_work_, elem_damp_work_, elem_dt_;
+    std::vector<Real> elem_work_, elem_damp_work_, elem_plastic_work_, elem_dt_;
     std::vector<std::uint8_t> elem_failed_;
     std::vector<Voigt3> membrane_force_, bending_moment_;
     Real stiffness_damping_ = 0;

@@ -64,7 +64,7 @@ Real interior_residual(const Patch& pt, bool bending) {
             s.x[p] += eps * Vec3(0.8 * x + 0.3 * y, 0.3 * x - 0.5 * y, 0);
         }
     }
-    el.compute(s, 0.0);
+    el.compute(s, 0.0, 0.0);
     // Bending is judged on the moments and the transverse forces (the in-plane forces are
     // O(eps^2) membrane terms of the deflection, irrelevant here), each against its own scale.
     Real worst = 0;

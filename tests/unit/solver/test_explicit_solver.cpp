@@ -154,7 +154,7 @@ TEST(ExplicitSolver, RigidRotationInManyStepsGivesNoForce) {
             s.x[p] = r * m.nodes[p] + Vec3(0.01 * step, 0, 0);
             s.dtheta[p] = dphi * axis;
         }
-        el.compute(s, 0.0);
+        el.compute(s, 0.0, 0.0);
         for (std::size_t p = 0; p < s.size(); ++p) worst = std::max({worst, s.f_int[p].norm(), s.m_int[p].norm()});
     }
     // E h = 4.2e9: a force of 1e-2 is a strain of ~1e-12 accumulated over 360 steps of round-off.

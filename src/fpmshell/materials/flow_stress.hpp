@@ -1,0 +1,53 @@
+// Flow stress of the plastic materials and their strain-rate factor (theory.md §7.2, §7.4):
+// sigma_f(alpha) is the uniaxial yield stress after the equivalent plastic strain alpha, at the
+// reference rate; the rate factor R(rate) >= 1 multiplies it.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+
+#include "fpmshell/core/types.hpp"
+
+namespace fpmshell {
+
+struct FlowStress {
+    enum class Kind { Linear, JohnsonCook };
+    Kind kind = Kind::Linear;
+    Real yield_stress = 0;  ///< linear: sigma_y0
+    Real hardening = 0;     ///< linear: plastic modulus H = E E_t / (E - E_t); 0 = perfectly plastic
+    Real a = 0, b = 0, n = 1;  ///< Johnson-Cook A + B alpha^n
+
+    [[nodiscard]] Real value(Real alpha) const {
+        if (kind == Kind::Linear) return yield_stress + hardening * alpha;
+        return a + (alpha > 0 ? b * std::pow(alpha, n) : 0.0);
+    }
+    /// d sigma_f / d alpha; for Johnson-Cook with n < 1 the slope is infinite at alpha = 0:
+    /// it is taken at a small plastic strain instead (the return mapping brackets its root and
+    /// does not rely on the slope there, theory.md §7.3 step 3).
+    [[nodiscard]] Real slope(Real alpha) const {
+        if (kind == Kind::Linear) return hardening;
+        const Real at = std::max(alpha, Real{1e-6});
+        return b * n * std::pow(at, n - 1.0);
+    }
+};
+
+struct RateFactor {
+    enum class Kind { None, CowperSymonds, JohnsonCook };
+    Kind kind = Kind::None;
+    Real d = 0, q = 1;              ///< Cowper-Symonds: 1 + (rate / D)^(1/q)
+    Real c = 0, reference_rate = 1;  ///< Johnson-Cook: 1 + C ln(max(rate / rate_0, 1))
+
+    [[nodiscard]] bool active() const { return kind != Kind::None; }
+    [[nodiscard]] Real value(Real rate) const {
+        switch (kind) {
+        case Kind::CowperSymonds:
+            return rate > 0 ? 1.0 + std::pow(rate / d, 1.0 / q) : 1.0;
+        case Kind::JohnsonCook:
+            return 1.0 + c * std::log(std::max(rate / reference_rate, Real{1}));
+        default:
+            return 1.0;
+        }
+    }
+};
+
+}  // namespace fpmshell

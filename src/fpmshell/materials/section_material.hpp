@@ -1,0 +1,49 @@
+// The material model of a section, built from the model's material constants: elastic, or
+// J2 plastic with a bilinear or Johnson-Cook flow curve and an optional rate factor.
+#pragma once
+
+#include <variant>
+
+#include "fpmshell/materials/j2_plastic.hpp"
+#include "fpmshell/materials/linear_elastic.hpp"
+#include "fpmshell/model/model.hpp"
+
+namespace fpmshell {
+
+using SectionMaterial = std::variant<LinearElastic, J2Plastic>;
+
+[[nodiscard]] inline SectionMaterial make_section_material(const Material& m) {
+    if (!m.plastic()) return LinearElastic(m.youngs_modulus, m.poisson_ratio);
+    FlowStress flow;
+    RateFactor rate;
+    if (m.type == MaterialType::JohnsonCook) {
+        flow.kind = FlowStress::Kind::JohnsonCook;
+        flow.a = m.jc_a;
+        flow.b = m.jc_b;
+        flow.n = m.jc_n;
+        if (m.jc_c > 0) {
+            rate.kind = RateFactor::Kind::JohnsonCook;
+            rate.c = m.jc_c;
+            rate.reference_rate = m.reference_strain_rate;
+        }
+    } else {
+        flow.yield_stress = m.yield_stress;
+        // bilinear curve: sigma = sigma_y + E_t eps_total beyond yield <=> plastic modulus
+        // H = E E_t / (E - E_t) against the plastic strain
+        flow.hardening = m.tangent_modulus > 0
+                             ? m.youngs_modulus * m.tangent_modulus / (m.youngs_modulus - m.tangent_modulus)
+                             : 0.0;
+    }
+    if (m.cowper_symonds) {
+        rate.kind = RateFactor::Kind::CowperSymonds;
+        rate.d = m.cs_d;
+        rate.q = m.cs_q;
+    }
+    return J2Plastic(m.youngs_modulus, m.poisson_ratio, flow, rate, m.hardening_mix);
+}
+
+[[nodiscard]] inline const Mat3& elastic_stiffness(const SectionMaterial& m) {
+    return std::visit([](const auto& mat) -> const Mat3& { return mat.stiffness(); }, m);
+}
+
+}  // namespace fpmshell
