@@ -1,5 +1,7 @@
-// Speed of the elastic FPM shell cycle (element loop + particle update), in element-steps per
-// second, on a plate of ~10^4 and ~10^5 triangles, with 1 thread and with all threads.
+// Speed of the FPM shell cycle (element loop + particle update), in element-steps per second:
+// the elastic element (3 x 2 points) on a plate of ~10^4 and ~10^5 triangles, and the plastic
+// element (5 Lobatto points through the thickness x 7 or 3 in the plane, every point yielding)
+// on ~10^4 triangles; with 1 thread and with all threads.
 //   ./build/bench/fpmshell_bench            (make bench)
 // The counter "element_steps/s" is the figure reported in the README.
 #include <benchmark/benchmark.h>
@@ -42,18 +44,19 @@ Model plate(Index n) {
     return m;
 }
 
-void elastic_plate(benchmark::State& state) {
-    const Index n = static_cast<Index>(state.range(0));
-    const int threads = static_cast<int>(state.range(1));
+int use_threads(int threads) {
 #ifdef _OPENMP
     omp_set_num_threads(threads > 0 ? threads : omp_get_num_procs());
-    const int used = omp_get_max_threads();
+    return omp_get_max_threads();
 #else
-    const int used = 1;
+    (void)threads;
+    return 1;
 #endif
-    const Model m = plate(n);
+}
+
+void run_solver(benchmark::State& state, const Model& m, int used, int warm_up) {
     ExplicitSolver solver(m);
-    for (int i = 0; i < 5; ++i) solver.step(1e30);  // leave the start-up step out
+    for (int i = 0; i < warm_up; ++i) solver.step(1e30);  // leave the start-up steps out
     for (auto _ : state) solver.step(1e30);
     state.counters["elements"] = static_cast<double>(m.n_elements());
     state.counters["threads"] = used;
@@ -62,10 +65,41 @@ void elastic_plate(benchmark::State& state) {
         benchmark::Counter::kIsRate);
 }
 
+void elastic_plate(benchmark::State& state) {
+    const int used = use_threads(static_cast<int>(state.range(1)));
+    run_solver(state, plate(static_cast<Index>(state.range(0))), used, 5);
+}
+
+void plastic_plate(benchmark::State& state) {
+    const int used = use_threads(static_cast<int>(state.range(2)));
+    Model m = plate(static_cast<Index>(state.range(0)));
+    Material& steel = m.materials[0];
+    steel.type = MaterialType::J2Plastic;
+    steel.yield_stress = 1e6;      // low, under a steady biaxial stretching and bending rate
+    steel.tangent_modulus = 1e10;  // (initial velocity field, free plate): every point stays
+    m.boundary.clear();            // plastic for the whole measurement, so the return mapping
+    m.loads.clear();               // runs at every point of every step
+    for (Index p = 0; p < static_cast<Index>(m.nodes.size()); ++p) {
+        const Vec3& x = m.nodes[static_cast<std::size_t>(p)];
+        InitialVelocity iv;
+        iv.nodes = {p};
+        const Real dx = x.x() - 0.5, dy = x.y() - 0.5;
+        iv.velocity = Vec3(200 * dx, 100 * dy, 50 * (dx * dx + dy * dy));
+        m.initial_conditions.push_back(iv);
+    }
+    m.sections[0].thickness_points = 5;
+    m.sections[0].inplane_points = static_cast<int>(state.range(1));
+    run_solver(state, m, used, 50);
+}
+
 }  // namespace
 
 // 2 x 71^2 = 10 082 and 2 x 224^2 = 100 352 triangles; threads 1 and 0 (= all cores).
 BENCHMARK(elastic_plate)->Args({71, 1})->Args({71, 0})->Args({224, 1})->Args({224, 0})
     ->Unit(benchmark::kMillisecond)->UseRealTime();
+// 10 082 triangles, 5 x 7 and 5 x 3 points, threads 1 and 0; the same 300 steps after the
+// warm-up for every variant (the plastic state evolves, so equal windows keep them comparable).
+BENCHMARK(plastic_plate)->Args({71, 7, 1})->Args({71, 3, 1})->Args({71, 7, 0})->Args({71, 3, 0})
+    ->Iterations(300)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 BENCHMARK_MAIN();

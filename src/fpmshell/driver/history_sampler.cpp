@@ -28,6 +28,9 @@ Real particle_quantity(const ExplicitSolver& solver, Quantity q, Index p) {
         case Quantity::ReactionX: return s.reaction[up].x();
         case Quantity::ReactionY: return s.reaction[up].y();
         case Quantity::ReactionZ: return s.reaction[up].z();
+        case Quantity::ReactionMx: return s.reaction_moment[up].x();
+        case Quantity::ReactionMy: return s.reaction_moment[up].y();
+        case Quantity::ReactionMz: return s.reaction_moment[up].z();
         case Quantity::ForceX: return s.f_ext[up].x();
         case Quantity::ForceY: return s.f_ext[up].y();
         case Quantity::ForceZ: return s.f_ext[up].z();

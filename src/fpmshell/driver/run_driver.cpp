@@ -141,6 +141,36 @@ public:
             peaks.set(model_.output.histories[i].name, p);
         }
         j.set("peaks", peaks);
+        // Peak equivalent plastic strain (it never decreases, so the last state holds it), per
+        // surface, averaged over the in-plane points of an element like the VTU fields.
+        JsonValue plastic = JsonValue::object();
+        const char* surfaces[] = {"bottom", "middle", "top"};
+        Real best = 0;
+        Index best_element = -1;
+        std::string best_surface = "none";
+        for (int which = 0; which < 3; ++which) {
+            Real peak = 0;
+            for (Index e = 0; e < model_.n_elements(); ++e) {
+                const int nk = solver.elements().thickness_points(e);
+                const Real v = which == 0 ? solver.elements().plastic_strain(e, 0)
+                             : which == 2 ? solver.elements().plastic_strain(e, nk - 1)
+                             : nk % 2 == 1 ? solver.elements().plastic_strain(e, nk / 2)
+                                           : 0.5 * (solver.elements().plastic_strain(e, 0) +
+                                                    solver.elements().plastic_strain(e, nk - 1));
+                peak = std::max(peak, v);
+                if (v > best) {
+                    best = v;
+                    best_element = e;
+                    best_surface = surfaces[which];
+                }
+            }
+            plastic.set(std::string("max_") + surfaces[which], peak);
+        }
+        plastic.set("max", best);
+        plastic.set("element", best_element >= 0 ? best_element + 1 : 0);
+        plastic.set("surface", best_surface);
+        j.set("plastic_strain", plastic);
+        j.set("plastic_work", solver.energy().plastic);
         j.set("version", version());
         j.set("exit_reason", reason);
         write_json_file(dir_ / "summary.json", j);

@@ -413,6 +413,9 @@ public:
             {"reaction_x", Quantity::ReactionX},
             {"reaction_y", Quantity::ReactionY},
             {"reaction_z", Quantity::ReactionZ},
+            {"reaction_mx", Quantity::ReactionMx},  // constraint moments (the particle's own,
+            {"reaction_my", Quantity::ReactionMy},  // not about an origin)
+            {"reaction_mz", Quantity::ReactionMz},
             {"force_x", Quantity::ForceX},
             {"force_y", Quantity::ForceY},
             {"force_z", Quantity::ForceZ}};

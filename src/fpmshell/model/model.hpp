@@ -106,7 +106,7 @@ struct Control {
 
 enum class Quantity {
     Ux, Uy, Uz, Umag, Vx, Vy, Vz, Ax, Ay, Az, Rx, Ry, Rz,
-    ReactionX, ReactionY, ReactionZ, ForceX, ForceY, ForceZ
+    ReactionX, ReactionY, ReactionZ, ReactionMx, ReactionMy, ReactionMz, ForceX, ForceY, ForceZ
 };
 enum class Reduce { Single, Sum, Max, Min, Mean };
 

@@ -283,6 +283,7 @@ void ExplicitSolver::cycle(Real load_time, Real dt_new_cap, bool relaxation) {
             const Vec3 target = s_.x0[p] + curve_value(pr.curve, t_next) * pr.value;
             s_.v[p] = (target - s_.x[p]) / dt_new;
         } else {  // angular velocity: imposed about a fixed axis, no tangent-plane projection
+            const Vec3 omega_before = s_.omega[p];
             if (relaxation) {
                 const Vec3 target = curve_integral(pr.curve, load_time) * pr.value;
                 s_.omega[p] = (target - prescribed_rotation_applied_[p]) / dt_new;
@@ -290,6 +291,8 @@ void ExplicitSolver::cycle(Real load_time, Real dt_new_cap, bool relaxation) {
                 s_.omega[p] = curve_value(pr.curve, t_half) * pr.value;
             }
             prescribed_rotation_applied_[p] += dt_new * s_.omega[p];
+            // the moment that imposes it: J / dt_n times the change it makes (like the force above)
+            s_.reaction_moment[p] += (s_.inertia[p] / (c1 * dt_n)) * (s_.omega[p] - omega_before);
             continue;
         }
         s_.reaction[p] += (m / (c1 * dt_n)) * (s_.v[p] - v_before);
@@ -301,7 +304,8 @@ void ExplicitSolver::cycle(Real load_time, Real dt_new_cap, bool relaxation) {
                    0.5 * s_.inertia[p] * s_.omega_prev[p].dot(s_.omega[p]);
         ext_work += 0.5 * (s_.f_ext_prev[p] + s_.f_ext[p] + s_.reaction_prev[p] + s_.reaction[p])
                               .dot(s_.x[p] - s_.x_prev[p]) +
-                    0.5 * (s_.m_ext_prev[p] + s_.m_ext[p]).dot(s_.dtheta[p]);
+                    0.5 * (s_.m_ext_prev[p] + s_.m_ext[p] + s_.reaction_moment_prev[p] + s_.reaction_moment[p])
+                              .dot(s_.dtheta[p]);
         if (a_m > 0) {
             const Vec3 vbar = 0.5 * (s_.v_prev[p] + s_.v[p]);
             const Vec3 wbar = 0.5 * (s_.omega_prev[p] + s_.omega[p]);
@@ -310,6 +314,7 @@ void ExplicitSolver::cycle(Real load_time, Real dt_new_cap, bool relaxation) {
         s_.f_ext_prev[p] = s_.f_ext[p];
         s_.m_ext_prev[p] = s_.m_ext[p];
         s_.reaction_prev[p] = s_.reaction[p];
+        s_.reaction_moment_prev[p] = s_.reaction_moment[p];
     }
     energy_.kinetic = kinetic;
     energy_.external_work += ext_work;
