@@ -109,3 +109,30 @@ def pyplot():
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
     return plt
+
+
+def read_vtu(path):
+    """Arrays of one fields/frame_NNNNN.vtu (fpmshell's base64 binary VTK XML, UInt64 headers):
+    dict name -> list of tuples (or of floats for one component), plus 'points'."""
+    import base64
+    import re
+    import struct
+    text = open(path).read()
+    out = {}
+    pattern = (r'<DataArray type="(\w+)" Name="(\w+)"(?: NumberOfComponents="(\d+)")? '
+               r'format="binary">\s*([A-Za-z0-9+/=]+)\s*</DataArray>')
+    codes = {"Float64": "d", "Int64": "q", "UInt8": "B", "Int32": "i"}
+    for typ, name, nc, data in re.findall(pattern, text):
+        raw = base64.b64decode(data)
+        nbytes = struct.unpack("<Q", raw[:8])[0]
+        code = codes[typ]
+        size = struct.calcsize(code)
+        vals = list(struct.unpack("<%d%s" % (nbytes // size, code), raw[8:8 + nbytes]))
+        k = int(nc) if nc else 1
+        out[name] = vals if k == 1 else [tuple(vals[i:i + k]) for i in range(0, len(vals), k)]
+    m = re.search(r'<Points>\s*<DataArray[^>]*format="binary">\s*([A-Za-z0-9+/=]+)', text)
+    raw = base64.b64decode(m.group(1))
+    nbytes = struct.unpack("<Q", raw[:8])[0]
+    vals = struct.unpack("<%dd" % (nbytes // 8), raw[8:8 + nbytes])
+    out["points"] = [tuple(vals[i:i + 3]) for i in range(0, len(vals), 3)]
+    return out

@@ -35,6 +35,7 @@ struct ShellTriangleLoads {
     Real strain_work = 0;        ///< work of the stresses over the step (trapezoidal), energy.csv
     Real damping_work = 0;       ///< work of the viscous (stiffness-damping) stresses
     Real plastic_work = 0;       ///< plastic dissipation over the step (part of strain_work)
+    Real thickness_strain = 0;   ///< d eps_33 averaged over the points (theory.md §3.4)
     Voigt3 membrane_force = Voigt3::Zero();  ///< N averaged over the element, local frame
     Voigt3 bending_moment = Voigt3::Zero();  ///< M averaged over the element, local frame
 };
@@ -49,11 +50,12 @@ struct ShellTriangleLoads {
 /// points: the element's material points (old state in, new state out).
 /// viscous_rate: a_s / dt_{n-1/2} (theory.md §6.5), 0 without stiffness damping.
 /// dt: duration of the path element, for rate-dependent materials (0: no rate).
+/// thickness: the element's thickness at the start of the step (rule.thickness if <= 0).
 template <class Material>
 ShellTriangleLoads shell_triangle_loads(const ReversedTriangle& rt, const ShellRule& rule,
                                         const Material& material,
                                         std::span<MaterialPoint> points, Real viscous_rate,
-                                        Real dt = 0) {
+                                        Real dt = 0, Real thickness = 0) {
     ShellTriangleLoads out;
     const TriangleShape shape(rt.x2, rt.x3, rt.y3);
     const Mat36 bm = membrane_b(shape);
@@ -63,7 +65,10 @@ ShellTriangleLoads shell_triangle_loads(const ReversedTriangle& rt, const ShellR
         th_vec.segment<2>(2 * i) = rt.theta[i];
     }
     const Voigt3 d_eps_m = bm * u_vec;  // §3.1 membrane strain increment
-    const Real h = rule.thickness, half_h = 0.5 * h;
+    const Real h = thickness > 0 ? thickness : rule.thickness, half_h = 0.5 * h;
+    // §3.4: d eps_33 = -(d eps_11 + d eps_22) + (1 - 2 nu) / E (d sigma_11 + d sigma_22), i.e.
+    // -nu/(1-nu) of the elastic and -1 times the plastic in-plane dilatation.
+    const Real thickness_factor = (1.0 - 2.0 * material.poisson_ratio()) / material.youngs_modulus();
     const Mat3& c = material.stiffness();
 
     Eigen::Matrix<Real, 6, 1> f_m = Eigen::Matrix<Real, 6, 1>::Zero();  // §3.3
@@ -85,6 +90,9 @@ ShellTriangleLoads shell_triangle_loads(const ReversedTriangle& rt, const ShellR
             material.update(mp, d_eps, dt, mp);  // old and new may alias: update reads first
             const Real wz = half_h * tp.weight;
             plastic_g += wz * (mp.plastic_work - plastic_old);
+            out.thickness_strain += 0.5 * ip.weight * tp.weight *
+                                    (thickness_factor * (mp.stress(0) + mp.stress(1) - sigma_old(0) - sigma_old(1)) -
+                                     d_eps(0) - d_eps(1));
             n_g += wz * mp.stress;  // §3.2 resultants
             m_g += (wz * z) * mp.stress;
             work_g += wz * 0.5 * (sigma_old + mp.stress).dot(d_eps);

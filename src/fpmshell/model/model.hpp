@@ -102,6 +102,9 @@ struct Control {
     BendingKernel bending = BendingKernel::Dkt;
     Real energy_error_limit = 0.5;  ///< dynamic runs stop (exit 1) past this relative error
     long max_relaxation_iterations = 200000;  ///< per load level
+    /// theory.md §3.4: thickness follows the plane-stress condition (off by default, like
+    /// LS-DYNA's ISTUPD = 0; needed for large membrane strains)
+    bool thickness_update = false;
 };
 
 enum class Quantity {

@@ -52,6 +52,10 @@ ShellElements::ShellElements(const Model& model)
         bending_rigidity_.push_back(elastic_stiffness(materials_.back()) * (sec.thickness * sec.thickness * sec.thickness / 12.0));
     }
     const std::size_t ne = tri_.size();
+    thickness_update_ = model.control.thickness_update;
+    thickness_.resize(ne);
+    for (std::size_t e = 0; e < ne; ++e)
+        thickness_[e] = model.sections[static_cast<std::size_t>(section_[e])].thickness;
     node_mass_.resize(ne);
     node_inertia_.resize(ne);
     bend_ratio_.assign(ne, 1.0);
@@ -194,8 +198,9 @@ ShellElements::StepTotals ShellElements::compute(ParticleState& s, Real viscous_
                                      point_offset_[ue + 1] - point_offset_[ue]);
         const ShellTriangleLoads loads =
             std::visit([&](const auto& material) {
-                return shell_triangle_loads(rt, rules_[sec], material, pts, viscous_rate, dt);
+                return shell_triangle_loads(rt, rules_[sec], material, pts, viscous_rate, dt, thickness_[ue]);
             }, materials_[sec]);
+        if (thickness_update_) thickness_[ue] *= 1.0 + loads.thickness_strain;  // §3.4
         for (std::size_t i = 0; i < 3; ++i) {
             slot_force_[3 * ue + i] = loads.force[i];
             slot_moment_[3 * ue + i] = loads.moment[i];

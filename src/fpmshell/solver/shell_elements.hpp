@@ -44,7 +44,8 @@ public:
     [[nodiscard]] int thickness_points(Index e) const {
         return static_cast<int>(rules_[static_cast<std::size_t>(section_[static_cast<std::size_t>(e)])].through.size());
     }
-    [[nodiscard]] Real thickness(Index e) const { return rules_[static_cast<std::size_t>(section_[static_cast<std::size_t>(e)])].thickness; }
+    /// Current thickness of element e (the section's, or updated by §3.4).
+    [[nodiscard]] Real thickness(Index e) const { return thickness_[static_cast<std::size_t>(e)]; }
 
 private:
     /// Critical step of element e at positions x: the smaller of the membrane step L_c / c and
@@ -62,6 +63,8 @@ private:
     std::vector<Real> wave_speed_;             ///< per section, c = sqrt(E / rho (1 - nu^2))
     std::vector<Mat3> bending_rigidity_;       ///< per section, D_b = (h^3 / 12) C (§4.1)
     std::vector<Real> node_mass_, node_inertia_;  ///< per element, its share at each node (§6.1-6.2)
+    std::vector<Real> thickness_;   ///< per element, current h
+    bool thickness_update_ = false;
     std::vector<Real> bend_ratio_;  ///< per element, bending critical step / (L_c / c)
     std::vector<Real> bend_lc_;     ///< per element, the L_c bend_ratio_ was evaluated at
     BendingKernel bending_kernel_ = BendingKernel::Dkt;

@@ -262,6 +262,50 @@ TEST(ModelReader, AppliesDefaults) {
     EXPECT_TRUE(m.boundary.empty());
     EXPECT_TRUE(m.loads.empty());
     EXPECT_EQ(m.element_section, std::vector<Index>(16, 0));
+    EXPECT_FALSE(m.control.thickness_update);
+    EXPECT_EQ(m.sections[0].thickness_points, 2);  // elastic: 2 Gauss x 3 points
+    EXPECT_EQ(m.sections[0].inplane_points, 3);
+}
+
+// Plastic materials: every constant lands in the model, plastic sections default to
+// 5 Lobatto x 7 points (theory.md §7.5), explicit point counts win.
+TEST(ModelReader, ReadsPlasticMaterials) {
+    const TempDir dir;
+    const std::string steel = "steel: {type: elastic, density: 7.8e-9, youngs_modulus: 210000, poisson_ratio: 0.3}";
+    const Model j2 = read_model(dir.write(
+        "j2.yaml", replaced(replaced(k_base, steel,
+                                     "steel: {type: j2_plastic, density: 7.8e-9, youngs_modulus: 210000, "
+                                     "poisson_ratio: 0.3, yield_stress: 250, tangent_modulus: 2100, "
+                                     "hardening_mix: 0.5, cowper_symonds: {D: 40.4, q: 5}}"),
+                            "  end_time: 1.0e-3\n", "  end_time: 1.0e-3\n  thickness_update: true\n")));
+    const Material& m = j2.materials[0];
+    EXPECT_EQ(m.type, MaterialType::J2Plastic);
+    EXPECT_EQ(m.yield_stress, 250);
+    EXPECT_EQ(m.tangent_modulus, 2100);
+    EXPECT_EQ(m.hardening_mix, 0.5);
+    EXPECT_TRUE(m.cowper_symonds);
+    EXPECT_EQ(m.cs_d, 40.4);
+    EXPECT_EQ(m.cs_q, 5);
+    EXPECT_TRUE(j2.control.thickness_update);
+    EXPECT_EQ(j2.sections[0].thickness_points, 5);
+    EXPECT_EQ(j2.sections[0].inplane_points, 7);
+
+    const Model jc = read_model(dir.write(
+        "jc.yaml", replaced(replaced(k_base, steel,
+                                     "steel: {type: johnson_cook, density: 7.8e-9, youngs_modulus: 210000, "
+                                     "poisson_ratio: 0.3, A: 350, B: 275, n: 0.36, C: 0.022, "
+                                     "reference_strain_rate: 1, hardening_mix: 0.5}"),
+                            "thickness: 0.1}", "thickness: 0.1, thickness_points: 3, inplane_points: 3}")));
+    const Material& c = jc.materials[0];
+    EXPECT_EQ(c.type, MaterialType::JohnsonCook);
+    EXPECT_EQ(c.jc_a, 350);
+    EXPECT_EQ(c.jc_b, 275);
+    EXPECT_EQ(c.jc_n, 0.36);
+    EXPECT_EQ(c.jc_c, 0.022);
+    EXPECT_EQ(c.reference_strain_rate, 1);
+    EXPECT_EQ(c.hardening_mix, 0.5);
+    EXPECT_EQ(jc.sections[0].thickness_points, 3);
+    EXPECT_EQ(jc.sections[0].inplane_points, 3);
 }
 
 // Each generator is reachable from the model file with its keys, and its sets are usable.
