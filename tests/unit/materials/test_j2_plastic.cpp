@@ -187,6 +187,35 @@ TEST(J2Plastic, EquibiaxialPathMatchesClosedFormForAnyIncrement) {
     }
 }
 
+TEST(J2Plastic, UniaxialStressPathMatchesClosedForm) {
+    // eps11 driven, eps22 chosen at every increment so that sigma22 = 0 (bisection on a copy of
+    // the point): sigma = sigma_y + H eps_p with eps11 = sigma / E + eps_p past yield.
+    const Real h = 3000.0;
+    const J2Plastic m = bilinear(h, 1.0);
+    MaterialPoint p;
+    const int n = 400;
+    const Real eps_total = 0.02, de = eps_total / n;
+    for (int i = 0; i < n; ++i) {
+        Real lo = -de, hi = de;  // d eps22 lies between -d eps11 and +d eps11
+        for (int it = 0; it < 200; ++it) {
+            const Real mid = 0.5 * (lo + hi);
+            MaterialPoint trial = p;
+            m.update(p, Voigt3(de, mid, 0), 0.0, trial);
+            (trial.stress(1) > 0 ? hi : lo) = mid;
+        }
+        m.update(p, Voigt3(de, 0.5 * (lo + hi), 0), 0.0, p);
+    }
+    const Real eps_p = (eps_total - k_sy / k_e) / (1.0 + h / k_e);
+    const Real sigma = k_sy + h * eps_p;
+    // sigma22 = 0 to the bisection's precision; the path is proportional once plastic, so the
+    // answer is exact to round-off: 1e-7 relative
+    EXPECT_NEAR(p.stress(1), 0.0, 1e-6 * sigma);
+    EXPECT_NEAR(p.stress(0), sigma, 1e-7 * sigma);
+    EXPECT_NEAR(p.plastic_strain, eps_p, 1e-7 * eps_p);
+    // W_p = sigma_y eps_p + H eps_p^2 / 2 (backward Euler in steps of d eps_p: O(d eps_p) error)
+    EXPECT_NEAR(p.plastic_work, k_sy * eps_p + 0.5 * h * eps_p * eps_p, 1e-3 * k_sy * eps_p);
+}
+
 TEST(J2Plastic, PureShearPathMatchesClosedForm) {
     // gamma only: xi = [0, 0, tau], sigma_eq = sqrt(3) tau; gamma = tau / G + sqrt(3) alpha with
     // sqrt(3) tau = sigma_y + H alpha. Perfect plasticity: tau = sigma_y / sqrt(3) exactly.
