@@ -44,6 +44,8 @@ Real J2Plastic::yield_radius(Real alpha, Real r) const {
 void J2Plastic::update(const MaterialPoint& old_state, const Voigt3& d_eps, Real dt,
                        MaterialPoint& new_state) const {
     const Real alpha_n = old_state.plastic_strain;
+    const Voigt3 sigma_n = old_state.stress;  // old_state may be new_state: copy what is read late
+    const Real plastic_work_n = old_state.plastic_work;
     const Voigt3 b_n = old_state.back_stress;
     Real rate = old_state.strain_rate;
     Real r = 1;
@@ -52,7 +54,7 @@ void J2Plastic::update(const MaterialPoint& old_state, const Voigt3& d_eps, Real
         r = rate_.value(rate);  // frozen during the return (§7.4 option a)
     }
     // 1 trial state
-    const Voigt3 sigma_tr = old_state.stress + c_ * d_eps;
+    const Voigt3 sigma_tr = sigma_n + c_ * d_eps;
     const Voigt3 xi_tr = sigma_tr - b_n;
     const Real kappa_n = yield_radius(alpha_n, r);
     const Real third_k2 = kappa_n * kappa_n / 3.0;
@@ -62,7 +64,7 @@ void J2Plastic::update(const MaterialPoint& old_state, const Voigt3& d_eps, Real
         new_state.stress = sigma_tr;
         new_state.back_stress = b_n;
         new_state.plastic_strain = alpha_n;
-        new_state.plastic_work = old_state.plastic_work;
+        new_state.plastic_work = plastic_work_n;
         return;
     }
     // 2 constants; H_k frozen at alpha_n (§7.4)
@@ -107,9 +109,11 @@ void J2Plastic::update(const MaterialPoint& old_state, const Voigt3& d_eps, Real
     new_state.back_stress = b_n + ((2.0 / 3.0) * h_k * dg) * xi;
     new_state.stress = new_state.back_stress + xi;
     new_state.plastic_strain = alpha_n + sqrt23 * dg * std::sqrt(p_norm2(xi));
-    // d_eps_p = dgamma P xi (engineering shear), dissipation sigma_{n+1} . d_eps_p
+    // d_eps_p = dgamma P xi (engineering shear). Dissipation by the trapezoidal rule, like the
+    // element's strain work: then strain work - plastic work = the exact change of the elastic
+    // energy 1/2 sigma C^-1 sigma, never negative whatever the increment.
     const Voigt3 p_xi((2.0 * xi(0) - xi(1)) / 3.0, (2.0 * xi(1) - xi(0)) / 3.0, 2.0 * xi(2));
-    new_state.plastic_work = old_state.plastic_work + dg * new_state.stress.dot(p_xi);
+    new_state.plastic_work = plastic_work_n + dg * (0.5 * (sigma_n + new_state.stress)).dot(p_xi);
 }
 
 }  // namespace fpmshell

@@ -11,6 +11,7 @@
 
 #include "fpmshell/core/rotation.hpp"
 #include "fpmshell/elements/shell_triangle.hpp"
+#include "fpmshell/materials/j2_plastic.hpp"
 #include "fpmshell/materials/linear_elastic.hpp"
 
 using namespace fpmshell;
@@ -126,4 +127,41 @@ TEST(ShellTriangle, ObjectiveUnderLargeRigidRotation) {
         EXPECT_LT((rot.loads.force[i] - r * ref.loads.force[i]).norm(), 1e-9 * ref.loads.force[i].norm() + 1e-6);
         EXPECT_LT((rot.loads.moment[i] - r * ref.loads.moment[i]).norm(), 1e-9 * ref.loads.moment[i].norm() + 1e-6);
     }
+}
+
+// The plastic element: with a yield stress out of reach it is the elastic element (same
+// points, same loads to round-off); past yield, in uniform bending at 5 Lobatto points, the
+// moment is that of the section with its outer points at the yield stress and the plastic work
+// is positive, while a rigid motion still gives nothing.
+TEST(ShellTriangle, PlasticElementReducesToElasticBelowYieldAndYieldsInBending) {
+    const std::array<Vec3, 3> cur{Vec3(0.1, 0.0, 0.2), Vec3(1.2003, 0.3, 0.1012), Vec3(0.2, 0.9002, 0.401)};
+    const std::array<Vec3, 3> dth{Vec3(0.001, -0.002, 0.0), Vec3(-0.0015, 0.001, 0.0), Vec3(0.0005, 0.002, 0.0)};
+    const ShellRule r = rule(BendingKernel::Dkt, 5, 7);
+    const ReversedTriangle rt = reverse_motion(k_base, cur, dth);
+    const LinearElastic elastic(200e9, 0.3);
+    FlowStress flow;
+    flow.yield_stress = 1e30;
+    const J2Plastic unreachable(200e9, 0.3, flow, RateFactor{}, 1.0);
+    std::vector<MaterialPoint> pe(static_cast<std::size_t>(r.n_points())), pp(pe.size());
+    const ShellTriangleLoads le = shell_triangle_loads(rt, r, elastic, pe, 0.0);
+    const ShellTriangleLoads lp = shell_triangle_loads(rt, r, unreachable, pp, 0.0);
+    for (int i = 0; i < 3; ++i) {
+        EXPECT_LT((le.force[i] - lp.force[i]).norm(), 1e-12 * le.force[i].norm() + 1e-9);
+        EXPECT_LT((le.moment[i] - lp.moment[i]).norm(), 1e-12 * le.moment[i].norm() + 1e-9);
+    }
+    EXPECT_EQ(lp.plastic_work, 0.0);
+
+    // Yield at a tenth of the elastic surface stress of this increment: the outer points yield.
+    const Real surface_stress = pe.back().stress.norm();
+    flow.yield_stress = 0.1 * surface_stress;
+    const J2Plastic low(200e9, 0.3, flow, RateFactor{}, 1.0);
+    std::vector<MaterialPoint> pl(pe.size());
+    const ShellTriangleLoads ll = shell_triangle_loads(rt, r, low, pl, 0.0);
+    EXPECT_GT(ll.plastic_work, 0.0);
+    EXPECT_LE(ll.plastic_work, ll.strain_work);  // dissipation is part of the strain work
+    Real max_eps_p = 0;
+    for (const MaterialPoint& p : pl) max_eps_p = std::max(max_eps_p, p.plastic_strain);
+    EXPECT_GT(max_eps_p, 0.0);
+    // the yielded moments are smaller than the elastic ones
+    EXPECT_LT(ll.bending_moment.norm(), le.bending_moment.norm());
 }
