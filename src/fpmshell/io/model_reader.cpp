@@ -569,6 +569,20 @@ Model read_model(const std::string& path, const std::vector<std::string>& set_ov
     reader.materials(top.at("materials"));
     if (const auto c = top.find("curves")) reader.curves(*c);
     reader.sections(top.at("sections"));
+    if (model.control.mode == SolutionMode::Relaxation) {
+        // Dynamic relaxation jumps to each load level and oscillates about it: an elastic model
+        // ends where it should, a plastic one keeps the plastic strain of the overshoot and of
+        // the motion imposed in one step (a strip pulled in tension: 11 % of the right force).
+        for (const Section& sec : model.sections) {
+            const Material& mat = model.materials[static_cast<std::size_t>(sec.material)];
+            if (mat.plastic())
+                top.at("control").open_map("control settings").at("mode").fail(
+                    "relaxation needs elastic materials, but material '" + mat.name +
+                    "' is plastic: dynamic relaxation jumps to each load level, and a plastic "
+                    "material would keep the strains of that jump; use mode: dynamic with a slow "
+                    "load ramp (and some mass damping) for a quasi-static plastic path");
+        }
+    }
     if (const auto b = top.find("boundary")) reader.boundary(*b);
     if (const auto l = top.find("loads")) reader.loads(*l);
     if (const auto i = top.find("initial_conditions")) reader.initial_conditions(*i);
