@@ -30,7 +30,7 @@ test: deps build
 	ctest --test-dir $(BUILD) --output-on-failure -LE validation -j2
 
 validate: build
-	ctest --test-dir $(BUILD) -L validation --output-on-failure
+	ctest --test-dir $(BUILD) -L validation --output-on-failure -j$(JOBS)
 	$(PYTHON) tools/make_validation.py
 
 bench: deps
