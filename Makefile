@@ -29,9 +29,10 @@ run: deps build
 test: deps build
 	ctest --test-dir $(BUILD) --output-on-failure -LE validation -j2
 
+# The report is written even when a problem fails; the target then fails with ctest's status.
 validate: build
-	ctest --test-dir $(BUILD) -L validation --output-on-failure -j$(JOBS)
-	$(PYTHON) tools/make_validation.py
+	ctest --test-dir $(BUILD) -L validation --output-on-failure -j$(JOBS); status=$$?; \
+	$(PYTHON) tools/make_validation.py && exit $$status
 
 bench: deps
 	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release -DFPMSHELL_BENCHMARKS=ON
