@@ -32,7 +32,7 @@ test: deps build
 # The report is written even when a problem fails; the target then fails with ctest's status.
 validate: build
 	ctest --test-dir $(BUILD) -L validation --output-on-failure -j$(JOBS); status=$$?; \
-	$(PYTHON) tools/make_validation.py && exit $$status
+	$(PYTHON) tools/make_validation.py --build $(BUILD) && exit $$status
 
 bench: deps
 	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release -DFPMSHELL_BENCHMARKS=ON
