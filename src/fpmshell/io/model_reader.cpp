@@ -368,14 +368,15 @@ public:
 
     void initial_conditions(const YamlValue& v) {
         for (const YamlValue& item : v.list("initial conditions")) {
-            const YamlMap m = item.map({"nodes", "velocity", "angular_velocity"});
+            const YamlMap m = item.map({"nodes", "velocity", "angular_velocity", "normal_velocity"});
             InitialVelocity ic;
             ic.nodes = node_set(m.at("nodes", "a node set name"));
-            if (m.count({"velocity", "angular_velocity"}) == 0)
+            if (m.count({"velocity", "angular_velocity", "normal_velocity"}) == 0)
                 item.fail(
-                    "an initial condition needs `velocity: [vx, vy, vz]` and/or "
-                    "`angular_velocity: [wx, wy, wz]`");
+                    "an initial condition needs `velocity: [vx, vy, vz]`, `normal_velocity: v` "
+                    "(along the surface normal) and/or `angular_velocity: [wx, wy, wz]`");
             if (const auto vel = m.find("velocity")) ic.velocity = vel->vec3();
+            if (const auto vn = m.find("normal_velocity")) ic.normal_velocity = vn->real();
             if (const auto w = m.find("angular_velocity")) ic.angular_velocity = w->vec3();
             model_.initial_conditions.push_back(ic);
         }

@@ -81,6 +81,9 @@ struct InitialVelocity {
     std::vector<Index> nodes;
     Vec3 velocity = Vec3::Zero();
     Vec3 angular_velocity = Vec3::Zero();
+    /// speed along each particle's initial surface normal (the normal of the element node
+    /// order), added to velocity; negative = against the normal
+    Real normal_velocity = 0;
 };
 
 /// Rayleigh damping (theory.md §6.5): a_m (1/s) on mass, a_s (s) on stiffness.

@@ -88,7 +88,8 @@ ExplicitSolver::ExplicitSolver(const Model& model) : model_(model), elements_(mo
     // Initial conditions: v^0, w^0 (the first cycle uses v^{-1/2} := v^0).
     for (const InitialVelocity& ic : model.initial_conditions)
         for (Index p : ic.nodes) {
-            s_.v[static_cast<std::size_t>(p)] = ic.velocity;
+            // normal_velocity: along the initial surface normal of the particle (§1.3)
+            s_.v[static_cast<std::size_t>(p)] = ic.velocity + ic.normal_velocity * s_.normal[static_cast<std::size_t>(p)];
             s_.omega[static_cast<std::size_t>(p)] = ic.angular_velocity;
         }
     for (std::size_t p = 0; p < np; ++p) {
