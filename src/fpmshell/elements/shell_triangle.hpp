@@ -37,6 +37,8 @@ struct ShellTriangleLoads {
     Real plastic_work = 0;       ///< plastic dissipation over the step (part of strain_work)
     Real thickness_strain = 0;   ///< d eps_33 averaged over the points (theory.md §3.4)
     Voigt3 membrane_force = Voigt3::Zero();  ///< N averaged over the element, local frame
+    Voigt3 membrane_resultant = Voigt3::Zero();  ///< the same plus the viscous part: what the
+                                                 ///< membrane nodal forces are made of
     Voigt3 bending_moment = Voigt3::Zero();  ///< M averaged over the element, local frame
 };
 
@@ -51,11 +53,15 @@ struct ShellTriangleLoads {
 /// viscous_rate: a_s / dt_{n-1/2} (theory.md §6.5), 0 without stiffness damping.
 /// dt: duration of the path element, for rate-dependent materials (0: no rate).
 /// thickness: the element's thickness at the start of the step (rule.thickness if <= 0).
+/// smoothed_membrane: when given, the membrane strain increment to use instead of the CST
+/// one (smoothed over the element's neighbours); the element's own membrane nodal forces are
+/// then own_share times A B_m^T N, the rest goes to the neighbours (shell_elements.cpp).
 template <class Material>
 ShellTriangleLoads shell_triangle_loads(const ReversedTriangle& rt, const ShellRule& rule,
                                         const Material& material,
                                         std::span<MaterialPoint> points, Real viscous_rate,
-                                        Real dt = 0, Real thickness = 0) {
+                                        Real dt = 0, Real thickness = 0,
+                                        const Voigt3* smoothed_membrane = nullptr, Real own_share = 1) {
     ShellTriangleLoads out;
     const TriangleShape shape(rt.x2, rt.x3, rt.y3);
     const Mat36 bm = membrane_b(shape);
@@ -64,7 +70,7 @@ ShellTriangleLoads shell_triangle_loads(const ReversedTriangle& rt, const ShellR
         u_vec.segment<2>(2 * i) = rt.u[i];
         th_vec.segment<2>(2 * i) = rt.theta[i];
     }
-    const Voigt3 d_eps_m = bm * u_vec;  // §3.1 membrane strain increment
+    const Voigt3 d_eps_m = smoothed_membrane ? *smoothed_membrane : Voigt3(bm * u_vec);  // §3.1
     const Real h = thickness > 0 ? thickness : rule.thickness, half_h = 0.5 * h;
     // §3.4: d eps_33 = -(d eps_11 + d eps_22) + (1 - 2 nu) / E (d sigma_11 + d sigma_22), i.e.
     // -nu/(1-nu) of the elastic and -1 times the plastic in-plane dilatation.
@@ -107,7 +113,8 @@ ShellTriangleLoads shell_triangle_loads(const ReversedTriangle& rt, const ShellR
             m_g += m_v;
         }
         const Real wa = rt.area * ip.weight;
-        f_m += wa * (bm.transpose() * n_g);
+        f_m += (own_share * wa) * (bm.transpose() * n_g);
+        out.membrane_resultant += ip.weight * n_g;
         m_b += wa * (bb.transpose() * m_g);
         out.strain_work += rt.area * ip.weight * work_g;
         out.plastic_work += rt.area * ip.weight * plastic_g;

@@ -107,7 +107,8 @@ public:
 
     void control(const YamlValue& v) {
         const YamlMap m = v.map({"end_time", "time_step_scale", "mode", "tolerance", "bending",
-                                 "energy_error_limit", "max_relaxation_iterations", "thickness_update"});
+                                 "energy_error_limit", "max_relaxation_iterations", "thickness_update",
+                                 "membrane"});
         Control& c = model_.control;
         c.end_time = m.at("end_time", "the duration of the run, a number > 0").positive();
         if (const auto s = m.find("time_step_scale")) {
@@ -124,6 +125,8 @@ public:
                                                                              : BendingKernel::Bciz;
         c.energy_error_limit = m.positive_or("energy_error_limit", c.energy_error_limit);
         c.thickness_update = m.choice_or("thickness_update", {"true", "false"}, "false") == "true";
+        c.membrane = m.choice_or("membrane", {"cst", "smoothed"}, "cst") == "smoothed" ? MembraneKernel::Smoothed
+                                                                                     : MembraneKernel::Cst;
         if (const auto s = m.find("max_relaxation_iterations"))
             c.max_relaxation_iterations = static_cast<long>(s->integer(1, 1'000'000'000'000LL));
     }

@@ -94,6 +94,7 @@ struct Damping {
 
 enum class SolutionMode { Dynamic, Relaxation };
 enum class BendingKernel { Bciz, Dkt };
+enum class MembraneKernel { Cst, Smoothed };
 
 struct Control {
     Real end_time = 0;
@@ -103,6 +104,8 @@ struct Control {
     // DKT by default: it passes the patch test on every mesh and follows large rotations;
     // BCIZ (the paper's element) passes only on three-line-family meshes (docs/validation.md).
     BendingKernel bending = BendingKernel::Dkt;
+    /// CST (theory.md §3) or the CST strains smoothed over the neighbours (membrane_smoothing.hpp)
+    MembraneKernel membrane = MembraneKernel::Cst;
     Real energy_error_limit = 0.5;  ///< dynamic runs stop (exit 1) past this relative error
     long max_relaxation_iterations = 200000;  ///< per load level
     /// theory.md §3.4: thickness follows the plane-stress condition (off by default, like

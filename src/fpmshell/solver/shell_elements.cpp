@@ -6,11 +6,18 @@
 
 #include "fpmshell/elements/bending_time_step.hpp"
 #include "fpmshell/elements/lumped_inertia.hpp"
+#include "fpmshell/elements/membrane_smoothing.hpp"
+
+#include <map>
 
 namespace fpmshell {
 namespace {
 
 constexpr Index k_parallel_min_elements = 2000;
+constexpr int k_slots = 6;  // per element: 3 corners + the 3 nodes across the sides
+// Smoothed membrane: neighbours whose normals differ by more than this (a fold, such as a tube
+// corner) are not averaged with (cos 20 deg, like the kink limit of §1.3).
+constexpr Real k_smooth_cosine = 0.9397;
 // The bending step ratio depends on the element shape and h / L_c only; it is re-evaluated (a
 // 9x9 eigenproblem) when L_c has changed by more than this fraction since the last evaluation,
 // which bounds the ratio's staleness to a few per cent of the step.
@@ -79,8 +86,33 @@ ShellElements::ShellElements(const Model& model)
         point_offset_[e + 1] =
             point_offset_[e] + static_cast<std::size_t>(rules_[static_cast<std::size_t>(section_[e])].n_points());
     points_.assign(point_offset_[ne], MaterialPoint{});
-    slot_force_.assign(3 * ne, Vec3::Zero());
-    slot_moment_.assign(3 * ne, Vec3::Zero());
+    slot_force_.assign(k_slots * ne, Vec3::Zero());
+    slot_moment_.assign(k_slots * ne, Vec3::Zero());
+    // Side neighbours: side i of element e is opposite its corner i; an edge shared by exactly
+    // two elements joins them.
+    smoothed_membrane_ = model.control.membrane == MembraneKernel::Smoothed;
+    side_neighbour_.assign(3 * ne, -1);
+    side_neighbour_side_.assign(3 * ne, -1);
+    if (smoothed_membrane_) {
+        std::map<std::pair<Index, Index>, std::vector<std::pair<Index, int>>> edges;
+        for (std::size_t e = 0; e < ne; ++e)
+            for (int i = 0; i < 3; ++i) {
+                const Index a = tri_[e][static_cast<std::size_t>((i + 1) % 3)];
+                const Index b = tri_[e][static_cast<std::size_t>((i + 2) % 3)];
+                edges[{std::min(a, b), std::max(a, b)}].push_back({static_cast<Index>(e), i});
+            }
+        for (const auto& [key, sides] : edges) {
+            if (sides.size() != 2) continue;
+            for (int k = 0; k < 2; ++k) {
+                const auto& [e, i] = sides[static_cast<std::size_t>(k)];
+                const auto& [n, m] = sides[static_cast<std::size_t>(1 - k)];
+                side_neighbour_[static_cast<std::size_t>(3 * e + i)] = n;
+                side_neighbour_side_[static_cast<std::size_t>(3 * e + i)] = m;
+            }
+        }
+        reversed_.resize(ne);
+        cst_strain_.assign(ne, Voigt3::Zero());
+    }
     elem_work_.assign(ne, 0.0);
     elem_damp_work_.assign(ne, 0.0);
     elem_plastic_work_.assign(ne, 0.0);
@@ -91,15 +123,23 @@ ShellElements::ShellElements(const Model& model)
     // CSR particle -> slots, slots in increasing element order (fixed summation order).
     const std::size_t np = model.nodes.size();
     csr_begin_.assign(np + 1, 0);
-    for (const auto& t : tri_)
-        for (Index p : t) ++csr_begin_[static_cast<std::size_t>(p) + 1];
+    // slot k of element e -> its particle (-1: unused)
+    auto slot_particle = [&](std::size_t e, int k) -> Index {
+        if (k < 3) return tri_[e][static_cast<std::size_t>(k)];
+        const Index n = side_neighbour_[3 * e + static_cast<std::size_t>(k - 3)];
+        return n < 0 ? -1 : tri_[static_cast<std::size_t>(n)][static_cast<std::size_t>(side_neighbour_side_[3 * e + static_cast<std::size_t>(k - 3)])];
+    };
+    for (std::size_t e = 0; e < ne; ++e)
+        for (int k = 0; k < k_slots; ++k)
+            if (const Index p = slot_particle(e, k); p >= 0) ++csr_begin_[static_cast<std::size_t>(p) + 1];
     for (std::size_t p = 0; p < np; ++p) csr_begin_[p + 1] += csr_begin_[p];
     csr_slot_.assign(static_cast<std::size_t>(csr_begin_[np]), 0);
     std::vector<Index> fill(csr_begin_.begin(), csr_begin_.end() - 1);
     for (std::size_t e = 0; e < ne; ++e)
-        for (int i = 0; i < 3; ++i)
-            csr_slot_[static_cast<std::size_t>(fill[static_cast<std::size_t>(tri_[e][static_cast<std::size_t>(i)])]++)] =
-                static_cast<Index>(3 * e + static_cast<std::size_t>(i));
+        for (int k = 0; k < k_slots; ++k)
+            if (const Index p = slot_particle(e, k); p >= 0)
+                csr_slot_[static_cast<std::size_t>(fill[static_cast<std::size_t>(p)]++)] =
+                    static_cast<Index>(k_slots * e + static_cast<std::size_t>(k));
 }
 
 Real ShellElements::bending_ratio(Index e, const std::vector<Vec3>& x) const {
@@ -169,10 +209,7 @@ ShellElements::StepTotals ShellElements::compute(ParticleState& s, Real viscous_
     const Index ne = size();
     // Small models stay serial: a parallel region per step costs more than it saves there.
     const bool parallel = ne >= k_parallel_min_elements;
-    // Phase 1: every triangle writes its 3 corner loads into its own slots.
-#pragma omp parallel for schedule(static) if (parallel)
-    for (Index e = 0; e < ne; ++e) {
-        const std::size_t ue = static_cast<std::size_t>(e);
+    auto reverse = [&](std::size_t ue) {
         const auto& t = tri_[ue];
         std::array<Vec3, 3> base, cur, dth;
         for (std::size_t i = 0; i < 3; ++i) {
@@ -181,29 +218,112 @@ ShellElements::StepTotals ShellElements::compute(ParticleState& s, Real viscous_
             cur[i] = s.x[p];
             dth[i] = s.dtheta[p];
         }
-        const ReversedTriangle rt = reverse_motion(base, cur, dth);
+        return reverse_motion(base, cur, dth);
+    };
+    // Phase 0 (smoothed membrane only): every element's path element and CST strain increment.
+    if (smoothed_membrane_) {
+#pragma omp parallel for schedule(static) if (parallel)
+        for (Index e = 0; e < ne; ++e) {
+            const std::size_t ue = static_cast<std::size_t>(e);
+            reversed_[ue] = reverse(ue);
+            const ReversedTriangle& rt = reversed_[ue];
+            if (rt.degenerate) {
+                cst_strain_[ue].setZero();
+                continue;
+            }
+            Eigen::Matrix<Real, 6, 1> u_vec;
+            for (int i = 0; i < 3; ++i) u_vec.segment<2>(2 * i) = rt.u[static_cast<std::size_t>(i)];
+            cst_strain_[ue] = membrane_b(TriangleShape(rt.x2, rt.x3, rt.y3)) * u_vec;  // §3.1
+        }
+    }
+    // Phase 1: every triangle writes its corner loads (and, smoothed, the loads on the nodes
+    // across its sides) into its own slots.
+#pragma omp parallel for schedule(static) if (parallel)
+    for (Index e = 0; e < ne; ++e) {
+        const std::size_t ue = static_cast<std::size_t>(e);
+        const ReversedTriangle rt = smoothed_membrane_ ? reversed_[ue] : reverse(ue);
         refresh_bending_ratio(e, s.x);
         elem_dt_[ue] = element_dt(e, s.x);
+        for (int k = 0; k < k_slots; ++k) slot_force_[k_slots * ue + static_cast<std::size_t>(k)] = slot_moment_[k_slots * ue + static_cast<std::size_t>(k)] = Vec3::Zero();
         // A tilt over 90 deg or an area change by a factor 2 within one step is no deformation a
         // stable step can produce: the run has diverged (theory.md §2.8).
         if (rt.degenerate || rt.normal_cosine < 0 || !(rt.area_ratio > 0.5 && rt.area_ratio < 2.0)) {
             elem_failed_[ue] = 1;
             elem_work_[ue] = elem_damp_work_[ue] = elem_plastic_work_[ue] = 0;
-            for (std::size_t i = 0; i < 3; ++i) slot_force_[3 * ue + i] = slot_moment_[3 * ue + i] = Vec3::Zero();
             continue;
         }
         elem_failed_[ue] = 0;
+        // Smoothed membrane strain (membrane_smoothing.hpp): the mean of the three side strains,
+        // a side strain being the area-weighted mean of the CST strains of the two elements
+        // there (the neighbour's unfolded into this frame), or this element's own on a side
+        // without a smooth neighbour. Area weights keep the patch test.
+        Voigt3 smoothed = Voigt3::Zero();
+        Real own_share = 1;
+        std::array<Mat3, 3> to_here;         // neighbour strain -> this frame, per side
+        std::array<Real, 3> side_weight{};   // weight of the neighbour's strain, per side
+        if (smoothed_membrane_) {
+            own_share = 0;
+            for (int i = 0; i < 3; ++i) {
+                const Index n = side_neighbour_[3 * ue + static_cast<std::size_t>(i)];
+                const ReversedTriangle* rn = n >= 0 ? &reversed_[static_cast<std::size_t>(n)] : nullptr;
+                if (rn && !rn->degenerate &&
+                    rn->frame_current.row(2).dot(rt.frame_current.row(2)) >= k_smooth_cosine) {
+                    // the shared side runs from corner (i+1) to corner (i+2) here
+                    const Index pa = tri_[ue][static_cast<std::size_t>((i + 1) % 3)];
+                    const Index pb = tri_[ue][static_cast<std::size_t>((i + 2) % 3)];
+                    const auto& tn = tri_[static_cast<std::size_t>(n)];
+                    int na = -1, nb = -1;
+                    for (int k = 0; k < 3; ++k) {
+                        if (tn[static_cast<std::size_t>(k)] == pa) na = k;
+                        if (tn[static_cast<std::size_t>(k)] == pb) nb = k;
+                    }
+                    const Real beta = side_angle(rt.x2, rt.x3, rt.y3, (i + 1) % 3, (i + 2) % 3) -
+                                      side_angle(rn->x2, rn->x3, rn->y3, na, nb);
+                    to_here[static_cast<std::size_t>(i)] = strain_rotation(beta);
+                    const Real w_n = rn->area / (3.0 * (rt.area + rn->area));
+                    side_weight[static_cast<std::size_t>(i)] = w_n;
+                    own_share += 1.0 / 3.0 - w_n;
+                    smoothed += w_n * (to_here[static_cast<std::size_t>(i)] * cst_strain_[static_cast<std::size_t>(n)]);
+                } else {
+                    own_share += 1.0 / 3.0;
+                }
+            }
+            smoothed += own_share * cst_strain_[ue];
+        }
         const std::size_t sec = static_cast<std::size_t>(section_[ue]);
         std::span<MaterialPoint> pts(points_.data() + point_offset_[ue],
                                      point_offset_[ue + 1] - point_offset_[ue]);
         const ShellTriangleLoads loads =
             std::visit([&](const auto& material) {
-                return shell_triangle_loads(rt, rules_[sec], material, pts, viscous_rate, dt, thickness_[ue]);
+                return shell_triangle_loads(rt, rules_[sec], material, pts, viscous_rate, dt, thickness_[ue],
+                                            smoothed_membrane_ ? &smoothed : nullptr, own_share);
             }, materials_[sec]);
         if (thickness_update_) thickness_[ue] *= 1.0 + loads.thickness_strain;  // §3.4
         for (std::size_t i = 0; i < 3; ++i) {
-            slot_force_[3 * ue + i] = loads.force[i];
-            slot_moment_[3 * ue + i] = loads.moment[i];
+            slot_force_[k_slots * ue + i] = loads.force[i];
+            slot_moment_[k_slots * ue + i] = loads.moment[i];
+        }
+        if (smoothed_membrane_) {
+            // The neighbours' share of the membrane forces: A_e w_n B_n^T T^T N, in the
+            // neighbour's frame, turned forward with it (§5).
+            for (int i = 0; i < 3; ++i) {
+                if (side_weight[static_cast<std::size_t>(i)] == 0) continue;
+                const std::size_t n = static_cast<std::size_t>(side_neighbour_[3 * ue + static_cast<std::size_t>(i)]);
+                const ReversedTriangle& rn = reversed_[n];
+                const Voigt3 n_there = to_here[static_cast<std::size_t>(i)].transpose() * loads.membrane_resultant;
+                const Eigen::Matrix<Real, 6, 1> f_local =
+                    (rt.area * side_weight[static_cast<std::size_t>(i)]) *
+                    (membrane_b(TriangleShape(rn.x2, rn.x3, rn.y3)).transpose() * n_there);
+                const Mat3 to_global = rn.frame_current.transpose();
+                for (int k = 0; k < 3; ++k) {
+                    const Vec3 f = to_global * Vec3(f_local(2 * k), f_local(2 * k + 1), 0.0);
+                    const Index p = tri_[n][static_cast<std::size_t>(k)];
+                    std::size_t slot = k_slots * ue + 3 + static_cast<std::size_t>(i);  // the node across side i
+                    for (std::size_t j = 0; j < 3; ++j)
+                        if (tri_[ue][j] == p) slot = k_slots * ue + j;
+                    slot_force_[slot] += f;
+                }
+            }
         }
         elem_work_[ue] = loads.strain_work;
         elem_damp_work_[ue] = loads.damping_work;

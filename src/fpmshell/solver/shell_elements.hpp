@@ -68,9 +68,15 @@ private:
     std::vector<Real> bend_ratio_;  ///< per element, bending critical step / (L_c / c)
     std::vector<Real> bend_lc_;     ///< per element, the L_c bend_ratio_ was evaluated at
     BendingKernel bending_kernel_ = BendingKernel::Dkt;
+    // Smoothed membrane (control.membrane: smoothed)
+    bool smoothed_membrane_ = false;
+    std::vector<Index> side_neighbour_, side_neighbour_side_;  ///< per element side (3 e + i), -1: none
+    std::vector<ReversedTriangle> reversed_;  ///< per element, this step's path element
+    std::vector<Voigt3> cst_strain_;          ///< per element, this step's CST strain increment
     std::vector<std::size_t> point_offset_;    ///< first material point of every element
     std::vector<MaterialPoint> points_;
-    std::vector<Vec3> slot_force_, slot_moment_;  ///< 3 slots per element
+    // 6 slots per element: its 3 corners, then the node across each side (smoothed membrane)
+    std::vector<Vec3> slot_force_, slot_moment_;
     std::vector<Index> csr_begin_, csr_slot_;     ///< particle -> slots
     std::vector<Real> elem_work_, elem_damp_work_, elem_plastic_work_, elem_dt_;
     std::vector<std::uint8_t> elem_failed_;
