@@ -244,7 +244,10 @@ ShellElements::StepTotals ShellElements::compute(ParticleState& s, Real viscous_
         const ReversedTriangle rt = smoothed_membrane_ ? reversed_[ue] : reverse(ue);
         refresh_bending_ratio(e, s.x);
         elem_dt_[ue] = element_dt(e, s.x);
-        for (int k = 0; k < k_slots; ++k) slot_force_[k_slots * ue + static_cast<std::size_t>(k)] = slot_moment_[k_slots * ue + static_cast<std::size_t>(k)] = Vec3::Zero();
+        // the 3 slots across the sides are used (and gathered) only with the smoothed membrane
+        const int used_slots = smoothed_membrane_ ? k_slots : 3;
+        for (int k = 0; k < used_slots; ++k)
+            slot_force_[k_slots * ue + static_cast<std::size_t>(k)] = slot_moment_[k_slots * ue + static_cast<std::size_t>(k)] = Vec3::Zero();
         // A tilt over 90 deg or an area change by a factor 2 within one step is no deformation a
         // stable step can produce: the run has diverged (theory.md §2.8).
         if (rt.degenerate || rt.normal_cosine < 0 || !(rt.area_ratio > 0.5 && rt.area_ratio < 2.0)) {
