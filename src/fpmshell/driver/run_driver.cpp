@@ -28,6 +28,16 @@ std::string version() { return FPMSHELL_VERSION; }
 
 /// Field frame of the current state. positions_override: use these positions (last good
 /// state after a failure) instead of the solver's.
+/// Equivalent plastic strain of element e at the bottom (0), middle (1) or top (2) surface,
+/// averaged over the in-plane points; with 2 Gauss points the middle is their mean.
+Real surface_plastic_strain(const ShellElements& el, Index e, int which) {
+    const int nk = el.thickness_points(e);
+    if (which == 0) return el.plastic_strain(e, 0);
+    if (which == 2) return el.plastic_strain(e, nk - 1);
+    return nk % 2 == 1 ? el.plastic_strain(e, nk / 2)
+                       : 0.5 * (el.plastic_strain(e, 0) + el.plastic_strain(e, nk - 1));
+}
+
 FieldFrame make_frame(const Model& model, const ExplicitSolver& solver, Real time,
                       const std::vector<Vec3>* positions_override = nullptr) {
     const ParticleState& s = solver.state();
@@ -58,15 +68,10 @@ FieldFrame make_frame(const Model& model, const ExplicitSolver& solver, Real tim
             bm.values.push_back(m_el[e][c]);
         }
         th.values.push_back(solver.elements().thickness(static_cast<Index>(e)));
-        // Equivalent plastic strain at the bottom, middle and top thickness points, averaged
-        // over the in-plane points (2 Gauss points: the middle is their mean).
         const Index ie = static_cast<Index>(e);
-        const int nk = solver.elements().thickness_points(ie);
-        const Real bottom = solver.elements().plastic_strain(ie, 0);
-        const Real top = solver.elements().plastic_strain(ie, nk - 1);
-        ep_bot.values.push_back(bottom);
-        ep_top.values.push_back(top);
-        ep_mid.values.push_back(nk % 2 == 1 ? solver.elements().plastic_strain(ie, nk / 2) : 0.5 * (bottom + top));
+        ep_bot.values.push_back(surface_plastic_strain(solver.elements(), ie, 0));
+        ep_mid.values.push_back(surface_plastic_strain(solver.elements(), ie, 1));
+        ep_top.values.push_back(surface_plastic_strain(solver.elements(), ie, 2));
     }
     f.cell_data = {nf, bm, th, ep_top, ep_mid, ep_bot};
     return f;
@@ -151,12 +156,7 @@ public:
         for (int which = 0; which < 3; ++which) {
             Real peak = 0;
             for (Index e = 0; e < model_.n_elements(); ++e) {
-                const int nk = solver.elements().thickness_points(e);
-                const Real v = which == 0 ? solver.elements().plastic_strain(e, 0)
-                             : which == 2 ? solver.elements().plastic_strain(e, nk - 1)
-                             : nk % 2 == 1 ? solver.elements().plastic_strain(e, nk / 2)
-                                           : 0.5 * (solver.elements().plastic_strain(e, 0) +
-                                                    solver.elements().plastic_strain(e, nk - 1));
+                const Real v = surface_plastic_strain(solver.elements(), e, which);
                 peak = std::max(peak, v);
                 if (v > best) {
                     best = v;

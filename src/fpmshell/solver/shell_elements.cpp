@@ -78,7 +78,7 @@ ShellElements::ShellElements(const Model& model)
             lumped_node_share(mat.density, sec.thickness, 0.5 * (p1 - p0).cross(p2 - p0).norm());
         node_mass_[e] = share.mass;
         node_inertia_[e] = share.inertia;
-        refresh_bending_ratio(static_cast<Index>(e), model.nodes);
+        refresh_bending_ratio(static_cast<Index>(e), model.nodes, current_length(static_cast<Index>(e), model.nodes));
     }
     point_offset_.resize(ne + 1);
     point_offset_[0] = 0;
@@ -155,25 +155,25 @@ Real ShellElements::bending_ratio(Index e, const std::vector<Vec3>& x) const {
     return membrane_dt > 0 ? bending_dt / membrane_dt : 1.0;
 }
 
-void ShellElements::refresh_bending_ratio(Index e, const std::vector<Vec3>& x) {
+Real ShellElements::current_length(Index e, const std::vector<Vec3>& x) const {
+    const auto& t = tri_[static_cast<std::size_t>(e)];
+    return characteristic_length(x[static_cast<std::size_t>(t[0])], x[static_cast<std::size_t>(t[1])],
+                                 x[static_cast<std::size_t>(t[2])]);
+}
+
+void ShellElements::refresh_bending_ratio(Index e, const std::vector<Vec3>& x, Real lc) {
     const std::size_t ue = static_cast<std::size_t>(e);
-    const auto& t = tri_[ue];
-    const Real lc = characteristic_length(x[static_cast<std::size_t>(t[0])], x[static_cast<std::size_t>(t[1])],
-                                          x[static_cast<std::size_t>(t[2])]);
     if (!(lc > 0) || std::abs(lc - bend_lc_[ue]) <= k_bending_ratio_drift * bend_lc_[ue]) return;
     bend_ratio_[ue] = bending_ratio(e, x);
     bend_lc_[ue] = lc;
 }
 
-Real ShellElements::element_dt(Index e, const std::vector<Vec3>& x) const {
+Real ShellElements::element_dt(Index e, Real lc) const {
     const std::size_t ue = static_cast<std::size_t>(e);
-    const auto& t = tri_[ue];
     const std::size_t sec = static_cast<std::size_t>(section_[ue]);
     // §6.4 membrane step L_c / c; the bending modes of thick elements (h / L_c > ~0.5) are
     // slower to integrate, bend_ratio_ < 1 (bending_time_step.hpp).
-    Real dt = characteristic_length(x[static_cast<std::size_t>(t[0])], x[static_cast<std::size_t>(t[1])],
-                                    x[static_cast<std::size_t>(t[2])]) /
-              wave_speed_[sec] * std::min(Real{1}, bend_ratio_[ue]);
+    Real dt = lc / wave_speed_[sec] * std::min(Real{1}, bend_ratio_[ue]);
     if (stiffness_damping_ > 0) {  // §6.4: dt <= (2/w)(sqrt(1+xi^2) - xi), w = 2/dt
         const Real xi = stiffness_damping_ / dt;
         dt *= std::sqrt(1.0 + xi * xi) - xi;
@@ -195,7 +195,7 @@ Real ShellElements::min_critical_dt(const std::vector<Vec3>& x, Index* where) co
     Real best = std::numeric_limits<Real>::infinity();
     Index arg = -1;
     for (Index e = 0; e < size(); ++e) {
-        const Real dt = element_dt(e, x);
+        const Real dt = element_dt(e, current_length(e, x));
         if (dt < best) {
             best = dt;
             arg = e;
@@ -242,8 +242,9 @@ ShellElements::StepTotals ShellElements::compute(ParticleState& s, Real viscous_
     for (Index e = 0; e < ne; ++e) {
         const std::size_t ue = static_cast<std::size_t>(e);
         const ReversedTriangle rt = smoothed_membrane_ ? reversed_[ue] : reverse(ue);
-        refresh_bending_ratio(e, s.x);
-        elem_dt_[ue] = element_dt(e, s.x);
+        const Real lc = current_length(e, s.x);  // once per element and step
+        refresh_bending_ratio(e, s.x, lc);
+        elem_dt_[ue] = element_dt(e, lc);
         // the 3 slots across the sides are used (and gathered) only with the smoothed membrane
         const int used_slots = smoothed_membrane_ ? k_slots : 3;
         for (int k = 0; k < used_slots; ++k)

@@ -48,12 +48,15 @@ public:
     [[nodiscard]] Real thickness(Index e) const { return thickness_[static_cast<std::size_t>(e)]; }
 
 private:
-    /// Critical step of element e at positions x: the smaller of the membrane step L_c / c and
+    /// Critical step of element e of current length lc: the smaller of the membrane step L_c / c and
     /// the bending step (the stored ratio bend_ratio_ times L_c / c), reduced for stiffness
     /// damping (§6.4).
-    [[nodiscard]] Real element_dt(Index e, const std::vector<Vec3>& x) const;
-    /// Re-evaluates bend_ratio_[e] when L_c has drifted from the length it was computed at.
-    void refresh_bending_ratio(Index e, const std::vector<Vec3>& x);
+    [[nodiscard]] Real element_dt(Index e, Real lc) const;
+    /// L_c = 2A / l_max of element e at positions x (§6.4).
+    [[nodiscard]] Real current_length(Index e, const std::vector<Vec3>& x) const;
+    /// Re-evaluates bend_ratio_[e] when lc (its current L_c) has drifted from the length the
+    /// ratio was computed at.
+    void refresh_bending_ratio(Index e, const std::vector<Vec3>& x, Real lc);
     [[nodiscard]] Real bending_ratio(Index e, const std::vector<Vec3>& x) const;
 
     std::vector<std::array<Index, 3>> tri_;
