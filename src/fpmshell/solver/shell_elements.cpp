@@ -93,6 +93,7 @@ ShellElements::ShellElements(const Model& model)
     smoothed_membrane_ = model.control.membrane == MembraneKernel::Smoothed;
     side_neighbour_.assign(3 * ne, -1);
     side_neighbour_side_.assign(3 * ne, -1);
+    side_neighbour_corner_.assign(6 * ne, -1);
     if (smoothed_membrane_) {
         std::map<std::pair<Index, Index>, std::vector<std::pair<Index, int>>> edges;
         for (std::size_t e = 0; e < ne; ++e)
@@ -106,8 +107,15 @@ ShellElements::ShellElements(const Model& model)
             for (int k = 0; k < 2; ++k) {
                 const auto& [e, i] = sides[static_cast<std::size_t>(k)];
                 const auto& [n, m] = sides[static_cast<std::size_t>(1 - k)];
-                side_neighbour_[static_cast<std::size_t>(3 * e + i)] = n;
-                side_neighbour_side_[static_cast<std::size_t>(3 * e + i)] = m;
+                const std::size_t side = static_cast<std::size_t>(3 * e + i);
+                side_neighbour_[side] = n;
+                side_neighbour_side_[side] = m;
+                const auto& te = tri_[static_cast<std::size_t>(e)];
+                const auto& tn = tri_[static_cast<std::size_t>(n)];
+                for (int c = 0; c < 3; ++c) {
+                    if (tn[static_cast<std::size_t>(c)] == te[static_cast<std::size_t>((i + 1) % 3)]) side_neighbour_corner_[2 * side] = c;
+                    if (tn[static_cast<std::size_t>(c)] == te[static_cast<std::size_t>((i + 2) % 3)]) side_neighbour_corner_[2 * side + 1] = c;
+                }
             }
         }
         reversed_.resize(ne);
@@ -272,15 +280,10 @@ ShellElements::StepTotals ShellElements::compute(ParticleState& s, Real viscous_
                 const ReversedTriangle* rn = n >= 0 ? &reversed_[static_cast<std::size_t>(n)] : nullptr;
                 if (rn && !rn->degenerate &&
                     rn->frame_current.row(2).dot(rt.frame_current.row(2)) >= k_smooth_cosine) {
-                    // the shared side runs from corner (i+1) to corner (i+2) here
-                    const Index pa = tri_[ue][static_cast<std::size_t>((i + 1) % 3)];
-                    const Index pb = tri_[ue][static_cast<std::size_t>((i + 2) % 3)];
-                    const auto& tn = tri_[static_cast<std::size_t>(n)];
-                    int na = -1, nb = -1;
-                    for (int k = 0; k < 3; ++k) {
-                        if (tn[static_cast<std::size_t>(k)] == pa) na = k;
-                        if (tn[static_cast<std::size_t>(k)] == pb) nb = k;
-                    }
+                    // the shared side runs from corner (i+1) to corner (i+2) here, from corner na to
+                    // corner nb in the neighbour (topology, fixed at construction)
+                    const int na = side_neighbour_corner_[2 * (3 * ue + static_cast<std::size_t>(i))];
+                    const int nb = side_neighbour_corner_[2 * (3 * ue + static_cast<std::size_t>(i)) + 1];
                     const Real beta = side_angle(rt.x2, rt.x3, rt.y3, (i + 1) % 3, (i + 2) % 3) -
                                       side_angle(rn->x2, rn->x3, rn->y3, na, nb);
                     to_here[static_cast<std::size_t>(i)] = strain_rotation(beta);

@@ -74,6 +74,7 @@ private:
     // Smoothed membrane (control.membrane: smoothed)
     bool smoothed_membrane_ = false;
     std::vector<Index> side_neighbour_, side_neighbour_side_;  ///< per element side (3 e + i), -1: none
+    std::vector<int> side_neighbour_corner_;  ///< per side, the neighbour's corners of its ends (i+1, i+2)
     std::vector<ReversedTriangle> reversed_;  ///< per element, this step's path element
     std::vector<Voigt3> cst_strain_;          ///< per element, this step's CST strain increment
     std::vector<std::size_t> point_offset_;    ///< first material point of every element
