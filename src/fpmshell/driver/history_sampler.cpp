@@ -34,6 +34,27 @@ Real particle_quantity(const ExplicitSolver& solver, Quantity q, Index p) {
         case Quantity::ForceX: return s.f_ext[up].x();
         case Quantity::ForceY: return s.f_ext[up].y();
         case Quantity::ForceZ: return s.f_ext[up].z();
+        default: break;  // rigid-body quantities: body_quantity
+    }
+    return 0;
+}
+
+Real body_quantity(const ExplicitSolver& solver, Quantity q, Index b) {
+    const RigidBodyState& body = solver.bodies()[static_cast<std::size_t>(b)];
+    switch (q) {
+        case Quantity::RigidUx: return body.u.x();
+        case Quantity::RigidUy: return body.u.y();
+        case Quantity::RigidUz: return body.u.z();
+        case Quantity::RigidVx: return body.v.x();
+        case Quantity::RigidVy: return body.v.y();
+        case Quantity::RigidVz: return body.v.z();
+        case Quantity::RigidAx: return solver.body_acceleration(b).x();
+        case Quantity::RigidAy: return solver.body_acceleration(b).y();
+        case Quantity::RigidAz: return solver.body_acceleration(b).z();
+        case Quantity::RigidForceX: return body.force.x();
+        case Quantity::RigidForceY: return body.force.y();
+        case Quantity::RigidForceZ: return body.force.z();
+        default: break;
     }
     return 0;
 }
@@ -42,6 +63,10 @@ std::vector<Real> sample_histories(const Model& model, const ExplicitSolver& sol
     std::vector<Real> out;
     out.reserve(model.output.histories.size());
     for (const HistoryRequest& h : model.output.histories) {
+        if (h.body >= 0) {
+            out.push_back(body_quantity(solver, h.quantity, h.body));
+            continue;
+        }
         Real acc = 0;
         Real lo = std::numeric_limits<Real>::infinity(), hi = -lo;
         for (Index p : h.nodes) {

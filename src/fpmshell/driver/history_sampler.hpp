@@ -14,6 +14,9 @@ namespace fpmshell {
 /// and external forces t_n.
 [[nodiscard]] Real particle_quantity(const ExplicitSolver& solver, Quantity q, Index p);
 
+/// Value of a rigid-body quantity (Quantity::Rigid*) of body b, at the same time levels.
+[[nodiscard]] Real body_quantity(const ExplicitSolver& solver, Quantity q, Index b);
+
 /// One value per history request, reduced over its node set.
 [[nodiscard]] std::vector<Real> sample_histories(const Model& model, const ExplicitSolver& solver);
 

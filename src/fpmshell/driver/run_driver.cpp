@@ -171,6 +171,37 @@ public:
         plastic.set("surface", best_surface);
         j.set("plastic_strain", plastic);
         j.set("plastic_work", solver.energy().plastic);
+        if (const ContactStatistics* c = solver.contact_statistics()) {
+            JsonValue cj = JsonValue::object();
+            cj.set("max_penetration", c->max_penetration);
+            cj.set("max_penetration_ratio", c->max_penetration_ratio);  // / slave thickness
+            cj.set("max_penetration_step", c->max_penetration_step);
+            cj.set("max_penetration_particle", c->max_penetration_particle + 1);
+            cj.set("max_penetration_element", c->max_penetration_element + 1);  // 0: a rigid body
+            cj.set("max_active", c->max_active);
+            cj.set("max_sweeps", c->max_sweeps);
+            cj.set("unconverged_steps", c->unconverged_steps);
+            cj.set("searches", c->searches);
+            cj.set("seconds", c->seconds);
+            cj.set("share_of_time_loop", wall > 0 ? c->seconds / wall : 0.0);
+            j.set("contact", cj);
+        }
+        if (!model_.rigid_bodies.empty()) {
+            JsonValue bodies = JsonValue::object();
+            for (std::size_t b = 0; b < model_.rigid_bodies.size(); ++b) {
+                const RigidBodyState& st = solver.bodies()[b];
+                JsonValue bj = JsonValue::object();
+                JsonValue u = JsonValue::array(), v = JsonValue::array();
+                for (int k = 0; k < 3; ++k) {
+                    u.push_back(st.u[k]);
+                    v.push_back(st.v[k]);
+                }
+                bj.set("displacement", u);
+                bj.set("velocity", v);
+                bodies.set(model_.rigid_bodies[b].name, bj);
+            }
+            j.set("rigid_bodies", bodies);
+        }
         j.set("version", version());
         j.set("exit_reason", reason);
         write_json_file(dir_ / "summary.json", j);
@@ -321,6 +352,17 @@ int run_model(const Model& model, const RunOptions& opt) {
               code == 0 ? "finished" : "stopped", solver.steps(), solver.time(),
               100 * solver.energy().error(), seconds,
               seconds > 0 ? static_cast<double>(solver.element_steps()) / seconds : 0.0);
+    if (const ContactStatistics* c = solver.contact_statistics()) {
+        log.print("contact: largest penetration {:.4g} ({:.2f} % of the thickness) at step {}, particle {}{}",
+                  c->max_penetration, 100 * c->max_penetration_ratio, c->max_penetration_step,
+                  c->max_penetration_particle + 1,
+                  c->max_penetration_element >= 0 ? fmt::format(", element {}", c->max_penetration_element + 1)
+                                                  : std::string(" (rigid body)"));
+        log.print("contact: up to {} constraints, up to {} sweeps ({} steps unconverged), {} searches, "
+                  "{:.2f} s ({:.1f} % of the time loop)",
+                  c->max_active, c->max_sweeps, c->unconverged_steps, c->searches, c->seconds,
+                  seconds > 0 ? 100 * c->seconds / seconds : 0.0);
+    }
     log.print("results in {}", opt.output_dir.string());
     return code;
 }

@@ -125,6 +125,27 @@ MeshData annulus(const YamlValue& mesh) {
     return generate_annulus(p);
 }
 
+MeshData square_tube(const YamlValue& mesh) {
+    const YamlMap m = mesh.map({"generator", "width", "length", "sector_deg", "divisions_width",
+                                "divisions_length", "pattern"});
+    SquareTubeParams p;
+    p.width = positive(m, "width");
+    p.length = positive(m, "length");
+    if (const auto s = m.find("sector_deg")) {
+        p.sector_deg = s->real();
+        if (!(std::abs(p.sector_deg - 90) < 1e-9 || std::abs(p.sector_deg - 360) < 1e-9))
+            s->fail("expected 90 (the quarter x >= 0, y >= 0, for two symmetry planes) or 360 (the "
+                    "whole tube), got " + s->describe());
+    }
+    p.divisions_width = divisions(m, "divisions_width");
+    p.divisions_length = divisions(m, "divisions_length");
+    p.pattern = read_pattern(m);
+    const double faces = std::abs(p.sector_deg - 90) < 1e-9 ? 2 : 4;
+    check_size(mesh, grid_mesh_size(faces * static_cast<double>(p.divisions_width),
+                                    static_cast<double>(p.divisions_length), p.pattern, faces == 4));
+    return generate_square_tube(p);
+}
+
 std::string lower_extension(const std::filesystem::path& path) {
     std::string ext = path.extension().string();
     std::transform(ext.begin(), ext.end(), ext.begin(),
@@ -162,7 +183,7 @@ MeshData read_mesh_block(const YamlValue& mesh, const std::string& base_dir) {
     if (!mesh.is_map())
         mesh.fail(
             "expected a map with either `generator` (plate, cylinder_panel, spherical_cap, "
-            "annulus) and its parameters, or `file`, got " +
+            "annulus, square_tube) and its parameters, or `file`, got " +
             mesh.describe());
     const YamlMap any = mesh.open_map("mesh settings");
     const int kinds = any.count({"generator", "file"});
@@ -179,10 +200,7 @@ MeshData read_mesh_block(const YamlValue& mesh, const std::string& base_dir) {
         if (name == "cylinder_panel") data = cylinder_panel(mesh);
         if (name == "spherical_cap") data = spherical_cap(mesh);
         if (name == "annulus") data = annulus(mesh);
-        if (name == "square_tube")
-            g.fail(
-                "the generator 'square_tube' is not supported yet in this version of "
-                "fpmshell; use plate, cylinder_panel, spherical_cap, annulus or a mesh file");
+        if (name == "square_tube") data = square_tube(mesh);
     }
     check_mesh(data, mesh);
     return data;

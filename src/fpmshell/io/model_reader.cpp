@@ -449,13 +449,19 @@ public:
                     name.fail("the history name '" + req.name +
                               "' is used twice; names must be "
                               "unique");
-            const YamlValue nodes = r.at("nodes", "a node set name");
-            req.nodes = node_set(nodes);
             const YamlValue q = r.at("quantity", "one of " + join_names(quantity_names));
             const std::string qn = q.name();
-            if (qn.rfind("rigid_", 0) == 0)
-                q.fail(not_supported("the rigid-body quantity '" + qn + "'") +
-                       " (rigid bodies come later)");
+            if (qn.rfind("rigid_", 0) == 0) {
+                rigid_quantity(q, req);
+                if (const auto n = r.find("nodes"))
+                    n->fail("a rigid-body quantity belongs to the body, not to nodes; remove `nodes`");
+                if (const auto red = r.find("reduce"))
+                    red->fail("a rigid-body quantity is one value; remove `reduce`");
+                o.histories.push_back(req);
+                continue;
+            }
+            const YamlValue nodes = r.at("nodes", "a node set name");
+            req.nodes = node_set(nodes);
             const std::string chosen = q.choice(quantity_names);
             for (const auto& [n, quantity] : quantities)
                 if (n == chosen) req.quantity = quantity;
@@ -472,7 +478,142 @@ public:
         }
     }
 
+    /// `rigid_<body>_<ux|uy|uz|vx|vy|vz|ax|ay|az|force_x|force_y|force_z>`.
+    void rigid_quantity(const YamlValue& q, HistoryRequest& req) const {
+        static const std::vector<std::pair<std::string, Quantity>> parts = {
+            {"ux", Quantity::RigidUx},          {"uy", Quantity::RigidUy},
+            {"uz", Quantity::RigidUz},          {"vx", Quantity::RigidVx},
+            {"vy", Quantity::RigidVy},          {"vz", Quantity::RigidVz},
+            {"ax", Quantity::RigidAx},          {"ay", Quantity::RigidAy},
+            {"az", Quantity::RigidAz},          {"force_x", Quantity::RigidForceX},
+            {"force_y", Quantity::RigidForceY}, {"force_z", Quantity::RigidForceZ}};
+        const std::string qn = q.name();
+        std::vector<std::string> bodies;
+        for (std::size_t b = 0; b < model_.rigid_bodies.size(); ++b) {
+            const std::string prefix = "rigid_" + model_.rigid_bodies[b].name + "_";
+            bodies.push_back(model_.rigid_bodies[b].name);
+            if (qn.rfind(prefix, 0) != 0) continue;
+            const std::string rest = qn.substr(prefix.size());
+            for (const auto& [name, quantity] : parts)
+                if (name == rest) {
+                    req.quantity = quantity;
+                    req.body = static_cast<Index>(b);
+                    return;
+                }
+            q.fail("unknown rigid-body quantity '" + rest + "' of body '" + model_.rigid_bodies[b].name +
+                   "'; expected rigid_" + model_.rigid_bodies[b].name +
+                   "_ followed by ux, uy, uz, vx, vy, vz, ax, ay, az, force_x, force_y or force_z");
+        }
+        q.fail(bodies.empty() ? "'" + qn + "' names a rigid body, but the model has no rigid_bodies"
+                              : "'" + qn + "' names no rigid body of the model; the bodies are " +
+                                    join_names(bodies) + " (e.g. rigid_" + bodies.front() + "_uz)");
+    }
+
+    void rigid_bodies(const YamlValue& v) {
+        for (const YamlValue& item : v.list("rigid bodies")) {
+            const YamlMap m = item.map({"name", "mass", "shape", "point", "normal", "velocity", "fixed"});
+            RigidBody b;
+            const YamlValue name = m.at("name", "a name for the body, used in contact and histories");
+            b.name = name.name();
+            if (b.name.empty() || b.name.find_first_of(",\"\n\r ") != std::string::npos)
+                name.fail("a body name must be a single word without commas or quotes, got " + name.describe());
+            for (const RigidBody& other : model_.rigid_bodies)
+                if (other.name == b.name) name.fail("the rigid body '" + b.name + "' is defined twice");
+            (void)m.choice_or("shape", {"plane"}, "plane");
+            b.fixed = m.choice_or("fixed", {"true", "false"}, "false") == "true";
+            if (b.fixed) {
+                if (const auto mass = m.find("mass"))
+                    mass->fail("a fixed body has infinite mass; remove `mass` or set `fixed: false`");
+            } else {
+                b.mass = m.at("mass", "the mass of the body, a number > 0 (or `fixed: true`)").positive();
+            }
+            b.point = m.at("point", "a point [x, y, z] of the plane face").vec3();
+            const YamlValue normal = m.at("normal", "the face normal [nx, ny, nz], pointing towards the shell");
+            b.normal = normal.vec3();
+            if (!(b.normal.norm() > 0)) normal.fail("the normal must not be the zero vector");
+            b.normal.normalize();
+            if (const auto vel = m.find("velocity")) b.velocity = vel->vec3();
+            model_.rigid_bodies.push_back(b);
+        }
+    }
+
+    void contact(const YamlValue& v) {
+        for (const YamlValue& item : v.list("contact definitions")) {
+            const YamlMap any = item.open_map("contact settings");
+            const std::string type = any.at("type", "self or rigid").choice({"self", "rigid"});
+            ContactDefinition c;
+            if (type == "self") {
+                const YamlMap m = item.map({"type", "elements", "method", "exclusion_radius", "penalty_scale",
+                                            "max_iterations"});
+                c.type = ContactType::Self;
+                c.elements = m.find("elements") ? element_set(*m.find("elements"))
+                                                : model_.element_sets.at("all");
+                c.exclusion_radius = m.non_negative_or("exclusion_radius", 0.0);
+                common_contact(m, c);
+            } else {
+                const YamlMap m = item.map({"type", "body", "nodes", "method", "penalty_scale", "max_iterations"});
+                c.type = ContactType::Rigid;
+                const YamlValue body = m.at("body", "the name of a rigid body");
+                std::vector<std::string> names;
+                for (std::size_t b = 0; b < model_.rigid_bodies.size(); ++b) {
+                    names.push_back(model_.rigid_bodies[b].name);
+                    if (model_.rigid_bodies[b].name == body.name()) c.body = static_cast<Index>(b);
+                }
+                if (c.body < 0)
+                    body.fail(names.empty() ? "the model has no rigid_bodies; define the body first"
+                                            : "unknown rigid body '" + body.name() + "'" +
+                                                  did_you_mean(body.name(), names) + "; the bodies are " +
+                                                  join_names(names));
+                c.nodes = m.find("nodes") ? node_set(*m.find("nodes")) : model_.node_sets.at("all");
+                common_contact(m, c);
+                // A particle that starts inside the face (its half thickness included) would be
+                // thrown out of it in one step.
+                const RigidBody& rb = model_.rigid_bodies[static_cast<std::size_t>(c.body)];
+                const std::vector<Real> h = node_thickness();
+                for (const Index p : c.nodes) {
+                    const auto up = static_cast<std::size_t>(p);
+                    const Real behind = 0.5 * h[up] - rb.normal.dot(model_.nodes[up] - rb.point);
+                    if (behind > 1e-9 * (1.0 + rb.point.norm()))
+                        item.fail("particle " + std::to_string(p + 1) + " starts " + std::to_string(behind) +
+                                  " inside the face of rigid body '" + rb.name +
+                                  "' (a particle touches it with a ball of half its thickness; the face "
+                                  "normal points towards the shell); move the body by that much or "
+                                  "check the sign of its normal");
+                }
+            }
+            model_.contacts.push_back(c);
+        }
+    }
+
 private:
+    /// Mean section thickness of the elements around each particle (contact offsets).
+    [[nodiscard]] std::vector<Real> node_thickness() const {
+        std::vector<Real> h(model_.nodes.size(), 0.0);
+        std::vector<int> count(model_.nodes.size(), 0);
+        for (std::size_t e = 0; e < model_.triangles.size(); ++e)
+            for (const Index p : model_.triangles[e]) {
+                h[static_cast<std::size_t>(p)] +=
+                    model_.sections[static_cast<std::size_t>(model_.element_section[e])].thickness;
+                ++count[static_cast<std::size_t>(p)];
+            }
+        for (std::size_t p = 0; p < h.size(); ++p)
+            if (count[p] > 0) h[p] /= count[p];
+        return h;
+    }
+
+    static void common_contact(const YamlMap& m, ContactDefinition& c) {
+        c.method = m.choice_or("method", {"lagrange", "penalty"}, "lagrange") == "penalty"
+                       ? ContactMethod::Penalty
+                       : ContactMethod::LagrangeMultiplier;
+        if (const auto s = m.find("penalty_scale")) {
+            c.penalty_scale = s->positive();
+            if (c.penalty_scale > 1)
+                s->fail("must be in (0, 1]: stiffness = scale x pair mass / dt^2, and above 1 the "
+                        "explicit step is unstable; got " + s->describe());
+        }
+        if (const auto it = m.find("max_iterations")) c.max_iterations = static_cast<int>(it->integer(1, 100000));
+    }
+
     Model& model_;
 };
 
@@ -529,13 +670,6 @@ Model read_model(const std::string& path, const std::vector<std::string>& set_ov
     Model model;
     model.source_file = path;
     const YamlMap top = YamlValue(ctx, root, "").map(k_top_keys);
-    for (const auto& [key, what] :
-         {std::pair<const char*, const char*>{"rigid_bodies", "the key rigid_bodies (impactors)"},
-          {"contact", "the key contact"}}) {
-        const auto v = top.find(key);
-        if (v && !v->is_null() && !(v->is_list() && v->node().size() == 0))
-            v->fail(not_supported(what) + "; remove it");
-    }
     for (const char* required : {"mesh", "materials", "sections", "control"})
         if (!top.has(required))
             ctx.fail_at(1, required,
@@ -590,6 +724,13 @@ Model read_model(const std::string& path, const std::vector<std::string>& set_ov
     if (const auto b = top.find("boundary")) reader.boundary(*b);
     if (const auto l = top.find("loads")) reader.loads(*l);
     if (const auto i = top.find("initial_conditions")) reader.initial_conditions(*i);
+    if (const auto r = top.find("rigid_bodies"); r && !r->is_null()) reader.rigid_bodies(*r);
+    if (const auto c = top.find("contact"); c && !c->is_null()) {
+        reader.contact(*c);
+        if (model.control.mode == SolutionMode::Relaxation && !model.contacts.empty())
+            c->fail("contact needs mode: dynamic (dynamic relaxation jumps between load levels, "
+                    "and the contact forces of a jump are not those of equilibrium)");
+    }
     if (const auto d = top.find("damping")) reader.damping(*d);
     reader.output(top.find("output"));
     return model;

@@ -193,6 +193,54 @@ MeshData generate_annulus(const AnnulusParams& p) {
     return m;
 }
 
+MeshData generate_square_tube(const SquareTubeParams& p) {
+    require(p.width > 0 && p.length > 0, "tube width and length must be positive");
+    const bool quarter = std::abs(p.sector_deg - 90) < 1e-9;
+    require(quarter || std::abs(p.sector_deg - 360) < 1e-9, "tube sector must be 90 or 360 degrees");
+    require(p.divisions_width >= 1 && p.divisions_length >= 1, "tube divisions must be at least 1");
+    const Index faces = quarter ? 2 : 4;
+    const Index dw = p.divisions_width;
+    const ParamGrid g = make_param_grid(faces * dw, p.divisions_length, p.pattern, !quarter);
+    const Real half = 0.5 * p.width;
+    const Real dz = p.length / static_cast<Real>(p.divisions_length);
+    // Position along the perimeter: face k = floor(u / dw), fraction t along it. Tangents
+    // x_u x x_z point outwards on every face, so counter-clockwise in (u, z) is outwards.
+    auto perimeter = [&](Real u) -> Vec2 {
+        const Index k = std::min<Index>(static_cast<Index>(std::floor(u / static_cast<Real>(dw))), faces - 1);
+        const Real t = (u - static_cast<Real>(k * dw)) / static_cast<Real>(dw);
+        if (quarter)  // face 0: x = half, y 0 -> half; face 1: y = half, x half -> 0
+            return k == 0 ? Vec2(half, t * half) : Vec2(half - t * half, half);
+        const Real a = -half + t * p.width;
+        switch (k) {
+            case 0: return {half, a};
+            case 1: return {-a, half};
+            case 2: return {-half, -a};
+            default: return {a, -half};
+        }
+    };
+    MeshData m = map_grid(g, [&](Real u, Real v) {
+        const Vec2 xy = perimeter(u);
+        const Real z = v == static_cast<Real>(p.divisions_length) ? p.length : v * dz;
+        return Vec3(xy.x(), xy.y(), z);
+    });
+    auto& s = m.node_sets;
+    s["bottom"] = row_nodes(g, 0);
+    s["top"] = row_nodes(g, p.divisions_length);
+    std::vector<Index> corners;
+    for (Index k = quarter ? 1 : 0; k < faces; ++k) {
+        const auto c = column_nodes(g, k * dw);
+        corners.insert(corners.end(), c.begin(), c.end());
+    }
+    std::sort(corners.begin(), corners.end());
+    s["corners"] = corners;
+    if (quarter) {
+        s["y0"] = column_nodes(g, 0);
+        s["x0"] = column_nodes(g, 2 * dw);
+        for (Index n : s["x0"]) m.nodes[static_cast<std::size_t>(n)].x() = 0;  // exactly on the plane
+    }
+    return m;
+}
+
 Index spherical_cap_ring_segments(Real sector_deg, Index k) {
     if (!(sector_deg > 0 && sector_deg <= 360)) return 0;
     const Real sixty = sector_deg / 60.0;

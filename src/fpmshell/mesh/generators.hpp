@@ -86,6 +86,25 @@ struct AnnulusParams {
 };
 [[nodiscard]] MeshData generate_annulus(const AnnulusParams& p);
 
+/// Thin-walled square tube, axis along z from z = 0 to z = length, mid-surface walls at
+/// x = +-width/2 and y = +-width/2, normal outwards. sector_deg = 360: the whole tube (the
+/// perimeter starts at (width/2, -width/2) and runs counter-clockwise seen from +z);
+/// sector_deg = 90: the quarter x >= 0, y >= 0 (half of the wall x = width/2 from y = 0, then
+/// half of the wall y = width/2 to x = 0), for a model with two symmetry planes.
+/// divisions_width: divisions across each modelled face (a half wall in the quarter model).
+/// Node sets: bottom (z = 0), top (z = length), corners (the corner lines); quarter model also
+/// x0 (on the plane x = 0) and y0 (on the plane y = 0).
+/// Preconditions: width, length > 0; sector 90 or 360; divisions >= 1.
+struct SquareTubeParams {
+    Real width = 1;
+    Real length = 1;
+    Real sector_deg = 360;
+    Index divisions_width = 1;
+    Index divisions_length = 1;
+    DiagonalPattern pattern = DiagonalPattern::Right;
+};
+[[nodiscard]] MeshData generate_square_tube(const SquareTubeParams& p);
+
 /// Node and triangle counts a generator will produce (computed in floating point, so that the
 /// model reader can refuse absurd sizes before allocating anything).
 struct MeshSize {

@@ -113,15 +113,48 @@ struct Control {
     bool thickness_update = false;
 };
 
+/// One entry of `rigid_bodies`: a rigid impactor with a plane face (theory.md §8.3). It moves
+/// by the contact forces it receives; a `fixed` body has infinite mass and keeps its velocity.
+struct RigidBody {
+    std::string name;
+    Real mass = 0;                ///< 0 when fixed
+    bool fixed = false;           ///< infinite mass: moves at `velocity` whatever it meets
+    Vec3 point = Vec3::Zero();    ///< a point of the plane face at t = 0
+    Vec3 normal = Vec3::UnitZ();  ///< unit normal of the face, pointing towards the shell
+    Vec3 velocity = Vec3::Zero(); ///< initial velocity
+};
+
+enum class ContactType { Self, Rigid };
+enum class ContactMethod { LagrangeMultiplier, Penalty };
+
+/// One entry of `contact`. Self: every particle of the elements against every triangle of
+/// them (both faces, thickness offsets). Rigid: the particles of `nodes` against a body.
+struct ContactDefinition {
+    ContactType type = ContactType::Self;
+    ContactMethod method = ContactMethod::LagrangeMultiplier;
+    std::vector<Index> elements;  ///< self
+    std::vector<Index> nodes;     ///< rigid
+    Index body = -1;              ///< rigid: index into Model::rigid_bodies
+    /// self: pairs whose initial distance is below it are never in contact (0 = automatic,
+    /// 1.5 x the largest thickness; theory.md R8)
+    Real exclusion_radius = 0;
+    Real penalty_scale = 0.1;  ///< penalty: stiffness = scale x pair mass / dt^2
+    int max_iterations = 50;   ///< Lagrange multipliers: Gauss-Seidel sweeps per step
+};
+
 enum class Quantity {
     Ux, Uy, Uz, Umag, Vx, Vy, Vz, Ax, Ay, Az, Rx, Ry, Rz,
-    ReactionX, ReactionY, ReactionZ, ReactionMx, ReactionMy, ReactionMz, ForceX, ForceY, ForceZ
+    ReactionX, ReactionY, ReactionZ, ReactionMx, ReactionMy, ReactionMz, ForceX, ForceY, ForceZ,
+    // rigid bodies (rigid_<name>_<quantity>): displacement, velocity, acceleration, contact force
+    RigidUx, RigidUy, RigidUz, RigidVx, RigidVy, RigidVz, RigidAx, RigidAy, RigidAz,
+    RigidForceX, RigidForceY, RigidForceZ
 };
 enum class Reduce { Single, Sum, Max, Min, Mean };
 
 struct HistoryRequest {
     std::string name;
-    std::vector<Index> nodes;
+    std::vector<Index> nodes;  ///< empty for rigid-body quantities
+    Index body = -1;           ///< rigid-body quantities: index into Model::rigid_bodies
     Quantity quantity = Quantity::Uz;
     Reduce reduce = Reduce::Single;  ///< Single only when the set has one node
 };
@@ -150,6 +183,8 @@ struct Model {
     std::vector<BoundaryCondition> boundary;
     std::vector<Load> loads;
     std::vector<InitialVelocity> initial_conditions;
+    std::vector<RigidBody> rigid_bodies;
+    std::vector<ContactDefinition> contacts;
     Damping damping;
     Control control;
     OutputControl output;

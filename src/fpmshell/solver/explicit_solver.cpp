@@ -100,7 +100,59 @@ ExplicitSolver::ExplicitSolver(const Model& model) : model_(model), elements_(mo
         energy_.external_work += 0.5 * s_.mass[p] * s_.v[p].squaredNorm() +
                                  0.5 * s_.inertia[p] * s_.omega[p].squaredNorm();
     }
+    // Rigid bodies and contact (theory.md §8).
+    bodies_ = RigidBodyState::from_model(model);
+    for (const RigidBodyState& b : bodies_) energy_.external_work += 0.5 * b.mass * b.v.squaredNorm();
+    if (!model.contacts.empty()) {
+        inv_mass_.assign(np, Vec3::Zero());
+        for (std::size_t p = 0; p < np; ++p) {
+            if (prescribed_translation_[p] || !(s_.mass[p] > 0)) continue;
+            for (std::size_t d = 0; d < 3; ++d)
+                if (!fixed_[p][d]) inv_mass_[p][static_cast<Eigen::Index>(d)] = 1.0 / s_.mass[p];
+        }
+        std::vector<Real> thickness(model.triangles.size());
+        for (std::size_t e = 0; e < thickness.size(); ++e) thickness[e] = elements_.thickness(static_cast<Index>(e));
+        contact_ = std::make_unique<ContactSolver>(model, inv_mass_, thickness);
+    }
     energy_.kinetic = energy_.external_work;
+}
+
+Vec3 ExplicitSolver::body_acceleration(Index b) const {
+    const RigidBodyState& body = bodies_[static_cast<std::size_t>(b)];
+    if (dt_center_ <= 0) return Vec3::Zero();
+    return (body.v - body.v_prev) / dt_center_;
+}
+
+void ExplicitSolver::penalty_contact(Real dt_n, Real dt_new, Real c1) {
+    Real motion2 = 0;
+    for (std::size_t p = 0; p < s_.size(); ++p) motion2 = std::max(motion2, (s_.x[p] - s_.x_prev[p]).squaredNorm());
+    std::vector<Vec3> body_u(bodies_.size());
+    for (std::size_t b = 0; b < bodies_.size(); ++b) body_u[b] = bodies_[b].u;
+    contact_->penalty_forces(s_.x, s_.normal, body_u, bodies_, c1 * dt_n * dt_new, dt_n * dt_new,
+                             std::sqrt(motion2), steps_, s_.f_contact);
+}
+
+void ExplicitSolver::lagrange_contact(Real dt_n, Real dt_new, Real c1) {
+    // Predictor x* = x^n + dt v^{n+1/2}; the multipliers move it onto the admissible set and
+    // the velocities follow: v^{n+1/2} = (x^{n+1} - x^n) / dt (§8.3).
+    const std::size_t np = s_.size();
+    x_pred_.resize(np);
+    Real motion2 = 0;
+    for (std::size_t p = 0; p < np; ++p) {
+        const Vec3 dx = dt_new * s_.v[p];
+        x_pred_[p] = s_.x[p] + dx;
+        motion2 = std::max(motion2, dx.squaredNorm());
+    }
+    body_u_pred_.resize(bodies_.size());
+    for (std::size_t b = 0; b < bodies_.size(); ++b) body_u_pred_[b] = bodies_[b].u + dt_new * bodies_[b].v;
+    std::vector<Vec3> before_p = x_pred_;
+    const std::vector<Vec3> before_b = body_u_pred_;
+    contact_->enforce(s_.x, s_.normal, x_pred_, body_u_pred_, bodies_, c1 * dt_n * dt_new, dt_n * dt_new,
+                      std::sqrt(motion2), steps_, s_.f_contact);
+    for (std::size_t p = 0; p < np; ++p)
+        if (x_pred_[p] != before_p[p]) s_.v[p] += (x_pred_[p] - before_p[p]) / dt_new;
+    for (std::size_t b = 0; b < bodies_.size(); ++b)
+        if (body_u_pred_[b] != before_b[b]) bodies_[b].v += (body_u_pred_[b] - before_b[b]) / dt_new;
 }
 
 Real ExplicitSolver::curve_value(Index curve, Real t) const {
@@ -220,14 +272,27 @@ void ExplicitSolver::cycle(Real load_time, Real dt_new_cap, bool relaxation) {
     const Real a_m = relaxation ? 0.0 : model_.damping.mass;
     const Real c1 = 1.0 / (1.0 + 0.5 * a_m * dt_n), c2 = 1.0 - 0.5 * a_m * dt_n;
 
-    // 4 central difference (§6.6) with boundary conditions (§6.7); constraint reactions.
+    // Penalty contact forces at t_n (the Lagrange multipliers come after the update).
     const std::size_t np = s_.size();
+    for (RigidBodyState& b : bodies_) {
+        b.force_prev = b.force;
+        b.force.setZero();
+    }
+    if (contact_) {
+        for (std::size_t p = 0; p < np; ++p) {
+            s_.f_contact_prev[p] = s_.f_contact[p];
+            s_.f_contact[p].setZero();
+        }
+        if (contact_->has_penalty()) penalty_contact(dt_n, dt_new, c1);
+    }
+
+    // 4 central difference (§6.6) with boundary conditions (§6.7); constraint reactions.
     const Real t_half = load_time + (relaxation ? 0.0 : 0.5 * dt_new);
     const Real t_next = load_time + (relaxation ? 0.0 : dt_new);
     residual2_ = reference2_ = 0;
     Real kinetic = 0, damping_work = 0, ext_work = 0;
     for (std::size_t p = 0; p < np; ++p) {
-        const Vec3 force = s_.f_ext[p] - s_.f_int[p];
+        const Vec3 force = s_.f_ext[p] - s_.f_int[p] + s_.f_contact[p];
         const Real m = s_.mass[p];
         s_.v_prev[p] = s_.v[p];
         Vec3 v_new = c1 * (c2 * s_.v[p] + (dt_n / m) * force);  // v^{n+1/2}
@@ -298,6 +363,24 @@ void ExplicitSolver::cycle(Real load_time, Real dt_new_cap, bool relaxation) {
         }
         s_.reaction[p] += (m / (c1 * dt_n)) * (s_.v[p] - v_before);
     }
+    // Rigid bodies: v^{n+1/2} from the (penalty) contact force; a fixed body keeps its velocity.
+    for (RigidBodyState& b : bodies_) {
+        b.v_prev = b.v;
+        b.v += (dt_n * b.inv_mass) * b.force;
+    }
+    if (contact_ && contact_->has_lagrange()) lagrange_contact(dt_n, dt_new, c1);
+
+    Real contact_work = 0;
+    if (contact_)
+        for (std::size_t p = 0; p < np; ++p)
+            contact_work += 0.5 * (s_.f_contact_prev[p] + s_.f_contact[p]).dot(s_.x[p] - s_.x_prev[p]);
+    for (const RigidBodyState& b : bodies_) {
+        const Real body_work = 0.5 * (b.force_prev + b.force).dot(b.u - b.u_prev);
+        contact_work += body_work;
+        kinetic += 0.5 * b.mass * b.v_prev.dot(b.v);
+        if (b.inv_mass == 0) ext_work -= body_work;  // what drives a fixed body on
+    }
+    energy_.contact -= contact_work;  // dissipated (Lagrange multipliers) or stored (penalty)
     for (std::size_t p = 0; p < np; ++p) {
         // Energies at t_n: leapfrog kinetic energy, work of loads and reactions over
         // [t_{n-1}, t_n] (trapezoidal), mass-damping dissipation over dt_n.
@@ -322,6 +405,10 @@ void ExplicitSolver::cycle(Real load_time, Real dt_new_cap, bool relaxation) {
     energy_.damping += damping_work;
 
     // 5 positions x^{n+1} = x^n + dt v^{n+1/2}; rotation increments for the next path element.
+    for (RigidBodyState& b : bodies_) {
+        b.u_prev = b.u;
+        b.u += dt_new * b.v;
+    }
     for (std::size_t p = 0; p < np; ++p) {
         s_.x_prev[p] = s_.x[p];
         s_.x[p] += dt_new * s_.v[p];

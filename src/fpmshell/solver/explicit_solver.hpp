@@ -3,9 +3,12 @@
 // energy balance. Also dynamic relaxation (control.mode: relaxation) built on the same cycle.
 #pragma once
 
+#include <memory>
 #include <optional>
 #include <vector>
 
+#include "fpmshell/contact/contact_solver.hpp"
+#include "fpmshell/contact/rigid_body_state.hpp"
 #include "fpmshell/core/types.hpp"
 #include "fpmshell/model/model.hpp"
 #include "fpmshell/solver/energy_balance.hpp"
@@ -46,6 +49,14 @@ public:
     [[nodiscard]] const Model& model() const { return model_; }
     /// a^n = (v^{n+1/2} - v^{n-1/2}) / dt_n of the last cycle.
     [[nodiscard]] Vec3 acceleration(Index p) const;
+    /// Rigid bodies (model order): displacement at t_{n+1}, velocity v^{n+1/2}, contact force at t_n.
+    [[nodiscard]] const std::vector<RigidBodyState>& bodies() const { return bodies_; }
+    /// a^n of rigid body b.
+    [[nodiscard]] Vec3 body_acceleration(Index b) const;
+    /// Contact statistics (nullptr without contact).
+    [[nodiscard]] const ContactStatistics* contact_statistics() const {
+        return contact_ ? &contact_->statistics() : nullptr;
+    }
 
 private:
     struct Prescribed {
@@ -63,6 +74,10 @@ private:
     [[nodiscard]] Real curve_value(Index curve, Real t) const;
     [[nodiscard]] Real curve_integral(Index curve, Real t) const;
     void check_state() const;
+    /// Penalty contact forces at t_n (before the velocity update).
+    void penalty_contact(Real dt_n, Real dt_new, Real c1);
+    /// Lagrange-multiplier contact: corrects v^{n+1/2} so that x^{n+1} satisfies every gap.
+    void lagrange_contact(Real dt_n, Real dt_new, Real c1);
     /// Kinetic damping: moves the state back to the kinetic-energy peak bracketed by the last
     /// three half steps (Barnes 1988).
     void move_to_kinetic_energy_peak(Real ke_before, Real ke_peak, Real ke_after);
@@ -75,6 +90,10 @@ private:
     std::vector<std::uint8_t> prescribed_translation_, prescribed_rotation_;
     std::vector<Prescribed> prescribed_;
     std::vector<Vec3> prescribed_rotation_applied_;  ///< relaxation: rotation imposed so far
+    std::vector<RigidBodyState> bodies_;
+    std::unique_ptr<ContactSolver> contact_;     ///< null without contact definitions
+    std::vector<Vec3> inv_mass_;                 ///< per particle and direction; 0 where fixed or prescribed
+    std::vector<Vec3> x_pred_, body_u_pred_;     ///< contact scratch: predicted x^{n+1}
     Real time_ = 0;
     Real dt_half_ = 0;       ///< dt_{n-1/2} (0 before the first step)
     Real dt_half_prev_ = 0;  ///< the step before dt_half_

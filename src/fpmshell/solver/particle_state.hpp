@@ -26,6 +26,7 @@ struct ParticleState {
     std::vector<Vec3> f_ext_prev, m_ext_prev;
     std::vector<Vec3> reaction, reaction_moment;  ///< constraint force / moment at t_n
     std::vector<Vec3> reaction_prev, reaction_moment_prev;
+    std::vector<Vec3> f_contact, f_contact_prev;  ///< contact force at t_n, t_{n-1} (§8)
     std::vector<Real> mass;       ///< m_alpha (§6.1)
     std::vector<Real> inertia;    ///< J_alpha (§6.2, option B)
     std::vector<std::uint8_t> full_rotation;  ///< kink particle: 3 rotations, no projection (§1.3)

@@ -1,0 +1,127 @@
+// Contact of the shell with itself and with rigid bodies (theory.md §8): detection by a bucket
+// grid rebuilt at a cadence set by the fastest particle, gaps between the thickness-offset
+// surfaces, and two ways to enforce them:
+//  - Lagrange multipliers, forward increment (default; Carpenter, Taylor & Katona 1991): the
+//    contact forces at t_n are those that make the predicted positions x^{n+1} satisfy every
+//    gap, found by projected Gauss-Seidel sweeps (§8.3). They do not reduce the stable step and
+//    make each impact perfectly plastic in the normal direction.
+//  - Penalty (fallback): a force proportional to the penetration at t_n, stiffness = scale x
+//    pair mass / dt^2 (like LS-DYNA's SOFT = 1), elastic.
+// The solver owns the contact forces it computes; the caller adds them to the particles.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "fpmshell/contact/bucket_grid.hpp"
+#include "fpmshell/contact/rigid_body_state.hpp"
+#include "fpmshell/core/types.hpp"
+#include "fpmshell/model/model.hpp"
+
+namespace fpmshell {
+
+struct ContactStatistics {
+    long active = 0;          ///< contact forces (constraints with a force) of the last step
+    long max_active = 0;      ///< most at any step
+    int sweeps = 0;           ///< Gauss-Seidel sweeps of the last step
+    int max_sweeps = 0;
+    long unconverged_steps = 0;  ///< steps that ended at max_iterations
+    long searches = 0;           ///< broad-phase rebuilds
+    /// Largest penetration of a thickness-offset surface left at the end of any step, and
+    /// the same divided by the thickness of the slave particle.
+    Real max_penetration = 0;
+    Real max_penetration_ratio = 0;
+    long max_penetration_step = -1;
+    Index max_penetration_particle = -1;
+    Index max_penetration_element = -1;  ///< -1 when it was against a rigid body
+    double seconds = 0;                  ///< wall time spent in contact (search + enforcement)
+};
+
+class ContactSolver {
+public:
+    /// inv_mass: per particle and direction, 0 where the motion is fixed or prescribed.
+    /// element_thickness: per element of the model.
+    ContactSolver(const Model& model, const std::vector<Vec3>& inv_mass,
+                  const std::vector<Real>& element_thickness);
+
+    [[nodiscard]] bool empty() const { return definitions_.empty(); }
+    [[nodiscard]] bool has_penalty() const { return has_penalty_; }
+    [[nodiscard]] bool has_lagrange() const { return has_lagrange_; }
+
+    /// Penalty definitions: forces at t_n from the positions x^n, added to f_contact and to
+    /// the bodies' force. beta_* = c1 dt_n dt_{n+1/2} (the position change per unit force
+    /// times the mass) of the particles and of the bodies. motion: the largest particle
+    /// displacement since the last call (sets the search cadence).
+    void penalty_forces(const std::vector<Vec3>& x, const std::vector<Vec3>& normal,
+                        const std::vector<Vec3>& body_u, std::vector<RigidBodyState>& bodies,
+                        Real beta_particle, Real beta_body, Real motion, long step,
+                        std::vector<Vec3>& f_contact);
+
+    /// Lagrange-multiplier definitions: corrects the predicted positions x_pred (particles)
+    /// and body_u_pred (bodies) so that no gap is negative at t_{n+1}, and adds the forces
+    /// that do it (acting at t_n) to f_contact and to the bodies' force. x: positions x^n.
+    void enforce(const std::vector<Vec3>& x, const std::vector<Vec3>& normal, std::vector<Vec3>& x_pred,
+                 std::vector<Vec3>& body_u_pred, std::vector<RigidBodyState>& bodies, Real beta_particle,
+                 Real beta_body, Real motion, long step, std::vector<Vec3>& f_contact);
+
+    [[nodiscard]] const ContactStatistics& statistics() const { return stats_; }
+
+private:
+    /// One gap constraint: slave particle s against the point sum xi_k x_k of triangle
+    /// `element` (or the face of rigid body `body`), along the unit normal n (frozen at the
+    /// predictor, theory.md §8.2): g = n.(x_s - sum xi_k x_k) - offset.
+    struct Constraint {
+        Index slave = -1;
+        Index element = -1;  ///< -1 for a rigid body
+        Index body = -1;
+        std::array<Index, 3> master{-1, -1, -1};
+        std::array<Real, 3> xi{};
+        Vec3 normal = Vec3::Zero();
+        Real offset = 0;
+        Real gap = 0;       ///< at the positions it was built on
+        Real weight = 0;    ///< W = sum beta (n.M^-1 n) of its particles and body
+        Real lambda = 0;
+        Real thickness = 1;  ///< slave thickness, for penetration ratios
+    };
+
+    struct Definition {
+        ContactDefinition def;
+        std::vector<Index> slaves;           ///< self: nodes of the elements
+        std::vector<Real> slave_offset;      ///< h_s / 2 per slave
+        Real max_offset = 0;                 ///< largest (h_s + h_e) / 2
+        Real exclusion_radius = 0;
+        Real margin = 0;                     ///< extra search distance
+        Real travelled = 0;                  ///< relative motion bound since the last search
+        bool searched = false;
+        std::vector<std::int64_t> candidate_start;  ///< CSR per slave
+        std::vector<Index> candidates;              ///< triangles
+    };
+
+    void search(Definition& d, const std::vector<Vec3>& x);
+    /// Self-contact constraints of definition d: geometry at x (side of each pair, §8.2) and
+    /// gaps at y (the predictor for Lagrange multipliers, x itself for the penalty).
+    void collect_self(const Definition& d, const std::vector<Vec3>& x, const std::vector<Vec3>& y,
+                      const std::vector<Vec3>& normal, bool lagrange, std::vector<Constraint>& out,
+                      std::vector<Constraint>& closed);
+    /// Rigid-face constraints at positions y; lagrange: also the particles near the face.
+    void collect_rigid(const Definition& d, const std::vector<Vec3>& y, const std::vector<Vec3>& body_u,
+                       bool lagrange, std::vector<Constraint>& out) const;
+    [[nodiscard]] Real weight(const Constraint& c, Real beta_particle, Real beta_body,
+                              const std::vector<RigidBodyState>& bodies) const;
+    void note_penetration(Real penetration, const Constraint& c, long step);
+    void prepare_search(Definition& d, const std::vector<Vec3>& x, Real motion);
+
+    const Model& model_;
+    std::vector<Vec3> inv_mass_;
+    std::vector<Real> element_thickness_;
+    std::vector<Real> node_thickness_;
+    std::vector<Definition> definitions_;
+    bool has_penalty_ = false, has_lagrange_ = false;
+    BucketGrid grid_;
+    std::vector<Vec3> box_lo_, box_hi_;  ///< scratch for the grid
+    std::vector<Constraint> constraints_, closed_;  ///< scratch, reused every step
+    ContactStatistics stats_;
+};
+
+}  // namespace fpmshell
