@@ -89,6 +89,8 @@ private:
         ContactDefinition def;
         std::vector<Index> slaves;           ///< self: nodes of the elements
         std::vector<Real> slave_offset;      ///< h_s / 2 per slave
+        std::vector<std::int64_t> neighbour_start;  ///< CSR per slave: its edge neighbours
+        std::vector<Index> neighbours;
         Real max_offset = 0;                 ///< largest (h_s + h_e) / 2
         Real exclusion_radius = 0;
         Real margin = 0;                     ///< extra search distance

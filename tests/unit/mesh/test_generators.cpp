@@ -197,6 +197,49 @@ TEST(Generators, ClosedCylinderMergesTheSeam) {
     }
 }
 
+// Square tube: counts, area exactly perimeter x length, every normal outwards (away from the
+// axis, along the wall normal), the seam of the whole tube merged, and the sets.
+TEST(Generators, SquareTubeQuarterAndWhole) {
+    SquareTubeParams p;
+    p.width = 0.1;
+    p.length = 0.4;
+    p.divisions_width = 5;
+    p.divisions_length = 8;
+    for (const Real sector : {90.0, 360.0}) {
+        p.sector_deg = sector;
+        const bool quarter = sector == 90.0;
+        const MeshData m = generate_square_tube(p);
+        const Index around = quarter ? 10 : 20;
+        EXPECT_EQ(m.nodes.size(), static_cast<std::size_t>((quarter ? around + 1 : around) * 9));
+        EXPECT_EQ(m.triangles.size(), static_cast<std::size_t>(2 * around * 8));
+        EXPECT_NEAR(total_area(m), (quarter ? 0.1 : 0.4) * 0.4, 1e-14);
+        for (std::size_t e = 0; e < m.triangles.size(); ++e) {
+            const Vec3 c = centroid_of(m, e);
+            const Vec3 n = normal_of(m, e).normalized();
+            // the wall normal is +-x or +-y, pointing the way the centroid lies from the axis
+            EXPECT_NEAR(std::abs(n.x()) + std::abs(n.y()), 1.0, 1e-12);
+            EXPECT_GT(n.dot(Vec3(c.x(), c.y(), 0)), 0.0);
+        }
+        EXPECT_EQ(boundary_edge_count(m), static_cast<std::size_t>(quarter ? 2 * around + 16 : 2 * around));
+        const auto& s = m.node_sets;
+        EXPECT_EQ(s.at("bottom").size(), static_cast<std::size_t>(quarter ? around + 1 : around));
+        for (const Index i : s.at("top")) EXPECT_EQ(m.nodes[static_cast<std::size_t>(i)].z(), 0.4);
+        for (const Index i : s.at("corners")) {
+            const Vec3& x = m.nodes[static_cast<std::size_t>(i)];
+            EXPECT_NEAR(std::abs(x.x()), 0.05, 1e-15);
+            EXPECT_NEAR(std::abs(x.y()), 0.05, 1e-15);
+        }
+        EXPECT_EQ(s.at("corners").size(), static_cast<std::size_t>(quarter ? 9 : 36));
+        EXPECT_EQ(s.count("x0"), quarter ? 1U : 0U);
+        if (quarter) {
+            for (const Index i : s.at("x0")) EXPECT_EQ(m.nodes[static_cast<std::size_t>(i)].x(), 0.0);
+            for (const Index i : s.at("y0")) EXPECT_EQ(m.nodes[static_cast<std::size_t>(i)].y(), 0.0);
+            EXPECT_EQ(s.at("x0").size(), 9U);
+        }
+        for (const auto& [name, set] : s) EXPECT_TRUE(is_sorted_unique(set)) << name;
+    }
+}
+
 // Hexagonal caps: n rings give 1 + 3 n (n + 1) nodes and 6 n^2 triangles (the paper's meshes:
 // 127, 469 and 631 particles), every interior node has 6 triangles (the classic structured
 // hexagonal pattern), normals point outwards and the area converges to 2 pi R^2 (1 - cos a)
@@ -347,6 +390,9 @@ TEST(Generators, RejectBadParameters) {
     AnnulusParams ann;
     ann.outer_radius = ann.inner_radius;
     EXPECT_THROW((void)generate_annulus(ann), std::invalid_argument);
+    SquareTubeParams tube;
+    tube.sector_deg = 180;
+    EXPECT_THROW((void)generate_square_tube(tube), std::invalid_argument);
 }
 
 }  // namespace

@@ -1,0 +1,262 @@
+#!/usr/bin/env python3
+"""Thin-walled square tube struck axially by a heavy rigid mass (benchmarks.md 5.3, issue 4).
+
+Quarter model of examples/square_tube/model.yaml (steel 100 x 100 x 3 mm, 400 mm long,
+Johnson-Cook with mixed hardening, 800 kg at 9.5 m/s, self-contact and a rigid striker).
+Checks against theory: the mean crushing force of Abramowicz & Jones with the rate factor of
+the model's own Johnson-Cook law, the fold length 2H, the energy balance, and the largest
+contact penetration. Reports the force and end-acceleration histories, deformed shapes, fold
+count, final crush and peak plastic strains. See README.md. Protocol: validation/README.md.
+"""
+import math
+import os
+import sys
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(HERE, "..", "..", "tools"))
+import fpmv  # noqa: E402
+
+PROBLEM = "square_tube"
+MODEL = os.path.join(HERE, "..", "..", "examples", "square_tube", "model.yaml")
+# (divisions across each modelled face, divisions along the tube); the paper's mesh is (30, 128)
+MESHES_FULL = [(15, 64), (20, 86)]
+MESH_QUICK = (8, 32)
+END_QUICK = 3.0e-3     # the first fold forms (a few force peaks)
+END_FULL = 0.045       # the block stops at about 40 ms
+THREADS = 2
+
+# Geometry and material of the model (SI)
+B, T, L = 0.1, 0.003, 0.4
+M_QUARTER, V0 = 200.0, 9.5
+JC_A, JC_B, JC_N, JC_C, EPS0 = 350e6, 275e6, 0.36, 0.022, 1.0
+
+# Tolerances (issue 4): the mean crushing force within 25 % of Abramowicz-Jones (the formula
+# itself scatters by about that much against tests), the fold length within 25 % of 2H, the
+# energy balance within 2 %, and no particle inside a contact surface by 10 % of the wall.
+TOL_FORCE = 0.25
+TOL_FOLD = 0.25
+TOL_ENERGY = 0.02
+TOL_PENETRATION = 0.10
+# Quick variant (make test): regression values of this version on the coarse tube at 3 ms,
+# within 3 % (a change of the element, the material or the contact that moves them further
+# must be explained); the energy balance within 0.5 %.
+QUICK_REFERENCE = {"striker velocity at 3 ms [m/s]": None, "largest striker force [kN]": None}
+TOL_QUICK = 0.03
+TOL_ENERGY_QUICK = 0.005
+
+
+def flow_stress_mean(eps_max):
+    """Energy-equivalent Johnson-Cook flow stress: the mean of A + B eps^n over 0..eps_max."""
+    return JC_A + JC_B * eps_max ** JC_N / (1 + JC_N)
+
+
+def abramowicz_jones(sigma0, factor):
+    """Mean crushing force of a square tube (Abramowicz & Jones 1984), full tube [N]."""
+    return 13.06 * sigma0 * T ** (5.0 / 3.0) * B ** (1.0 / 3.0) * factor
+
+
+def fold_length_theory():
+    """2H = 2 x 0.99 t^(1/3) b^(2/3) (Abramowicz & Jones)."""
+    return 2 * 0.99 * T ** (1.0 / 3.0) * B ** (2.0 / 3.0)
+
+
+def strain_rate():
+    """Mean strain rate of the folding hinges, 0.33 v0 / b (benchmarks.md 5.3)."""
+    return 0.33 * V0 / B
+
+
+def crush_summary(hist):
+    """Final crush, stop time and mean force from the striker history (quarter -> full)."""
+    t, u, v, f = hist["time"], hist["striker_uz"], hist["striker_vz"], hist["striker_force"]
+    stop = next((i for i in range(len(v)) if v[i] >= 0), len(v) - 1)
+    crush = -u[stop]
+    ke_lost = 0.5 * M_QUARTER * (V0 ** 2 - v[stop] ** 2)
+    return {"stop_time": t[stop], "crush": crush, "stopped": v[stop] >= 0,
+            "mean_force": 4 * ke_lost / crush if crush > 0 else 0.0,
+            "peak_force": 4 * max(f), "final_velocity": v[-1]}
+
+
+def fold_analysis(frame_path):
+    """Folds along the middle line of the wall x = b/2 (the symmetry plane y = 0) in the last
+    frame: lateral deflection w(z0) = x - b/2 against the initial height z0. Lobes are the runs
+    of |w| > t/2 of one sign; a fold is an outward and an inward lobe, so 2H is the spacing of
+    the outward lobes (initial coordinates)."""
+    f = fpmv.read_vtu(frame_path)
+    pts, disp = f["points"], f["displacement"]
+    line = []
+    for p, d in zip(pts, disp):
+        x0 = [p[k] - d[k] for k in range(3)]
+        if abs(x0[1]) < 1e-9 and abs(x0[0] - B / 2) < 1e-9:
+            line.append((x0[2], p[0] - B / 2))
+    line.sort()
+    lobes = []  # (sign, z0 of the extreme)
+    current = None
+    for z0, w in line:
+        s = 1 if w > T / 2 else -1 if w < -T / 2 else 0
+        if s == 0:
+            current = None
+            continue
+        if current is None or current[0] != s:
+            current = [s, z0, abs(w)]
+            lobes.append(current)
+        elif abs(w) > current[2]:
+            current[1], current[2] = z0, abs(w)
+    outward = [z for s, z, _ in lobes if s > 0]
+    spacing = [abs(outward[i + 1] - outward[i]) for i in range(len(outward) - 1)]
+    return {"lobes": len(lobes), "folds": len(outward),
+            "fold_length": sum(spacing) / len(spacing) if spacing else float("nan"),
+            "line": line}
+
+
+def frames_by_time(out_dir):
+    """(time, path) of the VTU frames of a run, from fields.pvd."""
+    import re
+    text = open(os.path.join(out_dir, "fields.pvd")).read()
+    return [(float(t), os.path.join(out_dir, f))
+            for t, f in re.findall(r'timestep="([^"]+)"[^>]*file="([^"]+)"', text)]
+
+
+def main():
+    args = fpmv.parse_args(__doc__)
+    meshes = [MESH_QUICK] if args.quick else MESHES_FULL
+    suffix = "-quick" if args.quick else ""
+    plot = fpmv.plot_path(PROBLEM + suffix + ".png")
+    shapes = fpmv.plot_path(PROBLEM + suffix + "-shapes.png")
+    plot_name = os.path.basename(plot)
+    rows, runs = [], {}
+    p_aj_jc = abramowicz_jones(flow_stress_mean(0.3), 1 + JC_C * math.log(strain_rate() / EPS0))
+    p_aj_cs = abramowicz_jones(JC_A, 1 + (strain_rate() / 40.4) ** (1 / 5.0))
+    two_h = fold_length_theory()
+    for nw, nl in meshes:
+        name = "%dx%d" % (nw, nl)
+        over = ["mesh.divisions_width=%d" % nw, "mesh.divisions_length=%d" % nl,
+                "control.end_time=%g" % (END_QUICK if args.quick else END_FULL)]
+        res, wall = fpmv.run(args.fpmshell, MODEL, os.path.join(args.out, name), over, threads=THREADS)
+        runs[name] = res
+        s, h, e = res["summary"], res["history"], res["energy"]
+        tested = (nw, nl) == meshes[-1]
+        mesh = "%s (%d particles, %d elements)" % (name, s["particles"], s["elements"])
+        common = dict(mesh=mesh, wall=wall, plot=plot_name)
+        c = s["contact"]
+        rows.append(fpmv.row(PROBLEM, "largest contact penetration / wall thickness", 0.0,
+                             c["max_penetration_ratio"], TOL_PENETRATION if tested else None,
+                             relative=False, note="step %d, particle %d" % (
+                                 c["max_penetration_step"], c["max_penetration_particle"]), **common))
+        rows.append(fpmv.row(PROBLEM, "energy balance error", 0.0, s["energy_error"],
+                             (TOL_ENERGY_QUICK if args.quick else TOL_ENERGY) if tested else None,
+                             relative=False, **common))
+        rows.append(fpmv.row(PROBLEM, "contact share of the time loop", 0.0, c["share_of_time_loop"],
+                             None, relative=False, note="%.1f s of %.1f s; report only" % (
+                                 c["seconds"], s["wall_seconds"]), **common))
+        cs = crush_summary(h)
+        if args.quick:
+            got = {"striker velocity at 3 ms [m/s]": h["striker_vz"][-1],
+                   "largest striker force [kN]": cs["peak_force"] / 1e3}
+            for q, ref in QUICK_REFERENCE.items():
+                rows.append(fpmv.row(PROBLEM, "regression: " + q, ref if ref else got[q], got[q],
+                                     TOL_QUICK if ref else None, **common))
+            continue
+        rows.append(fpmv.row(PROBLEM, "mean crushing force (full tube) vs Abramowicz-Jones, JC rate",
+                             p_aj_jc / 1e3, cs["mean_force"] / 1e3, TOL_FORCE if tested else None,
+                             unit="kN", note="energy of the block / final crush; sigma0 = mean JC "
+                             "flow stress to eps 0.3 (%.0f MPa), factor 1 + C ln(0.33 v0/b)" % (
+                                 flow_stress_mean(0.3) / 1e6), **common))
+        rows.append(fpmv.row(PROBLEM, "mean crushing force vs Abramowicz-Jones, Cowper-Symonds",
+                             p_aj_cs / 1e3, cs["mean_force"] / 1e3, None, unit="kN",
+                             note="sigma0 = A, mild steel D = 40.4/s, q = 5 (not the model's law); "
+                             "report only", **common))
+        frames = frames_by_time(os.path.join(args.out, name))
+        folds = fold_analysis(frames[-1][1])
+        rows.append(fpmv.row(PROBLEM, "fold length 2H (wall middle line)", two_h, folds["fold_length"],
+                             TOL_FOLD if tested else None, unit="m",
+                             note="%d folds, %d lobes" % (folds["folds"], folds["lobes"]), **common))
+        rows.append(fpmv.row(PROBLEM, "final crush", 0.0, cs["crush"], None, relative=False, unit="m",
+                             note="block stopped at %.2f ms%s; report only" % (
+                                 cs["stop_time"] * 1e3, "" if cs["stopped"] else " (NOT stopped)"),
+                             **common))
+        rows.append(fpmv.row(PROBLEM, "peak striker force (full tube)", 0.0, cs["peak_force"] / 1e3,
+                             None, relative=False, unit="kN", note="report only", **common))
+        ps = s["plastic_strain"]
+        rows.append(fpmv.row(PROBLEM, "peak plastic strain, outer surface", 1.502, ps["max_top"], None,
+                             note="the paper: 1.502 at 13.4 ms (which surface unclear); report only",
+                             **common))
+        rows.append(fpmv.row(PROBLEM, "peak plastic strain, inner surface", 1.348, ps["max_bottom"], None,
+                             note="the paper: 1.348 at 13.4 ms; report only", **common))
+        ke0 = e["external_work"][0]
+        last = {k: v[-1] for k, v in e.items()}
+        rows.append(fpmv.row(PROBLEM, "share of the impact energy in plastic work", 1.0,
+                             last["plastic"] / ke0, None,
+                             note="kinetic %.3f, elastic %.3f, contact %.3f of it at the end; report only" % (
+                                 last["kinetic"] / ke0, (last["internal"] - last["plastic"]) / ke0,
+                                 last["contact"] / ke0), **common))
+    if not args.quick:
+        finest = "%dx%d" % meshes[-1]
+        draw_shapes(shapes, runs, os.path.join(args.out, finest))
+    draw(plot, runs, p_aj_jc)
+    return fpmv.finish(args.out, rows)
+
+
+def draw(path, runs, p_aj):
+    plt = fpmv.pyplot()
+    fig, (ax1, ax2) = plt.subplots(2, 1, figsize=(9, 7), sharex=True)
+    for name, res in sorted(runs.items()):
+        h = res["history"]
+        t = [x * 1e3 for x in h["time"]]
+        ax1.plot(t, [4 * f / 1e3 for f in h["striker_force"]], lw=0.8, label="striker force, mesh " + name)
+        ax2.plot(t, [a / 9.81 for a in h["a_end_az"]], lw=0.6, label="point A, mesh " + name)
+        cs = crush_summary(h)
+        ax1.axhline(cs["mean_force"] / 1e3, ls="--", lw=0.8, color="k")
+    ax1.axhline(p_aj / 1e3, ls=":", lw=1.2, color="r", label="Abramowicz-Jones (JC rate factor)")
+    ax1.set_ylabel("force on the block, full tube [kN]")
+    ax1.legend(fontsize=8)
+    ax1.grid(alpha=0.3)
+    ax2.set_ylabel("axial acceleration at A [g]")
+    ax2.set_xlabel("time [ms]")
+    ax2.legend(fontsize=8)
+    ax2.grid(alpha=0.3)
+    fig.suptitle("Square tube 100 x 100 x 3 mm, 800 kg at 9.5 m/s (dashed: mean force)")
+    fig.tight_layout()
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
+
+
+def draw_shapes(path, runs, out_dir, times=(3.5e-3, 9.6e-3, 12.8e-3, 17.4e-3)):
+    """The whole tube (the quarter mirrored) at the paper's four times, coloured by the
+    equivalent plastic strain of the outer surface."""
+    plt = fpmv.pyplot()
+    from mpl_toolkits.mplot3d.art3d import Poly3DCollection
+    import matplotlib.cm as cm
+    frames = frames_by_time(out_dir)
+    fig = plt.figure(figsize=(14, 5.5))
+    for k, want in enumerate(times):
+        tf, fp = min(frames, key=lambda f: abs(f[0] - want))
+        d = fpmv.read_vtu(fp)
+        pts = d["points"]
+        conn = d["connectivity"]
+        ep = d["plastic_strain_top"]
+        tris = [conn[i:i + 3] for i in range(0, len(conn), 3)]
+        polys, colors = [], []
+        for sx in (1, -1):
+            for sy in (1, -1):
+                for e, tri in enumerate(tris):
+                    polys.append([(sx * pts[i][0] * 1e3, sy * pts[i][1] * 1e3, pts[i][2] * 1e3) for i in tri])
+                    colors.append(min(ep[e] / 1.0, 1.0))
+        ax = fig.add_subplot(1, len(times), k + 1, projection="3d")
+        pc = Poly3DCollection(polys, facecolors=cm.viridis(colors), edgecolors="none")
+        ax.add_collection3d(pc)
+        ax.set_xlim(-80, 80)
+        ax.set_ylim(-80, 80)
+        ax.set_zlim(0, 400)
+        ax.set_box_aspect((1, 1, 2.5))
+        ax.view_init(elev=12, azim=-60)
+        ax.set_title("t = %.1f ms" % (tf * 1e3), fontsize=10)
+        ax.set_axis_off()
+    sm = cm.ScalarMappable(cmap="viridis")
+    sm.set_clim(0, 1.0)
+    fig.colorbar(sm, ax=fig.axes, shrink=0.6, label="equivalent plastic strain, outer surface (clipped at 1)")
+    fig.savefig(path, dpi=100)
+    plt.close(fig)
+
+
+if __name__ == "__main__":
+    sys.exit(main())
