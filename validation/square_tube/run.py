@@ -23,7 +23,6 @@ MESHES_FULL = [(15, 64), (20, 86)]
 MESH_QUICK = (8, 32)
 END_QUICK = 3.0e-3     # the first fold forms (a few force peaks)
 END_FULL = 0.045       # the block stops at about 40 ms
-THREADS = 2
 
 # Geometry and material of the model (SI)
 B, T, L = 0.1, 0.003, 0.4
@@ -37,10 +36,11 @@ TOL_FORCE = 0.25
 TOL_FOLD = 0.25
 TOL_ENERGY = 0.02
 TOL_PENETRATION = 0.10
+TOL_CONTACT_ENERGY = 0.005
 # Quick variant (make test): regression values of this version on the coarse tube at 3 ms,
 # within 3 % (a change of the element, the material or the contact that moves them further
 # must be explained); the energy balance within 0.5 %.
-QUICK_REFERENCE = {"striker velocity at 3 ms [m/s]": None, "largest striker force [kN]": None}
+QUICK_REFERENCE = {"striker velocity at 3 ms [m/s]": -8.47357, "largest striker force [kN]": 525.357}
 TOL_QUICK = 0.03
 TOL_ENERGY_QUICK = 0.005
 
@@ -78,9 +78,10 @@ def crush_summary(hist):
 
 def fold_analysis(frame_path):
     """Folds along the middle line of the wall x = b/2 (the symmetry plane y = 0) in the last
-    frame: lateral deflection w(z0) = x - b/2 against the initial height z0. Lobes are the runs
-    of |w| > t/2 of one sign; a fold is an outward and an inward lobe, so 2H is the spacing of
-    the outward lobes (initial coordinates)."""
+    frame: lateral deflection w(z0) = x - b/2 against the initial height z0. A lobe is a run of
+    one sign with |w| above 30 % of the largest (the crushed lobes stand out by 10-20 mm; the
+    gentle bulge of the uncrushed part is left out); a fold is an outward and an inward lobe,
+    so 2H is the spacing of successive lobes of the same sign (initial coordinates)."""
     f = fpmv.read_vtu(frame_path)
     pts, disp = f["points"], f["displacement"]
     line = []
@@ -89,10 +90,11 @@ def fold_analysis(frame_path):
         if abs(x0[1]) < 1e-9 and abs(x0[0] - B / 2) < 1e-9:
             line.append((x0[2], p[0] - B / 2))
     line.sort()
-    lobes = []  # (sign, z0 of the extreme)
+    threshold = 0.3 * max(abs(w) for _, w in line)
+    lobes = []  # [sign, z0 of the extreme, |w| there]
     current = None
     for z0, w in line:
-        s = 1 if w > T / 2 else -1 if w < -T / 2 else 0
+        s = 1 if w > threshold else -1 if w < -threshold else 0
         if s == 0:
             current = None
             continue
@@ -101,9 +103,11 @@ def fold_analysis(frame_path):
             lobes.append(current)
         elif abs(w) > current[2]:
             current[1], current[2] = z0, abs(w)
-    outward = [z for s, z, _ in lobes if s > 0]
-    spacing = [abs(outward[i + 1] - outward[i]) for i in range(len(outward) - 1)]
-    return {"lobes": len(lobes), "folds": len(outward),
+    spacing = []
+    for sign in (1, -1):
+        z = [lz for s, lz, _ in lobes if s == sign]
+        spacing += [abs(z[i + 1] - z[i]) for i in range(len(z) - 1)]
+    return {"lobes": len(lobes), "folds": len(lobes) / 2.0,
             "fold_length": sum(spacing) / len(spacing) if spacing else float("nan"),
             "line": line}
 
@@ -127,11 +131,19 @@ def main():
     p_aj_jc = abramowicz_jones(flow_stress_mean(0.3), 1 + JC_C * math.log(strain_rate() / EPS0))
     p_aj_cs = abramowicz_jones(JC_A, 1 + (strain_rate() / 40.4) ** (1 / 5.0))
     two_h = fold_length_theory()
-    for nw, nl in meshes:
-        name = "%dx%d" % (nw, nl)
+    # The meshes run side by side, one thread each (the whole study fits the 2-core CI machine).
+    from concurrent.futures import ThreadPoolExecutor
+
+    def one(mesh):
+        nw, nl = mesh
         over = ["mesh.divisions_width=%d" % nw, "mesh.divisions_length=%d" % nl,
                 "control.end_time=%g" % (END_QUICK if args.quick else END_FULL)]
-        res, wall = fpmv.run(args.fpmshell, MODEL, os.path.join(args.out, name), over, threads=THREADS)
+        return fpmv.run(args.fpmshell, MODEL, os.path.join(args.out, "%dx%d" % mesh), over, threads=1)
+
+    with ThreadPoolExecutor(max_workers=len(meshes)) as pool:
+        results = list(pool.map(one, meshes))
+    for (nw, nl), (res, wall) in zip(meshes, results):
+        name = "%dx%d" % (nw, nl)
         runs[name] = res
         s, h, e = res["summary"], res["history"], res["energy"]
         tested = (nw, nl) == meshes[-1]
@@ -145,6 +157,16 @@ def main():
         rows.append(fpmv.row(PROBLEM, "energy balance error", 0.0, s["energy_error"],
                              (TOL_ENERGY_QUICK if args.quick else TOL_ENERGY) if tested else None,
                              relative=False, **common))
+        # Contact may dissipate energy (each impact is perfectly plastic) but must not create it:
+        # a pair pushed out of a penetration against its force would (0.5 % allowed: the gaps
+        # are linearised at the predictor).
+        ke0 = e["external_work"][0]
+        r = fpmv.row(PROBLEM, "contact energy / impact energy (must not be negative)", 0.0,
+                     e["contact"][-1] / ke0, TOL_CONTACT_ENERGY if tested else None, relative=False,
+                     note="%d pairs held inside" % c["held_penetrations"], **common)
+        if tested:
+            r["pass"] = r["value"] >= -TOL_CONTACT_ENERGY
+        rows.append(r)
         rows.append(fpmv.row(PROBLEM, "contact share of the time loop", 0.0, c["share_of_time_loop"],
                              None, relative=False, note="%.1f s of %.1f s; report only" % (
                                  c["seconds"], s["wall_seconds"]), **common))
@@ -169,7 +191,8 @@ def main():
         folds = fold_analysis(frames[-1][1])
         rows.append(fpmv.row(PROBLEM, "fold length 2H (wall middle line)", two_h, folds["fold_length"],
                              TOL_FOLD if tested else None, unit="m",
-                             note="%d folds, %d lobes" % (folds["folds"], folds["lobes"]), **common))
+                             note="%g folds (%d lobes) in the final shape" % (folds["folds"], folds["lobes"]),
+                             **common))
         rows.append(fpmv.row(PROBLEM, "final crush", 0.0, cs["crush"], None, relative=False, unit="m",
                              note="block stopped at %.2f ms%s; report only" % (
                                  cs["stop_time"] * 1e3, "" if cs["stopped"] else " (NOT stopped)"),
@@ -182,7 +205,6 @@ def main():
                              **common))
         rows.append(fpmv.row(PROBLEM, "peak plastic strain, inner surface", 1.348, ps["max_bottom"], None,
                              note="the paper: 1.348 at 13.4 ms; report only", **common))
-        ke0 = e["external_work"][0]
         last = {k: v[-1] for k, v in e.items()}
         rows.append(fpmv.row(PROBLEM, "share of the impact energy in plastic work", 1.0,
                              last["plastic"] / ke0, None,

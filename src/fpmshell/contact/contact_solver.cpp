@@ -166,19 +166,17 @@ void ContactSolver::search(Definition& d, const std::vector<Vec3>& x) {
 }
 
 void ContactSolver::collect_self(const Definition& d, const std::vector<Vec3>& x, const std::vector<Vec3>& y,
-                                 const std::vector<Vec3>& normal, bool lagrange, std::vector<Constraint>& out,
-                                 std::vector<Constraint>& closed) {
+                                 bool lagrange, std::vector<Constraint>& out, std::vector<Constraint>& closed) {
     const auto& tri = model_.triangles;
+    // Contacts beside a triangle (at an edge or a corner) are found once per triangle sharing
+    // that edge or corner, and a particle-to-corner pair once from each particle: such copies
+    // are merged by a key (slave, edge) or (particle, particle), or the sweeps would split the
+    // force between identical constraints and settle slowly.
+    keyed_.clear();
     for (std::size_t i = 0; i < d.slaves.size(); ++i) {
         const std::int64_t begin = d.candidate_start[i], end = d.candidate_start[i + 1];
-        if (begin == end) continue;
         const Index s = d.slaves[i];
         const std::size_t us = static_cast<std::size_t>(s);
-        // Contacts at a face are all kept; of those at an edge or corner only the deepest on
-        // each side of the slave, and only when that side has no face contact (a node at a
-        // ridge would otherwise be pushed once per triangle of the ridge).
-        std::array<Constraint, 2> edge_best;
-        std::array<bool, 2> has_face{false, false}, has_edge{false, false};
         for (std::int64_t k = begin; k < end; ++k) {
             const Index e = d.candidates[static_cast<std::size_t>(k)];
             const auto& t = tri[static_cast<std::size_t>(e)];
@@ -198,74 +196,64 @@ void ContactSolver::collect_self(const Definition& d, const std::vector<Vec3>& x
             const Vec3 rel_x = x[us] - cp_x.point;
             const Real d_x = rel_x.dot(n_x);
             const Real sigma = d_x >= 0 ? 1.0 : -1.0;  // side of the slave at t_n
-            bool face = cp_x.in_face;
-            if (!lagrange) {
-                // Penalty: penetration at t_n, on the side the slave is on.
-                if (cp_x.in_face) {
-                    if (std::abs(d_x) >= offset) continue;
-                    c.normal = sigma * n_x;
-                    c.gap = std::abs(d_x) - offset;
-                } else {
-                    const Real dist = rel_x.norm();
-                    if (dist >= offset || !(dist > 0)) continue;
-                    c.normal = rel_x / dist;
-                    c.gap = dist - offset;
+            // Positions the gap is measured at: the predictor (Lagrange multipliers, normal and
+            // weights frozen there, §8.2) or t_n (penalty).
+            const Vec3& ya = y[static_cast<std::size_t>(t[0])];
+            const Vec3& yb = y[static_cast<std::size_t>(t[1])];
+            const Vec3& yc = y[static_cast<std::size_t>(t[2])];
+            const Vec3 n_y = lagrange ? unit_normal(ya, yb, yc) : n_x;
+            const TriangleClosestPoint cp_y =
+                lagrange ? closest_point_on_triangle(y[us], ya, yb, yc, k_face_tolerance) : cp_x;
+            const Vec3 rel_y = y[us] - cp_y.point;
+            if (lagrange && (cp_x.in_face ? std::abs(d_x) : rel_x.norm()) < k_open_fraction * offset) {
+                // Already through at t_n (entered sideways, or a pair closed from the start):
+                // no side to restore; only its penetration is recorded.
+                if (cp_y.in_face && std::abs(rel_y.dot(n_y)) < offset) {
+                    c.normal = n_y;
+                    c.xi = cp_y.xi;
+                    c.gap = std::abs(rel_y.dot(n_y)) - offset;
+                    closed.push_back(c);
                 }
-                c.xi = cp_x.xi;
+                continue;
+            }
+            c.xi = cp_y.xi;
+            std::array<Index, 3> key{-1, -1, -1};
+            if (cp_y.in_face) {
+                c.normal = sigma * n_y;
+                c.gap = c.normal.dot(rel_y) - offset;
             } else {
-                const Real dist_x = cp_x.in_face ? std::abs(d_x) : rel_x.norm();
-                const Vec3& ya = y[static_cast<std::size_t>(t[0])];
-                const Vec3& yb = y[static_cast<std::size_t>(t[1])];
-                const Vec3& yc = y[static_cast<std::size_t>(t[2])];
-                const Vec3 n_y = unit_normal(ya, yb, yc);
-                const TriangleClosestPoint cp_y = closest_point_on_triangle(y[us], ya, yb, yc, k_face_tolerance);
-                const Vec3 rel_y = y[us] - cp_y.point;
-                if (dist_x < k_open_fraction * offset) {
-                    // Already through at t_n (entered sideways, or a pair closed from the start):
-                    // no side to restore; only its penetration is recorded.
-                    if (cp_y.in_face && std::abs(rel_y.dot(n_y)) < offset) {
-                        c.normal = n_y;
-                        c.xi = cp_y.xi;
-                        c.gap = std::abs(rel_y.dot(n_y)) - offset;
-                        closed.push_back(c);
-                    }
-                    continue;
-                }
-                // Gap at the predictor, normal and weights frozen there (§8.2).
-                if (cp_y.in_face) {
-                    c.normal = sigma * n_y;
-                    c.gap = c.normal.dot(rel_y) - offset;
+                // Beside the triangle: the distance to its nearest edge or corner (a particle
+                // may pass round an edge from one side to the other).
+                const auto top = std::max_element(c.xi.begin(), c.xi.end()) - c.xi.begin();
+                Vec3 rel = rel_y;
+                if (c.xi[static_cast<std::size_t>(top)] > k_corner_weight) {  // particle to particle
+                    const Index v = t[static_cast<std::size_t>(top)];
+                    c.xi = {0, 0, 0};
+                    c.xi[static_cast<std::size_t>(top)] = 1;
+                    rel = y[us] - y[static_cast<std::size_t>(v)];
+                    key = {std::min(s, v), std::max(s, v), -1};
                 } else {
-                    // Beside the triangle: the distance to its nearest edge or corner (a
-                    // particle may pass round an edge from one side to the other).
-                    const Real dist = rel_y.norm();
-                    if (!(dist > 1e-12 * offset)) continue;
-                    c.normal = rel_y / dist;
-                    c.gap = dist - offset;
+                    const std::size_t off = c.xi[0] == 0 ? 0 : c.xi[1] == 0 ? 1 : 2;  // the corner not on the edge
+                    const Index a = t[(off + 1) % 3], b = t[(off + 2) % 3];
+                    key = {s, std::min(a, b), std::max(a, b)};
                 }
-                c.xi = cp_y.xi;
-                face = cp_y.in_face;
-                // At a corner of the triangle the pair is particle to particle, and the corner
-                // particle finds the same pair from its side: keep one of the two, or the
-                // sweeps split the force between two identical constraints and never settle.
-                if (!face && std::max({c.xi[0], c.xi[1], c.xi[2]}) > k_corner_weight) {
-                    const std::size_t corner = c.xi[0] > k_corner_weight ? 0 : c.xi[1] > k_corner_weight ? 1 : 2;
-                    if (t[corner] < s) continue;
-                }
-                if (!(c.gap < k_activation_fraction * offset)) continue;
+                const Real dist = rel.norm();
+                if (!(dist > 1e-12 * offset)) continue;
+                c.normal = rel / dist;
+                c.gap = dist - offset;
             }
-            const std::size_t side = c.normal.dot(normal[us]) >= 0 ? 0 : 1;
-            if (face) {
+            if (!(c.gap < (lagrange ? k_activation_fraction * offset : 0.0))) continue;
+            if (key[0] < 0)
                 out.push_back(c);
-                has_face[side] = true;
-            } else if (!has_edge[side] || c.gap < edge_best[side].gap) {
-                edge_best[side] = c;
-                has_edge[side] = true;
-            }
+            else
+                keyed_.push_back({key, c});
         }
-        for (std::size_t side = 0; side < 2; ++side)
-            if (has_edge[side] && !has_face[side]) out.push_back(edge_best[side]);
     }
+    // One constraint per key: the first found (slave order, then candidate order), so the
+    // result does not depend on anything but the mesh and the state.
+    std::stable_sort(keyed_.begin(), keyed_.end(), [](const auto& p, const auto& q) { return p.first < q.first; });
+    for (std::size_t k = 0; k < keyed_.size(); ++k)
+        if (k == 0 || keyed_[k].first != keyed_[k - 1].first) out.push_back(keyed_[k].second);
 }
 
 void ContactSolver::collect_rigid(const Definition& d, const std::vector<Vec3>& y, const std::vector<Vec3>& body_u,
@@ -312,8 +300,7 @@ void ContactSolver::note_penetration(Real penetration, const Constraint& c, long
     stats_.max_penetration_element = c.element;
 }
 
-void ContactSolver::penalty_forces(const std::vector<Vec3>& x, const std::vector<Vec3>& normal,
-                                   const std::vector<Vec3>& body_u, std::vector<RigidBodyState>& bodies,
+void ContactSolver::penalty_forces(const std::vector<Vec3>& x, const std::vector<Vec3>& body_u, std::vector<RigidBodyState>& bodies,
                                    Real beta_particle, Real beta_body, Real motion, long step,
                                    std::vector<Vec3>& f_contact) {
     Stopwatch watch(stats_.seconds);
@@ -323,7 +310,7 @@ void ContactSolver::penalty_forces(const std::vector<Vec3>& x, const std::vector
         const std::size_t first = constraints_.size();
         if (d.def.type == ContactType::Self) {
             prepare_search(d, x, motion);
-            collect_self(d, x, x, normal, false, constraints_, closed_);
+            collect_self(d, x, x, false, constraints_, closed_);
         } else {
             collect_rigid(d, x, body_u, false, constraints_);
         }
@@ -348,7 +335,7 @@ void ContactSolver::penalty_forces(const std::vector<Vec3>& x, const std::vector
     stats_.max_active = std::max(stats_.max_active, stats_.active);
 }
 
-void ContactSolver::enforce(const std::vector<Vec3>& x, const std::vector<Vec3>& normal, std::vector<Vec3>& x_pred,
+void ContactSolver::enforce(const std::vector<Vec3>& x, std::vector<Vec3>& x_pred,
                             std::vector<Vec3>& body_u_pred, std::vector<RigidBodyState>& bodies,
                             Real beta_particle, Real beta_body, Real motion, long step,
                             std::vector<Vec3>& f_contact) {
@@ -362,14 +349,27 @@ void ContactSolver::enforce(const std::vector<Vec3>& x, const std::vector<Vec3>&
         max_iterations = std::max(max_iterations, d.def.max_iterations);
         if (d.def.type == ContactType::Self) {
             prepare_search(d, x, motion);
-            collect_self(d, x, x_pred, normal, true, constraints_, closed_);
+            collect_self(d, x, x_pred, true, constraints_, closed_);
         } else {
             collect_rigid(d, x_pred, body_u_pred, true, constraints_);
         }
     }
-    // Drop constraints that nothing can satisfy (every particle fixed); set the weights.
+    // Drop constraints that nothing can satisfy (every particle fixed); set the weights. A
+    // pair that is already inside at t_n (it escaped detection, or the linearised gap of the
+    // last step left it slightly in) is held where it is, not pushed out: pushing it out
+    // against its force would do positive work and create energy.
     std::size_t kept = 0;
     for (Constraint& c : constraints_) {
+        Vec3 r = x[static_cast<std::size_t>(c.slave)];
+        if (c.element >= 0)
+            for (std::size_t k = 0; k < 3; ++k) r -= c.xi[k] * x[static_cast<std::size_t>(c.master[k])];
+        if (c.body >= 0)
+            r -= model_.rigid_bodies[static_cast<std::size_t>(c.body)].point + bodies[static_cast<std::size_t>(c.body)].u;
+        const Real inside = c.offset - c.normal.dot(r);
+        if (inside > k_sweep_tolerance * c.offset) {
+            c.allowance = inside;
+            ++stats_.held_penetrations;
+        }
         c.weight = weight(c, beta_particle, beta_body, bodies);
         if (c.weight > 0) {
             h_min = kept == 0 ? c.thickness : std::min(h_min, c.thickness);
@@ -386,7 +386,7 @@ void ContactSolver::enforce(const std::vector<Vec3>& x, const std::vector<Vec3>&
             const auto b = static_cast<std::size_t>(c.body);
             r -= model_.rigid_bodies[b].point + body_u_pred[b];
         }
-        return c.normal.dot(r) - c.offset;
+        return c.normal.dot(r) - c.offset + c.allowance;
     };
     // Projected Gauss-Seidel on lambda >= 0, g + W dlambda >= 0, complementarity (§8.3).
     int sweeps = 0;
@@ -430,7 +430,7 @@ void ContactSolver::enforce(const std::vector<Vec3>& x, const std::vector<Vec3>&
     stats_.max_active = std::max(stats_.max_active, stats_.active);
 
     for (const Constraint& c : constraints_) {
-        note_penetration(-gap(c), c, step);  // <= 0 (not noted) for the pairs that stayed apart
+        note_penetration(c.allowance - gap(c), c, step);  // <= 0 (not noted) for the pairs apart
         if (c.lambda == 0) continue;
         f_contact[static_cast<std::size_t>(c.slave)] += c.lambda * c.normal;
         if (c.element >= 0)

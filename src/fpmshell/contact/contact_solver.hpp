@@ -28,6 +28,9 @@ struct ContactStatistics {
     int max_sweeps = 0;
     long unconverged_steps = 0;  ///< steps that ended at max_iterations
     long searches = 0;           ///< broad-phase rebuilds
+    /// Constraints that started a step already inside by more than 1e-3 of their offset and
+    /// were held there (Lagrange multipliers); 0 in a clean run.
+    long held_penetrations = 0;
     /// Largest penetration of a thickness-offset surface left at the end of any step, and
     /// the same divided by the thickness of the slave particle.
     Real max_penetration = 0;
@@ -53,15 +56,14 @@ public:
     /// the bodies' force. beta_* = c1 dt_n dt_{n+1/2} (the position change per unit force
     /// times the mass) of the particles and of the bodies. motion: the largest particle
     /// displacement since the last call (sets the search cadence).
-    void penalty_forces(const std::vector<Vec3>& x, const std::vector<Vec3>& normal,
-                        const std::vector<Vec3>& body_u, std::vector<RigidBodyState>& bodies,
+    void penalty_forces(const std::vector<Vec3>& x, const std::vector<Vec3>& body_u, std::vector<RigidBodyState>& bodies,
                         Real beta_particle, Real beta_body, Real motion, long step,
                         std::vector<Vec3>& f_contact);
 
     /// Lagrange-multiplier definitions: corrects the predicted positions x_pred (particles)
     /// and body_u_pred (bodies) so that no gap is negative at t_{n+1}, and adds the forces
     /// that do it (acting at t_n) to f_contact and to the bodies' force. x: positions x^n.
-    void enforce(const std::vector<Vec3>& x, const std::vector<Vec3>& normal, std::vector<Vec3>& x_pred,
+    void enforce(const std::vector<Vec3>& x, std::vector<Vec3>& x_pred,
                  std::vector<Vec3>& body_u_pred, std::vector<RigidBodyState>& bodies, Real beta_particle,
                  Real beta_body, Real motion, long step, std::vector<Vec3>& f_contact);
 
@@ -83,6 +85,7 @@ private:
         Real weight = 0;    ///< W = sum beta (n.M^-1 n) of its particles and body
         Real lambda = 0;
         Real thickness = 1;  ///< slave thickness, for penetration ratios
+        Real allowance = 0;  ///< penetration it already had at t_n (held, not pushed out)
     };
 
     struct Definition {
@@ -104,8 +107,7 @@ private:
     /// Self-contact constraints of definition d: geometry at x (side of each pair, §8.2) and
     /// gaps at y (the predictor for Lagrange multipliers, x itself for the penalty).
     void collect_self(const Definition& d, const std::vector<Vec3>& x, const std::vector<Vec3>& y,
-                      const std::vector<Vec3>& normal, bool lagrange, std::vector<Constraint>& out,
-                      std::vector<Constraint>& closed);
+                      bool lagrange, std::vector<Constraint>& out, std::vector<Constraint>& closed);
     /// Rigid-face constraints at positions y; lagrange: also the particles near the face.
     void collect_rigid(const Definition& d, const std::vector<Vec3>& y, const std::vector<Vec3>& body_u,
                        bool lagrange, std::vector<Constraint>& out) const;
@@ -123,6 +125,7 @@ private:
     BucketGrid grid_;
     std::vector<Vec3> box_lo_, box_hi_;  ///< scratch for the grid
     std::vector<Constraint> constraints_, closed_;  ///< scratch, reused every step
+    std::vector<std::pair<std::array<Index, 3>, Constraint>> keyed_;  ///< scratch: edge and corner pairs
     ContactStatistics stats_;
 };
 

@@ -182,6 +182,7 @@ public:
             cj.set("max_sweeps", c->max_sweeps);
             cj.set("unconverged_steps", c->unconverged_steps);
             cj.set("searches", c->searches);
+            cj.set("held_penetrations", c->held_penetrations);
             cj.set("seconds", c->seconds);
             cj.set("share_of_time_loop", wall > 0 ? c->seconds / wall : 0.0);
             j.set("contact", cj);
@@ -358,9 +359,9 @@ int run_model(const Model& model, const RunOptions& opt) {
                   c->max_penetration_particle + 1,
                   c->max_penetration_element >= 0 ? fmt::format(", element {}", c->max_penetration_element + 1)
                                                   : std::string(" (rigid body)"));
-        log.print("contact: up to {} constraints, up to {} sweeps ({} steps unconverged), {} searches, "
-                  "{:.2f} s ({:.1f} % of the time loop)",
-                  c->max_active, c->max_sweeps, c->unconverged_steps, c->searches, c->seconds,
+        log.print("contact: up to {} contact forces, up to {} sweeps ({} steps unconverged), {} pairs held "
+                  "inside, {} searches, {:.2f} s ({:.1f} % of the time loop)",
+                  c->max_active, c->max_sweeps, c->unconverged_steps, c->held_penetrations, c->searches, c->seconds,
                   seconds > 0 ? 100 * c->seconds / seconds : 0.0);
     }
     log.print("results in {}", opt.output_dir.string());

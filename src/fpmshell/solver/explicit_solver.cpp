@@ -128,7 +128,7 @@ void ExplicitSolver::penalty_contact(Real dt_n, Real dt_new, Real c1) {
     for (std::size_t p = 0; p < s_.size(); ++p) motion2 = std::max(motion2, (s_.x[p] - s_.x_prev[p]).squaredNorm());
     std::vector<Vec3> body_u(bodies_.size());
     for (std::size_t b = 0; b < bodies_.size(); ++b) body_u[b] = bodies_[b].u;
-    contact_->penalty_forces(s_.x, s_.normal, body_u, bodies_, c1 * dt_n * dt_new, dt_n * dt_new,
+    contact_->penalty_forces(s_.x, body_u, bodies_, c1 * dt_n * dt_new, dt_n * dt_new,
                              std::sqrt(motion2), steps_, s_.f_contact);
 }
 
@@ -147,7 +147,7 @@ void ExplicitSolver::lagrange_contact(Real dt_n, Real dt_new, Real c1) {
     for (std::size_t b = 0; b < bodies_.size(); ++b) body_u_pred_[b] = bodies_[b].u + dt_new * bodies_[b].v;
     std::vector<Vec3> before_p = x_pred_;
     const std::vector<Vec3> before_b = body_u_pred_;
-    contact_->enforce(s_.x, s_.normal, x_pred_, body_u_pred_, bodies_, c1 * dt_n * dt_new, dt_n * dt_new,
+    contact_->enforce(s_.x, x_pred_, body_u_pred_, bodies_, c1 * dt_n * dt_new, dt_n * dt_new,
                       std::sqrt(motion2), steps_, s_.f_contact);
     for (std::size_t p = 0; p < np; ++p)
         if (x_pred_[p] != before_p[p]) s_.v[p] += (x_pred_[p] - before_p[p]) / dt_new;
