@@ -21,7 +21,8 @@ namespace {
 
 void square_tube(benchmark::State& state) {
 #ifdef _OPENMP
-    omp_set_num_threads(state.range(2) > 0 ? static_cast<int>(state.range(2)) : omp_get_num_procs());
+    omp_set_num_threads(state.range(2) > 0 ? static_cast<int>(state.range(2))
+                                           : omp_get_num_procs());
     const int used = omp_get_max_threads();
 #else
     const int used = 1;
@@ -41,7 +42,8 @@ void square_tube(benchmark::State& state) {
     state.counters["elements"] = static_cast<double>(m.n_elements());
     state.counters["threads"] = used;
     state.counters["element_steps/s"] = benchmark::Counter(
-        static_cast<double>(m.n_elements()) * static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
+        static_cast<double>(m.n_elements()) * static_cast<double>(state.iterations()),
+        benchmark::Counter::kIsRate);
     state.counters["contact_share"] = (solver.contact_statistics()->seconds - contact0) / wall;
     state.counters["contacts"] = static_cast<double>(solver.contact_statistics()->active);
 }
@@ -49,5 +51,10 @@ void square_tube(benchmark::State& state) {
 }  // namespace
 
 // (divisions across a face, along the tube, threads: 0 = all cores); 1000 steps measured.
-BENCHMARK(square_tube)->Args({15, 64, 1})->Args({15, 64, 0})->Args({30, 128, 1})
-    ->Iterations(1000)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(square_tube)
+    ->Args({15, 64, 1})
+    ->Args({15, 64, 0})
+    ->Args({30, 128, 1})
+    ->Iterations(1000)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();

@@ -24,6 +24,9 @@ def parse_args(description):
     ap.add_argument("--fpmshell", default=os.path.join(ROOT, "build", "fpmshell"))
     ap.add_argument("--out", required=True, help="folder for the runs and rows.json")
     ap.add_argument("--quick", action="store_true", help="coarse meshes only (make test)")
+    ap.add_argument("--reuse", action="store_true",
+                    help="use a run already in --out when it completed to the same end time with "
+                         "the same particle and element counts (for problems that take hours)")
     return ap.parse_args()
 
 
@@ -42,6 +45,22 @@ def run(fpmshell, model, out_dir, overrides=(), threads=None):
         raise RuntimeError("fpmshell failed (exit %d): %s\n%s" % (p.returncode, " ".join(cmd),
                                                                   (p.stdout + p.stderr)[-3000:]))
     return read_results(out_dir), wall
+
+
+def reusable(out_dir, end_time, particles=None, elements=None):
+    """(results, wall) of a completed earlier run in out_dir that reached end_time (and has
+    these counts, when given), else None."""
+    try:
+        res = read_results(out_dir)
+    except (OSError, ValueError, IndexError):
+        return None
+    s = res["summary"]
+    if s.get("exit_reason") != "completed" or s.get("end_time", 0) < end_time * (1 - 1e-9):
+        return None
+    if (particles is not None and s.get("particles") != particles) or (
+            elements is not None and s.get("elements") != elements):
+        return None
+    return res, s.get("wall_seconds", 0.0)
 
 
 def read_csv(path):

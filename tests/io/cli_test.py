@@ -183,5 +183,35 @@ ok = (code == 1 and "energy balance error" in out and "step" in out and "particl
 check("energy-balance stop exits 1 and names step, particle and element", ok,
       "exit %d: %s" % (code, out))
 
+# Rigid bodies and contact: a plate dropped on a heavy plane body; the body's histories, the
+# contact column of energy.csv and the contact block of summary.json; `check` lists them.
+drop = write("drop.yaml", BASE.replace("boundary:\n  - {nodes: boundary, fix: all}\n", "")
+             .replace("loads:\n  - {type: pressure, elements: all, value: 100}\n",
+                      "initial_conditions:\n  - {nodes: all, velocity: [0, 0, -2]}\n"
+                      "rigid_bodies:\n  - {name: anvil, mass: 1000, point: [0, 0, -0.006], normal: [0, 0, 1]}\n"
+                      "contact:\n  - {type: rigid, body: anvil}\n  - {type: self}\n")
+             .replace("control: {end_time: 1.0e-4}", "control: {end_time: 2.0e-3}")
+             + "    - {name: anvil_vz, quantity: rigid_anvil_vz}\n    - {name: anvil_f, quantity: rigid_anvil_force_z}\n")
+code, out = fpm("check", drop)
+check("check lists rigid bodies and contacts", code == 0 and "rigid body anvil" in out
+      and "contact self over 32 elements" in out and "contact of 25 particles with rigid body anvil" in out, out)
+dres = os.path.join(WORK, "drop")
+code, out = fpm("run", drop, "-o", dres, "--quiet", "--threads", "1")
+check("a run with contact exits 0", code == 0, out)
+if code == 0:
+    head = open(os.path.join(dres, "history.csv")).readline().strip()
+    check("rigid-body histories in history.csv", head == "time,w,anvil_vz,anvil_f", head)
+    s = json.load(open(os.path.join(dres, "summary.json")))
+    check("summary.json has contact and rigid_bodies", "contact" in s and "anvil" in s.get("rigid_bodies", {})
+          and s["contact"]["max_penetration_ratio"] < 0.01, str(s))
+    rows = open(os.path.join(dres, "history.csv")).read().strip().splitlines()
+    last = [float(v) for v in rows[-1].split(",")]
+    check("the plate hit the anvil (it moves down, pushed)", last[2] < 0 and min(
+        float(r.split(",")[3]) for r in rows[1:]) < 0, rows[-1])
+    energy = open(os.path.join(dres, "energy.csv")).read().strip().splitlines()
+    check("contact energy recorded (perfectly plastic impact)", float(energy[-1].split(",")[6]) > 0, energy[-1])
+code, out = fpm("check", os.path.join(ROOT, "examples", "square_tube", "model.yaml"))
+check("the square tube example is valid", code == 0 and "rigid body striker" in out, out)
+
 print("%d passed, %d failed" % (passed, len(failures)))
 sys.exit(1 if failures else 0)

@@ -39,15 +39,19 @@ void BucketGrid::build(const std::vector<Vec3>& lo, const std::vector<Vec3>& hi,
     // Cap the bucket count at ~4 per item: a crushed or exploded model keeps a bounded grid.
     const double max_buckets = 4.0 * static_cast<double>(n_items) + 64.0;
     for (;;) {
-        const double b = std::ceil(extent.x() / cell_ + 1e-9) * std::ceil(extent.y() / cell_ + 1e-9) *
+        const double b = std::ceil(extent.x() / cell_ + 1e-9) *
+                         std::ceil(extent.y() / cell_ + 1e-9) *
                          std::ceil(extent.z() / cell_ + 1e-9);
         if (b <= max_buckets) break;
         cell_ *= 1.25;
     }
     origin_ = box_lo;
-    nx_ = std::max<std::int64_t>(1, static_cast<std::int64_t>(std::ceil(extent.x() / cell_ + 1e-9)));
-    ny_ = std::max<std::int64_t>(1, static_cast<std::int64_t>(std::ceil(extent.y() / cell_ + 1e-9)));
-    nz_ = std::max<std::int64_t>(1, static_cast<std::int64_t>(std::ceil(extent.z() / cell_ + 1e-9)));
+    nx_ =
+        std::max<std::int64_t>(1, static_cast<std::int64_t>(std::ceil(extent.x() / cell_ + 1e-9)));
+    ny_ =
+        std::max<std::int64_t>(1, static_cast<std::int64_t>(std::ceil(extent.y() / cell_ + 1e-9)));
+    nz_ =
+        std::max<std::int64_t>(1, static_cast<std::int64_t>(std::ceil(extent.z() / cell_ + 1e-9)));
     const auto nb = static_cast<std::size_t>(nx_ * ny_ * nz_);
     start_.assign(nb + 1, 0);
     // Two passes over the items: count, then fill (counting sort into CSR).
@@ -57,14 +61,17 @@ void BucketGrid::build(const std::vector<Vec3>& lo, const std::vector<Vec3>& hi,
         const std::int64_t z0 = clamp_axis(lo[i].z(), 2), z1 = clamp_axis(hi[i].z(), 2);
         for (std::int64_t z = z0; z <= z1; ++z)
             for (std::int64_t y = y0; y <= y1; ++y)
-                for (std::int64_t x = x0; x <= x1; ++x) f(static_cast<std::size_t>((z * ny_ + y) * nx_ + x));
+                for (std::int64_t x = x0; x <= x1; ++x)
+                    f(static_cast<std::size_t>((z * ny_ + y) * nx_ + x));
     };
     for (std::size_t i = 0; i < n_items; ++i) visit(i, [&](std::size_t b) { ++start_[b + 1]; });
     for (std::size_t b = 0; b < nb; ++b) start_[b + 1] += start_[b];
     items_.resize(static_cast<std::size_t>(start_[nb]));
     std::vector<std::int64_t> fill(start_.begin(), start_.end() - 1);
     for (std::size_t i = 0; i < n_items; ++i)
-        visit(i, [&](std::size_t b) { items_[static_cast<std::size_t>(fill[b]++)] = static_cast<Index>(i); });
+        visit(i, [&](std::size_t b) {
+            items_[static_cast<std::size_t>(fill[b]++)] = static_cast<Index>(i);
+        });
 }
 
 }  // namespace fpmshell

@@ -23,7 +23,8 @@ public:
     void for_each_near(const Vec3& p, F&& f) const {
         const std::int64_t b = bucket_of(p);
         if (b < 0) return;
-        for (std::int64_t k = start_[static_cast<std::size_t>(b)]; k < start_[static_cast<std::size_t>(b) + 1]; ++k)
+        for (std::int64_t k = start_[static_cast<std::size_t>(b)];
+             k < start_[static_cast<std::size_t>(b) + 1]; ++k)
             f(items_[static_cast<std::size_t>(k)]);
     }
 

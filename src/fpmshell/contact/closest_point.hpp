@@ -12,7 +12,7 @@
 namespace fpmshell {
 
 struct TriangleClosestPoint {
-    std::array<Real, 3> xi{};  ///< weights of the corners a, b, c (sum 1, all >= 0 off the face)
+    std::array<Real, 3> xi{};   ///< weights of the corners a, b, c (sum 1, all >= 0 off the face)
     Vec3 point = Vec3::Zero();  ///< sum xi_k x_k
     bool in_face = false;       ///< the projection of p lies inside the triangle
 };

@@ -9,12 +9,12 @@
 namespace fpmshell {
 namespace {
 
-constexpr Real k_face_tolerance = 0.02;     // theory.md §8.1: barycentric weights >= -0.02
-constexpr Real k_open_fraction = 0.5;       // a pair is open at t_n when its distance >= 0.5 offset
-constexpr Real k_exclusion_factor = 1.5;    // default exclusion radius: 1.5 x largest thickness (R8)
-constexpr Real k_margin_fraction = 0.5;     // search margin: 0.5 x largest offset
-constexpr Real k_sweep_tolerance = 1e-3;    // sweeps stop when no gap is below -1e-3 h (§8.3)
-constexpr Real k_lambda_tolerance = 1e-6;   // ... and no multiplier changed by 1e-6 of the largest
+constexpr Real k_face_tolerance = 0.02;    // theory.md §8.1: barycentric weights >= -0.02
+constexpr Real k_open_fraction = 0.5;      // a pair is open at t_n when its distance >= 0.5 offset
+constexpr Real k_exclusion_factor = 1.5;   // default exclusion radius: 1.5 x largest thickness (R8)
+constexpr Real k_margin_fraction = 0.5;    // search margin: 0.5 x largest offset
+constexpr Real k_sweep_tolerance = 1e-3;   // sweeps stop when no gap is below -1e-3 h (§8.3)
+constexpr Real k_lambda_tolerance = 1e-6;  // ... and no multiplier changed by 1e-6 of the largest
 // Pairs closer than this fraction of their offset at the predictor join the Gauss-Seidel
 // sweeps with lambda = 0: a correction that pushes a particle into a surface it was only near
 // is then undone in the same step, not one step later by a force that does positive work.
@@ -31,7 +31,9 @@ Vec3 unit_normal(const Vec3& a, const Vec3& b, const Vec3& c) {
 class Stopwatch {
 public:
     explicit Stopwatch(double& total) : total_(total), start_(std::chrono::steady_clock::now()) {}
-    ~Stopwatch() { total_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count(); }
+    ~Stopwatch() {
+        total_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+    }
     Stopwatch(const Stopwatch&) = delete;
     Stopwatch& operator=(const Stopwatch&) = delete;
 
@@ -92,7 +94,8 @@ ContactSolver::ContactSolver(const Model& model, const std::vector<Vec3>& inv_ma
                 h_max = std::max(h_max, node_thickness_[static_cast<std::size_t>(s)]);
             }
             d.max_offset = h_max;  // (h_s + h_e) / 2 <= max h
-            d.exclusion_radius = def.exclusion_radius > 0 ? def.exclusion_radius : k_exclusion_factor * h_max;
+            d.exclusion_radius =
+                def.exclusion_radius > 0 ? def.exclusion_radius : k_exclusion_factor * h_max;
             d.margin = k_margin_fraction * d.max_offset;
         } else {
             d.slaves = def.nodes;
@@ -149,7 +152,8 @@ void ContactSolver::search(Definition& d, const std::vector<Vec3>& x) {
             const Vec3& a = x[static_cast<std::size_t>(t[0])];
             const Vec3& b = x[static_cast<std::size_t>(t[1])];
             const Vec3& c = x[static_cast<std::size_t>(t[2])];
-            const Real offset = d.slave_offset[i] + 0.5 * element_thickness_[static_cast<std::size_t>(e)];
+            const Real offset =
+                d.slave_offset[i] + 0.5 * element_thickness_[static_cast<std::size_t>(e)];
             const TriangleClosestPoint cp = closest_point_on_triangle(xs, a, b, c, 0.0);
             if ((xs - cp.point).norm() > offset + d.margin) return;
             // Self-contact exclusion (theory.md §8.1, R8): material that starts closer than the
@@ -165,8 +169,9 @@ void ContactSolver::search(Definition& d, const std::vector<Vec3>& x) {
     }
 }
 
-void ContactSolver::collect_self(const Definition& d, const std::vector<Vec3>& x, const std::vector<Vec3>& y,
-                                 bool lagrange, std::vector<Constraint>& out, std::vector<Constraint>& closed) {
+void ContactSolver::collect_self(const Definition& d, const std::vector<Vec3>& x,
+                                 const std::vector<Vec3>& y, bool lagrange,
+                                 std::vector<Constraint>& out, std::vector<Constraint>& closed) {
     const auto& tri = model_.triangles;
     // Contacts beside a triangle (at an edge or a corner) are found once per triangle sharing
     // that edge or corner, and a particle-to-corner pair once from each particle: such copies
@@ -180,7 +185,8 @@ void ContactSolver::collect_self(const Definition& d, const std::vector<Vec3>& x
         for (std::int64_t k = begin; k < end; ++k) {
             const Index e = d.candidates[static_cast<std::size_t>(k)];
             const auto& t = tri[static_cast<std::size_t>(e)];
-            const Real offset = d.slave_offset[i] + 0.5 * element_thickness_[static_cast<std::size_t>(e)];
+            const Real offset =
+                d.slave_offset[i] + 0.5 * element_thickness_[static_cast<std::size_t>(e)];
             Constraint c;
             c.slave = s;
             c.element = e;
@@ -192,7 +198,8 @@ void ContactSolver::collect_self(const Definition& d, const std::vector<Vec3>& x
             const Vec3& xb = x[static_cast<std::size_t>(t[1])];
             const Vec3& xc = x[static_cast<std::size_t>(t[2])];
             const Vec3 n_x = unit_normal(xa, xb, xc);
-            const TriangleClosestPoint cp_x = closest_point_on_triangle(x[us], xa, xb, xc, k_face_tolerance);
+            const TriangleClosestPoint cp_x =
+                closest_point_on_triangle(x[us], xa, xb, xc, k_face_tolerance);
             const Vec3 rel_x = x[us] - cp_x.point;
             const Real d_x = rel_x.dot(n_x);
             const Real sigma = d_x >= 0 ? 1.0 : -1.0;  // side of the slave at t_n
@@ -205,7 +212,8 @@ void ContactSolver::collect_self(const Definition& d, const std::vector<Vec3>& x
             const TriangleClosestPoint cp_y =
                 lagrange ? closest_point_on_triangle(y[us], ya, yb, yc, k_face_tolerance) : cp_x;
             const Vec3 rel_y = y[us] - cp_y.point;
-            if (lagrange && (cp_x.in_face ? std::abs(d_x) : rel_x.norm()) < k_open_fraction * offset) {
+            if (lagrange &&
+                (cp_x.in_face ? std::abs(d_x) : rel_x.norm()) < k_open_fraction * offset) {
                 // Already through at t_n (entered sideways, or a pair closed from the start):
                 // no side to restore; only its penetration is recorded.
                 if (cp_y.in_face && std::abs(rel_y.dot(n_y)) < offset) {
@@ -226,14 +234,17 @@ void ContactSolver::collect_self(const Definition& d, const std::vector<Vec3>& x
                 // may pass round an edge from one side to the other).
                 const auto top = std::max_element(c.xi.begin(), c.xi.end()) - c.xi.begin();
                 Vec3 rel = rel_y;
-                if (c.xi[static_cast<std::size_t>(top)] > k_corner_weight) {  // particle to particle
+                if (c.xi[static_cast<std::size_t>(top)] >
+                    k_corner_weight) {  // particle to particle
                     const Index v = t[static_cast<std::size_t>(top)];
                     c.xi = {0, 0, 0};
                     c.xi[static_cast<std::size_t>(top)] = 1;
                     rel = y[us] - y[static_cast<std::size_t>(v)];
                     key = {std::min(s, v), std::max(s, v), -1};
                 } else {
-                    const std::size_t off = c.xi[0] == 0 ? 0 : c.xi[1] == 0 ? 1 : 2;  // the corner not on the edge
+                    const std::size_t off = c.xi[0] == 0   ? 0
+                                            : c.xi[1] == 0 ? 1
+                                                           : 2;  // the corner not on the edge
                     const Index a = t[(off + 1) % 3], b = t[(off + 2) % 3];
                     key = {s, std::min(a, b), std::max(a, b)};
                 }
@@ -251,13 +262,15 @@ void ContactSolver::collect_self(const Definition& d, const std::vector<Vec3>& x
     }
     // One constraint per key: the first found (slave order, then candidate order), so the
     // result does not depend on anything but the mesh and the state.
-    std::stable_sort(keyed_.begin(), keyed_.end(), [](const auto& p, const auto& q) { return p.first < q.first; });
+    std::stable_sort(keyed_.begin(), keyed_.end(),
+                     [](const auto& p, const auto& q) { return p.first < q.first; });
     for (std::size_t k = 0; k < keyed_.size(); ++k)
         if (k == 0 || keyed_[k].first != keyed_[k - 1].first) out.push_back(keyed_[k].second);
 }
 
-void ContactSolver::collect_rigid(const Definition& d, const std::vector<Vec3>& y, const std::vector<Vec3>& body_u,
-                                  bool lagrange, std::vector<Constraint>& out) const {
+void ContactSolver::collect_rigid(const Definition& d, const std::vector<Vec3>& y,
+                                  const std::vector<Vec3>& body_u, bool lagrange,
+                                  std::vector<Constraint>& out) const {
     const auto b = static_cast<std::size_t>(d.def.body);
     const RigidBody& body = model_.rigid_bodies[b];
     const Vec3 point = body.point + body_u[b];
@@ -286,7 +299,8 @@ Real ContactSolver::weight(const Constraint& c, Real beta_particle, Real beta_bo
     Real w = beta_particle * n2.dot(inv_mass_[static_cast<std::size_t>(c.slave)]);
     if (c.element >= 0)
         for (std::size_t k = 0; k < 3; ++k)
-            w += beta_particle * c.xi[k] * c.xi[k] * n2.dot(inv_mass_[static_cast<std::size_t>(c.master[k])]);
+            w += beta_particle * c.xi[k] * c.xi[k] *
+                 n2.dot(inv_mass_[static_cast<std::size_t>(c.master[k])]);
     if (c.body >= 0) w += beta_body * bodies[static_cast<std::size_t>(c.body)].inv_mass;
     return w;
 }
@@ -300,8 +314,9 @@ void ContactSolver::note_penetration(Real penetration, const Constraint& c, long
     stats_.max_penetration_element = c.element;
 }
 
-void ContactSolver::penalty_forces(const std::vector<Vec3>& x, const std::vector<Vec3>& body_u, std::vector<RigidBodyState>& bodies,
-                                   Real beta_particle, Real beta_body, Real motion, long step,
+void ContactSolver::penalty_forces(const std::vector<Vec3>& x, const std::vector<Vec3>& body_u,
+                                   std::vector<RigidBodyState>& bodies, Real beta_particle,
+                                   Real beta_body, Real motion, long step,
                                    std::vector<Vec3>& f_contact) {
     Stopwatch watch(stats_.seconds);
     constraints_.clear();
@@ -330,8 +345,9 @@ void ContactSolver::penalty_forces(const std::vector<Vec3>& x, const std::vector
                 f_contact[static_cast<std::size_t>(c.master[k])] -= c.lambda * c.xi[k] * c.normal;
         if (c.body >= 0) bodies[static_cast<std::size_t>(c.body)].force -= c.lambda * c.normal;
     }
-    stats_.active = static_cast<long>(
-        std::count_if(constraints_.begin(), constraints_.end(), [](const Constraint& c) { return c.lambda > 0; }));
+    stats_.active =
+        static_cast<long>(std::count_if(constraints_.begin(), constraints_.end(),
+                                        [](const Constraint& c) { return c.lambda > 0; }));
     stats_.max_active = std::max(stats_.max_active, stats_.active);
 }
 
@@ -362,9 +378,11 @@ void ContactSolver::enforce(const std::vector<Vec3>& x, std::vector<Vec3>& x_pre
     for (Constraint& c : constraints_) {
         Vec3 r = x[static_cast<std::size_t>(c.slave)];
         if (c.element >= 0)
-            for (std::size_t k = 0; k < 3; ++k) r -= c.xi[k] * x[static_cast<std::size_t>(c.master[k])];
+            for (std::size_t k = 0; k < 3; ++k)
+                r -= c.xi[k] * x[static_cast<std::size_t>(c.master[k])];
         if (c.body >= 0)
-            r -= model_.rigid_bodies[static_cast<std::size_t>(c.body)].point + bodies[static_cast<std::size_t>(c.body)].u;
+            r -= model_.rigid_bodies[static_cast<std::size_t>(c.body)].point +
+                 bodies[static_cast<std::size_t>(c.body)].u;
         const Real inside = c.offset - c.normal.dot(r);
         if (inside > k_sweep_tolerance * c.offset) {
             c.allowance = inside;
@@ -381,7 +399,8 @@ void ContactSolver::enforce(const std::vector<Vec3>& x, std::vector<Vec3>& x_pre
     auto gap = [&](const Constraint& c) {
         Vec3 r = x_pred[static_cast<std::size_t>(c.slave)];
         if (c.element >= 0)
-            for (std::size_t k = 0; k < 3; ++k) r -= c.xi[k] * x_pred[static_cast<std::size_t>(c.master[k])];
+            for (std::size_t k = 0; k < 3; ++k)
+                r -= c.xi[k] * x_pred[static_cast<std::size_t>(c.master[k])];
         if (c.body >= 0) {
             const auto b = static_cast<std::size_t>(c.body);
             r -= model_.rigid_bodies[b].point + body_u_pred[b];
@@ -409,7 +428,8 @@ void ContactSolver::enforce(const std::vector<Vec3>& x, std::vector<Vec3>& x_pre
             if (c.element >= 0)
                 for (std::size_t k = 0; k < 3; ++k) {
                     const auto um = static_cast<std::size_t>(c.master[k]);
-                    x_pred[um] -= (beta_particle * dl * c.xi[k]) * inv_mass_[um].cwiseProduct(c.normal);
+                    x_pred[um] -=
+                        (beta_particle * dl * c.xi[k]) * inv_mass_[um].cwiseProduct(c.normal);
                 }
             if (c.body >= 0) {
                 const auto b = static_cast<std::size_t>(c.body);
@@ -420,13 +440,15 @@ void ContactSolver::enforce(const std::vector<Vec3>& x, std::vector<Vec3>& x_pre
         // where two nearly parallel constraints share the force and the multipliers drift
         // slowly between them, no gap moved by more than 1e-6 h in the sweep.
         converged = deepest <= k_sweep_tolerance * h_min &&
-                    (largest_change <= k_lambda_tolerance * largest_lambda || largest_move <= k_lambda_tolerance * h_min);
+                    (largest_change <= k_lambda_tolerance * largest_lambda ||
+                     largest_move <= k_lambda_tolerance * h_min);
     }
     if (!converged) ++stats_.unconverged_steps;
     stats_.sweeps = sweeps;
     stats_.max_sweeps = std::max(stats_.max_sweeps, sweeps);
-    stats_.active = static_cast<long>(
-        std::count_if(constraints_.begin(), constraints_.end(), [](const Constraint& c) { return c.lambda > 0; }));
+    stats_.active =
+        static_cast<long>(std::count_if(constraints_.begin(), constraints_.end(),
+                                        [](const Constraint& c) { return c.lambda > 0; }));
     stats_.max_active = std::max(stats_.max_active, stats_.active);
 
     for (const Constraint& c : constraints_) {
@@ -444,10 +466,11 @@ void ContactSolver::enforce(const std::vector<Vec3>& x, std::vector<Vec3>& x_pre
         const Vec3& ya = x_pred[static_cast<std::size_t>(t[0])];
         const Vec3& yb = x_pred[static_cast<std::size_t>(t[1])];
         const Vec3& yc = x_pred[static_cast<std::size_t>(t[2])];
-        const TriangleClosestPoint cp = closest_point_on_triangle(x_pred[static_cast<std::size_t>(c.slave)], ya, yb, yc,
-                                                                  k_face_tolerance);
+        const TriangleClosestPoint cp = closest_point_on_triangle(
+            x_pred[static_cast<std::size_t>(c.slave)], ya, yb, yc, k_face_tolerance);
         if (!cp.in_face) continue;
-        const Real dist = std::abs((x_pred[static_cast<std::size_t>(c.slave)] - cp.point).dot(unit_normal(ya, yb, yc)));
+        const Real dist = std::abs(
+            (x_pred[static_cast<std::size_t>(c.slave)] - cp.point).dot(unit_normal(ya, yb, yc)));
         note_penetration(c.offset - dist, c, step);
     }
 }

@@ -22,9 +22,9 @@
 namespace fpmshell {
 
 struct ContactStatistics {
-    long active = 0;          ///< contact forces (constraints with a force) of the last step
-    long max_active = 0;      ///< most at any step
-    int sweeps = 0;           ///< Gauss-Seidel sweeps of the last step
+    long active = 0;      ///< contact forces (constraints with a force) of the last step
+    long max_active = 0;  ///< most at any step
+    int sweeps = 0;       ///< Gauss-Seidel sweeps of the last step
     int max_sweeps = 0;
     long unconverged_steps = 0;  ///< steps that ended at max_iterations
     long searches = 0;           ///< broad-phase rebuilds
@@ -56,16 +56,17 @@ public:
     /// the bodies' force. beta_* = c1 dt_n dt_{n+1/2} (the position change per unit force
     /// times the mass) of the particles and of the bodies. motion: the largest particle
     /// displacement since the last call (sets the search cadence).
-    void penalty_forces(const std::vector<Vec3>& x, const std::vector<Vec3>& body_u, std::vector<RigidBodyState>& bodies,
-                        Real beta_particle, Real beta_body, Real motion, long step,
-                        std::vector<Vec3>& f_contact);
+    void penalty_forces(const std::vector<Vec3>& x, const std::vector<Vec3>& body_u,
+                        std::vector<RigidBodyState>& bodies, Real beta_particle, Real beta_body,
+                        Real motion, long step, std::vector<Vec3>& f_contact);
 
     /// Lagrange-multiplier definitions: corrects the predicted positions x_pred (particles)
     /// and body_u_pred (bodies) so that no gap is negative at t_{n+1}, and adds the forces
     /// that do it (acting at t_n) to f_contact and to the bodies' force. x: positions x^n.
     void enforce(const std::vector<Vec3>& x, std::vector<Vec3>& x_pred,
-                 std::vector<Vec3>& body_u_pred, std::vector<RigidBodyState>& bodies, Real beta_particle,
-                 Real beta_body, Real motion, long step, std::vector<Vec3>& f_contact);
+                 std::vector<Vec3>& body_u_pred, std::vector<RigidBodyState>& bodies,
+                 Real beta_particle, Real beta_body, Real motion, long step,
+                 std::vector<Vec3>& f_contact);
 
     [[nodiscard]] const ContactStatistics& statistics() const { return stats_; }
 
@@ -81,8 +82,8 @@ private:
         std::array<Real, 3> xi{};
         Vec3 normal = Vec3::Zero();
         Real offset = 0;
-        Real gap = 0;       ///< at the positions it was built on
-        Real weight = 0;    ///< W = sum beta (n.M^-1 n) of its particles and body
+        Real gap = 0;     ///< at the positions it was built on
+        Real weight = 0;  ///< W = sum beta (n.M^-1 n) of its particles and body
         Real lambda = 0;
         Real thickness = 1;  ///< slave thickness, for penetration ratios
         Real allowance = 0;  ///< penetration it already had at t_n (held, not pushed out)
@@ -90,14 +91,14 @@ private:
 
     struct Definition {
         ContactDefinition def;
-        std::vector<Index> slaves;           ///< self: nodes of the elements
-        std::vector<Real> slave_offset;      ///< h_s / 2 per slave
+        std::vector<Index> slaves;                  ///< self: nodes of the elements
+        std::vector<Real> slave_offset;             ///< h_s / 2 per slave
         std::vector<std::int64_t> neighbour_start;  ///< CSR per slave: its edge neighbours
         std::vector<Index> neighbours;
-        Real max_offset = 0;                 ///< largest (h_s + h_e) / 2
+        Real max_offset = 0;  ///< largest (h_s + h_e) / 2
         Real exclusion_radius = 0;
-        Real margin = 0;                     ///< extra search distance
-        Real travelled = 0;                  ///< relative motion bound since the last search
+        Real margin = 0;     ///< extra search distance
+        Real travelled = 0;  ///< relative motion bound since the last search
         bool searched = false;
         std::vector<std::int64_t> candidate_start;  ///< CSR per slave
         std::vector<Index> candidates;              ///< triangles
@@ -109,8 +110,9 @@ private:
     void collect_self(const Definition& d, const std::vector<Vec3>& x, const std::vector<Vec3>& y,
                       bool lagrange, std::vector<Constraint>& out, std::vector<Constraint>& closed);
     /// Rigid-face constraints at positions y; lagrange: also the particles near the face.
-    void collect_rigid(const Definition& d, const std::vector<Vec3>& y, const std::vector<Vec3>& body_u,
-                       bool lagrange, std::vector<Constraint>& out) const;
+    void collect_rigid(const Definition& d, const std::vector<Vec3>& y,
+                       const std::vector<Vec3>& body_u, bool lagrange,
+                       std::vector<Constraint>& out) const;
     [[nodiscard]] Real weight(const Constraint& c, Real beta_particle, Real beta_body,
                               const std::vector<RigidBodyState>& bodies) const;
     void note_penetration(Real penetration, const Constraint& c, long step);
@@ -123,9 +125,10 @@ private:
     std::vector<Definition> definitions_;
     bool has_penalty_ = false, has_lagrange_ = false;
     BucketGrid grid_;
-    std::vector<Vec3> box_lo_, box_hi_;  ///< scratch for the grid
+    std::vector<Vec3> box_lo_, box_hi_;             ///< scratch for the grid
     std::vector<Constraint> constraints_, closed_;  ///< scratch, reused every step
-    std::vector<std::pair<std::array<Index, 3>, Constraint>> keyed_;  ///< scratch: edge and corner pairs
+    std::vector<std::pair<std::array<Index, 3>, Constraint>>
+        keyed_;  ///< scratch: edge and corner pairs
     ContactStatistics stats_;
 };
 

@@ -17,8 +17,8 @@ struct RigidBodyState {
     Vec3 v_prev = Vec3::Zero();  ///< v^{n-1/2}
     Vec3 force = Vec3::Zero();   ///< contact force on the body at t_n
     Vec3 force_prev = Vec3::Zero();
-    Real inv_mass = 0;           ///< 0 for a fixed body
-    Real mass = 0;               ///< 0 for a fixed body (kinetic energy not counted)
+    Real inv_mass = 0;  ///< 0 for a fixed body
+    Real mass = 0;      ///< 0 for a fixed body (kinetic energy not counted)
 
     [[nodiscard]] static std::vector<RigidBodyState> from_model(const Model& model) {
         std::vector<RigidBodyState> bodies;

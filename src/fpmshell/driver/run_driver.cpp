@@ -231,6 +231,17 @@ std::string model_summary(const Model& model) {
     for (const auto& [name, nodes] : model.node_sets) out += fmt::format(" {}({})", name, nodes.size());
     out += "\nelement sets";
     for (const auto& [name, elems] : model.element_sets) out += fmt::format(" {}({})", name, elems.size());
+    for (const RigidBody& b : model.rigid_bodies)
+        out += fmt::format("\nrigid body {}: plane through ({:.6g}, {:.6g}, {:.6g}), normal ({:.4g}, {:.4g}, {:.4g}), {}",
+                           b.name, b.point.x(), b.point.y(), b.point.z(), b.normal.x(), b.normal.y(), b.normal.z(),
+                           b.fixed ? std::string("fixed") : fmt::format("mass {:.6g}", b.mass));
+    for (const ContactDefinition& c : model.contacts)
+        out += c.type == ContactType::Self
+                   ? fmt::format("\ncontact self over {} elements ({})", c.elements.size(),
+                                 c.method == ContactMethod::Penalty ? "penalty" : "Lagrange multipliers")
+                   : fmt::format("\ncontact of {} particles with rigid body {} ({})", c.nodes.size(),
+                                 model.rigid_bodies[static_cast<std::size_t>(c.body)].name,
+                                 c.method == ContactMethod::Penalty ? "penalty" : "Lagrange multipliers");
     const Real dt = solver.stable_dt();
     out += fmt::format("\nstable time step {:.6g} (time_step_scale {} x critical)\n", dt,
                        model.control.time_step_scale);

@@ -74,7 +74,8 @@ TEST(BucketGrid, FindsEveryBoxThatContainsThePoint) {
         std::vector<Index> found;
         grid.for_each_near(p, [&](Index i) { found.push_back(i); });
         std::sort(found.begin(), found.end());
-        EXPECT_TRUE(std::adjacent_find(found.begin(), found.end()) == found.end()) << "an item twice";
+        EXPECT_TRUE(std::adjacent_find(found.begin(), found.end()) == found.end())
+            << "an item twice";
         for (int i = 0; i < 2000; ++i) {
             const bool inside = (p.array() >= lo[static_cast<std::size_t>(i)].array()).all() &&
                                 (p.array() <= hi[static_cast<std::size_t>(i)].array()).all();

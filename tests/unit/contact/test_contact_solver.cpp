@@ -81,7 +81,8 @@ Real min_face_distance(const Model& m, const std::vector<Vec3>& x, const std::ve
             const Vec3& a = x[static_cast<std::size_t>(t[0])];
             const Vec3& b = x[static_cast<std::size_t>(t[1])];
             const Vec3& c = x[static_cast<std::size_t>(t[2])];
-            const TriangleClosestPoint cp = closest_point_on_triangle(x[static_cast<std::size_t>(p)], a, b, c, 0.0);
+            const TriangleClosestPoint cp =
+                closest_point_on_triangle(x[static_cast<std::size_t>(p)], a, b, c, 0.0);
             if (!cp.in_face) continue;
             const Vec3 n = (b - a).cross(c - a).normalized();
             best = std::min(best, std::abs((x[static_cast<std::size_t>(p)] - cp.point).dot(n)));
@@ -161,13 +162,15 @@ TEST(Contact, TwoPlatesDrivenTogetherDoNotInterpenetrate) {
     MeshData both = a;
     const auto offset = static_cast<Index>(a.nodes.size());
     both.nodes.insert(both.nodes.end(), b.nodes.begin(), b.nodes.end());
-    for (auto t : b.triangles) both.triangles.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
+    for (auto t : b.triangles)
+        both.triangles.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
     Model m = from_mesh(both, 0.01, k_steel);
     std::vector<Index> top_nodes, bottom_elements, top_elements, bottom_nodes;
     for (Index p = 0; p < offset; ++p) bottom_nodes.push_back(p);
     for (Index p = offset; p < m.n_particles(); ++p) top_nodes.push_back(p);
     for (Index e = 0; e < m.n_elements(); ++e)
-        (static_cast<std::size_t>(e) < a.triangles.size() ? bottom_elements : top_elements).push_back(e);
+        (static_cast<std::size_t>(e) < a.triangles.size() ? bottom_elements : top_elements)
+            .push_back(e);
     BoundaryCondition clamp;
     clamp.nodes = a.node_sets["boundary"];
     clamp.fixed.fill(true);
@@ -229,7 +232,8 @@ TEST(Contact, FallingShellOnAPlaneKeepsTheEnergyBalance) {
             worst = std::max(worst, std::abs(s.energy().error()));
         }
         Real momentum = 0;
-        for (std::size_t p = 0; p < s.state().size(); ++p) momentum += s.state().mass[p] * s.state().v[p].z();
+        for (std::size_t p = 0; p < s.state().size(); ++p)
+            momentum += s.state().mass[p] * s.state().v[p].z();
         // The balance closes with the contact term at every step (leapfrog accounting; the
         // shell alone keeps 1e-4 here).
         EXPECT_LT(worst, 1e-3);
@@ -270,7 +274,8 @@ TEST(Contact, FoldedStripSqueezedShutHoldsItsSelfContact) {
         return {leg * static_cast<Real>(i - n_leg - n_bend) / n_leg, 0, 2 * r};
     };
     for (Index j = 0; j <= 1; ++j)
-        for (Index i = 0; i <= n; ++i) mesh.nodes[static_cast<std::size_t>(i + j * (n + 1))] = path(i) + Vec3(0, 0.1 * j, 0);
+        for (Index i = 0; i <= n; ++i)
+            mesh.nodes[static_cast<std::size_t>(i + j * (n + 1))] = path(i) + Vec3(0, 0.1 * j, 0);
     std::vector<Index> lower_elements, upper_nodes;
     for (Index e = 0; e < static_cast<Index>(mesh.triangles.size()); ++e) {
         Real xc = 0, zc = 0;
@@ -299,7 +304,8 @@ TEST(Contact, FoldedStripSqueezedShutHoldsItsSelfContact) {
         Real closest = 1e30;
         while (s.time() < 6e-3) {
             s.step(1e30);
-            closest = std::min(closest, min_face_distance(m, s.state().x, upper_nodes, lower_elements));
+            closest =
+                std::min(closest, min_face_distance(m, s.state().x, upper_nodes, lower_elements));
         }
         if (with_contact) {
             EXPECT_GE(closest, 0.9 * h);
