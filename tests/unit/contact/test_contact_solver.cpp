@@ -40,6 +40,17 @@ Model from_mesh(const MeshData& mesh, Real h, Material mat) {
 
 const Material k_steel{"steel", MaterialType::Elastic, 7800, 2.1e11, 0.3};
 
+/// Adds the body and a contact of every particle with it.
+void add_body_with_contact(Model& m, const RigidBody& body, ContactMethod method) {
+    m.rigid_bodies.push_back(body);
+    ContactDefinition c;
+    c.type = ContactType::Rigid;
+    c.method = method;
+    c.body = static_cast<Index>(m.rigid_bodies.size()) - 1;
+    c.nodes = m.node_sets["all"];
+    m.contacts.push_back(c);
+}
+
 /// One flat triangle at height z0 falling at v0 onto a free plane body of mass ratio x its
 /// mass (at z = 0, normal +z).
 Model triangle_on_plane(Real v0, Real mass_ratio, ContactMethod method) {
@@ -53,13 +64,7 @@ Model triangle_on_plane(Real v0, Real mass_ratio, ContactMethod method) {
     body.name = "plane";
     body.mass = mass_ratio * tri_mass;
     body.normal = Vec3::UnitZ();
-    m.rigid_bodies.push_back(body);
-    ContactDefinition c;
-    c.type = ContactType::Rigid;
-    c.method = method;
-    c.body = 0;
-    c.nodes = m.node_sets["all"];
-    m.contacts.push_back(c);
+    add_body_with_contact(m, body, method);
     return m;
 }
 
@@ -217,13 +222,7 @@ TEST(Contact, FallingShellOnAPlaneKeepsTheEnergyBalance) {
         floor.name = "floor";
         floor.fixed = true;
         floor.point = Vec3(0, 0, z_min - 0.005 - 0.002);  // 2 mm below the lowest surface
-        m.rigid_bodies.push_back(floor);
-        ContactDefinition c;
-        c.type = ContactType::Rigid;
-        c.method = method;
-        c.body = 0;
-        c.nodes = m.node_sets["all"];
-        m.contacts.push_back(c);
+        add_body_with_contact(m, floor, method);
         ExplicitSolver s(m);
         const Real ke0 = s.energy().kinetic;
         Real worst = 0;
