@@ -126,9 +126,9 @@ Vec3 ExplicitSolver::body_acceleration(Index b) const {
 void ExplicitSolver::penalty_contact(Real dt_n, Real dt_new, Real c1) {
     Real motion2 = 0;
     for (std::size_t p = 0; p < s_.size(); ++p) motion2 = std::max(motion2, (s_.x[p] - s_.x_prev[p]).squaredNorm());
-    std::vector<Vec3> body_u(bodies_.size());
-    for (std::size_t b = 0; b < bodies_.size(); ++b) body_u[b] = bodies_[b].u;
-    contact_->penalty_forces(s_.x, body_u, bodies_, c1 * dt_n * dt_new, dt_n * dt_new,
+    body_u_pred_.resize(bodies_.size());  // here: the bodies at t_n
+    for (std::size_t b = 0; b < bodies_.size(); ++b) body_u_pred_[b] = bodies_[b].u;
+    contact_->penalty_forces(s_.x, body_u_pred_, bodies_, c1 * dt_n * dt_new, dt_n * dt_new,
                              std::sqrt(motion2), steps_, s_.f_contact);
 }
 
@@ -145,14 +145,14 @@ void ExplicitSolver::lagrange_contact(Real dt_n, Real dt_new, Real c1) {
     }
     body_u_pred_.resize(bodies_.size());
     for (std::size_t b = 0; b < bodies_.size(); ++b) body_u_pred_[b] = bodies_[b].u + dt_new * bodies_[b].v;
-    std::vector<Vec3> before_p = x_pred_;
-    const std::vector<Vec3> before_b = body_u_pred_;
+    x_pred_before_ = x_pred_;  // scratch members: no allocation in the time loop
+    body_u_before_ = body_u_pred_;
     contact_->enforce(s_.x, x_pred_, body_u_pred_, bodies_, c1 * dt_n * dt_new, dt_n * dt_new,
                       std::sqrt(motion2), steps_, s_.f_contact);
     for (std::size_t p = 0; p < np; ++p)
-        if (x_pred_[p] != before_p[p]) s_.v[p] += (x_pred_[p] - before_p[p]) / dt_new;
+        if (x_pred_[p] != x_pred_before_[p]) s_.v[p] += (x_pred_[p] - x_pred_before_[p]) / dt_new;
     for (std::size_t b = 0; b < bodies_.size(); ++b)
-        if (body_u_pred_[b] != before_b[b]) bodies_[b].v += (body_u_pred_[b] - before_b[b]) / dt_new;
+        if (body_u_pred_[b] != body_u_before_[b]) bodies_[b].v += (body_u_pred_[b] - body_u_before_[b]) / dt_new;
 }
 
 Real ExplicitSolver::curve_value(Index curve, Real t) const {

@@ -94,6 +94,7 @@ private:
     std::unique_ptr<ContactSolver> contact_;     ///< null without contact definitions
     std::vector<Vec3> inv_mass_;                 ///< per particle and direction; 0 where fixed or prescribed
     std::vector<Vec3> x_pred_, body_u_pred_;     ///< contact scratch: predicted x^{n+1}
+    std::vector<Vec3> x_pred_before_, body_u_before_;  ///< the predictor before the multipliers
     Real time_ = 0;
     Real dt_half_ = 0;       ///< dt_{n-1/2} (0 before the first step)
     Real dt_half_prev_ = 0;  ///< the step before dt_half_
