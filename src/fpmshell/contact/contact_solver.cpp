@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "fpmshell/contact/closest_point.hpp"
+#include "fpmshell/model/node_thickness.hpp"
 
 namespace fpmshell {
 namespace {
@@ -49,15 +50,7 @@ ContactSolver::ContactSolver(const Model& model, const std::vector<Vec3>& inv_ma
     : model_(model), inv_mass_(inv_mass), element_thickness_(element_thickness) {
     // h_s of a particle: the mean thickness of its elements.
     const std::size_t np = model.nodes.size();
-    node_thickness_.assign(np, 0);
-    std::vector<int> count(np, 0);
-    for (std::size_t e = 0; e < model.triangles.size(); ++e)
-        for (Index p : model.triangles[e]) {
-            node_thickness_[static_cast<std::size_t>(p)] += element_thickness[e];
-            ++count[static_cast<std::size_t>(p)];
-        }
-    for (std::size_t p = 0; p < np; ++p)
-        if (count[p] > 0) node_thickness_[p] /= count[p];
+    node_thickness_ = mean_node_thickness(model.triangles, element_thickness, np);
 
     for (const ContactDefinition& def : model.contacts) {
         Definition d;

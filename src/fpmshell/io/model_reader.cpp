@@ -18,6 +18,7 @@
 #include "fpmshell/io/overrides.hpp"
 #include "fpmshell/io/set_builder.hpp"
 #include "fpmshell/io/yaml_access.hpp"
+#include "fpmshell/model/node_thickness.hpp"
 
 namespace fpmshell {
 namespace {
@@ -588,17 +589,10 @@ public:
 private:
     /// Mean section thickness of the elements around each particle (contact offsets).
     [[nodiscard]] std::vector<Real> node_thickness() const {
-        std::vector<Real> h(model_.nodes.size(), 0.0);
-        std::vector<int> count(model_.nodes.size(), 0);
-        for (std::size_t e = 0; e < model_.triangles.size(); ++e)
-            for (const Index p : model_.triangles[e]) {
-                h[static_cast<std::size_t>(p)] +=
-                    model_.sections[static_cast<std::size_t>(model_.element_section[e])].thickness;
-                ++count[static_cast<std::size_t>(p)];
-            }
-        for (std::size_t p = 0; p < h.size(); ++p)
-            if (count[p] > 0) h[p] /= count[p];
-        return h;
+        std::vector<Real> element_thickness(model_.triangles.size());
+        for (std::size_t e = 0; e < element_thickness.size(); ++e)
+            element_thickness[e] = model_.sections[static_cast<std::size_t>(model_.element_section[e])].thickness;
+        return mean_node_thickness(model_.triangles, element_thickness, model_.nodes.size());
     }
 
     static void common_contact(const YamlMap& m, ContactDefinition& c) {
