@@ -370,17 +370,13 @@ void ExplicitSolver::cycle(Real load_time, Real dt_new_cap, bool relaxation) {
     }
     if (contact_ && contact_->has_lagrange()) lagrange_contact(dt_n, dt_new, c1);
 
-    Real contact_work = 0;
-    if (contact_)
-        for (std::size_t p = 0; p < np; ++p)
-            contact_work += 0.5 * (s_.f_contact_prev[p] + s_.f_contact[p]).dot(s_.x[p] - s_.x_prev[p]);
+    Real contact_work = 0;  // particles: in the energy loop below
     for (const RigidBodyState& b : bodies_) {
         const Real body_work = 0.5 * (b.force_prev + b.force).dot(b.u - b.u_prev);
         contact_work += body_work;
         kinetic += 0.5 * b.mass * b.v_prev.dot(b.v);
         if (b.inv_mass == 0) ext_work -= body_work;  // what drives a fixed body on
     }
-    energy_.contact -= contact_work;  // dissipated (Lagrange multipliers) or stored (penalty)
     for (std::size_t p = 0; p < np; ++p) {
         // Energies at t_n: leapfrog kinetic energy, work of loads and reactions over
         // [t_{n-1}, t_n] (trapezoidal), mass-damping dissipation over dt_n.
@@ -390,6 +386,7 @@ void ExplicitSolver::cycle(Real load_time, Real dt_new_cap, bool relaxation) {
                               .dot(s_.x[p] - s_.x_prev[p]) +
                     0.5 * (s_.m_ext_prev[p] + s_.m_ext[p] + s_.reaction_moment_prev[p] + s_.reaction_moment[p])
                               .dot(s_.dtheta[p]);
+        if (contact_) contact_work += 0.5 * (s_.f_contact_prev[p] + s_.f_contact[p]).dot(s_.x[p] - s_.x_prev[p]);
         if (a_m > 0) {
             const Vec3 vbar = 0.5 * (s_.v_prev[p] + s_.v[p]);
             const Vec3 wbar = 0.5 * (s_.omega_prev[p] + s_.omega[p]);
@@ -401,6 +398,7 @@ void ExplicitSolver::cycle(Real load_time, Real dt_new_cap, bool relaxation) {
         s_.reaction_moment_prev[p] = s_.reaction_moment[p];
     }
     energy_.kinetic = kinetic;
+    energy_.contact -= contact_work;  // dissipated (Lagrange multipliers) or stored (penalty)
     energy_.external_work += ext_work;
     energy_.damping += damping_work;
 
