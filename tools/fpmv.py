@@ -55,7 +55,10 @@ def reusable(out_dir, end_time, particles=None, elements=None):
     except (OSError, ValueError, IndexError):
         return None
     s = res["summary"]
-    if s.get("exit_reason") != "completed" or s.get("end_time", 0) < end_time * (1 - 1e-9):
+    reason = s.get("exit_reason", "")
+    body_stopped = reason.startswith("completed: rigid body")  # control.end_when_body_stops
+    if not (reason == "completed" or body_stopped) or (
+            not body_stopped and s.get("end_time", 0) < end_time * (1 - 1e-9)):
         return None
     if (particles is not None and s.get("particles") != particles) or (
             elements is not None and s.get("elements") != elements):

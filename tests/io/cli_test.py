@@ -210,6 +210,24 @@ if code == 0:
         float(r.split(",")[3]) for r in rows[1:]) < 0, rows[-1])
     energy = open(os.path.join(dres, "energy.csv")).read().strip().splitlines()
     check("contact energy recorded (perfectly plastic impact)", float(energy[-1].split(",")[6]) > 0, energy[-1])
+# A light ram thrown up against the clamped plate is stopped by it: the run ends there.
+stop = write("stop.yaml", BASE.replace("loads:\n  - {type: pressure, elements: all, value: 100}\n",
+                      "rigid_bodies:\n  - {name: ram, mass: 0.5, point: [0, 0, -0.006], normal: [0, 0, 1],"
+                      " velocity: [0, 0, 20]}\n"
+                      "contact:\n  - {type: rigid, body: ram}\n")
+             .replace("control: {end_time: 1.0e-4}", "control: {end_time: 2.0e-2, end_when_body_stops: ram}")
+             + "    - {name: ram_vz, quantity: rigid_ram_vz}\n")
+sres = os.path.join(WORK, "stop")
+code, out = fpm("run", stop, "-o", sres, "--quiet", "--threads", "1")
+check("end_when_body_stops: a run whose body stops exits 0", code == 0, out)
+if code == 0:
+    s = json.load(open(os.path.join(sres, "summary.json")))
+    rows = open(os.path.join(sres, "history.csv")).read().strip().splitlines()
+    vz = [float(r.split(",")[2]) for r in rows[1:]]
+    check("it ends when the body has stopped, before end_time, and says so",
+          s["exit_reason"] == "completed: rigid body ram stopped" and s["end_time"] < 2.0e-2 and vz[-1] <= 0
+          and min(vz[:-1]) > 0 and "has stopped at t =" in open(os.path.join(sres, "log.txt")).read(),
+          str(s.get("exit_reason")) + " " + str(s.get("end_time")) + " " + rows[-1])
 code, out = fpm("check", os.path.join(ROOT, "examples", "square_tube", "model.yaml"))
 check("the square tube example is valid", code == 0 and "rigid body striker" in out, out)
 

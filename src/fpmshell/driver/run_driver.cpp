@@ -77,6 +77,13 @@ FieldFrame make_frame(const Model& model, const ExplicitSolver& solver, Real tim
     return f;
 }
 
+/// control.end_when_body_stops: the body no longer moves along its initial velocity (v^{n+1/2}).
+bool body_has_stopped(const Model& model, const ExplicitSolver& solver) {
+    if (model.control.end_body < 0) return false;
+    const std::size_t b = static_cast<std::size_t>(model.control.end_body);
+    return solver.bodies()[b].v.dot(model.rigid_bodies[b].velocity) <= 0;
+}
+
 bool all_finite(const std::vector<Vec3>& v) {
     return std::all_of(v.begin(), v.end(), [](const Vec3& a) { return a.allFinite(); });
 }
@@ -302,7 +309,8 @@ int run_model(const Model& model, const RunOptions& opt) {
                 const bool split = last > 0 && remaining > last * (1 + 1e-9) && remaining < 2 * last;
                 solver.step(split ? 0.5 * remaining : remaining);
                 const Real t = solver.time();
-                const bool at_end = t >= end * (1 - 1e-12);
+                const bool body_stopped = body_has_stopped(model, solver);
+                const bool at_end = t >= end * (1 - 1e-12) || body_stopped;
                 if (every <= 0 || t >= next_row * (1 - 1e-12) || at_end) {
                     out.sample(solver, t);
                     while (every > 0 && next_row <= t * (1 + 1e-12)) next_row += every;
@@ -317,6 +325,14 @@ int run_model(const Model& model, const RunOptions& opt) {
                     last_flush = wall();
                 }
                 progress.update(t, solver.steps(), solver.last_dt(), solver.energy().error());
+                if (body_stopped) {
+                    const std::string& name = model.rigid_bodies[static_cast<std::size_t>(model.control.end_body)].name;
+                    progress.finish();
+                    log.print("the rigid body '{}' has stopped at t = {:.6g} (control.end_when_body_stops): end of the run",
+                              name, t);
+                    reason = fmt::format("completed: rigid body {} stopped", name);
+                    break;
+                }
             }
         } else {
             const Real step = every > 0 ? every : end;

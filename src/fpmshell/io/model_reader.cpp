@@ -109,7 +109,7 @@ public:
     void control(const YamlValue& v) {
         const YamlMap m = v.map({"end_time", "time_step_scale", "mode", "tolerance", "bending",
                                  "energy_error_limit", "max_relaxation_iterations", "thickness_update",
-                                 "membrane"});
+                                 "membrane", "end_when_body_stops"});
         Control& c = model_.control;
         c.end_time = m.at("end_time", "the duration of the run, a number > 0").positive();
         if (const auto s = m.find("time_step_scale")) {
@@ -130,6 +130,31 @@ public:
                                                                                      : MembraneKernel::Cst;
         if (const auto s = m.find("max_relaxation_iterations"))
             c.max_relaxation_iterations = static_cast<long>(s->integer(1, 1'000'000'000'000LL));
+        if (const auto b = m.find("end_when_body_stops")) end_body_key_.emplace(*b);  // bodies come later
+    }
+
+    /// control.end_when_body_stops, once the rigid bodies are known: a moving body with a
+    /// velocity, in a dynamic run.
+    void end_body() {
+        if (!end_body_key_) return;
+        const YamlValue& key = *end_body_key_;
+        std::vector<std::string> names;
+        for (std::size_t b = 0; b < model_.rigid_bodies.size(); ++b) {
+            names.push_back(model_.rigid_bodies[b].name);
+            if (model_.rigid_bodies[b].name == key.name()) model_.control.end_body = static_cast<Index>(b);
+        }
+        if (model_.control.end_body < 0)
+            key.fail(names.empty() ? "names a rigid body, but the model has no rigid_bodies"
+                                   : "unknown rigid body '" + key.name() + "'" + did_you_mean(key.name(), names) +
+                                         "; the bodies are " + join_names(names));
+        const RigidBody& b = model_.rigid_bodies[static_cast<std::size_t>(model_.control.end_body)];
+        if (b.fixed)
+            key.fail("the rigid body '" + b.name + "' is fixed: it keeps its velocity and never stops");
+        if (b.velocity.squaredNorm() == 0)
+            key.fail("the rigid body '" + b.name + "' has no initial velocity, so it has stopped already; "
+                     "give it a `velocity` or remove end_when_body_stops");
+        if (model_.control.mode == SolutionMode::Relaxation)
+            key.fail("end_when_body_stops needs mode: dynamic");
     }
 
     void materials(const YamlValue& v) {
@@ -609,6 +634,7 @@ private:
     }
 
     Model& model_;
+    std::optional<YamlValue> end_body_key_;
 };
 
 YAML::Node load_yaml(const std::string& path) {
@@ -719,6 +745,7 @@ Model read_model(const std::string& path, const std::vector<std::string>& set_ov
     if (const auto l = top.find("loads")) reader.loads(*l);
     if (const auto i = top.find("initial_conditions")) reader.initial_conditions(*i);
     if (const auto r = top.find("rigid_bodies"); r && !r->is_null()) reader.rigid_bodies(*r);
+    reader.end_body();
     if (const auto c = top.find("contact"); c && !c->is_null()) {
         reader.contact(*c);
         if (model.control.mode == SolutionMode::Relaxation && !model.contacts.empty())

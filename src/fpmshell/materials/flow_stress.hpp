@@ -29,6 +29,17 @@ struct FlowStress {
         const Real at = std::max(alpha, Real{1e-6});
         return b * n * std::pow(at, n - 1.0);
     }
+    struct ValueSlope {
+        Real value, slope;
+    };
+    /// value and slope together, with one power for Johnson-Cook (the return mapping's Newton
+    /// loop needs both at every iterate). Equal to value() and slope() to rounding.
+    [[nodiscard]] ValueSlope value_and_slope(Real alpha) const {
+        if (kind == Kind::Linear) return {yield_stress + hardening * alpha, hardening};
+        if (!(alpha >= 1e-6)) return {value(alpha), slope(alpha)};
+        const Real p = std::pow(alpha, n - 1.0);  // alpha^n = alpha alpha^(n-1)
+        return {a + b * alpha * p, b * n * p};
+    }
 };
 
 struct RateFactor {
@@ -42,8 +53,8 @@ struct RateFactor {
         switch (kind) {
         case Kind::CowperSymonds:
             return rate > 0 ? 1.0 + std::pow(rate / d, 1.0 / q) : 1.0;
-        case Kind::JohnsonCook:
-            return 1.0 + c * std::log(std::max(rate / reference_rate, Real{1}));
+        case Kind::JohnsonCook:  // below the reference rate the factor is 1: no logarithm
+            return rate > reference_rate ? 1.0 + c * std::log(rate / reference_rate) : 1.0;
         default:
             return 1.0;
         }

@@ -28,6 +28,13 @@ public:
     [[nodiscard]] Real yield_radius(Real alpha, Real r) const;
 
 private:
+    struct Radius {
+        Real radius;  ///< kappa(alpha) / R, the yield radius at the reference rate (§7.4)
+        Real slope;   ///< sigma_f'(alpha)
+    };
+    /// Both with one evaluation of the flow curve (the Newton loop of §7.3).
+    [[nodiscard]] Radius radius_and_slope(Real alpha) const;
+
     Real e_, nu_, g_;
     Mat3 c_;
     FlowStress flow_;

@@ -12,6 +12,10 @@ struct MaterialPoint {
     Real plastic_strain = 0;              ///< equivalent plastic strain alpha (§7.2)
     Real plastic_work = 0;                ///< plastic work per unit volume, sum of sigma . d_eps_p
     Real strain_rate = 0;                 ///< filtered effective total strain rate (§7.4 option a)
+    /// kappa(alpha) / R of §7.4, the yield radius at the reference rate, stored when alpha
+    /// grows so that an elastic step needs no flow-curve evaluation (read only once alpha > 0).
+    Real flow_radius = 0;
+    Real flow_slope = 0;  ///< sigma_f'(alpha), stored with flow_radius (the next step's H_k)
 };
 
 }  // namespace fpmshell

@@ -111,6 +111,9 @@ struct Control {
     /// theory.md §3.4: thickness follows the plane-stress condition (off by default, like
     /// LS-DYNA's ISTUPD = 0; needed for large membrane strains)
     bool thickness_update = false;
+    /// control.end_when_body_stops: the run ends once this rigid body has stopped, i.e. its
+    /// velocity along its initial velocity is no longer positive (-1: run to end_time only)
+    Index end_body = -1;
 };
 
 /// One entry of `rigid_bodies`: a rigid impactor with a plane face (theory.md §8.3). It moves

@@ -500,6 +500,15 @@ TEST(ModelReader, EveryErrorNamesFileLineAndKey) {
          10, "rigid_bodies.0.shape", "expected one of plane"},
         {k_base + "contact: [{type: rigid, body: ram}]\n", 9, "contact.0.body",
          "the model has no rigid_bodies"},
+        {replaced(k_base, "  end_time: 1.0e-3\n", "  end_time: 1.0e-3\n  end_when_body_stops: ram\n") +
+             "rigid_bodies:\n  - {name: striker, mass: 1, point: [0, 0, 1], normal: [0, 0, -1]}\n",
+         9, "control.end_when_body_stops", "unknown rigid body 'ram'; the bodies are striker"},
+        {replaced(k_base, "  end_time: 1.0e-3\n", "  end_time: 1.0e-3\n  end_when_body_stops: w\n") +
+             "rigid_bodies:\n  - {name: w, fixed: true, point: [0, 0, 1], normal: [0, 0, -1], velocity: [0, 0, -1]}\n",
+         9, "control.end_when_body_stops", "is fixed: it keeps its velocity and never stops"},
+        {replaced(k_base, "  end_time: 1.0e-3\n", "  end_time: 1.0e-3\n  end_when_body_stops: w\n") +
+             "rigid_bodies:\n  - {name: w, mass: 1, point: [0, 0, 1], normal: [0, 0, -1]}\n",
+         9, "control.end_when_body_stops", "has no initial velocity"},
         {k_base + "contact: [{type: sliding}]\n", 9, "contact.0.type", "expected one of self, rigid"},
         {k_base + "contact: [{type: self, method: lagrangian}]\n", 9, "contact.0.method",
          "expected one of lagrange, penalty, got 'lagrangian'"},
