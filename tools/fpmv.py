@@ -19,7 +19,8 @@ ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 PLOT_DIR = os.path.join(ROOT, "docs", "validation")
 
 
-def parse_args(description):
+def parse_args(description, extra=None):
+    """The common options; extra(parser) adds a problem's own."""
     ap = argparse.ArgumentParser(description=description)
     ap.add_argument("--fpmshell", default=os.path.join(ROOT, "build", "fpmshell"))
     ap.add_argument("--out", required=True, help="folder for the runs and rows.json")
@@ -27,6 +28,8 @@ def parse_args(description):
     ap.add_argument("--reuse", action="store_true",
                     help="use a run already in --out when it completed to the same end time with "
                          "the same particle and element counts (for problems that take hours)")
+    if extra:
+        extra(ap)
     return ap.parse_args()
 
 
