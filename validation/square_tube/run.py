@@ -153,7 +153,7 @@ def fold_analysis(frame_path):
             "fold_length": sum(pooled) / len(pooled) if pooled else float("nan"),
             "in_phase": in_phase, "lobes_x": n_x,
             "mode": "walls in phase (extensional)" if 2 * in_phase > n_x else "walls alternate (symmetric)",
-            "walls": walls, "line": walls["x"]["line"]}
+            "walls": walls}
 
 
 def frames_by_time(out_dir):

@@ -57,6 +57,18 @@ public:
         return it->second;
     }
 
+    /// Index of the rigid body that v names (contact bodies, control.end_when_body_stops).
+    Index rigid_body(const YamlValue& v) const {
+        std::vector<std::string> names;
+        for (std::size_t b = 0; b < model_.rigid_bodies.size(); ++b) {
+            if (model_.rigid_bodies[b].name == v.name()) return static_cast<Index>(b);
+            names.push_back(model_.rigid_bodies[b].name);
+        }
+        if (names.empty()) v.fail("the model has no rigid_bodies; define the body first");
+        v.fail("unknown rigid body '" + v.name() + "'" + did_you_mean(v.name(), names) + "; the bodies are " +
+               join_names(names));
+    }
+
     const std::vector<Index>& element_set(const YamlValue& v) const {
         const std::string name = v.name();
         const auto it = model_.element_sets.find(name);
@@ -138,15 +150,7 @@ public:
     void end_body() {
         if (!end_body_key_) return;
         const YamlValue& key = *end_body_key_;
-        std::vector<std::string> names;
-        for (std::size_t b = 0; b < model_.rigid_bodies.size(); ++b) {
-            names.push_back(model_.rigid_bodies[b].name);
-            if (model_.rigid_bodies[b].name == key.name()) model_.control.end_body = static_cast<Index>(b);
-        }
-        if (model_.control.end_body < 0)
-            key.fail(names.empty() ? "names a rigid body, but the model has no rigid_bodies"
-                                   : "unknown rigid body '" + key.name() + "'" + did_you_mean(key.name(), names) +
-                                         "; the bodies are " + join_names(names));
+        model_.control.end_body = rigid_body(key);
         const RigidBody& b = model_.rigid_bodies[static_cast<std::size_t>(model_.control.end_body)];
         if (b.fixed)
             key.fail("the rigid body '" + b.name + "' is fixed: it keeps its velocity and never stops");
@@ -579,17 +583,7 @@ public:
             } else {
                 const YamlMap m = item.map({"type", "body", "nodes", "method", "penalty_scale", "max_iterations"});
                 c.type = ContactType::Rigid;
-                const YamlValue body = m.at("body", "the name of a rigid body");
-                std::vector<std::string> names;
-                for (std::size_t b = 0; b < model_.rigid_bodies.size(); ++b) {
-                    names.push_back(model_.rigid_bodies[b].name);
-                    if (model_.rigid_bodies[b].name == body.name()) c.body = static_cast<Index>(b);
-                }
-                if (c.body < 0)
-                    body.fail(names.empty() ? "the model has no rigid_bodies; define the body first"
-                                            : "unknown rigid body '" + body.name() + "'" +
-                                                  did_you_mean(body.name(), names) + "; the bodies are " +
-                                                  join_names(names));
+                c.body = rigid_body(m.at("body", "the name of a rigid body"));
                 c.nodes = m.find("nodes") ? node_set(*m.find("nodes")) : model_.node_sets.at("all");
                 common_contact(m, c);
                 // A particle that starts inside the face (its half thickness included) would be
