@@ -15,6 +15,8 @@ constexpr int k_exit_invalid = 2;
 const char* k_footer = R"(Examples:
   fpmshell check examples/spherical_cap_elastic/model.yaml
   fpmshell run examples/spherical_cap_elastic/model.yaml -o results/cap --set control.end_time=5e-4
+  fpmshell run examples/square_tube/model.yaml -o results/tube --restart-every 600
+  fpmshell run examples/square_tube/model.yaml -o results/tube --restart-every 600 --resume
 Results: history.csv, energy.csv, fields.pvd (open in ParaView), summary.json, log.txt.)";
 
 }  // namespace
@@ -28,7 +30,8 @@ int main(int argc, char** argv) {
     std::string model_path, out_dir;
     std::vector<std::string> overrides;
     int threads = 0;
-    bool quiet = false, overwrite = false;
+    bool quiet = false, overwrite = false, resume = false;
+    double restart_every = 0;
 
     CLI::App* run = app.add_subcommand("run", "run a model and write its results");
     run->add_option("model", model_path, "model file (YAML)")->required();
@@ -37,6 +40,11 @@ int main(int argc, char** argv) {
     run->add_flag("--quiet", quiet, "a progress line every ~5 % instead of a live line");
     run->add_flag("--overwrite", overwrite, "replace results of another model in the folder");
     run->add_option("--set", overrides, "override a scalar of the model, e.g. control.end_time=2e-3");
+    run->add_option("--restart-every", restart_every,
+                    "write the restart file DIR/restart.bin every this many wall-clock seconds and at the end")
+        ->check(CLI::PositiveNumber);
+    run->add_flag("--resume", resume,
+                  "continue the run in the result folder from its restart file (a later end_time may be --set)");
 
     CLI::App* check = app.add_subcommand("check", "parse and validate a model, print a summary");
     check->add_option("model", model_path, "model file (YAML)")->required();
@@ -64,6 +72,8 @@ int main(int argc, char** argv) {
         opt.threads = threads;
         opt.quiet = quiet;
         opt.overwrite = overwrite;
+        opt.restart_every = restart_every;
+        opt.resume = resume;
         return fpmshell::run_model(model, opt);
     } catch (const fpmshell::InputError& e) {
         std::cerr << "error: " << e.what() << "\n";

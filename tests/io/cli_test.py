@@ -228,6 +228,33 @@ if code == 0:
           s["exit_reason"] == "completed: rigid body ram stopped" and s["end_time"] < 2.0e-2 and vz[-1] <= 0
           and min(vz[:-1]) > 0 and "has stopped at t =" in open(os.path.join(sres, "log.txt")).read(),
           str(s.get("exit_reason")) + " " + str(s.get("end_time")) + " " + rows[-1])
+# Restart files: a run that wrote one continues to a later end time with --resume; a folder
+# without one, a relaxation run and a damaged file are refused with exit 2.
+rres = os.path.join(WORK, "restart")
+code, out = fpm("run", good, "-o", rres, "--quiet", "--threads", "1", "--restart-every", "1000")
+check("--restart-every writes restart.bin at the end of the run",
+      code == 0 and os.path.isfile(os.path.join(rres, "restart.bin")), out)
+code, out = fpm("run", good, "-o", rres, "--quiet", "--threads", "1", "--resume", "--set", "control.end_time=2e-4")
+if code == 0:
+    rows = open(os.path.join(rres, "history.csv")).read().strip().splitlines()
+    times = [float(r.split(",")[0]) for r in rows[1:]]
+    check("--resume continues the run to a later end time, rows in order, frames listed once",
+          abs(times[-1] - 2e-4) < 1e-12 and all(b > a for a, b in zip(times, times[1:])) and 1e-4 in times
+          and "resumed from" in open(os.path.join(rres, "log.txt")).read()
+          and open(os.path.join(rres, "fields.pvd")).read().count("frame_00001.vtu") == 1, "\n".join(rows))
+else:
+    check("--resume continues the run to a later end time", False, out)
+code, out = fpm("run", good, "-o", os.path.join(WORK, "never_run"), "--resume")
+check("--resume without a restart file exits 2 with one sentence",
+      code == 2 and "no result folder" in out and len(out.strip().splitlines()) == 1, out)
+with open(os.path.join(rres, "restart.bin"), "wb") as f:
+    f.write(b"garbage")
+code, out = fpm("run", good, "-o", rres, "--resume")
+check("a damaged restart file exits 2 naming it", code == 2 and "restart.bin" in out
+      and "not an fpmshell restart file" in out, out)
+relax = write("relax_restart.yaml", BASE.replace("control: {end_time: 1.0e-4}", "control: {end_time: 1.0, mode: relaxation}"))
+code, out = fpm("run", relax, "-o", os.path.join(WORK, "relax_restart"), "--restart-every", "10")
+check("restart files in a relaxation run exit 2 naming control.mode", code == 2 and "control.mode" in out, out)
 code, out = fpm("check", os.path.join(ROOT, "examples", "square_tube", "model.yaml"))
 check("the square tube example is valid", code == 0 and "rigid body striker" in out, out)
 

@@ -1,5 +1,7 @@
 #include "fpmshell/contact/contact_solver.hpp"
 
+#include "fpmshell/io/restart_archive.hpp"
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -466,6 +468,27 @@ void ContactSolver::enforce(const std::vector<Vec3>& x, std::vector<Vec3>& x_pre
             (x_pred[static_cast<std::size_t>(c.slave)] - cp.point).dot(unit_normal(ya, yb, yc)));
         note_penetration(c.offset - dist, c, step);
     }
+}
+
+template <class Archive>
+void ContactSolver::transfer_state(Archive& ar) {
+    for (Definition& d : definitions_) ar(d.travelled, d.searched, d.candidate_start, d.candidates);
+    ContactStatistics& st = stats_;
+    ar(st.active, st.max_active, st.sweeps, st.max_sweeps, st.unconverged_steps, st.searches);
+    ar(st.held_penetrations, st.max_penetration, st.max_penetration_ratio, st.max_penetration_step);
+    ar(st.max_penetration_particle, st.max_penetration_element, st.seconds);
+}
+
+void ContactSolver::save(RestartWriter& out) const {
+    out(static_cast<std::uint64_t>(definitions_.size()));
+    const_cast<ContactSolver*>(this)->transfer_state(out);
+}
+
+void ContactSolver::load(RestartReader& in) {
+    std::uint64_t n = 0;
+    in(n);
+    if (n != definitions_.size()) in.fail("restart file of a model with other contact definitions");
+    transfer_state(in);
 }
 
 }  // namespace fpmshell

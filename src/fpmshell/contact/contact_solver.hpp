@@ -21,6 +21,9 @@
 
 namespace fpmshell {
 
+class RestartWriter;
+class RestartReader;
+
 struct ContactStatistics {
     long active = 0;      ///< contact forces (constraints with a force) of the last step
     long max_active = 0;  ///< most at any step
@@ -70,6 +73,11 @@ public:
 
     [[nodiscard]] const ContactStatistics& statistics() const { return stats_; }
 
+    /// The state carried from step to step (search cadence, candidates, statistics), for a
+    /// restart file (io/restart_archive.hpp).
+    void save(RestartWriter& out) const;
+    void load(RestartReader& in);
+
 private:
     /// One gap constraint: slave particle s against the point sum xi_k x_k of triangle
     /// `element` (or the face of rigid body `body`), along the unit normal n (frozen at the
@@ -117,6 +125,8 @@ private:
                               const std::vector<RigidBodyState>& bodies) const;
     void note_penetration(Real penetration, const Constraint& c, long step);
     void prepare_search(Definition& d, const std::vector<Vec3>& x, Real motion);
+    template <class Archive>
+    void transfer_state(Archive& ar);
 
     const Model& model_;
     std::vector<Vec3> inv_mass_;

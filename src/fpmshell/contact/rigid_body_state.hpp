@@ -33,4 +33,10 @@ struct RigidBodyState {
     }
 };
 
+/// Members for a restart file (io/restart_archive.hpp).
+template <class Archive>
+void transfer(Archive& ar, RigidBodyState& b) {
+    ar(b.u, b.u_prev, b.v, b.v_prev, b.force, b.force_prev, b.inv_mass, b.mass);
+}
+
 }  // namespace fpmshell

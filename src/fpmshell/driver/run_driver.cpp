@@ -16,6 +16,7 @@
 #include "fpmshell/io/csv_table.hpp"
 #include "fpmshell/io/field_frame.hpp"
 #include "fpmshell/io/progress.hpp"
+#include "fpmshell/io/restart_archive.hpp"
 #include "fpmshell/io/run_directory.hpp"
 #include "fpmshell/io/summary_json.hpp"
 #include "fpmshell/io/vtu_writer.hpp"
@@ -92,6 +93,11 @@ struct Peak {
     Real value = 0;
     Real time = 0;
 };
+
+template <class Archive>
+void transfer(Archive& ar, Peak& p) {
+    ar(p.value, p.time);
+}
 
 /// Everything the run writes, kept together so that a failure can still flush it all.
 class ResultWriter {
@@ -215,6 +221,27 @@ public:
         write_json_file(dir_ / "summary.json", j);
     }
 
+    /// Everything written so far, for a restart file: the rows of the histories, the frames
+    /// listed in fields.pvd and the peaks.
+    void save(RestartWriter& w) const {
+        w.section("results");
+        w(history_.rows(), energy_.rows(), pvd_.entries(), peaks_, n_frames_);
+    }
+    void load(RestartReader& r) {
+        r.section("results");
+        std::vector<std::vector<Real>> history, energy;
+        std::vector<std::pair<Real, std::string>> frames;
+        r(history, energy, frames, peaks_, n_frames_);
+        if (peaks_.size() != model_.output.histories.size() ||
+            std::any_of(history.begin(), history.end(),
+                        [&](const std::vector<Real>& row) { return row.size() != history_.n_columns(); }))
+            r.fail("restart file of a model with other output.histories");
+        for (const auto& row : history) history_.add_row(row);
+        for (const auto& row : energy) energy_.add_row(row);
+        for (const auto& [time, file] : frames) pvd_.add(time, file);
+    }
+    [[nodiscard]] int frames() const { return n_frames_; }
+
 private:
     const Model& model_;
     std::filesystem::path dir_;
@@ -270,35 +297,66 @@ int run_model(const Model& model, const RunOptions& opt) {
 #else
     const int threads = 1;
 #endif
-    prepare_run_directory(opt.output_dir, model.source_file, opt.overwrite);
+    const bool relaxation = model.control.mode == SolutionMode::Relaxation;
+    if (relaxation && (opt.resume || opt.restart_every > 0 || opt.stop_at_step > 0))
+        throw InputError(input_error_text(model.source_file, 0, "control.mode",
+                                          "restart files (--restart-every, --resume) are for dynamic runs, "
+                                          "not for relaxation"));
+    if (opt.resume)
+        prepare_resume_directory(opt.output_dir, model.source_file, opt.overwrite);
+    else
+        prepare_run_directory(opt.output_dir, model.source_file, opt.overwrite);
     LogFile log(opt.output_dir / "log.txt", opt.echo);
     log.print("fpmshell {} — {}", version(), model.title);
     log.print("model {}, {} particles, {} elements, {} thread(s)", model.source_file,
               model.n_particles(), model.n_elements(), threads);
 
-    const bool relaxation = model.control.mode == SolutionMode::Relaxation;
     ExplicitSolver solver(model);
     ResultWriter out(model, opt, relaxation);
     const Real end = model.control.end_time;
+    const Real every = model.output.every;
+    const Real fields_every = model.output.fields_every > 0 ? model.output.fields_every : end;
+    Real next_row = every, next_frame = fields_every;
+    double wall_before = 0;  // wall seconds of the earlier segments of a resumed run
+    const std::filesystem::path restart_path = opt.output_dir / k_restart_file;
+    if (opt.resume) {
+        RestartReader in(restart_path);
+        solver.load(in);
+        in.section("driver");
+        in(next_row, next_frame, wall_before);
+        out.load(in);
+        in.finish();
+        remove_frames_from(opt.output_dir, out.frames());
+        log.print("resumed from {} at t = {:.6g}, step {}", restart_path.string(), solver.time(), solver.steps());
+    }
     Progress progress(end, opt.quiet, [&log](const std::string& s) { log.line(s); });
     log.set_progress(&progress);
     log.print("stable time step {:.6g}", solver.stable_dt());
 
-    out.sample(solver, 0.0, relaxation ? std::optional<bool>(true) : std::nullopt);
-    out.frame(solver, 0.0);
+    if (!opt.resume) {
+        out.sample(solver, 0.0, relaxation ? std::optional<bool>(true) : std::nullopt);
+        out.frame(solver, 0.0);
+    }
     out.flush();
     const auto wall0 = std::chrono::steady_clock::now();
     auto wall = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count(); };
+    double last_restart = 0;
+    // The state after a completed step, with everything written so far (README "restart files").
+    auto write_restart = [&] {
+        RestartWriter w;
+        solver.save(w);
+        w.section("driver");
+        w(next_row, next_frame, wall_before + wall());
+        out.save(w);
+        w.save(restart_path);
+        last_restart = wall();
+    };
     std::string reason = "completed";
     int code = 0;
     std::vector<Vec3> last_good = solver.state().x;
     try {
-        const Real every = model.output.every;
-        const Real fields_every = model.output.fields_every > 0 ? model.output.fields_every : end;
-        Real next_frame = fields_every;
         double last_flush = 0;
         if (!relaxation) {
-            Real next_row = every;
             while (solver.time() < end * (1 - 1e-12)) {
                 last_good = solver.state().x;
                 // No sliver step at the end: when less than two steps remain, take two equal
@@ -325,6 +383,11 @@ int run_model(const Model& model, const RunOptions& opt) {
                     last_flush = wall();
                 }
                 progress.update(t, solver.steps(), solver.last_dt(), solver.energy().error());
+                const bool stop_here = opt.stop_at_step > 0 && solver.steps() >= opt.stop_at_step && !at_end;
+                if ((opt.restart_every > 0 && (wall() - last_restart >= opt.restart_every || at_end)) || stop_here) {
+                    out.flush();
+                    write_restart();
+                }
                 if (body_stopped) {
                     const std::string& name = model.rigid_bodies[static_cast<std::size_t>(model.control.end_body)].name;
                     progress.finish();
@@ -333,8 +396,15 @@ int run_model(const Model& model, const RunOptions& opt) {
                     reason = fmt::format("completed: rigid body {} stopped", name);
                     break;
                 }
+                if (stop_here) {
+                    progress.finish();
+                    log.print("stopped after step {} at t = {:.6g}; continue with --resume from {}", solver.steps(), t,
+                              restart_path.string());
+                    reason = fmt::format("stopped at step {}: resume with --resume", solver.steps());
+                    break;
+                }
             }
-        } else {
+    } else {
             const Real step = every > 0 ? every : end;
             const long levels = static_cast<long>(std::ceil(end / step - 1e-9));
             long unconverged = 0;
@@ -373,7 +443,7 @@ int run_model(const Model& model, const RunOptions& opt) {
         }
     }
     progress.finish();
-    const double seconds = wall();
+    const double seconds = wall_before + wall();
     out.flush();
     out.summary(solver, seconds, threads, reason);
     log.print("{} after {} steps, t = {:.6g}, energy error {:.3f} %, {:.2f} s wall, {:.3g} element-steps/s",

@@ -146,6 +146,39 @@ void prepare_run_directory(const fs::path& dir, const fs::path& model_file, bool
     }
 }
 
+void prepare_resume_directory(const fs::path& dir, const fs::path& model_file, bool overwrite) {
+    const std::string model = absolute_model_path(model_file).string();
+    std::error_code ec;
+    if (!fs::is_directory(dir, ec)) dir_error(dir, "there is no result folder to resume a run from; give it with -o.");
+    if (!fs::exists(dir / "restart.bin", ec))
+        dir_error(dir, "the folder holds no restart file (restart.bin) to resume from; the run must be started "
+                       "with --restart-every.");
+    const std::string recorded = recorded_model(dir);
+    if (recorded != model && !overwrite) {
+        const std::string other = recorded.empty() ? "a model it cannot identify" : "'" + recorded + "'";
+        dir_error(dir, "the restart file belongs to " + other + "; use --overwrite to resume it with this model file.");
+    }
+    fs::create_directories(dir / k_fields_folder, ec);
+    if (ec) dir_error(dir, "cannot create the folder '" + (dir / k_fields_folder).string() + "' (" + ec.message() + ").");
+}
+
+void remove_frames_from(const fs::path& dir, int first) {
+    std::error_code ec;
+    for (const auto& entry : fs::directory_iterator(dir / k_fields_folder, ec)) {
+        const std::string name = entry.path().filename().string();
+        if (!is_frame_file(name) || entry.is_directory(ec)) continue;
+        // frame_NNNNN.vtu: the number follows "frame_"; a temporary file is always stale.
+        const bool temporary = name.find(".vtu.tmp.") != std::string::npos;
+        int index = -1;
+        try {
+            index = std::stoi(name.substr(6));
+        } catch (const std::exception&) {
+            continue;  // not one of ours
+        }
+        if (temporary || index >= first) remove_file(dir, entry.path());
+    }
+}
+
 LogFile::LogFile(const fs::path& path, bool echo) : path_(path), echo_(echo) {
     file_ = std::fopen(path_.c_str(), "a");
     if (file_ == nullptr) {

@@ -22,8 +22,9 @@ inline constexpr const char* k_model_marker = ".fpmshell_model";
 /// Result files a run writes in DIR (besides fields/frame_NNNNN.vtu and the marker), and the
 /// plots tools/plot_history.py adds. Their presence means "DIR holds results"; a run of the
 /// same model removes them first (so no plot of an older run is left beside new results).
-inline constexpr std::array<const char*, 7> k_result_files = {
-    "summary.json", "history.csv", "energy.csv", "fields.pvd", "log.txt", "history.png", "energy.png"};
+inline constexpr std::array<const char*, 8> k_result_files = {
+    "summary.json", "history.csv", "energy.csv", "fields.pvd",
+    "log.txt",      "history.png", "energy.png", "restart.bin"};
 /// Folder of the VTU frames, inside DIR.
 inline constexpr const char* k_fields_folder = "fields";
 
@@ -39,6 +40,17 @@ inline constexpr const char* k_fields_folder = "fields";
 /// cleaned.
 void prepare_run_directory(const std::filesystem::path& dir,
                            const std::filesystem::path& model_file, bool overwrite);
+
+/// Makes `dir` ready to resume the run of `model_file` it holds (fpmshell run --resume): DIR
+/// must hold a restart file (restart.bin) of that model, as recorded by its marker, unless
+/// `overwrite`. Nothing is removed here; the caller removes the frames written after the
+/// restart file with remove_frames_from(). Throws InputError (one sentence naming DIR).
+void prepare_resume_directory(const std::filesystem::path& dir,
+                              const std::filesystem::path& model_file, bool overwrite);
+
+/// Deletes DIR/fields/frame_NNNNN.vtu for every NNNNN >= first (frames a run wrote after its
+/// last restart file, which the resumed run writes again) and leftover temporary files.
+void remove_frames_from(const std::filesystem::path& dir, int first);
 
 /// Text sink that echoes to stdout and appends to a log file (DIR/log.txt), flushing both on
 /// every write, so the log is complete up to the last line even if the run is killed.

@@ -18,4 +18,10 @@ struct MaterialPoint {
     Real flow_slope = 0;  ///< sigma_f'(alpha), stored with flow_radius (the next step's H_k)
 };
 
+/// Members of a material point for a restart file (io/restart_archive.hpp).
+template <class Archive>
+void transfer(Archive& ar, MaterialPoint& p) {
+    ar(p.stress, p.back_stress, p.plastic_strain, p.plastic_work, p.strain_rate, p.flow_radius, p.flow_slope);
+}
+
 }  // namespace fpmshell

@@ -24,4 +24,10 @@ struct EnergyBalance {
     }
 };
 
+/// Members for a restart file (io/restart_archive.hpp).
+template <class Archive>
+void transfer(Archive& ar, EnergyBalance& e) {
+    ar(e.kinetic, e.internal, e.plastic, e.external_work, e.damping, e.contact);
+}
+
 }  // namespace fpmshell

@@ -8,6 +8,7 @@
 #include "fpmshell/core/errors.hpp"
 #include "fpmshell/core/rotation.hpp"
 #include "fpmshell/elements/lumped_inertia.hpp"
+#include "fpmshell/io/restart_archive.hpp"
 
 namespace fpmshell {
 namespace {
@@ -515,6 +516,38 @@ ExplicitSolver::RelaxResult ExplicitSolver::relax(Real load_time) {
         }
     }
     return res;
+}
+
+template <class Archive>
+void ExplicitSolver::transfer_state(Archive& ar) {
+    ar(time_, dt_half_, dt_half_prev_, dt_center_, steps_, restart_, element_steps_);
+    ar(s_, energy_, bodies_, prescribed_rotation_applied_);
+}
+
+void ExplicitSolver::save(RestartWriter& out) const {
+    out.section("solver");
+    const_cast<ExplicitSolver*>(this)->transfer_state(out);
+    out.section("elements");
+    elements_.save(out);
+    out.section("contact");
+    out(static_cast<bool>(contact_));
+    if (contact_) contact_->save(out);
+}
+
+void ExplicitSolver::load(RestartReader& in) {
+    in.section("solver");
+    const std::size_t n_bodies = bodies_.size();
+    transfer_state(in);
+    // The model's initial positions must be those the run started from, bit for bit.
+    if (s_.x0 != model_.nodes) in.fail("restart file of another model: its particles are not those of this mesh");
+    if (bodies_.size() != n_bodies) in.fail("restart file of a model with other rigid bodies");
+    in.section("elements");
+    elements_.load(in);
+    in.section("contact");
+    bool has_contact = false;
+    in(has_contact);
+    if (has_contact != static_cast<bool>(contact_)) in.fail("restart file of a model with other contact definitions");
+    if (contact_) contact_->load(in);
 }
 
 }  // namespace fpmshell

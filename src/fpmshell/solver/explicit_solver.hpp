@@ -17,6 +17,9 @@
 
 namespace fpmshell {
 
+class RestartWriter;
+class RestartReader;
+
 class ExplicitSolver {
 public:
     /// Sets up masses (§6.1), rotary inertia (§6.2 option B), kink particles (§1.3), boundary
@@ -58,7 +61,15 @@ public:
         return contact_ ? &contact_->statistics() : nullptr;
     }
 
+    /// The whole state of a dynamic run at t_n, for a restart file (io/restart_archive.hpp):
+    /// a solver built from the same model and loaded continues bitwise like this one.
+    void save(RestartWriter& out) const;
+    /// Throws InputError when the file belongs to another model (other particles).
+    void load(RestartReader& in);
+
 private:
+    template <class Archive>
+    void transfer_state(Archive& ar);
     struct Prescribed {
         Index particle;
         PrescribedKind kind;

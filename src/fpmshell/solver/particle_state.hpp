@@ -35,4 +35,12 @@ struct ParticleState {
     [[nodiscard]] std::size_t size() const { return x.size(); }
 };
 
+/// Every field, for a restart file (io/restart_archive.hpp).
+template <class Archive>
+void transfer(Archive& ar, ParticleState& s) {
+    ar(s.x0, s.x, s.x_prev, s.v, s.v_prev, s.omega, s.omega_prev, s.dtheta, s.rotation, s.normal);
+    ar(s.f_int, s.m_int, s.f_ext, s.m_ext, s.f_ext_prev, s.m_ext_prev, s.reaction, s.reaction_moment);
+    ar(s.reaction_prev, s.reaction_moment_prev, s.f_contact, s.f_contact_prev, s.mass, s.inertia, s.full_rotation);
+}
+
 }  // namespace fpmshell

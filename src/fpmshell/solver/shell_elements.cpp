@@ -1,5 +1,7 @@
 #include "fpmshell/solver/shell_elements.hpp"
 
+#include "fpmshell/io/restart_archive.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -366,6 +368,20 @@ ShellElements::StepTotals ShellElements::compute(ParticleState& s, Real viscous_
         }
     }
     return tot;
+}
+
+template <class Archive>
+void ShellElements::transfer_state(Archive& ar) {
+    ar(points_, thickness_, bend_ratio_, bend_lc_, membrane_force_, bending_moment_);
+}
+
+void ShellElements::save(RestartWriter& out) const { const_cast<ShellElements*>(this)->transfer_state(out); }
+
+void ShellElements::load(RestartReader& in) {
+    const std::size_t n_points = points_.size(), n_elements = thickness_.size();
+    transfer_state(in);
+    if (points_.size() != n_points || thickness_.size() != n_elements)
+        in.fail("restart file of a model with other elements or integration rules");
 }
 
 }  // namespace fpmshell

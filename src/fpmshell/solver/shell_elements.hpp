@@ -14,6 +14,9 @@
 
 namespace fpmshell {
 
+class RestartWriter;
+class RestartReader;
+
 class ShellElements {
 public:
     explicit ShellElements(const Model& model);
@@ -47,7 +50,14 @@ public:
     /// Current thickness of element e (the section's, or updated by §3.4).
     [[nodiscard]] Real thickness(Index e) const { return thickness_[static_cast<std::size_t>(e)]; }
 
+    /// The state carried from step to step (material points, thickness, bending step ratios,
+    /// resultants), for a restart file (io/restart_archive.hpp).
+    void save(RestartWriter& out) const;
+    void load(RestartReader& in);
+
 private:
+    template <class Archive>
+    void transfer_state(Archive& ar);
     /// Critical step of element e of current length lc: the smaller of the membrane step L_c / c and
     /// the bending step (the stored ratio bend_ratio_ times L_c / c), reduced for stiffness
     /// damping (§6.4).

@@ -1,0 +1,183 @@
+// Restart files (io/restart_archive.hpp, fpmshell run --restart-every / --resume):
+// - the archive reads back every kind of value bit for bit, and refuses a truncated, foreign
+//   or reordered file with an InputError naming it;
+// - a run stopped part way and resumed writes the same bytes as the run that never stopped,
+//   on the square tube (plasticity, self-contact, a rigid body, variable step);
+// - a restart file does not resume another model.
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "fpmshell/core/errors.hpp"
+#include "fpmshell/driver/run_driver.hpp"
+#include "fpmshell/io/model_reader.hpp"
+#include "fpmshell/io/restart_archive.hpp"
+#include "fpmshell/materials/material_point.hpp"
+
+namespace fpmshell {
+namespace {
+
+namespace fs = std::filesystem;
+
+fs::path fresh_dir(const std::string& name) {
+    const fs::path p = fs::temp_directory_path() / ("fpmshell_restart_" + name + "_" + std::to_string(::getpid()));
+    fs::remove_all(p);
+    fs::create_directories(p);
+    return p;
+}
+
+std::string bytes_of(const fs::path& p) {
+    std::ifstream in(p, std::ios::binary);
+    std::ostringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+TEST(RestartArchive, ReadsBackEveryKindOfValueBitForBit) {
+    const fs::path dir = fresh_dir("archive");
+    MaterialPoint mp;
+    mp.stress = Voigt3(1.0 / 3.0, -2e-300, 7.5);
+    mp.back_stress = Voigt3(0.1, 0.2, 0.3);
+    mp.plastic_strain = 0.123456789012345678;
+    mp.flow_radius = 350e6;
+    const std::vector<Vec3> vectors{Vec3(1, 2, 3), Vec3(-0.0, 1e-310, 4)};
+    const std::vector<std::vector<Real>> rows{{1, 2}, {}, {3}};
+    const std::vector<std::pair<Real, std::string>> frames{{0.5, "fields/frame_00001.vtu"}};
+    const Mat3 rotation = Eigen::AngleAxisd(0.7, Vec3(1, 1, 0).normalized()).toRotationMatrix();
+    {
+        RestartWriter w;
+        w.section("one");
+        w(mp, vectors, rows, frames, rotation, 42L, true);
+        w.save(dir / "r.bin");
+    }
+    MaterialPoint mp2;
+    std::vector<Vec3> vectors2;
+    std::vector<std::vector<Real>> rows2;
+    std::vector<std::pair<Real, std::string>> frames2;
+    Mat3 rotation2;
+    long n = 0;
+    bool flag = false;
+    RestartReader r(dir / "r.bin");
+    r.section("one");
+    r(mp2, vectors2, rows2, frames2, rotation2, n, flag);
+    r.finish();
+    EXPECT_EQ(mp2.stress, mp.stress);  // exact: the bytes are copied
+    EXPECT_EQ(mp2.back_stress, mp.back_stress);
+    EXPECT_EQ(mp2.plastic_strain, mp.plastic_strain);
+    EXPECT_EQ(mp2.flow_radius, mp.flow_radius);
+    EXPECT_EQ(vectors2, vectors);
+    EXPECT_TRUE(std::signbit(vectors2[1].x()));
+    EXPECT_EQ(rows2, rows);
+    EXPECT_EQ(frames2, frames);
+    EXPECT_EQ(rotation2, rotation);
+    EXPECT_EQ(n, 42);
+    EXPECT_TRUE(flag);
+    fs::remove_all(dir);
+}
+
+TEST(RestartArchive, RefusesTruncatedForeignAndReorderedFiles) {
+    const fs::path dir = fresh_dir("bad");
+    {
+        RestartWriter w;
+        w.section("solver");
+        w(std::vector<Real>(100, 1.0));
+        w.save(dir / "good.bin");
+    }
+    const std::string good = bytes_of(dir / "good.bin");
+    std::ofstream(dir / "short.bin", std::ios::binary) << good.substr(0, good.size() - 8);
+    std::ofstream(dir / "text.bin", std::ios::binary) << "title: not a restart file\n";
+    auto message = [](auto&& f) {
+        try {
+            f();
+        } catch (const InputError& e) {
+            return std::string(e.what());
+        }
+        return std::string("no error");
+    };
+    const std::string truncated = message([&] {
+        RestartReader r(dir / "short.bin");
+        r.section("solver");
+        std::vector<Real> v;
+        r(v);
+    });
+    EXPECT_NE(truncated.find("short.bin"), std::string::npos) << truncated;
+    EXPECT_NE(truncated.find("truncated"), std::string::npos) << truncated;
+    const std::string foreign = message([&] { RestartReader r(dir / "text.bin"); });
+    EXPECT_NE(foreign.find("not an fpmshell restart file"), std::string::npos) << foreign;
+    const std::string reordered = message([&] {
+        RestartReader r(dir / "good.bin");
+        r.section("elements");
+    });
+    EXPECT_NE(reordered.find("expected section 'elements', found 'solver'"), std::string::npos) << reordered;
+    const std::string missing = message([&] { RestartReader r(dir / "none.bin"); });
+    EXPECT_NE(missing.find("none.bin"), std::string::npos) << missing;
+    fs::remove_all(dir);
+}
+
+/// The square tube example on a coarse mesh for `end` seconds: plasticity, self-contact and the
+/// striker from the first steps (the block touches the tube at t = 0).
+Model small_tube(Real end, int divisions_width = 6) {
+    const std::string model = std::string(FPMSHELL_SOURCE_DIR) + "/examples/square_tube/model.yaml";
+    return read_model(model, {"mesh.divisions_width=" + std::to_string(divisions_width),
+                              "mesh.divisions_length=24", "control.end_time=" + std::to_string(end),
+                              "output.fields_every=1e-4"});
+}
+
+TEST(Restart, AStoppedAndResumedRunWritesTheSameBytesAsAnUninterruptedOne) {
+    const Model model = small_tube(4e-4);
+    RunOptions straight;
+    straight.output_dir = fresh_dir("straight");
+    straight.echo = false;
+    straight.quiet = true;
+    ASSERT_EQ(run_model(model, straight), 0);
+
+    RunOptions first = straight;
+    first.output_dir = fresh_dir("pieces");
+    first.stop_at_step = 217;  // mid-way between two frames and two history rows
+    ASSERT_EQ(run_model(model, first), 0);
+    ASSERT_TRUE(fs::exists(first.output_dir / k_restart_file));
+    EXPECT_NE(bytes_of(first.output_dir / "history.csv"), bytes_of(straight.output_dir / "history.csv"));
+    RunOptions second = first;
+    second.stop_at_step = 0;
+    second.resume = true;
+    ASSERT_EQ(run_model(model, second), 0);
+
+    for (const char* file : {"history.csv", "energy.csv", "fields.pvd"})
+        EXPECT_EQ(bytes_of(first.output_dir / file), bytes_of(straight.output_dir / file)) << file;
+    int frames = 0;
+    for (const auto& entry : fs::directory_iterator(straight.output_dir / "fields")) {
+        const fs::path name = entry.path().filename();
+        EXPECT_EQ(bytes_of(first.output_dir / "fields" / name), bytes_of(entry.path())) << name;
+        ++frames;
+    }
+    EXPECT_GE(frames, 4);
+    fs::remove_all(straight.output_dir);
+    fs::remove_all(first.output_dir);
+}
+
+TEST(Restart, ARestartFileDoesNotResumeAnotherModel) {
+    RunOptions first;
+    first.output_dir = fresh_dir("other");
+    first.echo = false;
+    first.quiet = true;
+    first.stop_at_step = 20;
+    ASSERT_EQ(run_model(small_tube(1e-4), first), 0);
+    RunOptions second = first;
+    second.stop_at_step = 0;
+    second.resume = true;
+    try {
+        (void)run_model(small_tube(1e-4, 5), second);
+        ADD_FAILURE() << "resumed a restart file of another mesh";
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("restart.bin"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("another model"), std::string::npos) << e.what();
+    }
+    fs::remove_all(first.output_dir);
+}
+
+}  // namespace
+}  // namespace fpmshell
