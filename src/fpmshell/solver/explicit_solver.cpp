@@ -5,6 +5,7 @@
 #include <limits>
 #include <sstream>
 
+#include "fpmshell/core/chunked_loop.hpp"
 #include "fpmshell/core/errors.hpp"
 #include "fpmshell/core/rotation.hpp"
 #include "fpmshell/elements/lumped_inertia.hpp"
@@ -15,6 +16,8 @@ namespace {
 
 constexpr Real k_kink_cosine = 0.9397;  // cos 20 deg: beyond it a particle gets 3 rotations (§1.3)
 constexpr Real k_relaxation_step_scale = 0.75;
+// Particle loops of smaller models stay serial: a parallel region costs more than it saves there.
+constexpr Index k_parallel_min_particles = 2000;
 
 /// Removes from w its components along the constraint directions (Gram-Schmidt on the fly).
 Vec3 remove_components(Vec3 w, const std::array<Vec3, 4>& dirs, int n_dirs) {
@@ -101,6 +104,20 @@ ExplicitSolver::ExplicitSolver(const Model& model) : model_(model), elements_(mo
         energy_.external_work += 0.5 * s_.mass[p] * s_.v[p].squaredNorm() +
                                  0.5 * s_.inertia[p] * s_.omega[p].squaredNorm();
     }
+    // Particle -> its triangles, in element order (update_normals).
+    node_element_begin_.assign(np + 1, 0);
+    for (const auto& t : model.triangles)
+        for (Index p : t) ++node_element_begin_[static_cast<std::size_t>(p) + 1];
+    for (std::size_t p = 0; p < np; ++p) node_element_begin_[p + 1] += node_element_begin_[p];
+    node_element_.assign(static_cast<std::size_t>(node_element_begin_[np]), 0);
+    {
+        std::vector<Index> fill(node_element_begin_.begin(), node_element_begin_.end() - 1);
+        for (std::size_t e = 0; e < model.triangles.size(); ++e)
+            for (Index p : model.triangles[e])
+                node_element_[static_cast<std::size_t>(fill[static_cast<std::size_t>(p)]++)] = static_cast<Index>(e);
+    }
+    element_cross_.assign(model.triangles.size(), Vec3::Zero());
+    parallel_particles_ = static_cast<Index>(np) >= k_parallel_min_particles;
     // Rigid bodies and contact (theory.md §8).
     bodies_ = RigidBodyState::from_model(model);
     for (const RigidBodyState& b : bodies_) energy_.external_work += 0.5 * b.mass * b.v.squaredNorm();
@@ -186,18 +203,24 @@ Vec3 ExplicitSolver::acceleration(Index p) const {
 }
 
 void ExplicitSolver::update_normals() {
-    // §1.3 area-weighted normal, recomputed from the current positions.
-    const std::size_t np = s_.size();
-    for (std::size_t p = 0; p < np; ++p) s_.normal[p] = Vec3::Zero();
-    for (const auto& t : model_.triangles) {
-        const Vec3 cr = (s_.x[static_cast<std::size_t>(t[1])] - s_.x[static_cast<std::size_t>(t[0])])
-                            .cross(s_.x[static_cast<std::size_t>(t[2])] - s_.x[static_cast<std::size_t>(t[0])]);
-        for (Index p : t) s_.normal[static_cast<std::size_t>(p)] += cr;
-    }
-    for (std::size_t p = 0; p < np; ++p) {
-        const Real len = s_.normal[p].norm();
-        s_.normal[p] = len > 0 ? Vec3(s_.normal[p] / len) : Vec3::UnitZ();
-    }
+    // §1.3 area-weighted normal, recomputed from the current positions: the cross product of
+    // every triangle, then each particle sums those of its triangles in element order (the
+    // order of a serial scatter, without its write conflicts).
+    const Index ne = static_cast<Index>(model_.triangles.size());
+    parallel_for_each(ne, parallel_particles_, [&](Index e) {
+        const auto& t = model_.triangles[static_cast<std::size_t>(e)];
+        element_cross_[static_cast<std::size_t>(e)] =
+            (s_.x[static_cast<std::size_t>(t[1])] - s_.x[static_cast<std::size_t>(t[0])])
+                .cross(s_.x[static_cast<std::size_t>(t[2])] - s_.x[static_cast<std::size_t>(t[0])]);
+    });
+    parallel_for_each(static_cast<Index>(s_.size()), parallel_particles_, [&](Index ip) {
+        const std::size_t p = static_cast<std::size_t>(ip);
+        Vec3 sum = Vec3::Zero();
+        for (Index k = node_element_begin_[p]; k < node_element_begin_[p + 1]; ++k)
+            sum += element_cross_[static_cast<std::size_t>(node_element_[static_cast<std::size_t>(k)])];
+        const Real len = sum.norm();
+        s_.normal[p] = len > 0 ? Vec3(sum / len) : Vec3::UnitZ();
+    });
 }
 
 void ExplicitSolver::apply_external_loads(Real t) {
@@ -290,9 +313,11 @@ void ExplicitSolver::cycle(Real load_time, Real dt_new_cap, bool relaxation) {
     // 4 central difference (§6.6) with boundary conditions (§6.7); constraint reactions.
     const Real t_half = load_time + (relaxation ? 0.0 : 0.5 * dt_new);
     const Real t_next = load_time + (relaxation ? 0.0 : dt_new);
-    residual2_ = reference2_ = 0;
     Real kinetic = 0, damping_work = 0, ext_work = 0;
-    for (std::size_t p = 0; p < np; ++p) {
+    // Every particle on its own; the residual sums in fixed chunks (core/chunked_loop.hpp).
+    const std::array<Real, 2> residual = chunked_sum<2>(static_cast<Index>(np), parallel_particles_, sums2_,
+                                                         [&](Index ip, std::array<Real, 2>& acc) {
+        const std::size_t p = static_cast<std::size_t>(ip);
         const Vec3 force = s_.f_ext[p] - s_.f_int[p] + s_.f_contact[p];
         const Real m = s_.mass[p];
         s_.v_prev[p] = s_.v[p];
@@ -307,8 +332,8 @@ void ExplicitSolver::cycle(Real load_time, Real dt_new_cap, bool relaxation) {
         if (prescribed_translation_[p]) force_free.setZero();
         s_.v[p] = v_new;  // prescribed values are written below
         s_.reaction[p] = (m / (c1 * dt_n)) * (v_new - v_free);
-        residual2_ += force_free.squaredNorm();
-        reference2_ += s_.f_ext[p].squaredNorm() + (force - force_free).squaredNorm();
+        acc[0] += force_free.squaredNorm();
+        acc[1] += s_.f_ext[p].squaredNorm() + (force - force_free).squaredNorm();
 
         // Rotations in the tangent plane: w^{n+1/2} = c1 [c2 P w^{n-1/2} + dt_n P M / J].
         // With at most one free rotation axis (symmetry planes, §6.7) the rotation is about that
@@ -332,9 +357,11 @@ void ExplicitSolver::cycle(Real load_time, Real dt_new_cap, bool relaxation) {
         s_.omega[p] = w_new;
         s_.reaction_moment[p] = (j / (c1 * dt_n)) * (w_new - w_free);
         const Real ls2 = length_scale_ * length_scale_;
-        residual2_ += moment_free.squaredNorm() / ls2;
-        reference2_ += (s_.m_ext[p].squaredNorm() + (moment_tangent - moment_free).squaredNorm()) / ls2;
-    }
+        acc[0] += moment_free.squaredNorm() / ls2;
+        acc[1] += (s_.m_ext[p].squaredNorm() + (moment_tangent - moment_free).squaredNorm()) / ls2;
+    });
+    residual2_ = residual[0];
+    reference2_ = residual[1];
     for (const Prescribed& pr : prescribed_) {
         const std::size_t p = static_cast<std::size_t>(pr.particle);
         const Real m = s_.mass[p];
@@ -378,26 +405,33 @@ void ExplicitSolver::cycle(Real load_time, Real dt_new_cap, bool relaxation) {
         kinetic += 0.5 * b.mass * b.v_prev.dot(b.v);
         if (b.inv_mass == 0) ext_work -= body_work;  // what drives a fixed body on
     }
-    for (std::size_t p = 0; p < np; ++p) {
+    const bool has_contact = static_cast<bool>(contact_);
+    const std::array<Real, 4> particle_energy = chunked_sum<4>(static_cast<Index>(np), parallel_particles_, sums4_,
+                                                                [&](Index ip, std::array<Real, 4>& acc) {
+        const std::size_t p = static_cast<std::size_t>(ip);
         // Energies at t_n: leapfrog kinetic energy, work of loads and reactions over
         // [t_{n-1}, t_n] (trapezoidal), mass-damping dissipation over dt_n.
-        kinetic += 0.5 * s_.mass[p] * s_.v_prev[p].dot(s_.v[p]) +
+        acc[0] += 0.5 * s_.mass[p] * s_.v_prev[p].dot(s_.v[p]) +
                    0.5 * s_.inertia[p] * s_.omega_prev[p].dot(s_.omega[p]);
-        ext_work += 0.5 * (s_.f_ext_prev[p] + s_.f_ext[p] + s_.reaction_prev[p] + s_.reaction[p])
+        acc[1] += 0.5 * (s_.f_ext_prev[p] + s_.f_ext[p] + s_.reaction_prev[p] + s_.reaction[p])
                               .dot(s_.x[p] - s_.x_prev[p]) +
                     0.5 * (s_.m_ext_prev[p] + s_.m_ext[p] + s_.reaction_moment_prev[p] + s_.reaction_moment[p])
                               .dot(s_.dtheta[p]);
-        if (contact_) contact_work += 0.5 * (s_.f_contact_prev[p] + s_.f_contact[p]).dot(s_.x[p] - s_.x_prev[p]);
+        if (has_contact) acc[2] += 0.5 * (s_.f_contact_prev[p] + s_.f_contact[p]).dot(s_.x[p] - s_.x_prev[p]);
         if (a_m > 0) {
             const Vec3 vbar = 0.5 * (s_.v_prev[p] + s_.v[p]);
             const Vec3 wbar = 0.5 * (s_.omega_prev[p] + s_.omega[p]);
-            damping_work += a_m * dt_n * (s_.mass[p] * vbar.squaredNorm() + s_.inertia[p] * wbar.squaredNorm());
+            acc[3] += a_m * dt_n * (s_.mass[p] * vbar.squaredNorm() + s_.inertia[p] * wbar.squaredNorm());
         }
         s_.f_ext_prev[p] = s_.f_ext[p];
         s_.m_ext_prev[p] = s_.m_ext[p];
         s_.reaction_prev[p] = s_.reaction[p];
         s_.reaction_moment_prev[p] = s_.reaction_moment[p];
-    }
+    });
+    kinetic += particle_energy[0];
+    ext_work += particle_energy[1];
+    contact_work += particle_energy[2];
+    damping_work += particle_energy[3];
     energy_.kinetic = kinetic;
     energy_.contact -= contact_work;  // dissipated (Lagrange multipliers) or stored (penalty)
     energy_.external_work += ext_work;
@@ -408,12 +442,13 @@ void ExplicitSolver::cycle(Real load_time, Real dt_new_cap, bool relaxation) {
         b.u_prev = b.u;
         b.u += dt_new * b.v;
     }
-    for (std::size_t p = 0; p < np; ++p) {
+    parallel_for_each(static_cast<Index>(np), parallel_particles_, [&](Index ip) {
+        const std::size_t p = static_cast<std::size_t>(ip);
         s_.x_prev[p] = s_.x[p];
         s_.x[p] += dt_new * s_.v[p];
         s_.dtheta[p] = dt_new * s_.omega[p];
         s_.rotation[p] = rotation_matrix(s_.dtheta[p]) * s_.rotation[p];
-    }
+    });
     dt_center_ = dt_n;
     dt_half_prev_ = dt_half_;
     dt_half_ = dt_new;
@@ -422,6 +457,14 @@ void ExplicitSolver::cycle(Real load_time, Real dt_new_cap, bool relaxation) {
 }
 
 void ExplicitSolver::check_state() const {
+    const Index n = static_cast<Index>(s_.size());
+    bool bad = false;  // a logical or: the same for any thread count
+#pragma omp parallel for schedule(static) reduction(|| : bad) if (parallel_particles_)
+    for (Index ip = 0; ip < n; ++ip) {
+        const std::size_t p = static_cast<std::size_t>(ip);
+        bad = bad || !s_.x[p].allFinite() || !s_.omega[p].allFinite() || !s_.f_int[p].allFinite();
+    }
+    if (!bad) return;
     const std::size_t np = s_.size();
     for (std::size_t p = 0; p < np; ++p) {
         if (!s_.x[p].allFinite() || !s_.omega[p].allFinite() || !s_.f_int[p].allFinite()) {

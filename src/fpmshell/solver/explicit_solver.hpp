@@ -114,6 +114,11 @@ private:
     bool restart_ = false;   ///< next cycle restarts from rest (kinetic damping)
     long element_steps_ = 0;
     Real length_scale_ = 1;  ///< mean edge length: converts moments to forces in residuals
+    bool parallel_particles_ = false;  ///< particle loops in parallel (large models)
+    std::vector<Index> node_element_begin_, node_element_;  ///< CSR particle -> triangles
+    std::vector<Vec3> element_cross_;                       ///< scratch: (x2 - x1) x (x3 - x1)
+    std::vector<std::array<Real, 2>> sums2_;                ///< scratch: per-chunk partial sums
+    std::vector<std::array<Real, 4>> sums4_;
     // Relaxation residual of the last cycle.
     Real residual2_ = 0, reference2_ = 0;
 };
