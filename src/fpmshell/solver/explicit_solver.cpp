@@ -117,6 +117,23 @@ ExplicitSolver::ExplicitSolver(const Model& model) : model_(model), elements_(mo
                 node_element_[static_cast<std::size_t>(fill[static_cast<std::size_t>(p)]++)] = static_cast<Index>(e);
     }
     element_cross_.assign(model.triangles.size(), Vec3::Zero());
+    // Pressure loads: loaded particle -> its loaded triangles, in the load's element order.
+    pressure_gather_.resize(model.loads.size());
+    for (std::size_t l = 0; l < model.loads.size(); ++l) {
+        const Load& load = model.loads[l];
+        if (load.type != LoadType::Pressure) continue;
+        std::vector<std::vector<Index>> of_particle(np);
+        for (Index e : load.elements)
+            for (Index p : model.triangles[static_cast<std::size_t>(e)]) of_particle[static_cast<std::size_t>(p)].push_back(e);
+        PressureGather& g = pressure_gather_[l];
+        g.begin.push_back(0);
+        for (std::size_t p = 0; p < np; ++p) {
+            if (of_particle[p].empty()) continue;
+            g.particle.push_back(static_cast<Index>(p));
+            g.element.insert(g.element.end(), of_particle[p].begin(), of_particle[p].end());
+            g.begin.push_back(static_cast<Index>(g.element.size()));
+        }
+    }
     parallel_particles_ = static_cast<Index>(np) >= k_parallel_min_particles;
     // Rigid bodies and contact (theory.md §8).
     bodies_ = RigidBodyState::from_model(model);
@@ -224,20 +241,25 @@ void ExplicitSolver::update_normals() {
 }
 
 void ExplicitSolver::apply_external_loads(Real t) {
-    const std::size_t np = s_.size();
-    for (std::size_t p = 0; p < np; ++p) s_.f_ext[p] = s_.m_ext[p] = Vec3::Zero();
-    for (const Load& load : model_.loads) {
+    // Uses element_cross_ of the current positions: update_normals() runs first in every cycle.
+    parallel_for_each(static_cast<Index>(s_.size()), parallel_particles_, [&](Index ip) {
+        s_.f_ext[static_cast<std::size_t>(ip)] = s_.m_ext[static_cast<std::size_t>(ip)] = Vec3::Zero();
+    });
+    for (std::size_t l = 0; l < model_.loads.size(); ++l) {
+        const Load& load = model_.loads[l];
         const Real factor = curve_value(load.curve, t);
         switch (load.type) {
             case LoadType::Pressure: {
-                // §6.7 follower pressure: f_i = -p A_t n_t / 3 (positive pushes against n).
-                for (Index e : load.elements) {
-                    const auto& tri = model_.triangles[static_cast<std::size_t>(e)];
-                    const Vec3 cr = (s_.x[static_cast<std::size_t>(tri[1])] - s_.x[static_cast<std::size_t>(tri[0])])
-                                        .cross(s_.x[static_cast<std::size_t>(tri[2])] - s_.x[static_cast<std::size_t>(tri[0])]);
-                    const Vec3 f = (-load.pressure * factor / 6.0) * cr;  // A n = cr / 2
-                    for (Index p : tri) s_.f_ext[static_cast<std::size_t>(p)] += f;
-                }
+                // §6.7 follower pressure: f_i = -p A_t n_t / 3 (positive pushes against n). Each
+                // particle adds its loaded triangles in the load's order (that of a serial scatter).
+                const Real scale = -load.pressure * factor / 6.0;  // A n = cr / 2
+                const PressureGather& g = pressure_gather_[l];
+                parallel_for_each(static_cast<Index>(g.particle.size()), parallel_particles_, [&](Index i) {
+                    const std::size_t ui = static_cast<std::size_t>(i);
+                    Vec3& f = s_.f_ext[static_cast<std::size_t>(g.particle[ui])];
+                    for (Index k = g.begin[ui]; k < g.begin[ui + 1]; ++k)
+                        f += scale * element_cross_[static_cast<std::size_t>(g.element[static_cast<std::size_t>(k)])];
+                });
                 break;
             }
             case LoadType::Force:

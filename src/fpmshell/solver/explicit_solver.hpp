@@ -117,6 +117,10 @@ private:
     bool parallel_particles_ = false;  ///< particle loops in parallel (large models)
     std::vector<Index> node_element_begin_, node_element_;  ///< CSR particle -> triangles
     std::vector<Vec3> element_cross_;                       ///< scratch: (x2 - x1) x (x3 - x1)
+    struct PressureGather {  ///< per pressure load: loaded particle -> its loaded triangles (CSR)
+        std::vector<Index> particle, begin, element;
+    };
+    std::vector<PressureGather> pressure_gather_;  ///< per load (empty unless a pressure)
     std::vector<std::array<Real, 2>> sums2_;                ///< scratch: per-chunk partial sums
     std::vector<std::array<Real, 4>> sums4_;
     // Relaxation residual of the last cycle.

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 
+#include "fpmshell/core/chunked_loop.hpp"
 #include "fpmshell/elements/bending_time_step.hpp"
 #include "fpmshell/elements/lumped_inertia.hpp"
 #include "fpmshell/elements/membrane_smoothing.hpp"
@@ -354,17 +355,39 @@ ShellElements::StepTotals ShellElements::compute(ParticleState& s, Real viscous_
         s.f_int[up] = f;
         s.m_int[up] = m;
     }
+    // Totals in fixed chunks (core/chunked_loop.hpp): the same for any thread count. The
+    // smallest step and the first failed element keep the lowest index, as a serial scan does.
     StepTotals tot;
-    tot.min_dt = std::numeric_limits<Real>::infinity();
-    for (Index e = 0; e < ne; ++e) {
+    const std::array<Real, 3> work = chunked_sum<3>(ne, parallel, element_sums_, [&](Index e, std::array<Real, 3>& acc) {
         const std::size_t ue = static_cast<std::size_t>(e);
-        if (elem_failed_[ue] && tot.failed_element < 0) tot.failed_element = e;
-        tot.strain_work += elem_work_[ue];
-        tot.damping_work += elem_damp_work_[ue];
-        tot.plastic_work += elem_plastic_work_[ue];
-        if (elem_dt_[ue] < tot.min_dt) {
-            tot.min_dt = elem_dt_[ue];
-            tot.min_dt_element = e;
+        acc[0] += elem_work_[ue];
+        acc[1] += elem_damp_work_[ue];
+        acc[2] += elem_plastic_work_[ue];
+    });
+    tot.strain_work = work[0];
+    tot.damping_work = work[1];
+    tot.plastic_work = work[2];
+    tot.min_dt = std::numeric_limits<Real>::infinity();
+    const Index n_chunks = (ne + k_chunk_size - 1) / k_chunk_size;
+    chunk_min_.resize(static_cast<std::size_t>(n_chunks));
+#pragma omp parallel for schedule(static) if (parallel)
+    for (Index c = 0; c < n_chunks; ++c) {
+        ChunkMin m;
+        for (Index e = c * k_chunk_size; e < std::min(ne, (c + 1) * k_chunk_size); ++e) {
+            const std::size_t ue = static_cast<std::size_t>(e);
+            if (elem_failed_[ue] && m.failed < 0) m.failed = e;
+            if (elem_dt_[ue] < m.dt) {
+                m.dt = elem_dt_[ue];
+                m.element = e;
+            }
+        }
+        chunk_min_[static_cast<std::size_t>(c)] = m;
+    }
+    for (const ChunkMin& m : chunk_min_) {
+        if (m.failed >= 0 && tot.failed_element < 0) tot.failed_element = m.failed;
+        if (m.dt < tot.min_dt) {
+            tot.min_dt = m.dt;
+            tot.min_dt_element = m.element;
         }
     }
     return tot;

@@ -3,6 +3,8 @@
 // (element-corner slots + ordered gather through a particle->slot CSR map, style.md §4).
 #pragma once
 
+#include <array>
+#include <limits>
 #include <variant>
 #include <vector>
 
@@ -94,6 +96,12 @@ private:
     std::vector<Index> csr_begin_, csr_slot_;     ///< particle -> slots
     std::vector<Real> elem_work_, elem_damp_work_, elem_plastic_work_, elem_dt_;
     std::vector<std::uint8_t> elem_failed_;
+    struct ChunkMin {  ///< smallest step and first failure of one chunk of elements
+        Real dt = std::numeric_limits<Real>::infinity();
+        Index element = -1, failed = -1;
+    };
+    std::vector<ChunkMin> chunk_min_;                 ///< scratch, per chunk
+    std::vector<std::array<Real, 3>> element_sums_;  ///< scratch, per chunk
     std::vector<Voigt3> membrane_force_, bending_moment_;
     Real stiffness_damping_ = 0;
 };
