@@ -65,6 +65,8 @@ ShellTriangleLoads shell_triangle_loads(const ReversedTriangle& rt, const ShellR
     ShellTriangleLoads out;
     const TriangleShape shape(rt.x2, rt.x3, rt.y3);
     const Mat36 bm = membrane_b(shape);
+    const bool dkt = rule.bending == BendingKernel::Dkt;
+    const DktShape dkt_s = dkt ? dkt_shape(shape) : DktShape{};  // once per element (§4.7)
     Eigen::Matrix<Real, 6, 1> u_vec, th_vec;
     for (int i = 0; i < 3; ++i) {
         u_vec.segment<2>(2 * i) = rt.u[i];
@@ -77,12 +79,12 @@ ShellTriangleLoads shell_triangle_loads(const ReversedTriangle& rt, const ShellR
     const Real thickness_factor = (1.0 - 2.0 * material.poisson_ratio()) / material.youngs_modulus();
     const Mat3& c = material.stiffness();
 
-    Eigen::Matrix<Real, 6, 1> f_m = Eigen::Matrix<Real, 6, 1>::Zero();  // §3.3
+    Voigt3 n_weighted = Voigt3::Zero();  // sum of A w_g N_g: B_m is constant over the CST
     Eigen::Matrix<Real, 6, 1> m_b = Eigen::Matrix<Real, 6, 1>::Zero();  // §4.5
     const int nk = static_cast<int>(rule.through.size());
     int g = 0;
     for (const TrianglePoint& ip : rule.inplane) {
-        const Mat36 bb = bending_b(rule.bending, shape, ip.L);
+        const Mat36 bb = dkt ? bending_b_dkt(dkt_s, ip.L) : bending_b_bciz(shape, ip.L);
         const Voigt3 d_kappa = bb * th_vec;  // §4.3
         Voigt3 n_g = Voigt3::Zero(), m_g = Voigt3::Zero();
         Real work_g = 0, plastic_g = 0;
@@ -113,13 +115,14 @@ ShellTriangleLoads shell_triangle_loads(const ReversedTriangle& rt, const ShellR
             m_g += m_v;
         }
         const Real wa = rt.area * ip.weight;
-        f_m += (own_share * wa) * (bm.transpose() * n_g);
+        n_weighted += wa * n_g;
         out.membrane_resultant += ip.weight * n_g;
         m_b += wa * (bb.transpose() * m_g);
         out.strain_work += rt.area * ip.weight * work_g;
         out.plastic_work += rt.area * ip.weight * plastic_g;
         ++g;
     }
+    const Eigen::Matrix<Real, 6, 1> f_m = own_share * (bm.transpose() * n_weighted);  // §3.3
     // §4.6 out-of-plane forces from the equilibrium of the element (node-1-origin frame).
     const Real sum_mx = m_b(0) + m_b(2) + m_b(4), sum_my = m_b(1) + m_b(3) + m_b(5);
     const Real f3z = -sum_mx / rt.y3;

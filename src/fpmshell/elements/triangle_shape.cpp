@@ -58,49 +58,57 @@ Mat36 bending_b_bciz(const TriangleShape& s, const std::array<Real, 3>& L) {
     return bb;
 }
 
-Mat36 bending_b_dkt(const TriangleShape& s, const std::array<Real, 3>& L) {
+DktShape dkt_shape(const TriangleShape& s) {
     // Sides k = 4, 5, 6 <-> ij = 23, 31, 12 (theory.md §4.7).
-    const std::array<std::array<int, 2>, 3> side{{{1, 2}, {2, 0}, {0, 1}}};
-    std::array<Real, 3> ca, cb, cc, cd, ce;
-    for (int m = 0; m < 3; ++m) {
-        const Real xij = s.x[side[m][0]] - s.x[side[m][1]];
-        const Real yij = s.y[side[m][0]] - s.y[side[m][1]];
-        const Real l2 = xij * xij + yij * yij;
-        ca[m] = -xij / l2;
-        cb[m] = 0.75 * xij * yij / l2;
-        cc[m] = (0.25 * xij * xij - 0.5 * yij * yij) / l2;
-        cd[m] = -yij / l2;
-        ce[m] = (0.25 * yij * yij - 0.5 * xij * xij) / l2;
+    constexpr std::array<std::array<int, 2>, 3> side{{{1, 2}, {2, 0}, {0, 1}}};
+    DktShape d;
+    for (std::size_t m = 0; m < 3; ++m) {
+        const Real xij = s.x[static_cast<std::size_t>(side[m][0])] - s.x[static_cast<std::size_t>(side[m][1])];
+        const Real yij = s.y[static_cast<std::size_t>(side[m][0])] - s.y[static_cast<std::size_t>(side[m][1])];
+        const Real inv_l2 = 1.0 / (xij * xij + yij * yij);
+        d.cb[m] = 0.75 * xij * yij * inv_l2;
+        d.cc[m] = (0.25 * xij * xij - 0.5 * yij * yij) * inv_l2;
+        d.ce[m] = (0.25 * yij * yij - 0.5 * xij * xij) * inv_l2;
     }
+    d.x31 = s.x[2] - s.x[0];
+    d.y31 = s.y[2] - s.y[0];
+    d.x12 = s.x[0] - s.x[1];
+    d.y12 = s.y[0] - s.y[1];
+    d.inv_two_area = 1.0 / (d.x31 * d.y12 - d.x12 * d.y31);
+    return d;
+}
+
+Mat36 bending_b_dkt(const DktShape& d, const std::array<Real, 3>& L) {
+    const auto& cb = d.cb;
+    const auto& cc = d.cc;
+    const auto& ce = d.ce;
     const Real xi = L[1], eta = L[2];
     const std::array<Real, 6> n_xi{-3 + 4 * xi + 4 * eta, 4 * xi - 1, 0.0, 4 * eta, -4 * eta,
                                    4 * (1 - 2 * xi - eta)};
     const std::array<Real, 6> n_eta{-3 + 4 * xi + 4 * eta, 0.0, 4 * eta - 1, 4 * xi,
                                     4 * (1 - xi - 2 * eta), -4 * xi};
-    // Hx, Hy (9 entries, DOFs [w1 thx1 thy1 w2 ...]) evaluated on derivative arrays N.
-    auto h_of = [&](const std::array<Real, 6>& n, std::array<Real, 9>& hx, std::array<Real, 9>& hy) {
+    // Hx, Hy at the rotation DOFs [thx1 thy1 thx2 thy2 thx3 thy3] (the w columns are dropped:
+    // the deformation deflections are zero) evaluated on derivative arrays N.
+    auto h_of = [&](const std::array<Real, 6>& n, std::array<Real, 6>& hx, std::array<Real, 6>& hy) {
         const Real n1 = n[0], n2 = n[1], n3 = n[2], n4 = n[3], n5 = n[4], n6 = n[5];
         // index m: 0 <-> side 4, 1 <-> side 5, 2 <-> side 6
-        hx = {1.5 * (ca[2] * n6 - ca[1] * n5), cb[1] * n5 + cb[2] * n6, n1 - cc[1] * n5 - cc[2] * n6,
-              1.5 * (ca[0] * n4 - ca[2] * n6), cb[2] * n6 + cb[0] * n4, n2 - cc[2] * n6 - cc[0] * n4,
-              1.5 * (ca[1] * n5 - ca[0] * n4), cb[0] * n4 + cb[1] * n5, n3 - cc[0] * n4 - cc[1] * n5};
-        hy = {1.5 * (cd[2] * n6 - cd[1] * n5), -n1 + ce[1] * n5 + ce[2] * n6, -cb[1] * n5 - cb[2] * n6,
-              1.5 * (cd[0] * n4 - cd[2] * n6), -n2 + ce[2] * n6 + ce[0] * n4, -cb[2] * n6 - cb[0] * n4,
-              1.5 * (cd[1] * n5 - cd[0] * n4), -n3 + ce[0] * n4 + ce[1] * n5, -cb[0] * n4 - cb[1] * n5};
+        hx = {cb[1] * n5 + cb[2] * n6, n1 - cc[1] * n5 - cc[2] * n6,
+              cb[2] * n6 + cb[0] * n4, n2 - cc[2] * n6 - cc[0] * n4,
+              cb[0] * n4 + cb[1] * n5, n3 - cc[0] * n4 - cc[1] * n5};
+        hy = {-n1 + ce[1] * n5 + ce[2] * n6, -cb[1] * n5 - cb[2] * n6,
+              -n2 + ce[2] * n6 + ce[0] * n4, -cb[2] * n6 - cb[0] * n4,
+              -n3 + ce[0] * n4 + ce[1] * n5, -cb[0] * n4 - cb[1] * n5};
     };
-    std::array<Real, 9> hx_xi, hy_xi, hx_eta, hy_eta;
+    std::array<Real, 6> hx_xi, hy_xi, hx_eta, hy_eta;
     h_of(n_xi, hx_xi, hy_xi);
     h_of(n_eta, hx_eta, hy_eta);
-    const Real x31 = s.x[2] - s.x[0], y31 = s.y[2] - s.y[0];
-    const Real x12 = s.x[0] - s.x[1], y12 = s.y[0] - s.y[1];
-    const Real a2 = x31 * y12 - x12 * y31;
-    constexpr std::array<int, 6> k_rot_cols{1, 2, 4, 5, 7, 8};  // w columns dropped (w_i = 0)
+    const Real f = d.inv_two_area;
     Mat36 bb;
-    for (int q = 0; q < 6; ++q) {
-        const int m = k_rot_cols[q];
-        bb(0, q) = (y31 * hx_xi[m] + y12 * hx_eta[m]) / a2;
-        bb(1, q) = (-x31 * hy_xi[m] - x12 * hy_eta[m]) / a2;
-        bb(2, q) = (-x31 * hx_xi[m] - x12 * hx_eta[m] + y31 * hy_xi[m] + y12 * hy_eta[m]) / a2;
+    for (std::size_t q = 0; q < 6; ++q) {
+        const Eigen::Index col = static_cast<Eigen::Index>(q);
+        bb(0, col) = (d.y31 * hx_xi[q] + d.y12 * hx_eta[q]) * f;
+        bb(1, col) = (-d.x31 * hy_xi[q] - d.x12 * hy_eta[q]) * f;
+        bb(2, col) = (-d.x31 * hx_xi[q] - d.x12 * hx_eta[q] + d.y31 * hy_xi[q] + d.y12 * hy_eta[q]) * f;
     }
     return bb;
 }

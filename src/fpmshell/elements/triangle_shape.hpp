@@ -27,7 +27,22 @@ struct TriangleShape {
 /// BCIZ curvature matrix with the 6 rotation DOFs (theory.md §4.2-§4.3).
 [[nodiscard]] Mat36 bending_b_bciz(const TriangleShape& s, const std::array<Real, 3>& L);
 
+/// The shape-only part of the DKT curvature matrix: the side coefficients a_k..e_k of Batoz,
+/// Bathe & Ho (1980) and the Jacobian terms. Computed once per element and step; the matrix
+/// at each in-plane point is then a few products (bending_b_dkt below).
+struct DktShape {
+    /// b_k, c_k, e_k per side k = 4, 5, 6 (ij = 23, 31, 12); a_k and d_k multiply only the
+    /// deflections, which are zero after the reverse motion.
+    std::array<Real, 3> cb, cc, ce;
+    Real x31, y31, x12, y12;
+    Real inv_two_area;  ///< 1 / (x31 y12 - x12 y31)
+};
+[[nodiscard]] DktShape dkt_shape(const TriangleShape& s);
+
 /// Rotation-only DKT curvature matrix (theory.md §4.7; Batoz, Bathe & Ho 1980).
-[[nodiscard]] Mat36 bending_b_dkt(const TriangleShape& s, const std::array<Real, 3>& L);
+[[nodiscard]] Mat36 bending_b_dkt(const DktShape& d, const std::array<Real, 3>& L);
+[[nodiscard]] inline Mat36 bending_b_dkt(const TriangleShape& s, const std::array<Real, 3>& L) {
+    return bending_b_dkt(dkt_shape(s), L);
+}
 
 }  // namespace fpmshell
