@@ -27,8 +27,16 @@ namespace fpmshell {
         a = std::sin(t) / t;
         b = (1.0 - std::cos(t)) / t2;
     }
-    const Mat3 k = skew(phi);
-    return Mat3::Identity() + a * k + b * k * k;
+    // [phi]x^2 = phi phi^T - t^2 I, so R = (1 - b t^2) I + a [phi]x + b phi phi^T: 20 flops
+    // where the skew-matrix product takes 45 (this is the hottest function of the step).
+    const Real x = phi.x(), y = phi.y(), z = phi.z();
+    const Real d = 1.0 - b * t2;
+    const Real bxy = b * x * y, bxz = b * x * z, byz = b * y * z;
+    Mat3 r;
+    r << d + b * x * x, bxy - a * z, bxz + a * y,
+         bxy + a * z, d + b * y * y, byz - a * x,
+         bxz - a * y, byz + a * x, d + b * z * z;
+    return r;
 }
 
 /// Rotation vector of a rotation matrix, log(R) (theory.md §1.4). Accurate for angles < pi - 1e-6;

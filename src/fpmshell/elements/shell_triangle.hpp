@@ -80,12 +80,22 @@ ShellTriangleLoads shell_triangle_loads(const ReversedTriangle& rt, const ShellR
     const Mat3& c = material.stiffness();
 
     Voigt3 n_weighted = Voigt3::Zero();  // sum of A w_g N_g: B_m is constant over the CST
-    Eigen::Matrix<Real, 6, 1> m_b = Eigen::Matrix<Real, 6, 1>::Zero();  // §4.5
+    // §4.3 The curvature matrix of both kernels is linear in the area coordinates,
+    // B(L) = sum_i L_i B(e_i): it is evaluated at the three corners only, and the curvature
+    // and the moment loads of any number of points follow from the corner values.
+    std::array<Mat36, 3> b_corner;
+    std::array<Voigt3, 3> kappa_corner, m_corner;  // B(e_i) theta; sum_g A w_g L_gi M_g
+    for (std::size_t i = 0; i < 3; ++i) {
+        std::array<Real, 3> corner{0, 0, 0};
+        corner[i] = 1;
+        b_corner[i] = dkt ? bending_b_dkt(dkt_s, corner) : bending_b_bciz(shape, corner);
+        kappa_corner[i] = b_corner[i] * th_vec;
+        m_corner[i].setZero();
+    }
     const int nk = static_cast<int>(rule.through.size());
     int g = 0;
     for (const TrianglePoint& ip : rule.inplane) {
-        const Mat36 bb = dkt ? bending_b_dkt(dkt_s, ip.L) : bending_b_bciz(shape, ip.L);
-        const Voigt3 d_kappa = bb * th_vec;  // §4.3
+        const Voigt3 d_kappa = ip.L[0] * kappa_corner[0] + ip.L[1] * kappa_corner[1] + ip.L[2] * kappa_corner[2];
         Voigt3 n_g = Voigt3::Zero(), m_g = Voigt3::Zero();
         Real work_g = 0, plastic_g = 0;
         for (int k = 0; k < nk; ++k) {
@@ -117,12 +127,15 @@ ShellTriangleLoads shell_triangle_loads(const ReversedTriangle& rt, const ShellR
         const Real wa = rt.area * ip.weight;
         n_weighted += wa * n_g;
         out.membrane_resultant += ip.weight * n_g;
-        m_b += wa * (bb.transpose() * m_g);
+        for (std::size_t i = 0; i < 3; ++i) m_corner[i] += (wa * ip.L[i]) * m_g;
         out.strain_work += rt.area * ip.weight * work_g;
         out.plastic_work += rt.area * ip.weight * plastic_g;
         ++g;
     }
     const Eigen::Matrix<Real, 6, 1> f_m = own_share * (bm.transpose() * n_weighted);  // §3.3
+    const Eigen::Matrix<Real, 6, 1> m_b = b_corner[0].transpose() * m_corner[0] +  // §4.5
+                                          b_corner[1].transpose() * m_corner[1] +
+                                          b_corner[2].transpose() * m_corner[2];
     // §4.6 out-of-plane forces from the equilibrium of the element (node-1-origin frame).
     const Real sum_mx = m_b(0) + m_b(2) + m_b(4), sum_my = m_b(1) + m_b(3) + m_b(5);
     const Real f3z = -sum_mx / rt.y3;
