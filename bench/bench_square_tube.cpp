@@ -6,13 +6,12 @@
 #include <benchmark/benchmark.h>
 
 #include <chrono>
-#include <string>
 
 #ifdef _OPENMP
 #include <omp.h>
 #endif
 
-#include "fpmshell/io/model_reader.hpp"
+#include "bench_models.hpp"
 #include "fpmshell/solver/explicit_solver.hpp"
 
 using namespace fpmshell;
@@ -27,9 +26,7 @@ void square_tube(benchmark::State& state) {
 #else
     const int used = 1;
 #endif
-    const std::string path = std::string(FPMSHELL_SOURCE_DIR) + "/examples/square_tube/model.yaml";
-    const Model m = read_model(path, {"mesh.divisions_width=" + std::to_string(state.range(0)),
-                                      "mesh.divisions_length=" + std::to_string(state.range(1))});
+    const Model m = bench::square_tube_model(static_cast<int>(state.range(0)), static_cast<int>(state.range(1)));
     ExplicitSolver solver(m);
     for (int i = 0; i < 4000; ++i) solver.step(1e30);
     const double contact0 = solver.contact_statistics()->seconds;

@@ -63,10 +63,28 @@ namespace fpmshell {
 
 /// Minimal rotation taking unit vector a to unit vector b (a.b > -1): I + [v]x + [v]x^2/(1+c).
 [[nodiscard]] inline Mat3 minimal_rotation(const Vec3& a, const Vec3& b) {
+    // [v]x^2 = v v^T - |v|^2 I, written out like rotation_matrix.
     const Vec3 v = a.cross(b);
     const Real c = a.dot(b);
-    const Mat3 k = skew(v);
-    return Mat3::Identity() + k + (k * k) / (1.0 + c);
+    const Real f = 1.0 / (1.0 + c);
+    const Real x = v.x(), y = v.y(), z = v.z();
+    const Real d = 1.0 - f * v.squaredNorm();
+    const Real fxy = f * x * y, fxz = f * x * z, fyz = f * y * z;
+    Mat3 r;
+    r << d + f * x * x, fxy - z, fxz + y,
+         fxy + z, d + f * y * y, fyz - x,
+         fxz - y, fyz + x, d + f * z * z;
+    return r;
+}
+
+/// atan2(y, x) for x > 0 and |y| < 0.01 x (the in-plane rotation of a path element in a stable
+/// step) by its series, next term < 1e-19; std::atan2 otherwise.
+[[nodiscard]] inline Real small_angle_atan2(Real y, Real x) {
+    if (x > 0 && std::abs(y) < 0.01 * x) {
+        const Real t = y / x, t2 = t * t;
+        return t * (1.0 - t2 * (1.0 / 3.0 - t2 * (1.0 / 5.0 - t2 * (1.0 / 7.0))));
+    }
+    return std::atan2(y, x);
 }
 
 }  // namespace fpmshell

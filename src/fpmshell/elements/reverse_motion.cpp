@@ -38,7 +38,7 @@ ReversedTriangle reverse_motion(const std::array<Vec3, 3>& base,
     }
     const Vec3 r2p = r_op.transpose() * r2, r3p = r_op.transpose() * r3;
     // §2.3 reverse in-plane rotation about na bringing edge 1->2 back onto the base edge.
-    const Real theta_ip = std::atan2(na.dot(a2.cross(r2p)), a2.dot(r2p));
+    const Real theta_ip = small_angle_atan2(na.dot(a2.cross(r2p)), a2.dot(r2p));
     const Mat3 r_ip = rotation_matrix(theta_ip * na);
     const Vec3 r2pp = r_ip.transpose() * r2p, r3pp = r_ip.transpose() * r3p;
     // §2.5 deformation frame on the base configuration.
