@@ -331,6 +331,7 @@ int run_model(const Model& model, const RunOptions& opt) {
     }
     Progress progress(end, opt.quiet, [&log](const std::string& s) { log.line(s); });
     log.set_progress(&progress);
+    progress.resume_from(solver.time());
     log.print("stable time step {:.6g}", solver.stable_dt());
 
     if (!opt.resume) {

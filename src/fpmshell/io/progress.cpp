@@ -46,7 +46,9 @@ double Progress::elapsed() const {
 std::string Progress::line_text(Real time, long step, Real dt, Real energy_error,
                                 double wall_seconds) const {
     const double fraction = end_time_ > 0 ? std::clamp(time / end_time_, 0.0, 1.0) : 1.0;
-    const double left = fraction > 0 ? wall_seconds * (1 - fraction) / fraction : NAN;
+    // Time left from the pace since this process started (at start_time_ for a resumed run).
+    const double done = time - start_time_;
+    const double left = done > 0 ? wall_seconds * std::max(0.0, end_time_ - time) / done : NAN;
     return fmt::format(
         "t {:.4e} / {:.4e} ({:5.1f} %)  step {}  dt {:.3e}  wall {}  left {}  "
         "energy error {:.3f} %",

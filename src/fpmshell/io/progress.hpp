@@ -25,6 +25,9 @@ public:
     Progress(Real end_time, bool quiet, LineSink sink = {},
              std::optional<bool> terminal = std::nullopt);
     ~Progress();
+    /// A resumed run starts at simulated time t0: the time left is estimated from the pace
+    /// since then, not since t = 0.
+    void resume_from(Real t0) { start_time_ = t0; }
     Progress(const Progress&) = delete;
     Progress& operator=(const Progress&) = delete;
 
@@ -50,6 +53,7 @@ public:
 
 private:
     using Clock = std::chrono::steady_clock;
+    Real start_time_ = 0;  ///< simulated time at which this process started
 
     void draw_live();
     void emit_plain();
