@@ -312,20 +312,25 @@ int run_model(const Model& model, const RunOptions& opt) {
               model.n_particles(), model.n_elements(), threads);
 
     ExplicitSolver solver(model);
-    ResultWriter out(model, opt, relaxation);
     const Real end = model.control.end_time;
     const Real every = model.output.every;
     const Real fields_every = model.output.fields_every > 0 ? model.output.fields_every : end;
     Real next_row = every, next_frame = fields_every;
     double wall_before = 0;  // wall seconds of the earlier segments of a resumed run
     const std::filesystem::path restart_path = opt.output_dir / k_restart_file;
+    // A restart file is checked against the model before the result writer exists: a refused
+    // resume must leave the folder's fields.pvd (which the writer starts afresh) as it was.
+    std::optional<RestartReader> restart;
     if (opt.resume) {
-        RestartReader in(restart_path);
-        solver.load(in);
-        in.section("driver");
-        in(next_row, next_frame, wall_before);
-        out.load(in);
-        in.finish();
+        restart.emplace(restart_path);
+        solver.load(*restart);
+        restart->section("driver");
+        (*restart)(next_row, next_frame, wall_before);
+    }
+    ResultWriter out(model, opt, relaxation);
+    if (restart) {
+        out.load(*restart);
+        restart->finish();
         remove_frames_from(opt.output_dir, out.frames());
         log.print("resumed from {} at t = {:.6g}, step {}", restart_path.string(), solver.time(), solver.steps());
     }

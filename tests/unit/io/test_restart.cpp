@@ -176,6 +176,9 @@ TEST(Restart, ARestartFileDoesNotResumeAnotherModel) {
         EXPECT_NE(std::string(e.what()).find("restart.bin"), std::string::npos) << e.what();
         EXPECT_NE(std::string(e.what()).find("another model"), std::string::npos) << e.what();
     }
+    // The refused resume left the run's results as they were.
+    EXPECT_NE(bytes_of(first.output_dir / "fields.pvd").find("frame_00000.vtu"), std::string::npos);
+    EXPECT_TRUE(fs::exists(first.output_dir / "fields" / "frame_00000.vtu"));
     fs::remove_all(first.output_dir);
 }
 
