@@ -8,13 +8,6 @@
 
 namespace fpmshell {
 
-/// Skew matrix [v]x with [v]x u = v x u.
-[[nodiscard]] inline Mat3 skew(const Vec3& v) {
-    Mat3 s;
-    s << 0, -v.z(), v.y(), v.z(), 0, -v.x(), -v.y(), v.x(), 0;
-    return s;
-}
-
 /// R(phi) = I + a [phi]x + b [phi]x^2, a = sin t / t, b = (1 - cos t)/t^2 (theory.md §1.4).
 [[nodiscard]] inline Mat3 rotation_matrix(const Vec3& phi) {
     const Real t2 = phi.squaredNorm();
