@@ -6,12 +6,6 @@
 namespace fpmshell {
 namespace {
 
-// Exponential filter of the strain rate, rate_f <- chi rate + (1 - chi) rate_f: a memory of
-// about 1 / chi = 10 steps removes the step-to-step noise of the explicit rate (theory.md §7.4
-// option a; the Fcut filter of Radioss LAW2 plays the same role).
-constexpr Real k_rate_filter = 0.1;
-// Convergence of the consistency condition: |F| < tol kappa^2 / 3 (§7.3 step 3).
-constexpr Real k_yield_tolerance = 1e-10;
 constexpr int k_max_iterations = 100;
 
 /// xi^T P xi (§7.1) = (x11 + x22)^2 / 6 + (x22 - x11)^2 / 2 + 2 x12^2, i.e. 2 J2.

@@ -11,6 +11,14 @@ namespace fpmshell {
 
 class J2Plastic {
 public:
+    /// A trial state is elastic when F <= tol kappa^2 / 3, and the return mapping has
+    /// converged when |F| < tol kappa^2 / 3 (§7.3 steps 1 and 3).
+    static constexpr Real k_yield_tolerance = 1e-10;
+    /// Exponential filter of the strain rate, rate_f <- chi rate + (1 - chi) rate_f: a memory of
+    /// about 1 / chi = 10 steps removes the step-to-step noise of the explicit rate (theory.md
+    /// §7.4 option a; the Fcut filter of Radioss LAW2 plays the same role).
+    static constexpr Real k_rate_filter = 0.1;
+
     /// hardening_mix: beta of §7.2, 1 isotropic, 0 kinematic.
     J2Plastic(Real youngs_modulus, Real poisson_ratio, const FlowStress& flow, const RateFactor& rate,
               Real hardening_mix);
@@ -26,6 +34,11 @@ public:
 
     /// Radius kappa(alpha) of the yield surface (uniaxial yield stress) at the rate factor r.
     [[nodiscard]] Real yield_radius(Real alpha, Real r) const;
+    /// kappa / R before any plastic strain: the flow curve at alpha = 0.
+    [[nodiscard]] Real initial_flow_radius() const { return flow_.value(0); }
+    /// Whether the yield radius depends on the strain rate (then every update filters the rate).
+    [[nodiscard]] bool rate_dependent() const { return rate_.active(); }
+    [[nodiscard]] const RateFactor& rate_factor() const { return rate_; }
 
 private:
     struct Radius {

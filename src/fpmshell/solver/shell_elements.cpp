@@ -8,6 +8,7 @@
 
 #include "fpmshell/core/chunked_loop.hpp"
 #include "fpmshell/elements/bending_time_step.hpp"
+#include "fpmshell/elements/elastic_triangle_block.hpp"
 #include "fpmshell/elements/lumped_inertia.hpp"
 #include "fpmshell/elements/membrane_smoothing.hpp"
 
@@ -131,6 +132,34 @@ ShellElements::ShellElements(const Model& model)
     elem_failed_.assign(ne, 0);
     membrane_force_.assign(ne, Voigt3::Zero());
     bending_moment_.assign(ne, Voigt3::Zero());
+    // SIMD blocks: the elements of DKT sections, linear elastic or J2 (whose elastic steps the
+    // block kernel does), without the smoothed membrane (which couples
+    // neighbours); k_lanes elements of one section per block, the rest one by one.
+    for (std::size_t sec = 0; sec < rules_.size(); ++sec) {
+        ElasticSectionConstants c;
+        const Mat3& stiffness = elastic_stiffness(materials_[sec]);
+        c.c11 = stiffness(0, 0);
+        c.c12 = stiffness(0, 1);
+        c.c33 = stiffness(2, 2);
+        std::visit([&](const auto& m) {
+            c.thickness_factor = (1.0 - 2.0 * m.poisson_ratio()) / m.youngs_modulus();
+        }, materials_[sec]);
+        c.inplane = rules_[sec].inplane;
+        c.through = rules_[sec].through;
+        elastic_constants_.push_back(c);
+    }
+    auto blockable = [&](std::size_t sec) {
+        return !smoothed_membrane_ && rules_[sec].bending == BendingKernel::Dkt &&
+               static_cast<std::size_t>(rules_[sec].n_points()) <= k_max_block_points;
+    };
+    for (std::size_t sec = 0; sec < rules_.size(); ++sec) {
+        std::vector<Index> members;
+        for (std::size_t e = 0; e < ne; ++e)
+            if (static_cast<std::size_t>(section_[e]) == sec) members.push_back(static_cast<Index>(e));
+        const std::size_t n_blocked = blockable(sec) ? members.size() / k_lanes * k_lanes : 0;
+        block_elements_.insert(block_elements_.end(), members.begin(), members.begin() + static_cast<std::ptrdiff_t>(n_blocked));
+        scalar_elements_.insert(scalar_elements_.end(), members.begin() + static_cast<std::ptrdiff_t>(n_blocked), members.end());
+    }
     // CSR particle -> slots, slots in increasing element order (fixed summation order).
     const std::size_t np = model.nodes.size();
     csr_begin_.assign(np + 1, 0);
@@ -216,27 +245,208 @@ Real ShellElements::min_critical_dt(const std::vector<Vec3>& x, Index* where) co
     return best;
 }
 
+ReversedTriangle ShellElements::reverse_element(std::size_t ue, const ParticleState& s) const {
+    const auto& t = tri_[ue];
+    std::array<Vec3, 3> base, cur, dth;
+    for (std::size_t i = 0; i < 3; ++i) {
+        const std::size_t p = static_cast<std::size_t>(t[i]);
+        base[i] = s.x_prev[p];
+        cur[i] = s.x[p];
+        dth[i] = s.dtheta[p];
+    }
+    return reverse_motion(base, cur, dth);
+}
+
+void ShellElements::compute_element(Index e, ParticleState& s, Real viscous_rate, Real dt) {
+    const std::size_t ue = static_cast<std::size_t>(e);
+    const ReversedTriangle rt = smoothed_membrane_ ? reversed_[ue] : reverse_element(ue, s);
+    const Real lc = current_length(e, s.x);  // once per element and step
+    refresh_bending_ratio(e, s.x, lc);
+    elem_dt_[ue] = element_dt(e, lc);
+    // the 3 slots across the sides are used (and gathered) only with the smoothed membrane
+    const int used_slots = smoothed_membrane_ ? k_slots : 3;
+    for (int k = 0; k < used_slots; ++k)
+        slot_force_[k_slots * ue + static_cast<std::size_t>(k)] = slot_moment_[k_slots * ue + static_cast<std::size_t>(k)] = Vec3::Zero();
+    // A tilt over 90 deg or an area change by a factor 2 within one step is no deformation a
+    // stable step can produce: the run has diverged (theory.md §2.8).
+    if (rt.degenerate || rt.normal_cosine < 0 || !(rt.area_ratio > 0.5 && rt.area_ratio < 2.0)) {
+        elem_failed_[ue] = 1;
+        elem_work_[ue] = elem_damp_work_[ue] = elem_plastic_work_[ue] = 0;
+        return;
+    }
+    elem_failed_[ue] = 0;
+    // Smoothed membrane strain (membrane_smoothing.hpp): the mean of the three side strains,
+    // a side strain being the area-weighted mean of the CST strains of the two elements
+    // there (the neighbour's unfolded into this frame), or this element's own on a side
+    // without a smooth neighbour. Area weights keep the patch test.
+    Voigt3 smoothed = Voigt3::Zero();
+    Real own_share = 1;
+    std::array<Mat3, 3> to_here;         // neighbour strain -> this frame, per side
+    std::array<Real, 3> side_weight{};   // weight of the neighbour's strain, per side
+    if (smoothed_membrane_) {
+        own_share = 0;
+        for (int i = 0; i < 3; ++i) {
+            const Index n = side_neighbour_[3 * ue + static_cast<std::size_t>(i)];
+            const ReversedTriangle* rn = n >= 0 ? &reversed_[static_cast<std::size_t>(n)] : nullptr;
+            if (rn && !rn->degenerate &&
+                rn->frame_current.row(2).dot(rt.frame_current.row(2)) >= k_smooth_cosine) {
+                // the shared side runs from corner (i+1) to corner (i+2) here, from corner na to
+                // corner nb in the neighbour (topology, fixed at construction)
+                const int na = side_neighbour_corner_[2 * (3 * ue + static_cast<std::size_t>(i))];
+                const int nb = side_neighbour_corner_[2 * (3 * ue + static_cast<std::size_t>(i)) + 1];
+                const Real beta = side_angle(rt.x2, rt.x3, rt.y3, (i + 1) % 3, (i + 2) % 3) -
+                                  side_angle(rn->x2, rn->x3, rn->y3, na, nb);
+                to_here[static_cast<std::size_t>(i)] = strain_rotation(beta);
+                const Real w_n = rn->area / (3.0 * (rt.area + rn->area));
+                side_weight[static_cast<std::size_t>(i)] = w_n;
+                own_share += 1.0 / 3.0 - w_n;
+                smoothed += w_n * (to_here[static_cast<std::size_t>(i)] * cst_strain_[static_cast<std::size_t>(n)]);
+            } else {
+                own_share += 1.0 / 3.0;
+            }
+        }
+        smoothed += own_share * cst_strain_[ue];
+    }
+    const std::size_t sec = static_cast<std::size_t>(section_[ue]);
+    std::span<MaterialPoint> pts(points_.data() + point_offset_[ue],
+                                 point_offset_[ue + 1] - point_offset_[ue]);
+    const ShellTriangleLoads loads =
+        std::visit([&](const auto& material) {
+            return shell_triangle_loads(rt, rules_[sec], material, pts, viscous_rate, dt, thickness_[ue],
+                                        smoothed_membrane_ ? &smoothed : nullptr, own_share);
+        }, materials_[sec]);
+    if (thickness_update_) thickness_[ue] *= 1.0 + loads.thickness_strain;  // §3.4
+    for (std::size_t i = 0; i < 3; ++i) {
+        slot_force_[k_slots * ue + i] = loads.force[i];
+        slot_moment_[k_slots * ue + i] = loads.moment[i];
+    }
+    if (smoothed_membrane_) {
+        // The neighbours' share of the membrane forces: A_e w_n B_n^T T^T N, in the
+        // neighbour's frame, turned forward with it (§5).
+        for (int i = 0; i < 3; ++i) {
+            if (side_weight[static_cast<std::size_t>(i)] == 0) continue;
+            const std::size_t n = static_cast<std::size_t>(side_neighbour_[3 * ue + static_cast<std::size_t>(i)]);
+            const ReversedTriangle& rn = reversed_[n];
+            const Voigt3 n_there = to_here[static_cast<std::size_t>(i)].transpose() * loads.membrane_resultant;
+            const Eigen::Matrix<Real, 6, 1> f_local =
+                (rt.area * side_weight[static_cast<std::size_t>(i)]) *
+                (membrane_b(TriangleShape(rn.x2, rn.x3, rn.y3)).transpose() * n_there);
+            const Mat3 to_global = rn.frame_current.transpose();
+            for (int k = 0; k < 3; ++k) {
+                const Vec3 f = to_global * Vec3(f_local(2 * k), f_local(2 * k + 1), 0.0);
+                const Index p = tri_[n][static_cast<std::size_t>(k)];
+                std::size_t slot = k_slots * ue + 3 + static_cast<std::size_t>(i);  // the node across side i
+                for (std::size_t j = 0; j < 3; ++j)
+                    if (tri_[ue][j] == p) slot = k_slots * ue + j;
+                slot_force_[slot] += f;
+            }
+        }
+    }
+    elem_work_[ue] = loads.strain_work;
+    elem_damp_work_[ue] = loads.damping_work;
+    elem_plastic_work_[ue] = loads.plastic_work;
+    membrane_force_[ue] = loads.membrane_force;
+    bending_moment_[ue] = loads.bending_moment;
+}
+
+void ShellElements::compute_block(Index b, ParticleState& s, Real viscous_rate, Real dt) {
+    const Index* ids = block_elements_.data() + static_cast<std::size_t>(b) * k_lanes;
+    auto element = [ids](int l) { return static_cast<std::size_t>(ids[l]); };
+    const std::size_t sec = static_cast<std::size_t>(section_[element(0)]);  // one per block
+    const ElasticSectionConstants& constants = elastic_constants_[sec];
+    // Gather the lanes (structure of arrays), compute, scatter the valid lanes.
+    alignas(64) std::array<Real, k_lanes> buffer;
+    auto load = [&](auto&& value) {
+        for (int l = 0; l < k_lanes; ++l) buffer[static_cast<std::size_t>(l)] = value(l);
+        return RealPack(buffer.data(), stdx::vector_aligned);
+    };
+    TriangleMotion<RealPack> motion;
+    for (std::size_t i = 0; i < 3; ++i) {
+        std::array<std::size_t, k_lanes> node;  // corner i of every lane
+        for (int l = 0; l < k_lanes; ++l) node[static_cast<std::size_t>(l)] = static_cast<std::size_t>(tri_[element(l)][i]);
+        auto gather = [&](const std::vector<Vec3>& field, V3<RealPack>& out) {
+            out.x = load([&](int l) { return field[node[static_cast<std::size_t>(l)]].x(); });
+            out.y = load([&](int l) { return field[node[static_cast<std::size_t>(l)]].y(); });
+            out.z = load([&](int l) { return field[node[static_cast<std::size_t>(l)]].z(); });
+        };
+        gather(s.x_prev, motion.base[i]);
+        gather(s.x, motion.current[i]);
+        gather(s.dtheta, motion.dtheta[i]);
+    }
+    const RealPack thickness = load([&](int l) { return thickness_[element(l)]; });
+    const std::size_t n_points = constants.inplane.size() * constants.through.size();
+    std::array<RealPack, 3 * k_max_block_points> stress;
+    for (std::size_t p = 0; p < n_points; ++p)
+        for (std::size_t r = 0; r < 3; ++r)
+            stress[3 * p + r] = load([&](int l) { return points_[point_offset_[element(l)] + p].stress(static_cast<Eigen::Index>(r)); });
+
+    // J2 sections: the yield surfaces of the points, kappa_n = flow radius at alpha_n (§7.3)
+    const J2Plastic* j2 = std::get_if<J2Plastic>(&materials_[sec]);
+    std::array<RealPack, 3 * k_max_block_points> back_stress;
+    std::array<RealPack, k_max_block_points> third_k2, strain_rate, new_strain_rate;
+    YieldSurfaces<RealPack> yield{back_stress.data(), third_k2.data(), J2Plastic::k_yield_tolerance};
+    if (j2 && j2->rate_dependent()) {
+        yield.rate = &j2->rate_factor();
+        yield.strain_rate = strain_rate.data();
+        yield.new_strain_rate = new_strain_rate.data();
+        yield.dt = dt;
+        yield.rate_filter = J2Plastic::k_rate_filter;
+        for (std::size_t p = 0; p < n_points; ++p)
+            strain_rate[p] = load([&](int l) { return points_[point_offset_[element(l)] + p].strain_rate; });
+    }
+    if (j2) {
+        const Real initial_radius = j2->initial_flow_radius();
+        for (std::size_t p = 0; p < n_points; ++p) {
+            auto point = [&](int l) -> const MaterialPoint& { return points_[point_offset_[element(l)] + p]; };
+            for (std::size_t r = 0; r < 3; ++r)
+                back_stress[3 * p + r] = load([&](int l) { return point(l).back_stress(static_cast<Eigen::Index>(r)); });
+            third_k2[p] = load([&](int l) {
+                const Real kappa = point(l).plastic_strain > 0 ? point(l).flow_radius : initial_radius;
+                return kappa * kappa / 3.0;
+            });
+        }
+    }
+    const ElasticTriangleLoads<RealPack> loads =
+        elastic_triangle_loads(motion, constants, thickness, stress.data(), viscous_rate, j2 ? &yield : nullptr);
+
+    for (int l = 0; l < k_lanes; ++l) {
+        const std::size_t ue = element(l);
+        if (!lane(loads.valid, l)) {  // outside the block kernel's bounds: the general code
+            compute_element(static_cast<Index>(ue), s, viscous_rate, dt);
+            continue;
+        }
+        const Real lc = lane(loads.characteristic_length, l);
+        refresh_bending_ratio(static_cast<Index>(ue), s.x, lc);
+        elem_dt_[ue] = element_dt(static_cast<Index>(ue), lc);
+        elem_failed_[ue] = 0;
+        for (std::size_t i = 0; i < 3; ++i) {
+            slot_force_[k_slots * ue + i] = Vec3(lane(loads.force[i].x, l), lane(loads.force[i].y, l), lane(loads.force[i].z, l));
+            slot_moment_[k_slots * ue + i] = Vec3(lane(loads.moment[i].x, l), lane(loads.moment[i].y, l), lane(loads.moment[i].z, l));
+        }
+        MaterialPoint* pts = points_.data() + point_offset_[ue];
+        for (std::size_t p = 0; p < n_points; ++p)
+            for (std::size_t r = 0; r < 3; ++r) pts[p].stress(static_cast<Eigen::Index>(r)) = lane(stress[3 * p + r], l);
+        if (yield.new_strain_rate)
+            for (std::size_t p = 0; p < n_points; ++p) pts[p].strain_rate = lane(new_strain_rate[p], l);
+        if (thickness_update_) thickness_[ue] *= 1.0 + lane(loads.thickness_strain, l);  // §3.4
+        elem_work_[ue] = lane(loads.strain_work, l);
+        elem_damp_work_[ue] = lane(loads.damping_work, l);
+        elem_plastic_work_[ue] = 0;
+        membrane_force_[ue] = Voigt3(lane(loads.membrane_force[0], l), lane(loads.membrane_force[1], l), lane(loads.membrane_force[2], l));
+        bending_moment_[ue] = Voigt3(lane(loads.bending_moment[0], l), lane(loads.bending_moment[1], l), lane(loads.bending_moment[2], l));
+    }
+}
+
 ShellElements::StepTotals ShellElements::compute(ParticleState& s, Real viscous_rate, Real dt) {
     const Index ne = size();
     // Small models stay serial: a parallel region per step costs more than it saves there.
     const bool parallel = ne >= k_parallel_min_elements;
-    auto reverse = [&](std::size_t ue) {
-        const auto& t = tri_[ue];
-        std::array<Vec3, 3> base, cur, dth;
-        for (std::size_t i = 0; i < 3; ++i) {
-            const std::size_t p = static_cast<std::size_t>(t[i]);
-            base[i] = s.x_prev[p];
-            cur[i] = s.x[p];
-            dth[i] = s.dtheta[p];
-        }
-        return reverse_motion(base, cur, dth);
-    };
     // Phase 0 (smoothed membrane only): every element's path element and CST strain increment.
     if (smoothed_membrane_) {
 #pragma omp parallel for schedule(static) if (parallel)
         for (Index e = 0; e < ne; ++e) {
             const std::size_t ue = static_cast<std::size_t>(e);
-            reversed_[ue] = reverse(ue);
+            reversed_[ue] = reverse_element(ue, s);
             const ReversedTriangle& rt = reversed_[ue];
             if (rt.degenerate) {
                 cst_strain_[ue].setZero();
@@ -248,98 +458,17 @@ ShellElements::StepTotals ShellElements::compute(ParticleState& s, Real viscous_
         }
     }
     // Phase 1: every triangle writes its corner loads (and, smoothed, the loads on the nodes
-    // across its sides) into its own slots.
-#pragma omp parallel for schedule(static) if (parallel)
-    for (Index e = 0; e < ne; ++e) {
-        const std::size_t ue = static_cast<std::size_t>(e);
-        const ReversedTriangle rt = smoothed_membrane_ ? reversed_[ue] : reverse(ue);
-        const Real lc = current_length(e, s.x);  // once per element and step
-        refresh_bending_ratio(e, s.x, lc);
-        elem_dt_[ue] = element_dt(e, lc);
-        // the 3 slots across the sides are used (and gathered) only with the smoothed membrane
-        const int used_slots = smoothed_membrane_ ? k_slots : 3;
-        for (int k = 0; k < used_slots; ++k)
-            slot_force_[k_slots * ue + static_cast<std::size_t>(k)] = slot_moment_[k_slots * ue + static_cast<std::size_t>(k)] = Vec3::Zero();
-        // A tilt over 90 deg or an area change by a factor 2 within one step is no deformation a
-        // stable step can produce: the run has diverged (theory.md §2.8).
-        if (rt.degenerate || rt.normal_cosine < 0 || !(rt.area_ratio > 0.5 && rt.area_ratio < 2.0)) {
-            elem_failed_[ue] = 1;
-            elem_work_[ue] = elem_damp_work_[ue] = elem_plastic_work_[ue] = 0;
-            continue;
-        }
-        elem_failed_[ue] = 0;
-        // Smoothed membrane strain (membrane_smoothing.hpp): the mean of the three side strains,
-        // a side strain being the area-weighted mean of the CST strains of the two elements
-        // there (the neighbour's unfolded into this frame), or this element's own on a side
-        // without a smooth neighbour. Area weights keep the patch test.
-        Voigt3 smoothed = Voigt3::Zero();
-        Real own_share = 1;
-        std::array<Mat3, 3> to_here;         // neighbour strain -> this frame, per side
-        std::array<Real, 3> side_weight{};   // weight of the neighbour's strain, per side
-        if (smoothed_membrane_) {
-            own_share = 0;
-            for (int i = 0; i < 3; ++i) {
-                const Index n = side_neighbour_[3 * ue + static_cast<std::size_t>(i)];
-                const ReversedTriangle* rn = n >= 0 ? &reversed_[static_cast<std::size_t>(n)] : nullptr;
-                if (rn && !rn->degenerate &&
-                    rn->frame_current.row(2).dot(rt.frame_current.row(2)) >= k_smooth_cosine) {
-                    // the shared side runs from corner (i+1) to corner (i+2) here, from corner na to
-                    // corner nb in the neighbour (topology, fixed at construction)
-                    const int na = side_neighbour_corner_[2 * (3 * ue + static_cast<std::size_t>(i))];
-                    const int nb = side_neighbour_corner_[2 * (3 * ue + static_cast<std::size_t>(i)) + 1];
-                    const Real beta = side_angle(rt.x2, rt.x3, rt.y3, (i + 1) % 3, (i + 2) % 3) -
-                                      side_angle(rn->x2, rn->x3, rn->y3, na, nb);
-                    to_here[static_cast<std::size_t>(i)] = strain_rotation(beta);
-                    const Real w_n = rn->area / (3.0 * (rt.area + rn->area));
-                    side_weight[static_cast<std::size_t>(i)] = w_n;
-                    own_share += 1.0 / 3.0 - w_n;
-                    smoothed += w_n * (to_here[static_cast<std::size_t>(i)] * cst_strain_[static_cast<std::size_t>(n)]);
-                } else {
-                    own_share += 1.0 / 3.0;
-                }
-            }
-            smoothed += own_share * cst_strain_[ue];
-        }
-        const std::size_t sec = static_cast<std::size_t>(section_[ue]);
-        std::span<MaterialPoint> pts(points_.data() + point_offset_[ue],
-                                     point_offset_[ue + 1] - point_offset_[ue]);
-        const ShellTriangleLoads loads =
-            std::visit([&](const auto& material) {
-                return shell_triangle_loads(rt, rules_[sec], material, pts, viscous_rate, dt, thickness_[ue],
-                                            smoothed_membrane_ ? &smoothed : nullptr, own_share);
-            }, materials_[sec]);
-        if (thickness_update_) thickness_[ue] *= 1.0 + loads.thickness_strain;  // §3.4
-        for (std::size_t i = 0; i < 3; ++i) {
-            slot_force_[k_slots * ue + i] = loads.force[i];
-            slot_moment_[k_slots * ue + i] = loads.moment[i];
-        }
-        if (smoothed_membrane_) {
-            // The neighbours' share of the membrane forces: A_e w_n B_n^T T^T N, in the
-            // neighbour's frame, turned forward with it (§5).
-            for (int i = 0; i < 3; ++i) {
-                if (side_weight[static_cast<std::size_t>(i)] == 0) continue;
-                const std::size_t n = static_cast<std::size_t>(side_neighbour_[3 * ue + static_cast<std::size_t>(i)]);
-                const ReversedTriangle& rn = reversed_[n];
-                const Voigt3 n_there = to_here[static_cast<std::size_t>(i)].transpose() * loads.membrane_resultant;
-                const Eigen::Matrix<Real, 6, 1> f_local =
-                    (rt.area * side_weight[static_cast<std::size_t>(i)]) *
-                    (membrane_b(TriangleShape(rn.x2, rn.x3, rn.y3)).transpose() * n_there);
-                const Mat3 to_global = rn.frame_current.transpose();
-                for (int k = 0; k < 3; ++k) {
-                    const Vec3 f = to_global * Vec3(f_local(2 * k), f_local(2 * k + 1), 0.0);
-                    const Index p = tri_[n][static_cast<std::size_t>(k)];
-                    std::size_t slot = k_slots * ue + 3 + static_cast<std::size_t>(i);  // the node across side i
-                    for (std::size_t j = 0; j < 3; ++j)
-                        if (tri_[ue][j] == p) slot = k_slots * ue + j;
-                    slot_force_[slot] += f;
-                }
-            }
-        }
-        elem_work_[ue] = loads.strain_work;
-        elem_damp_work_[ue] = loads.damping_work;
-        elem_plastic_work_[ue] = loads.plastic_work;
-        membrane_force_[ue] = loads.membrane_force;
-        bending_moment_[ue] = loads.bending_moment;
+    // across its sides) into its own slots: the elastic blocks k_lanes elements at a time
+    // (elements/elastic_triangle_block.hpp), the other elements one by one.
+    const Index n_blocks = static_cast<Index>(block_elements_.size()) / k_lanes;
+    const Index n_scalar = static_cast<Index>(scalar_elements_.size());
+#pragma omp parallel if (parallel)
+    {
+#pragma omp for schedule(static) nowait
+        for (Index b = 0; b < n_blocks; ++b) compute_block(b, s, viscous_rate, dt);
+#pragma omp for schedule(static)
+        for (Index i = 0; i < n_scalar; ++i)
+            compute_element(scalar_elements_[static_cast<std::size_t>(i)], s, viscous_rate, dt);
     }
     // Phase 2: every particle sums its slots in a fixed order (bitwise thread-independent).
     const Index np = static_cast<Index>(s.size());

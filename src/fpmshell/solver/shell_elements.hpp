@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "fpmshell/core/types.hpp"
+#include "fpmshell/elements/elastic_triangle_block.hpp"
 #include "fpmshell/elements/shell_triangle.hpp"
 #include "fpmshell/materials/section_material.hpp"
 #include "fpmshell/model/model.hpp"
@@ -70,6 +71,13 @@ private:
     /// ratio was computed at.
     void refresh_bending_ratio(Index e, const std::vector<Vec3>& x, Real lc);
     [[nodiscard]] Real bending_ratio(Index e, const std::vector<Vec3>& x) const;
+    /// Path element of element e (§2).
+    [[nodiscard]] ReversedTriangle reverse_element(std::size_t e, const ParticleState& s) const;
+    /// Phase 1 of compute for one element by the general (scalar) code.
+    void compute_element(Index e, ParticleState& s, Real viscous_rate, Real dt);
+    /// Phase 1 of compute for the k_lanes elements of SIMD block b (lanes outside the block
+    /// kernel's bounds go to compute_element).
+    void compute_block(Index b, ParticleState& s, Real viscous_rate, Real dt);
 
     std::vector<std::array<Index, 3>> tri_;
     std::vector<Index> section_;               ///< per element
@@ -94,6 +102,11 @@ private:
     // 6 slots per element: its 3 corners, then the node across each side (smoothed membrane)
     std::vector<Vec3> slot_force_, slot_moment_;
     std::vector<Index> csr_begin_, csr_slot_;     ///< particle -> slots
+    // SIMD blocks (elements/elastic_triangle_block.hpp)
+    static constexpr std::size_t k_max_block_points = 35;  ///< 7 in-plane x 5 thickness points
+    std::vector<ElasticSectionConstants> elastic_constants_;  ///< per section (zero if not elastic)
+    std::vector<Index> block_elements_;   ///< k_lanes elements of one section per block
+    std::vector<Index> scalar_elements_;  ///< the elements computed one by one
     std::vector<Real> elem_work_, elem_damp_work_, elem_plastic_work_, elem_dt_;
     std::vector<std::uint8_t> elem_failed_;
     struct ChunkMin {  ///< smallest step and first failure of one chunk of elements

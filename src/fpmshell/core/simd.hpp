@@ -1,0 +1,126 @@
+// Lane-generic arithmetic for the element kernels that run on k_lanes elements at once
+// (style.md §4: vectorise across elements, not within one). A kernel written against a
+// scalar type T compiles both for T = Real (one element, the reference and fallback) and for
+// T = RealPack, the widest SIMD pack of doubles of the build's instruction set (2 for plain
+// x86-64, 4 for x86-64-v3, 8 for x86-64-v4: cmake/simd.cmake), from the C++ Parallelism TS v2
+// <experimental/simd> that GCC's libstdc++ ships. Pack arithmetic is lane-wise IEEE: a lane
+// gives what the same expression gives in scalar code, up to the a*b+c the compiler contracts
+// into one FMA in one and not in the other.
+#pragma once
+
+#include <array>
+#include <cmath>
+#include <experimental/simd>
+#include <type_traits>
+#include <utility>
+
+#include "fpmshell/core/types.hpp"
+
+namespace fpmshell {
+
+namespace stdx = std::experimental;
+
+using RealPack = stdx::native_simd<Real>;
+inline constexpr int k_lanes = static_cast<int>(RealPack::size());
+
+/// The mask type of T: bool for Real, the pack's mask for RealPack.
+template <class T>
+using MaskOf = decltype(std::declval<T>() < std::declval<T>());
+
+/// a where m, b elsewhere.
+[[nodiscard]] inline Real select(bool m, Real a, Real b) { return m ? a : b; }
+[[nodiscard]] inline RealPack select(const RealPack::mask_type& m, const RealPack& a, const RealPack& b) {
+    RealPack r = b;
+    stdx::where(m, r) = a;
+    return r;
+}
+[[nodiscard]] inline bool all_lanes(bool m) { return m; }
+[[nodiscard]] inline bool all_lanes(const RealPack::mask_type& m) { return stdx::all_of(m); }
+[[nodiscard]] inline bool lane(bool m, int /*l*/) { return m; }
+[[nodiscard]] inline bool lane(const RealPack::mask_type& m, int l) { return m[static_cast<std::size_t>(l)]; }
+[[nodiscard]] inline Real lane(Real v, int /*l*/) { return v; }
+[[nodiscard]] inline Real lane(const RealPack& v, int l) { return v[static_cast<std::size_t>(l)]; }
+inline void set_lane(Real& v, int /*l*/, Real x) { v = x; }
+inline void set_lane(RealPack& v, int l, Real x) { v[static_cast<std::size_t>(l)] = x; }
+[[nodiscard]] inline bool any_lane(bool m) { return m; }
+[[nodiscard]] inline bool any_lane(const RealPack::mask_type& m) { return stdx::any_of(m); }
+/// Number of lanes of T.
+template <class T>
+inline constexpr int lanes_of = std::is_same_v<T, Real> ? 1 : k_lanes;
+
+using std::abs;
+using std::max;
+using std::sqrt;
+[[nodiscard]] inline RealPack max(const RealPack& a, const RealPack& b) { return stdx::max(a, b); }
+// GCC 12 warns of an uninitialised variable inside its own AVX-512 sqrt intrinsic once inlined
+// (GCC bug 105593, fixed in GCC 13); the pragma at this call site silences that false report.
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wuninitialized"
+#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+[[nodiscard]] inline RealPack sqrt(const RealPack& a) { return stdx::sqrt(a); }
+#pragma GCC diagnostic pop
+
+/// The small helpers below are forced inline: GCC otherwise keeps some pack-valued calls
+/// (a 3x3 product is 9 pack FMAs, less than the call's spills).
+#define FPMSHELL_INLINE [[gnu::always_inline]] inline
+
+/// A 3-vector of T (one per lane).
+template <class T>
+struct V3 {
+    T x, y, z;
+};
+template <class T>
+[[nodiscard]] FPMSHELL_INLINE V3<T> operator+(const V3<T>& a, const V3<T>& b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
+template <class T>
+[[nodiscard]] FPMSHELL_INLINE V3<T> operator-(const V3<T>& a, const V3<T>& b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
+template <class T>
+[[nodiscard]] FPMSHELL_INLINE V3<T> operator*(const T& s, const V3<T>& a) { return {s * a.x, s * a.y, s * a.z}; }
+template <class T>
+[[nodiscard]] FPMSHELL_INLINE T dot(const V3<T>& a, const V3<T>& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+template <class T>
+[[nodiscard]] FPMSHELL_INLINE V3<T> cross(const V3<T>& a, const V3<T>& b) {
+    return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
+}
+template <class T>
+[[nodiscard]] FPMSHELL_INLINE T squared_norm(const V3<T>& a) { return dot(a, a); }
+
+/// A 3x3 matrix of T, stored by rows.
+template <class T>
+struct M3 {
+    std::array<V3<T>, 3> row;
+};
+/// A v
+template <class T>
+[[nodiscard]] FPMSHELL_INLINE V3<T> operator*(const M3<T>& a, const V3<T>& v) {
+    return {dot(a.row[0], v), dot(a.row[1], v), dot(a.row[2], v)};
+}
+/// A^T v
+template <class T>
+[[nodiscard]] FPMSHELL_INLINE V3<T> transpose_times(const M3<T>& a, const V3<T>& v) {
+    return {a.row[0].x * v.x + a.row[1].x * v.y + a.row[2].x * v.z,
+            a.row[0].y * v.x + a.row[1].y * v.y + a.row[2].y * v.z,
+            a.row[0].z * v.x + a.row[1].z * v.y + a.row[2].z * v.z};
+}
+/// A B
+template <class T>
+[[nodiscard]] FPMSHELL_INLINE M3<T> operator*(const M3<T>& a, const M3<T>& b) {
+    M3<T> r;
+    for (std::size_t i = 0; i < 3; ++i) r.row[i] = transpose_times(b, a.row[i]);  // row_i(A) B
+    return r;
+}
+/// A^T B
+template <class T>
+[[nodiscard]] FPMSHELL_INLINE M3<T> transpose_times(const M3<T>& a, const M3<T>& b) {
+    const V3<T> c0{a.row[0].x, a.row[1].x, a.row[2].x}, c1{a.row[0].y, a.row[1].y, a.row[2].y},
+        c2{a.row[0].z, a.row[1].z, a.row[2].z};
+    return {{transpose_times(b, c0), transpose_times(b, c1), transpose_times(b, c2)}};
+}
+/// A B^T
+template <class T>
+[[nodiscard]] FPMSHELL_INLINE M3<T> times_transpose(const M3<T>& a, const M3<T>& b) {
+    M3<T> r;
+    for (std::size_t i = 0; i < 3; ++i) r.row[i] = b * a.row[i];
+    return r;
+}
+
+}  // namespace fpmshell

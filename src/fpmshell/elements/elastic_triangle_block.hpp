@@ -1,0 +1,355 @@
+// An elastic step of the DKT shell triangle written once for a scalar type T (core/simd.hpp):
+// with T = RealPack it computes k_lanes elements at once, one per SIMD lane. It is the same
+// element as reverse_motion + shell_triangle_loads (theory.md §2-§5) for a linear elastic
+// section with DKT bending, or a J2 section whose points all stay inside the yield surface
+// over the step (the trial check of §7.3 step 1), restricted to the path elements of a stable
+// step:
+//   - every rotation of the step (nodal increments, in-plane and relative rotations) is below
+//     0.01 rad, so that the series branches of core/rotation.hpp apply,
+//   - the element is not degenerate, not tilted by more than 90 deg, and keeps its area
+//     within a factor of 2.
+// A lane outside these bounds, or with a J2 point whose trial state yields, is reported in
+// `valid` and the caller computes that element with the general scalar code, which also
+// reports the failures of §2.8 and does the return mapping. Within them a lane
+// gives the scalar code's result up to rounding (the operation order of a few sums differs;
+// tests/unit/elements/test_elastic_triangle_block.cpp bounds the difference).
+#pragma once
+
+#include <array>
+#include <span>
+
+#include "fpmshell/core/simd.hpp"
+#include "fpmshell/elements/quadrature.hpp"
+#include "fpmshell/materials/flow_stress.hpp"
+
+namespace fpmshell {
+
+/// One path element per lane: node positions at t_{n-1} and t_n, nodal rotation increments.
+template <class T>
+struct TriangleMotion {
+    std::array<V3<T>, 3> base, current, dtheta;
+};
+
+/// The constants of a linear elastic section with its integration rule.
+struct ElasticSectionConstants {
+    Real c11 = 0, c12 = 0, c33 = 0;  ///< plane-stress C: [[c11, c12, 0], [c12, c11, 0], [0, 0, c33]]
+    Real thickness_factor = 0;       ///< (1 - 2 nu) / E, §3.4
+    std::span<const TrianglePoint> inplane;
+    std::span<const ThicknessPoint> through;
+};
+
+/// The yield surfaces of the points of a J2 section at the start of the step, [g][k].
+/// A rate-dependent section's yield radius is R(rate) kappa_n with R >= 1 (§7.4): the check
+/// first uses R = 1, a surface inside the true one, which a point well inside passes without
+/// any logarithm or power; only the lanes outside it evaluate their R. The filtered strain
+/// rate, part of the point's state, is updated.
+template <class T>
+struct YieldSurfaces {
+    const T* back_stress;  ///< b, 3 components per point (§7.2)
+    const T* third_k2;     ///< (kappa_n / R)^2 / 3 per point (§7.3)
+    Real tolerance;        ///< J2Plastic::k_yield_tolerance
+    const RateFactor* rate = nullptr;  ///< rate-dependent sections: R(rate), §7.4
+    const T* strain_rate = nullptr;    ///< the filtered rate per point, old
+    T* new_strain_rate = nullptr;      ///< and new (§7.4 option a)
+    Real dt = 0;                     ///< duration of the path element (0: no rate)
+    Real rate_filter = 0;            ///< J2Plastic::k_rate_filter
+};
+
+/// What one lane returns (the quantities of ShellTriangleLoads an elastic element has).
+template <class T>
+struct ElasticTriangleLoads {
+    std::array<V3<T>, 3> force, moment;  ///< internal nodal loads, global frame, t_n
+    T strain_work, damping_work, thickness_strain;
+    std::array<T, 3> membrane_force, bending_moment;  ///< N, M averaged over the element
+    T characteristic_length;  ///< L_c = 2A / l_max of the current triangle (§6.4)
+    MaskOf<T> valid;          ///< lanes inside the bounds above
+};
+
+namespace block_detail {
+
+/// R(phi) by the series of core/rotation.hpp (|phi|^2 < 1e-4, checked by the caller).
+template <class T>
+[[nodiscard]] FPMSHELL_INLINE M3<T> rotation_matrix_series(const V3<T>& phi, const T& t2) {
+    const T a = 1.0 - t2 / 6.0 * (1.0 - t2 / 20.0 * (1.0 - t2 / 42.0));
+    const T b = 0.5 - t2 / 24.0 * (1.0 - t2 / 30.0 * (1.0 - t2 / 56.0));
+    const T d = 1.0 - b * t2;
+    const T bxy = b * phi.x * phi.y, bxz = b * phi.x * phi.z, byz = b * phi.y * phi.z;
+    return {{V3<T>{d + b * phi.x * phi.x, bxy - a * phi.z, bxz + a * phi.y},
+             V3<T>{bxy + a * phi.z, d + b * phi.y * phi.y, byz - a * phi.x},
+             V3<T>{bxz - a * phi.y, byz + a * phi.x, d + b * phi.z * phi.z}}};
+}
+
+/// Minimal rotation taking unit a to unit b (a.b > 0 here), as core/rotation.hpp.
+template <class T>
+[[nodiscard]] FPMSHELL_INLINE M3<T> minimal_rotation(const V3<T>& a, const V3<T>& b) {
+    const V3<T> v = cross(a, b);
+    const T f = 1.0 / (1.0 + dot(a, b));
+    const T d = 1.0 - f * squared_norm(v);
+    const T fxy = f * v.x * v.y, fxz = f * v.x * v.z, fyz = f * v.y * v.z;
+    return {{V3<T>{d + f * v.x * v.x, fxy - v.z, fxz + v.y},
+             V3<T>{fxy + v.z, d + f * v.y * v.y, fyz - v.x},
+             V3<T>{fxz - v.y, fyz + v.x, d + f * v.z * v.z}}};
+}
+
+template <class T>
+[[nodiscard]] FPMSHELL_INLINE V3<T> divide(const V3<T>& v, const T& s) {
+    return {v.x / s, v.y / s, v.z / s};
+}
+
+/// Rotation-only DKT curvature matrix at a corner: the corner's shape-function derivative
+/// arrays n_xi, n_eta (constants) and the element's side coefficients (triangle_shape.cpp).
+template <class T>
+struct DktCorner {
+    std::array<std::array<T, 6>, 3> b;  ///< B(e_i), rows kxx, kyy, kxy
+};
+
+template <class T>
+[[nodiscard]] FPMSHELL_INLINE DktCorner<T> dkt_corner(const std::array<Real, 6>& n_xi, const std::array<Real, 6>& n_eta,
+                                             const std::array<T, 3>& cb, const std::array<T, 3>& cc,
+                                             const std::array<T, 3>& ce, const T& x2, const T& x3, const T& y3,
+                                             const T& inv_two_area) {
+    auto h_of = [&](const std::array<Real, 6>& n, std::array<T, 6>& hx, std::array<T, 6>& hy) {
+        const Real n1 = n[0], n2 = n[1], n3 = n[2], n4 = n[3], n5 = n[4], n6 = n[5];
+        hx = {cb[1] * n5 + cb[2] * n6, n1 - cc[1] * n5 - cc[2] * n6,
+              cb[2] * n6 + cb[0] * n4, n2 - cc[2] * n6 - cc[0] * n4,
+              cb[0] * n4 + cb[1] * n5, n3 - cc[0] * n4 - cc[1] * n5};
+        hy = {-n1 + ce[1] * n5 + ce[2] * n6, -(cb[1] * n5) - cb[2] * n6,
+              -n2 + ce[2] * n6 + ce[0] * n4, -(cb[2] * n6) - cb[0] * n4,
+              -n3 + ce[0] * n4 + ce[1] * n5, -(cb[0] * n4) - cb[1] * n5};
+    };
+    std::array<T, 6> hx_xi, hy_xi, hx_eta, hy_eta;
+    h_of(n_xi, hx_xi, hy_xi);
+    h_of(n_eta, hx_eta, hy_eta);
+    // Local frame: x31 = x3, y31 = y3, x12 = -x2, y12 = 0 (node 1 at the origin, §2.5).
+    DktCorner<T> out;
+    for (std::size_t q = 0; q < 6; ++q) {
+        out.b[0][q] = (y3 * hx_xi[q]) * inv_two_area;
+        out.b[1][q] = (-(x3 * hy_xi[q]) + x2 * hy_eta[q]) * inv_two_area;
+        out.b[2][q] = (-(x3 * hx_xi[q]) + x2 * hx_eta[q] + y3 * hy_xi[q]) * inv_two_area;
+    }
+    return out;
+}
+
+}  // namespace block_detail
+
+/// Elastic step of the DKT triangle on one path element per lane (theory.md §2-§5).
+/// stress: the section's points [g][k], 3 components each, old in, new out (only meaningful
+/// on valid lanes). thickness: h at the start of the step. viscous_rate as shell_triangle_loads.
+/// yield: for a J2 section, the yield surfaces the trial stresses must stay inside.
+template <class T>
+[[nodiscard]] ElasticTriangleLoads<T> elastic_triangle_loads(const TriangleMotion<T>& m,
+                                                             const ElasticSectionConstants& sec,
+                                                             const T& thickness, T* stress,
+                                                             Real viscous_rate,
+                                                             const YieldSurfaces<T>* yield = nullptr) {
+    using namespace block_detail;
+    ElasticTriangleLoads<T> out;
+    // ---- §2 reverse motion (reverse_motion.cpp, series branches) ----
+    const V3<T> a2 = m.base[1] - m.base[0], a3 = m.base[2] - m.base[0];
+    const V3<T> r2 = m.current[1] - m.current[0], r3 = m.current[2] - m.current[0];
+    const V3<T> na_raw = cross(a2, a3), n_raw = cross(r2, r3);
+    const T lmax2 = max(max(squared_norm(a2), squared_norm(a3)), squared_norm(a3 - a2));
+    const T na_norm = sqrt(squared_norm(na_raw)), n_norm = sqrt(squared_norm(n_raw));
+    const V3<T> na = divide(na_raw, na_norm), n = divide(n_raw, n_norm);
+    const T area = 0.5 * na_norm;
+    const T area_ratio = n_norm / na_norm;
+    const T normal_cosine = dot(na, n);
+    MaskOf<T> valid = (na_norm > 1e-12 * lmax2) && (n_norm > 1e-12 * lmax2) && (normal_cosine > 0.0) &&
+                      (area_ratio > 0.5) && (area_ratio < 2.0);
+    const M3<T> r_op = minimal_rotation(na, n);                            // §2.2
+    const V3<T> r2p = transpose_times(r_op, r2), r3p = transpose_times(r_op, r3);
+    const T ip_y = dot(na, cross(a2, r2p)), ip_x = dot(a2, r2p);          // §2.3
+    valid = valid && (ip_x > 0.0) && (abs(ip_y) < 0.01 * ip_x);
+    const T t = ip_y / ip_x, tt = t * t;
+    const T theta_ip = t * (1.0 - tt * (1.0 / 3.0 - tt * (1.0 / 5.0 - tt * (1.0 / 7.0))));
+    const V3<T> phi_ip = theta_ip * na;
+    const T phi_ip2 = squared_norm(phi_ip);
+    valid = valid && (phi_ip2 < 1e-4);
+    const M3<T> r_ip = rotation_matrix_series(phi_ip, phi_ip2);
+    const V3<T> r2pp = transpose_times(r_ip, r2p), r3pp = transpose_times(r_ip, r3p);
+    const T x2 = sqrt(squared_norm(a2));                                   // §2.5
+    const V3<T> ex = divide(a2, x2), ez = na, ey = cross(ez, ex);
+    const T x3 = dot(ex, a3), y3 = dot(ey, a3);
+    const V3<T> d2 = r2pp - a2, d3 = r3pp - a3;                             // §2.4
+    const std::array<T, 3> ux{T(0.0), dot(ex, d2), dot(ex, d3)}, uy{T(0.0), dot(ey, d2), dot(ey, d3)};
+    const M3<T> r_r = r_op * r_ip;
+    std::array<T, 6> th;  // [thx1 thy1 thx2 thy2 thx3 thy3], §2.6
+    for (std::size_t i = 0; i < 3; ++i) {
+        const T dth2 = squared_norm(m.dtheta[i]);
+        valid = valid && (dth2 < 1e-4);
+        const M3<T> rel = transpose_times(r_r, rotation_matrix_series(m.dtheta[i], dth2));
+        // log(rel) by the series of rotation_vector (c > 0, sin^2 < 1e-4)
+        const T c = (rel.row[0].x + rel.row[1].y + rel.row[2].z - 1.0) * 0.5;
+        const V3<T> w{rel.row[2].y - rel.row[1].z, rel.row[0].z - rel.row[2].x, rel.row[1].x - rel.row[0].y};
+        const T s2 = 0.25 * squared_norm(w);
+        valid = valid && (c > 0.0) && (s2 < 1e-4);
+        const V3<T> phi = (0.5 * (1.0 + s2 * (1.0 / 6.0 + s2 * (3.0 / 40.0 + s2 * (5.0 / 112.0))))) * w;
+        th[2 * i] = dot(ex, phi);
+        th[2 * i + 1] = dot(ey, phi);
+    }
+    const M3<T> t_a{{ex, ey, ez}};
+    const M3<T> frame_current = times_transpose(t_a, r_r);                // §2.7
+    // current L_c (§6.4), the same operations as characteristic_length in shell_elements.cpp
+    const T lmax2_current = max(max(squared_norm(r2), squared_norm(m.current[2] - m.current[1])),
+                                squared_norm(m.current[0] - m.current[2]));
+    out.characteristic_length = n_norm / sqrt(lmax2_current);
+
+    // ---- §3.1 CST ----
+    const T inv_two_area = 1.0 / (x2 * y3);
+    // b_i / 2A and c_i / 2A of triangle_shape.cpp with x = (0, x2, x3), y = (0, 0, y3)
+    const std::array<T, 3> bx{-y3 * inv_two_area, y3 * inv_two_area, T(0.0)};
+    const std::array<T, 3> cy{(x3 - x2) * inv_two_area, -x3 * inv_two_area, x2 * inv_two_area};
+    const std::array<T, 3> d_eps_m{bx[1] * ux[1] + bx[2] * ux[2], cy[1] * uy[1] + cy[2] * uy[2],
+                                   cy[1] * ux[1] + cy[2] * ux[2] + bx[1] * uy[1] + bx[2] * uy[2]};
+
+    // ---- §4.7 DKT at the three corners (the curvature matrix is linear in L, §4.3) ----
+    std::array<T, 3> cb, cc, ce;
+    {
+        // sides 23, 31, 12: (x_i - x_j, y_i - y_j)
+        const std::array<T, 3> xij{x2 - x3, x3, -x2}, yij{-y3, y3, T(0.0)};
+        for (std::size_t s = 0; s < 3; ++s) {
+            const T inv_l2 = 1.0 / (xij[s] * xij[s] + yij[s] * yij[s]);
+            cb[s] = 0.75 * xij[s] * yij[s] * inv_l2;
+            cc[s] = (0.25 * xij[s] * xij[s] - 0.5 * yij[s] * yij[s]) * inv_l2;
+            ce[s] = (0.25 * yij[s] * yij[s] - 0.5 * xij[s] * xij[s]) * inv_l2;
+        }
+    }
+    // n_xi, n_eta of bending_b_dkt at L = e_1, e_2, e_3 (xi = L_2, eta = L_3)
+    static constexpr std::array<std::array<Real, 6>, 3> k_n_xi{{{-3, -1, 0, 0, 0, 4},
+                                                                {1, 3, 0, 0, 0, -4},
+                                                                {1, -1, 0, 4, -4, 0}}};
+    static constexpr std::array<std::array<Real, 6>, 3> k_n_eta{{{-3, 0, -1, 0, 4, 0},
+                                                                 {1, 0, -1, 4, 0, -4},
+                                                                 {1, 0, 3, 0, -4, 0}}};
+    std::array<DktCorner<T>, 3> corner;
+    std::array<std::array<T, 3>, 3> kappa_corner, m_corner;
+    for (std::size_t i = 0; i < 3; ++i) {
+        corner[i] = dkt_corner(k_n_xi[i], k_n_eta[i], cb, cc, ce, x2, x3, y3, inv_two_area);
+        for (std::size_t r = 0; r < 3; ++r) {
+            const auto& row = corner[i].b[r];
+            kappa_corner[i][r] = row[0] * th[0] + row[1] * th[1] + row[2] * th[2] + row[3] * th[3] +
+                                 row[4] * th[4] + row[5] * th[5];
+            m_corner[i][r] = T(0.0);
+        }
+    }
+
+    // ---- §3.2, §4.4-§4.5 through-thickness integration, elastic update ----
+    const T h = thickness, half_h = 0.5 * h;
+    std::array<T, 3> n_weighted{T(0.0), T(0.0), T(0.0)};
+    out.strain_work = out.damping_work = out.thickness_strain = T(0.0);
+    for (std::size_t r = 0; r < 3; ++r) out.membrane_force[r] = out.bending_moment[r] = T(0.0);
+    const std::size_t nk = sec.through.size();
+    std::size_t point = 0;
+    for (const TrianglePoint& ip : sec.inplane) {
+        std::array<T, 3> d_kappa;
+        for (std::size_t r = 0; r < 3; ++r)
+            d_kappa[r] = ip.L[0] * kappa_corner[0][r] + ip.L[1] * kappa_corner[1][r] + ip.L[2] * kappa_corner[2][r];
+        std::array<T, 3> n_g{T(0.0), T(0.0), T(0.0)}, m_g{T(0.0), T(0.0), T(0.0)};
+        T work_g = 0.0;
+        for (std::size_t k = 0; k < nk; ++k, ++point) {
+            const ThicknessPoint& tp = sec.through[k];
+            const T z = tp.zeta * half_h;
+            const std::array<T, 3> d_eps{d_eps_m[0] + z * d_kappa[0], d_eps_m[1] + z * d_kappa[1],
+                                         d_eps_m[2] + z * d_kappa[2]};
+            const std::array<T, 3> d_sigma{sec.c11 * d_eps[0] + sec.c12 * d_eps[1],
+                                           sec.c12 * d_eps[0] + sec.c11 * d_eps[1], sec.c33 * d_eps[2]};
+            T* sigma = stress + 3 * point;
+            const std::array<T, 3> old{sigma[0], sigma[1], sigma[2]};
+            for (std::size_t r = 0; r < 3; ++r) sigma[r] = old[r] + d_sigma[r];
+            if (yield) {  // §7.3 step 1: f_tr = xi^T P xi / 2 - kappa^2 / 3 <= tol kappa^2 / 3
+                const T* b = yield->back_stress + 3 * point;
+                const T xs = (sigma[0] - b[0]) + (sigma[1] - b[1]), xd = (sigma[1] - b[1]) - (sigma[0] - b[0]);
+                const T x12 = sigma[2] - b[2];
+                const T half_p2 = 0.5 * (xs * xs / 6.0 + 0.5 * xd * xd + 2.0 * x12 * x12);
+                const T k2 = yield->third_k2[point];
+                MaskOf<T> inside = (half_p2 - k2 <= yield->tolerance * k2);
+                if (yield->rate) {  // effective_strain_rate of j2_plastic.cpp, filtered (§7.4 a)
+                    T rate = 0.0;
+                    if (yield->dt > 0) {
+                        const T e12 = 0.5 * d_eps[2];
+                        const T q = d_eps[0] * d_eps[0] + d_eps[1] * d_eps[1] + d_eps[0] * d_eps[1] + e12 * e12;
+                        rate = (2.0 / std::sqrt(3.0)) * sqrt(max(T(0.0), q)) / yield->dt;
+                    }
+                    const T new_rate = yield->rate_filter * rate + (1.0 - yield->rate_filter) * yield->strain_rate[point];
+                    yield->new_strain_rate[point] = new_rate;
+                    // A lane outside the R = 1 surface is checked against its own R(rate) >= 1:
+                    // one logarithm or power per such lane, none for the points well inside.
+                    const MaskOf<T> outside = !inside && valid;
+                    if (any_lane(outside)) {
+                        T rate_factor2 = 1.0;  // R^2
+                        for (int l = 0; l < lanes_of<T>; ++l) {
+                            if (!lane(outside, l)) continue;
+                            const Real r = yield->rate->value(lane(new_rate, l));
+                            set_lane(rate_factor2, l, r * r);
+                        }
+                        const T k2_rate = rate_factor2 * k2;
+                        inside = inside || (half_p2 - k2_rate <= yield->tolerance * k2_rate);
+                    }
+                }
+                valid = valid && inside;
+            }
+            const T wz = half_h * tp.weight;
+            out.thickness_strain += (0.5 * ip.weight * tp.weight) *
+                                    (sec.thickness_factor * (d_sigma[0] + d_sigma[1]) - d_eps[0] - d_eps[1]);
+            const T wzz = wz * z;
+            for (std::size_t r = 0; r < 3; ++r) {
+                n_g[r] += wz * sigma[r];
+                m_g[r] += wzz * sigma[r];
+            }
+            work_g += wz * 0.5 *
+                      ((old[0] + sigma[0]) * d_eps[0] + (old[1] + sigma[1]) * d_eps[1] + (old[2] + sigma[2]) * d_eps[2]);
+        }
+        for (std::size_t r = 0; r < 3; ++r) {
+            out.membrane_force[r] += ip.weight * n_g[r];
+            out.bending_moment[r] += ip.weight * m_g[r];
+        }
+        if (viscous_rate > 0) {  // §6.5 viscous resultants
+            const T fn = viscous_rate * h, fm = viscous_rate * (h * h * h / 12.0);
+            const std::array<T, 3> n_v{fn * (sec.c11 * d_eps_m[0] + sec.c12 * d_eps_m[1]),
+                                       fn * (sec.c12 * d_eps_m[0] + sec.c11 * d_eps_m[1]), fn * (sec.c33 * d_eps_m[2])};
+            const std::array<T, 3> m_v{fm * (sec.c11 * d_kappa[0] + sec.c12 * d_kappa[1]),
+                                       fm * (sec.c12 * d_kappa[0] + sec.c11 * d_kappa[1]), fm * (sec.c33 * d_kappa[2])};
+            out.damping_work += area * ip.weight *
+                                (n_v[0] * d_eps_m[0] + n_v[1] * d_eps_m[1] + n_v[2] * d_eps_m[2] +
+                                 m_v[0] * d_kappa[0] + m_v[1] * d_kappa[1] + m_v[2] * d_kappa[2]);
+            for (std::size_t r = 0; r < 3; ++r) {
+                n_g[r] += n_v[r];
+                m_g[r] += m_v[r];
+            }
+        }
+        const T wa = area * ip.weight;
+        for (std::size_t r = 0; r < 3; ++r) {
+            n_weighted[r] += wa * n_g[r];
+            for (std::size_t i = 0; i < 3; ++i) m_corner[i][r] += (wa * ip.L[i]) * m_g[r];
+        }
+        out.strain_work += wa * work_g;
+    }
+
+    // ---- §3.3 membrane, §4.5 bending and §4.6 out-of-plane nodal loads ----
+    std::array<T, 6> f_m, m_b;
+    for (std::size_t i = 0; i < 3; ++i) {
+        f_m[2 * i] = bx[i] * n_weighted[0] + cy[i] * n_weighted[2];
+        f_m[2 * i + 1] = cy[i] * n_weighted[1] + bx[i] * n_weighted[2];
+    }
+    for (std::size_t q = 0; q < 6; ++q) {
+        T sum = 0.0;
+        for (std::size_t i = 0; i < 3; ++i)
+            sum += corner[i].b[0][q] * m_corner[i][0] + corner[i].b[1][q] * m_corner[i][1] +
+                   corner[i].b[2][q] * m_corner[i][2];
+        m_b[q] = sum;
+    }
+    const T sum_mx = m_b[0] + m_b[2] + m_b[4], sum_my = m_b[1] + m_b[3] + m_b[5];
+    const T f3z = -sum_mx / y3;
+    const T f2z = (sum_my - x3 * f3z) / x2;
+    const T f1z = -f2z - f3z;
+    const std::array<T, 3> fz{f1z, f2z, f3z};
+    // §5 forward rotation: global = T_t^T local.
+    for (std::size_t i = 0; i < 3; ++i) {
+        out.force[i] = transpose_times(frame_current, V3<T>{f_m[2 * i], f_m[2 * i + 1], fz[i]});
+        out.moment[i] = transpose_times(frame_current, V3<T>{m_b[2 * i], m_b[2 * i + 1], T(0.0)});
+    }
+    out.valid = valid;
+    return out;
+}
+
+}  // namespace fpmshell
