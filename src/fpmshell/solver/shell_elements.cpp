@@ -84,12 +84,20 @@ ShellElements::ShellElements(const Model& model)
         node_inertia_[e] = share.inertia;
         refresh_bending_ratio(static_cast<Index>(e), model.nodes, current_length(static_cast<Index>(e), model.nodes));
     }
+    // Material points: a plastic section's points hold their whole history (points_); an elastic
+    // section's points hold a stress only (elastic_stress_), a third of the memory traffic.
     point_offset_.resize(ne + 1);
-    point_offset_[0] = 0;
-    for (std::size_t e = 0; e < ne; ++e)
-        point_offset_[e + 1] =
-            point_offset_[e] + static_cast<std::size_t>(rules_[static_cast<std::size_t>(section_[e])].n_points());
+    stress_offset_.resize(ne + 1);
+    point_offset_[0] = stress_offset_[0] = 0;
+    for (std::size_t e = 0; e < ne; ++e) {
+        const std::size_t sec = static_cast<std::size_t>(section_[e]);
+        const std::size_t n = static_cast<std::size_t>(rules_[sec].n_points());
+        const bool elastic = std::holds_alternative<LinearElastic>(materials_[sec]);
+        point_offset_[e + 1] = point_offset_[e] + (elastic ? 0 : n);
+        stress_offset_[e + 1] = stress_offset_[e] + (elastic ? n : 0);
+    }
     points_.assign(point_offset_[ne], MaterialPoint{});
+    elastic_stress_.assign(stress_offset_[ne], Voigt3::Zero());
     slot_force_.assign(k_slots * ne, Vec3::Zero());
     slot_moment_.assign(k_slots * ne, Vec3::Zero());
     // Side neighbours: side i of element e is opposite its corner i; an edge shared by exactly
@@ -310,11 +318,19 @@ void ShellElements::compute_element(Index e, ParticleState& s, Real viscous_rate
     const std::size_t sec = static_cast<std::size_t>(section_[ue]);
     std::span<MaterialPoint> pts(points_.data() + point_offset_[ue],
                                  point_offset_[ue + 1] - point_offset_[ue]);
+    // an elastic element's stresses go through material points for the general kernel
+    const std::size_t n_stress = stress_offset_[ue + 1] - stress_offset_[ue];
+    std::array<MaterialPoint, k_max_block_points> elastic_points;
+    if (n_stress > 0) {
+        for (std::size_t p = 0; p < n_stress; ++p) elastic_points[p].stress = elastic_stress_[stress_offset_[ue] + p];
+        pts = std::span<MaterialPoint>(elastic_points.data(), n_stress);
+    }
     const ShellTriangleLoads loads =
         std::visit([&](const auto& material) {
             return shell_triangle_loads(rt, rules_[sec], material, pts, viscous_rate, dt, thickness_[ue],
                                         smoothed_membrane_ ? &smoothed : nullptr, own_share);
         }, materials_[sec]);
+    for (std::size_t p = 0; p < n_stress; ++p) elastic_stress_[stress_offset_[ue] + p] = elastic_points[p].stress;
     if (thickness_update_) thickness_[ue] *= 1.0 + loads.thickness_strain;  // §3.4
     for (std::size_t i = 0; i < 3; ++i) {
         slot_force_[k_slots * ue + i] = loads.force[i];
@@ -375,13 +391,17 @@ void ShellElements::compute_block(Index b, ParticleState& s, Real viscous_rate, 
     }
     const RealPack thickness = load([&](int l) { return thickness_[element(l)]; });
     const std::size_t n_points = constants.inplane.size() * constants.through.size();
+    // J2 sections: the yield surfaces of the points, kappa_n = flow radius at alpha_n (§7.3)
+    const J2Plastic* j2 = std::get_if<J2Plastic>(&materials_[sec]);
+    // the stress of point p of lane l: in the J2 points, or in the elastic stresses
+    auto point_stress = [&](int l, std::size_t p) -> Voigt3& {
+        const std::size_t e = element(l);
+        return j2 ? points_[point_offset_[e] + p].stress : elastic_stress_[stress_offset_[e] + p];
+    };
     std::array<RealPack, 3 * k_max_block_points> stress;
     for (std::size_t p = 0; p < n_points; ++p)
         for (std::size_t r = 0; r < 3; ++r)
-            stress[3 * p + r] = load([&](int l) { return points_[point_offset_[element(l)] + p].stress(static_cast<Eigen::Index>(r)); });
-
-    // J2 sections: the yield surfaces of the points, kappa_n = flow radius at alpha_n (§7.3)
-    const J2Plastic* j2 = std::get_if<J2Plastic>(&materials_[sec]);
+            stress[3 * p + r] = load([&](int l) { return point_stress(l, p)(static_cast<Eigen::Index>(r)); });
     std::array<RealPack, 3 * k_max_block_points> back_stress;
     std::array<RealPack, k_max_block_points> third_k2, strain_rate, new_strain_rate;
     YieldSurfaces<RealPack> yield{back_stress.data(), third_k2.data(), J2Plastic::k_yield_tolerance};
@@ -423,11 +443,10 @@ void ShellElements::compute_block(Index b, ParticleState& s, Real viscous_rate, 
             slot_force_[k_slots * ue + i] = Vec3(lane(loads.force[i].x, l), lane(loads.force[i].y, l), lane(loads.force[i].z, l));
             slot_moment_[k_slots * ue + i] = Vec3(lane(loads.moment[i].x, l), lane(loads.moment[i].y, l), lane(loads.moment[i].z, l));
         }
-        MaterialPoint* pts = points_.data() + point_offset_[ue];
         for (std::size_t p = 0; p < n_points; ++p)
-            for (std::size_t r = 0; r < 3; ++r) pts[p].stress(static_cast<Eigen::Index>(r)) = lane(stress[3 * p + r], l);
+            point_stress(l, p) = Voigt3(lane(stress[3 * p], l), lane(stress[3 * p + 1], l), lane(stress[3 * p + 2], l));
         if (yield.new_strain_rate)
-            for (std::size_t p = 0; p < n_points; ++p) pts[p].strain_rate = lane(new_strain_rate[p], l);
+            for (std::size_t p = 0; p < n_points; ++p) points_[point_offset_[ue] + p].strain_rate = lane(new_strain_rate[p], l);
         if (thickness_update_) thickness_[ue] *= 1.0 + lane(loads.thickness_strain, l);  // §3.4
         elem_work_[ue] = lane(loads.strain_work, l);
         elem_damp_work_[ue] = lane(loads.damping_work, l);
@@ -524,15 +543,15 @@ ShellElements::StepTotals ShellElements::compute(ParticleState& s, Real viscous_
 
 template <class Archive>
 void ShellElements::transfer_state(Archive& ar) {
-    ar(points_, thickness_, bend_ratio_, bend_lc_, membrane_force_, bending_moment_);
+    ar(points_, elastic_stress_, thickness_, bend_ratio_, bend_lc_, membrane_force_, bending_moment_);
 }
 
 void ShellElements::save(RestartWriter& out) const { const_cast<ShellElements*>(this)->transfer_state(out); }
 
 void ShellElements::load(RestartReader& in) {
-    const std::size_t n_points = points_.size(), n_elements = thickness_.size();
+    const std::size_t n_points = points_.size(), n_stresses = elastic_stress_.size(), n_elements = thickness_.size();
     transfer_state(in);
-    if (points_.size() != n_points || thickness_.size() != n_elements)
+    if (points_.size() != n_points || elastic_stress_.size() != n_stresses || thickness_.size() != n_elements)
         in.fail("restart file of a model with other elements or integration rules");
 }
 

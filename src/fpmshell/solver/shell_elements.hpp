@@ -97,13 +97,15 @@ private:
     std::vector<int> side_neighbour_corner_;  ///< per side, the neighbour's corners of its ends (i+1, i+2)
     std::vector<ReversedTriangle> reversed_;  ///< per element, this step's path element
     std::vector<Voigt3> cst_strain_;          ///< per element, this step's CST strain increment
-    std::vector<std::size_t> point_offset_;    ///< first material point of every element
-    std::vector<MaterialPoint> points_;
+    std::vector<std::size_t> point_offset_;    ///< first material point of every element (plastic sections)
+    std::vector<MaterialPoint> points_;        ///< material points of the plastic sections
+    std::vector<std::size_t> stress_offset_;   ///< first stress of every element (elastic sections)
+    std::vector<Voigt3> elastic_stress_;       ///< stresses of the points of the elastic sections
     // 6 slots per element: its 3 corners, then the node across each side (smoothed membrane)
     std::vector<Vec3> slot_force_, slot_moment_;
     std::vector<Index> csr_begin_, csr_slot_;     ///< particle -> slots
     // SIMD blocks (elements/elastic_triangle_block.hpp)
-    static constexpr std::size_t k_max_block_points = 35;  ///< 7 in-plane x 5 thickness points
+    static constexpr std::size_t k_max_block_points = 35;  ///< 7 in-plane x 5 thickness points, the largest rule
     std::vector<ElasticSectionConstants> elastic_constants_;  ///< per section (zero if not elastic)
     std::vector<Index> block_elements_;   ///< k_lanes elements of one section per block
     std::vector<Index> scalar_elements_;  ///< the elements computed one by one
