@@ -11,7 +11,7 @@ namespace {
 
 constexpr char k_magic[8] = {'F', 'P', 'M', 'S', 'H', 'R', 'S', 'T'};
 // Raised whenever the content of a restart file changes, so an older file is refused.
-constexpr std::uint32_t k_format_version = 1;
+constexpr std::uint32_t k_format_version = 2;  // 2: elastic stresses apart from the material points
 
 }  // namespace
 
