@@ -1,16 +1,17 @@
-// An elastic step of the DKT shell triangle written once for a scalar type T (core/simd.hpp):
+// The DKT shell triangle written once for a scalar type T (core/simd.hpp):
 // with T = RealPack it computes k_lanes elements at once, one per SIMD lane. It is the same
 // element as reverse_motion + shell_triangle_loads (theory.md §2-§5) for a linear elastic
-// section with DKT bending, or a J2 section whose points all stay inside the yield surface
-// over the step (the trial check of §7.3 step 1), restricted to the path elements of a stable
-// step:
+// section with DKT bending, or a J2 section (the trial check of §7.3 step 1 on every point at
+// once; the points that yield go one by one to the caller's return mapping), restricted to the
+// path elements of a stable step:
 //   - every rotation of the step (nodal increments, in-plane and relative rotations) is below
 //     0.01 rad, so that the series branches of core/rotation.hpp apply,
 //   - the element is not degenerate, not tilted by more than 90 deg, and keeps its area
 //     within a factor of 2.
-// A lane outside these bounds, or with a J2 point whose trial state yields, is reported in
-// `valid` and the caller computes that element with the general scalar code, which also
-// reports the failures of §2.8 and does the return mapping. Within them a lane
+// A lane outside these bounds is reported in `valid` and the caller computes that element
+// with the general scalar code, which also reports the failures of §2.8. A J2 point whose trial
+// state yields is handed to the caller's return mapping (the general material update on that
+// point alone), or, without one, also makes its lane invalid. Within them a lane
 // gives the scalar code's result up to rounding (the operation order of a few sums differs;
 // tests/unit/elements/test_elastic_triangle_block.cpp bounds the difference).
 #pragma once
@@ -55,11 +56,24 @@ struct YieldSurfaces {
     Real rate_filter = 0;            ///< J2Plastic::k_rate_filter
 };
 
+/// What the return mapping of one point of one lane gives back (§7.3; the caller runs the
+/// general material update on that point's stored state).
+struct PointReturn {
+    std::array<Real, 3> stress;  ///< the new stress
+    Real plastic_work;           ///< the increment of plastic work per unit volume
+    Real strain_rate;            ///< the new filtered strain rate (rate-dependent sections)
+};
+
+/// No return mapping: a lane with a yielding point is reported invalid instead.
+struct NoReturnMapping {
+    PointReturn operator()(int, std::size_t, const std::array<Real, 3>&) const { return {}; }
+};
+
 /// What one lane returns (the quantities of ShellTriangleLoads an elastic element has).
 template <class T>
 struct ElasticTriangleLoads {
     std::array<V3<T>, 3> force, moment;  ///< internal nodal loads, global frame, t_n
-    T strain_work, damping_work, thickness_strain;
+    T strain_work, damping_work, plastic_work, thickness_strain;
     std::array<T, 3> membrane_force, bending_moment;  ///< N, M averaged over the element
     T characteristic_length;  ///< L_c = 2A / l_max of the current triangle (§6.4)
     MaskOf<T> valid;          ///< lanes inside the bounds above
@@ -135,13 +149,17 @@ template <class T>
 /// Elastic step of the DKT triangle on one path element per lane (theory.md §2-§5).
 /// stress: the section's points [g][k], 3 components each, old in, new out (only meaningful
 /// on valid lanes). thickness: h at the start of the step. viscous_rate as shell_triangle_loads.
-/// yield: for a J2 section, the yield surfaces the trial stresses must stay inside.
-template <class T>
+/// yield: for a J2 section, the yield surfaces of the trial check.
+/// return_mapping(l, point, d_eps): called for each point of a lane with a valid path element
+/// whose trial stress is outside its yield surface; without one (NoReturnMapping) such a lane
+/// is reported invalid instead.
+template <class T, class ReturnMapping = NoReturnMapping>
 [[nodiscard]] ElasticTriangleLoads<T> elastic_triangle_loads(const TriangleMotion<T>& m,
                                                              const ElasticSectionConstants& sec,
                                                              const T& thickness, T* stress,
                                                              Real viscous_rate,
-                                                             const YieldSurfaces<T>* yield = nullptr) {
+                                                             const YieldSurfaces<T>* yield = nullptr,
+                                                             const ReturnMapping& return_mapping = {}) {
     using namespace block_detail;
     ElasticTriangleLoads<T> out;
     // ---- §2 reverse motion (reverse_motion.cpp, series branches) ----
@@ -236,7 +254,7 @@ template <class T>
     // ---- §3.2, §4.4-§4.5 through-thickness integration, elastic update ----
     const T h = thickness, half_h = 0.5 * h;
     std::array<T, 3> n_weighted{T(0.0), T(0.0), T(0.0)};
-    out.strain_work = out.damping_work = out.thickness_strain = T(0.0);
+    out.strain_work = out.damping_work = out.plastic_work = out.thickness_strain = T(0.0);
     for (std::size_t r = 0; r < 3; ++r) out.membrane_force[r] = out.bending_moment[r] = T(0.0);
     const std::size_t nk = sec.through.size();
     std::size_t point = 0;
@@ -245,7 +263,7 @@ template <class T>
         for (std::size_t r = 0; r < 3; ++r)
             d_kappa[r] = ip.L[0] * kappa_corner[0][r] + ip.L[1] * kappa_corner[1][r] + ip.L[2] * kappa_corner[2][r];
         std::array<T, 3> n_g{T(0.0), T(0.0), T(0.0)}, m_g{T(0.0), T(0.0), T(0.0)};
-        T work_g = 0.0;
+        T work_g = 0.0, plastic_g = 0.0;
         for (std::size_t k = 0; k < nk; ++k, ++point) {
             const ThicknessPoint& tp = sec.through[k];
             const T z = tp.zeta * half_h;
@@ -286,11 +304,27 @@ template <class T>
                         inside = inside || (half_p2 - k2_rate <= yield->tolerance * k2_rate);
                     }
                 }
-                valid = valid && inside;
+                if constexpr (std::is_same_v<ReturnMapping, NoReturnMapping>) {
+                    valid = valid && inside;
+                } else {  // §7.3 steps 2-4 on the yielding points, one by one
+                    const MaskOf<T> yielding = !inside && valid;
+                    if (any_lane(yielding)) {
+                        T d_plastic_work = 0.0;
+                        for (int l = 0; l < lanes_of<T>; ++l) {
+                            if (!lane(yielding, l)) continue;
+                            const PointReturn r =
+                                return_mapping(l, point, {lane(d_eps[0], l), lane(d_eps[1], l), lane(d_eps[2], l)});
+                            for (std::size_t c = 0; c < 3; ++c) set_lane(sigma[c], l, r.stress[c]);
+                            set_lane(d_plastic_work, l, r.plastic_work);
+                            if (yield->rate) set_lane(yield->new_strain_rate[point], l, r.strain_rate);
+                        }
+                        plastic_g += (half_h * tp.weight) * d_plastic_work;
+                    }
+                }
             }
             const T wz = half_h * tp.weight;
             out.thickness_strain += (0.5 * ip.weight * tp.weight) *
-                                    (sec.thickness_factor * (d_sigma[0] + d_sigma[1]) - d_eps[0] - d_eps[1]);
+                                    (sec.thickness_factor * ((sigma[0] - old[0]) + (sigma[1] - old[1])) - d_eps[0] - d_eps[1]);
             const T wzz = wz * z;
             for (std::size_t r = 0; r < 3; ++r) {
                 n_g[r] += wz * sigma[r];
@@ -323,6 +357,7 @@ template <class T>
             for (std::size_t i = 0; i < 3; ++i) m_corner[i][r] += (wa * ip.L[i]) * m_g[r];
         }
         out.strain_work += wa * work_g;
+        out.plastic_work += wa * plastic_g;
     }
 
     // ---- §3.3 membrane, §4.5 bending and §4.6 out-of-plane nodal loads ----

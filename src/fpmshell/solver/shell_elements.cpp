@@ -426,8 +426,17 @@ void ShellElements::compute_block(Index b, ParticleState& s, Real viscous_rate, 
             });
         }
     }
+    // The yielding points of J2 lanes: the general update on the stored point, in place (a lane
+    // that takes this path never falls back, so its old state is not needed again).
+    auto return_mapping = [&](int l, std::size_t p, const std::array<Real, 3>& d_eps) {
+        MaterialPoint& mp = points_[point_offset_[element(l)] + p];
+        const Real plastic_work_old = mp.plastic_work;
+        j2->update(mp, Voigt3(d_eps[0], d_eps[1], d_eps[2]), dt, mp);
+        return PointReturn{{mp.stress(0), mp.stress(1), mp.stress(2)}, mp.plastic_work - plastic_work_old, mp.strain_rate};
+    };
     const ElasticTriangleLoads<RealPack> loads =
-        elastic_triangle_loads(motion, constants, thickness, stress.data(), viscous_rate, j2 ? &yield : nullptr);
+        j2 ? elastic_triangle_loads(motion, constants, thickness, stress.data(), viscous_rate, &yield, return_mapping)
+           : elastic_triangle_loads(motion, constants, thickness, stress.data(), viscous_rate);
 
     for (int l = 0; l < k_lanes; ++l) {
         const std::size_t ue = element(l);
@@ -450,7 +459,7 @@ void ShellElements::compute_block(Index b, ParticleState& s, Real viscous_rate, 
         if (thickness_update_) thickness_[ue] *= 1.0 + lane(loads.thickness_strain, l);  // §3.4
         elem_work_[ue] = lane(loads.strain_work, l);
         elem_damp_work_[ue] = lane(loads.damping_work, l);
-        elem_plastic_work_[ue] = 0;
+        elem_plastic_work_[ue] = lane(loads.plastic_work, l);
         membrane_force_[ue] = Voigt3(lane(loads.membrane_force[0], l), lane(loads.membrane_force[1], l), lane(loads.membrane_force[2], l));
         bending_moment_[ue] = Voigt3(lane(loads.bending_moment[0], l), lane(loads.bending_moment[1], l), lane(loads.bending_moment[2], l));
     }

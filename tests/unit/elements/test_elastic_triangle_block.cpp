@@ -271,7 +271,9 @@ TEST(ElasticTriangleBlock, LanesOutsideTheBoundsAreReportedInvalid) {
 namespace {
 
 /// rate: the section's rate factor; dt: duration of the path element (for the strain rate).
-void check_j2_lanes(const RateFactor& rate, Real dt) {
+/// with_return_mapping: the yielding point of lane 1 goes to a return mapping (the general
+/// J2 update on a copy of the lane's points) and the lane stays valid; without, it is invalid.
+void check_j2_lanes(const RateFactor& rate, Real dt, bool with_return_mapping) {
     std::mt19937 rng(23);
     const ShellRule rule = make_rule(3, 5);
     FlowStress flow;
@@ -327,8 +329,21 @@ void check_j2_lanes(const RateFactor& rate, Real dt) {
     }
     std::array<const PathElement*, k_lanes> lanes;
     for (int l = 0; l < k_lanes; ++l) lanes[static_cast<std::size_t>(l)] = &elements[static_cast<std::size_t>(l)];
-    const auto out = elastic_triangle_loads(motion_of<RealPack>(lanes), constants, RealPack(k_thickness),
-                                            stress.data(), 0.0, &yield);
+    std::vector<std::vector<MaterialPoint>> updated = old_points;  // what the return mapping changes
+    int n_returns = 0;
+    auto return_mapping = [&](int l, std::size_t p, const std::array<Real, 3>& d_eps) {
+        ++n_returns;
+        MaterialPoint& mp = updated[static_cast<std::size_t>(l)][p];
+        const Real plastic_work_old = mp.plastic_work;
+        mat.update(mp, Voigt3(d_eps[0], d_eps[1], d_eps[2]), dt, mp);
+        return PointReturn{{mp.stress(0), mp.stress(1), mp.stress(2)}, mp.plastic_work - plastic_work_old, mp.strain_rate};
+    };
+    const auto out = with_return_mapping
+                         ? elastic_triangle_loads(motion_of<RealPack>(lanes), constants, RealPack(k_thickness),
+                                                  stress.data(), 0.0, &yield, return_mapping)
+                         : elastic_triangle_loads(motion_of<RealPack>(lanes), constants, RealPack(k_thickness),
+                                                  stress.data(), 0.0, &yield);
+    EXPECT_EQ(n_returns, with_return_mapping ? 1 : 0);  // lane 1's point 4 only
     for (int l = 0; l < k_lanes; ++l) {
         SCOPED_TRACE(::testing::Message() << "lane " << l);
         const PathElement& pe = elements[static_cast<std::size_t>(l)];
@@ -336,13 +351,22 @@ void check_j2_lanes(const RateFactor& rate, Real dt) {
         const ShellTriangleLoads ref =
             shell_triangle_loads(reverse_motion(pe.base, pe.current, pe.dtheta), rule, mat, points, 0.0, dt);
         if (l == 1) {
-            EXPECT_FALSE(lane(out.valid, l));
             EXPECT_GT(points[4].plastic_strain, 0.0);  // the scalar element did yield there
-
-            continue;
+            EXPECT_GT(ref.plastic_work, 0.0);
+            if (!with_return_mapping) {
+                EXPECT_FALSE(lane(out.valid, l));
+                continue;
+            }
+            // the point's whole history as the scalar element left it (the same update)
+            EXPECT_NEAR(updated[1][4].plastic_strain, points[4].plastic_strain, k_rel_tol * points[4].plastic_strain);
+            EXPECT_NEAR(lane(out.plastic_work, l), ref.plastic_work, k_rel_tol * ref.plastic_work);
+        } else {
+            EXPECT_EQ(ref.plastic_work, 0.0);
+            EXPECT_EQ(lane(out.plastic_work, l), 0.0);
         }
         ASSERT_TRUE(lane(out.valid, l));
-        EXPECT_EQ(ref.plastic_work, 0.0);
+        EXPECT_NEAR(lane(out.thickness_strain, l), ref.thickness_strain, 1e-12);
+        EXPECT_NEAR(lane(out.strain_work, l), ref.strain_work, k_rel_tol * std::abs(ref.strain_work) + 1e-6);
         Real f_scale = 0;
         for (std::size_t i = 0; i < 3; ++i) f_scale = std::max(f_scale, ref.force[i].norm());
         for (std::size_t i = 0; i < 3; ++i)
@@ -363,12 +387,21 @@ void check_j2_lanes(const RateFactor& rate, Real dt) {
 
 }  // namespace
 
-TEST(ElasticTriangleBlock, J2LanesStayValidOnlyWhileEveryPointIsElastic) { check_j2_lanes(RateFactor{}, 0.0); }
+TEST(ElasticTriangleBlock, J2LanesStayValidOnlyWhileEveryPointIsElastic) { check_j2_lanes(RateFactor{}, 0.0, false); }
+
+TEST(ElasticTriangleBlock, J2YieldingPointsGoToTheReturnMapping) {
+    check_j2_lanes(RateFactor{}, 0.0, true);
+    RateFactor jc;  // R ~ 1.14: the 1.2e9 shear of lane 1's point 4 still yields
+    jc.kind = RateFactor::Kind::JohnsonCook;
+    jc.c = 0.02;
+    jc.reference_rate = 1.0;
+    check_j2_lanes(jc, 1e-6, true);
+}
 
 TEST(ElasticTriangleBlock, RateDependentJ2LanesUpdateTheFilteredStrainRate) {
     RateFactor jc;  // Johnson-Cook C = 0.02 at 1 /s: R ~ 1.14 at the ~1e3 /s of this case
     jc.kind = RateFactor::Kind::JohnsonCook;
     jc.c = 0.02;
     jc.reference_rate = 1.0;
-    check_j2_lanes(jc, 1e-6);
+    check_j2_lanes(jc, 1e-6, false);
 }
