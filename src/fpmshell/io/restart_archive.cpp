@@ -12,6 +12,9 @@ namespace {
 constexpr char k_magic[8] = {'F', 'P', 'M', 'S', 'H', 'R', 'S', 'T'};
 // Raised whenever the content of a restart file changes, so an older file is refused.
 constexpr std::uint32_t k_format_version = 2;  // 2: elastic stresses apart from the material points
+// Format 1 differs only by the elastic stresses; ShellElements::load reads it for models
+// without elastic sections (a long plastic run started before format 2 can go on).
+constexpr std::uint32_t k_oldest_format_read = 1;
 
 }  // namespace
 
@@ -38,9 +41,10 @@ RestartReader::RestartReader(const std::filesystem::path& path) : path_(path) {
     pos_ = sizeof(magic);
     std::uint32_t version = 0;
     get(version);
-    if (version != k_format_version)
-        fail("restart file of format " + std::to_string(version) + ", this fpmshell reads format " +
-             std::to_string(k_format_version));
+    if (version < k_oldest_format_read || version > k_format_version)
+        fail("restart file of format " + std::to_string(version) + ", this fpmshell reads formats " +
+             std::to_string(k_oldest_format_read) + " to " + std::to_string(k_format_version));
+    format_ = version;
     std::uint8_t size_double = 0, size_long = 0, size_int = 0;
     get(size_double);
     get(size_long);

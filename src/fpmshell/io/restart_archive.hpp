@@ -116,6 +116,8 @@ public:
     void finish() const;
     /// Throws InputError "<file>: <message>" (for checks of the content by the caller).
     [[noreturn]] void fail(const std::string& message) const;
+    /// Format version of the file (io/restart_archive.cpp).
+    [[nodiscard]] std::uint32_t format() const { return format_; }
 
 private:
     void raw(void* data, std::size_t n);
@@ -153,6 +155,7 @@ private:
     std::string bytes_;
     std::size_t pos_ = 0;
     std::string section_ = "header";
+    std::uint32_t format_ = 0;
 };
 
 }  // namespace fpmshell

@@ -559,7 +559,14 @@ void ShellElements::save(RestartWriter& out) const { const_cast<ShellElements*>(
 
 void ShellElements::load(RestartReader& in) {
     const std::size_t n_points = points_.size(), n_stresses = elastic_stress_.size(), n_elements = thickness_.size();
-    transfer_state(in);
+    if (in.format() >= 2) {
+        transfer_state(in);
+    } else {  // format 1: no elastic stresses apart (restart_archive.cpp)
+        if (n_stresses > 0)
+            in.fail("restart file of format 1, which holds no elastic stresses apart: it can resume a model "
+                    "without elastic sections only");
+        in(points_, thickness_, bend_ratio_, bend_lc_, membrane_force_, bending_moment_);
+    }
     if (points_.size() != n_points || elastic_stress_.size() != n_stresses || thickness_.size() != n_elements)
         in.fail("restart file of a model with other elements or integration rules");
 }
