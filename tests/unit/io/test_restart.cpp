@@ -3,10 +3,14 @@
 //   or reordered file with an InputError naming it;
 // - a run stopped part way and resumed writes the same bytes as the run that never stopped,
 //   on the square tube (plasticity, self-contact, a rigid body, variable step);
-// - a restart file does not resume another model.
+// - a restart file does not resume another model;
+// - a file of format 1 (before the elastic stresses were stored apart) resumes a model without
+//   elastic sections, like the tube, to the same bytes.
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <cstdint>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -155,6 +159,43 @@ TEST(Restart, AStoppedAndResumedRunWritesTheSameBytesAsAnUninterruptedOne) {
         ++frames;
     }
     EXPECT_GE(frames, 4);
+    fs::remove_all(straight.output_dir);
+    fs::remove_all(first.output_dir);
+}
+
+TEST(Restart, AFormatOneFileResumesAModelWithoutElasticSections) {
+    const Model model = small_tube(4e-4);
+    RunOptions straight;
+    straight.output_dir = fresh_dir("straight1");
+    straight.echo = false;
+    straight.quiet = true;
+    ASSERT_EQ(run_model(model, straight), 0);
+    RunOptions first = straight;
+    first.output_dir = fresh_dir("format1");
+    first.stop_at_step = 217;
+    ASSERT_EQ(run_model(model, first), 0);
+    // Turn the format-2 file into the format-1 file of the same state: version 1, and no
+    // length of the (empty) elastic stresses after the material points of section "elements".
+    const fs::path file = first.output_dir / k_restart_file;
+    std::string bytes = bytes_of(file);
+    const std::uint32_t one = 1;
+    bytes.replace(8, sizeof(one), reinterpret_cast<const char*>(&one), sizeof(one));  // after the magic word
+    const std::size_t elements = bytes.find("elements");
+    ASSERT_NE(elements, std::string::npos);
+    std::uint64_t n_points = 0;
+    std::memcpy(&n_points, bytes.data() + elements + 8, sizeof(n_points));
+    const std::size_t stresses = elements + 8 + sizeof(n_points) + n_points * 11 * sizeof(double);  // 11 doubles a point
+    std::uint64_t n_stresses = 1;
+    std::memcpy(&n_stresses, bytes.data() + stresses, sizeof(n_stresses));
+    ASSERT_EQ(n_stresses, 0u);  // the tube has no elastic section
+    bytes.erase(stresses, sizeof(n_stresses));
+    std::ofstream(file, std::ios::binary | std::ios::trunc) << bytes;
+    RunOptions second = first;
+    second.stop_at_step = 0;
+    second.resume = true;
+    ASSERT_EQ(run_model(model, second), 0);
+    for (const char* name : {"history.csv", "energy.csv"})
+        EXPECT_EQ(bytes_of(first.output_dir / name), bytes_of(straight.output_dir / name)) << name;
     fs::remove_all(straight.output_dir);
     fs::remove_all(first.output_dir);
 }
