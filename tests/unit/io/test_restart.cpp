@@ -131,18 +131,24 @@ Model small_tube(Real end, int divisions_width = 6) {
                               "output.fields_every=1e-4"});
 }
 
-TEST(Restart, AStoppedAndResumedRunWritesTheSameBytesAsAnUninterruptedOne) {
-    const Model model = small_tube(4e-4);
-    RunOptions straight;
-    straight.output_dir = fresh_dir("straight");
+/// Runs the model straight through into one fresh folder (straight) and stopped at step 217,
+/// mid-way between two frames and two history rows, into another (first).
+void run_straight_and_stopped(const Model& model, const std::string& tag, RunOptions& straight, RunOptions& first) {
+    straight = RunOptions{};
+    straight.output_dir = fresh_dir("straight" + tag);
     straight.echo = false;
     straight.quiet = true;
     ASSERT_EQ(run_model(model, straight), 0);
-
-    RunOptions first = straight;
-    first.output_dir = fresh_dir("pieces");
-    first.stop_at_step = 217;  // mid-way between two frames and two history rows
+    first = straight;
+    first.output_dir = fresh_dir("pieces" + tag);
+    first.stop_at_step = 217;
     ASSERT_EQ(run_model(model, first), 0);
+}
+
+TEST(Restart, AStoppedAndResumedRunWritesTheSameBytesAsAnUninterruptedOne) {
+    const Model model = small_tube(4e-4);
+    RunOptions straight, first;
+    ASSERT_NO_FATAL_FAILURE(run_straight_and_stopped(model, "", straight, first));
     ASSERT_TRUE(fs::exists(first.output_dir / k_restart_file));
     EXPECT_NE(bytes_of(first.output_dir / "history.csv"), bytes_of(straight.output_dir / "history.csv"));
     RunOptions second = first;
@@ -165,15 +171,8 @@ TEST(Restart, AStoppedAndResumedRunWritesTheSameBytesAsAnUninterruptedOne) {
 
 TEST(Restart, AFormatOneFileResumesAModelWithoutElasticSections) {
     const Model model = small_tube(4e-4);
-    RunOptions straight;
-    straight.output_dir = fresh_dir("straight1");
-    straight.echo = false;
-    straight.quiet = true;
-    ASSERT_EQ(run_model(model, straight), 0);
-    RunOptions first = straight;
-    first.output_dir = fresh_dir("format1");
-    first.stop_at_step = 217;
-    ASSERT_EQ(run_model(model, first), 0);
+    RunOptions straight, first;
+    ASSERT_NO_FATAL_FAILURE(run_straight_and_stopped(model, "_format1", straight, first));
     // Turn the format-2 file into the format-1 file of the same state: version 1, and no
     // length of the (empty) elastic stresses after the material points of section "elements".
     const fs::path file = first.output_dir / k_restart_file;
