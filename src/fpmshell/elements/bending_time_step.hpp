@@ -10,6 +10,8 @@
 // lambda_max(M^-1/2 K_b M^-1/2); the assembled omega_max never exceeds the largest element one.
 #pragma once
 
+#include <limits>
+
 #include "fpmshell/core/types.hpp"
 #include "fpmshell/elements/triangle_shape.hpp"
 #include "fpmshell/model/model.hpp"
@@ -29,8 +31,13 @@ using Mat99 = Eigen::Matrix<Real, 9, 9>;
 /// Critical step 2 / omega_max of the bending modes of one element whose nodes carry the
 /// translational mass node_mass and the rotary inertia node_inertia from this element (§6.1,
 /// §6.2); infinite for a degenerate element.
+/// sufficient: a caller that needs only min(step, sufficient) (the membrane step) passes it;
+/// when the Frobenius norm of the scaled stiffness, an upper bound of omega_max^2, already
+/// gives a step of at least `sufficient`, that lower bound of the step is returned and the
+/// 9 x 9 eigenproblem, nearly all the cost, is skipped (the thin elements: h / L_c < ~0.3).
 [[nodiscard]] Real bending_critical_dt(BendingKernel kernel, const TriangleShape& s,
                                        const Eigen::Matrix<Real, 3, 3>& bending_rigidity,
-                                       Real node_mass, Real node_inertia);
+                                       Real node_mass, Real node_inertia,
+                                       Real sufficient = std::numeric_limits<Real>::infinity());
 
 }  // namespace fpmshell

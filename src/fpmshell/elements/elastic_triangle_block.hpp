@@ -56,18 +56,12 @@ struct YieldSurfaces {
     Real rate_filter = 0;            ///< J2Plastic::k_rate_filter
 };
 
-/// What the return mapping of one point of one lane gives back (§7.3; the caller runs the
-/// general material update on that point's stored state).
-struct PointReturn {
-    std::array<Real, 3> stress;  ///< the new stress
-    Real plastic_work;           ///< the increment of plastic work per unit volume
-    Real strain_rate;            ///< the new filtered strain rate (rate-dependent sections)
-};
-
 /// No return mapping: a lane with a yielding point is reported invalid instead.
-struct NoReturnMapping {
-    PointReturn operator()(int, std::size_t, const std::array<Real, 3>&) const { return {}; }
-};
+struct NoReturnMapping {};
+
+/// The largest number of points of a section the block kernel takes (7 in-plane x 5 through
+/// the thickness, the largest rule of quadrature.hpp).
+inline constexpr std::size_t k_max_block_points = 35;
 
 /// What one lane returns (the quantities of ShellTriangleLoads an elastic element has).
 template <class T>
@@ -150,9 +144,13 @@ template <class T>
 /// stress: the section's points [g][k], 3 components each, old in, new out (only meaningful
 /// on valid lanes). thickness: h at the start of the step. viscous_rate as shell_triangle_loads.
 /// yield: for a J2 section, the yield surfaces of the trial check.
-/// return_mapping(l, point, d_eps): called for each point of a lane with a valid path element
-/// whose trial stress is outside its yield surface; without one (NoReturnMapping) such a lane
-/// is reported invalid instead.
+/// return_mapping(n_points, yielding, d_eps, r, stress, d_plastic_work): called once, when
+/// some point's trial stress is outside its yield surface on some lanes with a valid path
+/// element; per point: the mask `yielding`, the strain increment and the rate factor R of
+/// every lane, and the trial stress in `stress`. It runs §7.3 steps 2-4 on the yielding
+/// (point, lane) pairs (materials/j2_return_mapping.hpp), keeps their history, and writes
+/// their new stress into `stress` and their plastic work per unit volume into d_plastic_work.
+/// Without one (NoReturnMapping) such a lane is reported invalid instead.
 template <class T, class ReturnMapping = NoReturnMapping>
 [[nodiscard]] ElasticTriangleLoads<T> elastic_triangle_loads(const TriangleMotion<T>& m,
                                                              const ElasticSectionConstants& sec,
@@ -251,14 +249,77 @@ template <class T, class ReturnMapping = NoReturnMapping>
         }
     }
 
-    // ---- §3.2, §4.4-§4.5 through-thickness integration, elastic update ----
+    // ---- §3.2, §4.4-§4.5, §7.3 the points: trial states, return mapping, integration ----
     const T h = thickness, half_h = 0.5 * h;
+    const std::size_t nk = sec.through.size();
+    const std::size_t n_points = sec.inplane.size() * nk;
+    // pass 1: the strain increment and the trial stress of every point (elastic sections: the
+    // new stress) and, in a J2 section, the check of §7.3 step 1
+    std::array<std::array<T, 3>, k_max_block_points> d_eps, old;
+    std::array<MaskOf<T>, k_max_block_points> yielding;
+    std::array<T, k_max_block_points> rate_factor;  // R of §7.4 (1 where not evaluated)
+    MaskOf<T> any_yielding = !valid && valid;     // no lane
+    for (std::size_t g = 0, point = 0; g < sec.inplane.size(); ++g) {
+        const TrianglePoint& ip = sec.inplane[g];
+        std::array<T, 3> d_kappa;
+        for (std::size_t r = 0; r < 3; ++r)
+            d_kappa[r] = ip.L[0] * kappa_corner[0][r] + ip.L[1] * kappa_corner[1][r] + ip.L[2] * kappa_corner[2][r];
+        for (std::size_t k = 0; k < nk; ++k, ++point) {
+            const T z = sec.through[k].zeta * half_h;
+            const std::array<T, 3> de{d_eps_m[0] + z * d_kappa[0], d_eps_m[1] + z * d_kappa[1], d_eps_m[2] + z * d_kappa[2]};
+            d_eps[point] = de;
+            const std::array<T, 3> d_sigma{sec.c11 * de[0] + sec.c12 * de[1], sec.c12 * de[0] + sec.c11 * de[1], sec.c33 * de[2]};
+            T* sigma = stress + 3 * point;
+            old[point] = {sigma[0], sigma[1], sigma[2]};
+            for (std::size_t r = 0; r < 3; ++r) sigma[r] = old[point][r] + d_sigma[r];
+            rate_factor[point] = 1.0;
+            if (!yield) continue;
+            // §7.3 step 1: f_tr = xi^T P xi / 2 - kappa^2 / 3 <= tol kappa^2 / 3
+            const T* b = yield->back_stress + 3 * point;
+            const T xs = (sigma[0] - b[0]) + (sigma[1] - b[1]), xd = (sigma[1] - b[1]) - (sigma[0] - b[0]);
+            const T x12 = sigma[2] - b[2];
+            const T half_p2 = 0.5 * (xs * xs / 6.0 + 0.5 * xd * xd + 2.0 * x12 * x12);
+            const T k2 = yield->third_k2[point];
+            MaskOf<T> inside = (half_p2 - k2 <= yield->tolerance * k2);
+            if (yield->rate) {  // effective_strain_rate of j2_plastic.cpp, filtered (§7.4 a)
+                T rate = 0.0;
+                if (yield->dt > 0) {
+                    const T e12 = 0.5 * de[2];
+                    const T q = de[0] * de[0] + de[1] * de[1] + de[0] * de[1] + e12 * e12;
+                    rate = (2.0 / std::sqrt(3.0)) * sqrt(max(T(0.0), q)) / yield->dt;
+                }
+                const T new_rate = yield->rate_filter * rate + (1.0 - yield->rate_filter) * yield->strain_rate[point];
+                yield->new_strain_rate[point] = new_rate;
+                // A lane outside the R = 1 surface is checked against its own R(rate) >= 1:
+                // one logarithm or power per such lane, none for the points well inside.
+                const MaskOf<T> outside = !inside && valid;
+                if (any_lane(outside)) {
+                    for (int l = 0; l < lanes_of<T>; ++l)
+                        if (lane(outside, l)) set_lane(rate_factor[point], l, yield->rate->value(lane(new_rate, l)));
+                    const T k2_rate = rate_factor[point] * rate_factor[point] * k2;
+                    inside = inside || (half_p2 - k2_rate <= yield->tolerance * k2_rate);
+                }
+            }
+            yielding[point] = !inside && valid;
+            any_yielding = any_yielding || yielding[point];
+        }
+    }
+    // pass 2: §7.3 steps 2-4 on every yielding point of every lane; without a return mapping
+    // such a lane is left to the scalar element
+    std::array<T, k_max_block_points> d_plastic_work;  // per unit volume, per point
+    const bool plastic = yield && any_lane(any_yielding);
+    if constexpr (std::is_same_v<ReturnMapping, NoReturnMapping>) {
+        if (plastic) valid = valid && !any_yielding;
+    } else if (plastic) {
+        d_plastic_work.fill(T(0.0));
+        return_mapping(n_points, yielding.data(), d_eps.data(), rate_factor.data(), stress, d_plastic_work.data());
+    }
+    // pass 3: through-thickness integration
     std::array<T, 3> n_weighted{T(0.0), T(0.0), T(0.0)};
     out.strain_work = out.damping_work = out.plastic_work = out.thickness_strain = T(0.0);
     for (std::size_t r = 0; r < 3; ++r) out.membrane_force[r] = out.bending_moment[r] = T(0.0);
-    const std::size_t nk = sec.through.size();
-    std::size_t point = 0;
-    for (const TrianglePoint& ip : sec.inplane) {
+    for (std::size_t g = 0, point = 0; g < sec.inplane.size(); ++g) {
+        const TrianglePoint& ip = sec.inplane[g];
         std::array<T, 3> d_kappa;
         for (std::size_t r = 0; r < 3; ++r)
             d_kappa[r] = ip.L[0] * kappa_corner[0][r] + ip.L[1] * kappa_corner[1][r] + ip.L[2] * kappa_corner[2][r];
@@ -267,71 +328,19 @@ template <class T, class ReturnMapping = NoReturnMapping>
         for (std::size_t k = 0; k < nk; ++k, ++point) {
             const ThicknessPoint& tp = sec.through[k];
             const T z = tp.zeta * half_h;
-            const std::array<T, 3> d_eps{d_eps_m[0] + z * d_kappa[0], d_eps_m[1] + z * d_kappa[1],
-                                         d_eps_m[2] + z * d_kappa[2]};
-            const std::array<T, 3> d_sigma{sec.c11 * d_eps[0] + sec.c12 * d_eps[1],
-                                           sec.c12 * d_eps[0] + sec.c11 * d_eps[1], sec.c33 * d_eps[2]};
-            T* sigma = stress + 3 * point;
-            const std::array<T, 3> old{sigma[0], sigma[1], sigma[2]};
-            for (std::size_t r = 0; r < 3; ++r) sigma[r] = old[r] + d_sigma[r];
-            if (yield) {  // §7.3 step 1: f_tr = xi^T P xi / 2 - kappa^2 / 3 <= tol kappa^2 / 3
-                const T* b = yield->back_stress + 3 * point;
-                const T xs = (sigma[0] - b[0]) + (sigma[1] - b[1]), xd = (sigma[1] - b[1]) - (sigma[0] - b[0]);
-                const T x12 = sigma[2] - b[2];
-                const T half_p2 = 0.5 * (xs * xs / 6.0 + 0.5 * xd * xd + 2.0 * x12 * x12);
-                const T k2 = yield->third_k2[point];
-                MaskOf<T> inside = (half_p2 - k2 <= yield->tolerance * k2);
-                if (yield->rate) {  // effective_strain_rate of j2_plastic.cpp, filtered (§7.4 a)
-                    T rate = 0.0;
-                    if (yield->dt > 0) {
-                        const T e12 = 0.5 * d_eps[2];
-                        const T q = d_eps[0] * d_eps[0] + d_eps[1] * d_eps[1] + d_eps[0] * d_eps[1] + e12 * e12;
-                        rate = (2.0 / std::sqrt(3.0)) * sqrt(max(T(0.0), q)) / yield->dt;
-                    }
-                    const T new_rate = yield->rate_filter * rate + (1.0 - yield->rate_filter) * yield->strain_rate[point];
-                    yield->new_strain_rate[point] = new_rate;
-                    // A lane outside the R = 1 surface is checked against its own R(rate) >= 1:
-                    // one logarithm or power per such lane, none for the points well inside.
-                    const MaskOf<T> outside = !inside && valid;
-                    if (any_lane(outside)) {
-                        T rate_factor2 = 1.0;  // R^2
-                        for (int l = 0; l < lanes_of<T>; ++l) {
-                            if (!lane(outside, l)) continue;
-                            const Real r = yield->rate->value(lane(new_rate, l));
-                            set_lane(rate_factor2, l, r * r);
-                        }
-                        const T k2_rate = rate_factor2 * k2;
-                        inside = inside || (half_p2 - k2_rate <= yield->tolerance * k2_rate);
-                    }
-                }
-                if constexpr (std::is_same_v<ReturnMapping, NoReturnMapping>) {
-                    valid = valid && inside;
-                } else {  // §7.3 steps 2-4 on the yielding points, one by one
-                    const MaskOf<T> yielding = !inside && valid;
-                    if (any_lane(yielding)) {
-                        T d_plastic_work = 0.0;
-                        for (int l = 0; l < lanes_of<T>; ++l) {
-                            if (!lane(yielding, l)) continue;
-                            const PointReturn r =
-                                return_mapping(l, point, {lane(d_eps[0], l), lane(d_eps[1], l), lane(d_eps[2], l)});
-                            for (std::size_t c = 0; c < 3; ++c) set_lane(sigma[c], l, r.stress[c]);
-                            set_lane(d_plastic_work, l, r.plastic_work);
-                            if (yield->rate) set_lane(yield->new_strain_rate[point], l, r.strain_rate);
-                        }
-                        plastic_g += (half_h * tp.weight) * d_plastic_work;
-                    }
-                }
-            }
+            const T* sigma = stress + 3 * point;
+            const std::array<T, 3>& de = d_eps[point];
+            const std::array<T, 3>& o = old[point];
             const T wz = half_h * tp.weight;
+            if (plastic) plastic_g += wz * select(yielding[point], d_plastic_work[point], T(0.0));
             out.thickness_strain += (0.5 * ip.weight * tp.weight) *
-                                    (sec.thickness_factor * ((sigma[0] - old[0]) + (sigma[1] - old[1])) - d_eps[0] - d_eps[1]);
+                                    (sec.thickness_factor * ((sigma[0] - o[0]) + (sigma[1] - o[1])) - de[0] - de[1]);
             const T wzz = wz * z;
             for (std::size_t r = 0; r < 3; ++r) {
                 n_g[r] += wz * sigma[r];
                 m_g[r] += wzz * sigma[r];
             }
-            work_g += wz * 0.5 *
-                      ((old[0] + sigma[0]) * d_eps[0] + (old[1] + sigma[1]) * d_eps[1] + (old[2] + sigma[2]) * d_eps[2]);
+            work_g += wz * 0.5 * ((o[0] + sigma[0]) * de[0] + (o[1] + sigma[1]) * de[1] + (o[2] + sigma[2]) * de[2]);
         }
         for (std::size_t r = 0; r < 3; ++r) {
             out.membrane_force[r] += ip.weight * n_g[r];

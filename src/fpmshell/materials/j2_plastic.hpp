@@ -5,6 +5,7 @@
 
 #include "fpmshell/core/types.hpp"
 #include "fpmshell/materials/flow_stress.hpp"
+#include "fpmshell/materials/j2_return_mapping.hpp"
 #include "fpmshell/materials/material_point.hpp"
 
 namespace fpmshell {
@@ -39,20 +40,17 @@ public:
     /// Whether the yield radius depends on the strain rate (then every update filters the rate).
     [[nodiscard]] bool rate_dependent() const { return rate_.active(); }
     [[nodiscard]] const RateFactor& rate_factor() const { return rate_; }
+    /// The constants of the return mapping (materials/j2_return_mapping.hpp), for the element
+    /// blocks that run it on k_lanes points at once.
+    [[nodiscard]] const J2ReturnConstants& return_constants() const { return constants_; }
 
 private:
-    struct Radius {
-        Real radius;  ///< kappa(alpha) / R, the yield radius at the reference rate (§7.4)
-        Real slope;   ///< sigma_f'(alpha)
-    };
-    /// Both with one evaluation of the flow curve (the Newton loop of §7.3).
-    [[nodiscard]] Radius radius_and_slope(Real alpha) const;
-
-    Real e_, nu_, g_;
+    Real e_, nu_;
     Mat3 c_;
     FlowStress flow_;
     RateFactor rate_;
     Real beta_;
+    J2ReturnConstants constants_;
 };
 
 /// Effective total strain rate of a plane-stress increment (§7.4 option a, incompressible

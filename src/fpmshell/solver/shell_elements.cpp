@@ -198,8 +198,10 @@ Real ShellElements::bending_ratio(Index e, const std::vector<Vec3>& x) const {
     const Vec3& p2 = x[static_cast<std::size_t>(t[2])];
     const std::size_t sec = static_cast<std::size_t>(section_[ue]);
     const Real membrane_dt = characteristic_length(p0, p1, p2) / wave_speed_[sec];
+    // only min(1, bending_dt / membrane_dt) is used (element_dt): a bound suffices where the
+    // bending modes are surely slower than the membrane
     const Real bending_dt = bending_critical_dt(bending_kernel_, local_shape(p0, p1, p2), bending_rigidity_[sec],
-                                                node_mass_[ue], node_inertia_[ue]);
+                                                node_mass_[ue], node_inertia_[ue], membrane_dt);
     return membrane_dt > 0 ? bending_dt / membrane_dt : 1.0;
 }
 
@@ -426,13 +428,66 @@ void ShellElements::compute_block(Index b, ParticleState& s, Real viscous_rate, 
             });
         }
     }
-    // The yielding points of J2 lanes: the general update on the stored point, in place (a lane
-    // that takes this path never falls back, so its old state is not needed again).
-    auto return_mapping = [&](int l, std::size_t p, const std::array<Real, 3>& d_eps) {
-        MaterialPoint& mp = points_[point_offset_[element(l)] + p];
-        const Real plastic_work_old = mp.plastic_work;
-        j2->update(mp, Voigt3(d_eps[0], d_eps[1], d_eps[2]), dt, mp);
-        return PointReturn{{mp.stress(0), mp.stress(1), mp.stress(2)}, mp.plastic_work - plastic_work_old, mp.strain_rate};
+    // The yielding points of J2 lanes: the return mapping of §7.3 on the yielding (point, lane)
+    // pairs of the block, k_lanes pairs at a time (packed densely: the pairs of a
+    // block that yields in part fill whole packs), in place on the stored points (a lane that
+    // takes this path never falls back, so its old state is not needed again).
+    auto return_mapping = [&](std::size_t n_pts, const RealPack::mask_type* yielding, const std::array<RealPack, 3>* d_eps,
+                              const RealPack* rate_factor, RealPack* new_stress, RealPack* d_plastic_work) {
+        constexpr int w = k_lanes;
+        // the fields of the batch, structure of arrays: stress 3, back stress 3, alpha, flow
+        // radius, flow slope, strain increment 3, rate factor
+        alignas(64) std::array<std::array<Real, w>, 13> in;
+        std::array<std::size_t, w> batch_point;
+        std::array<int, w> batch_lane;
+        int n = 0;
+        auto point_of = [&](std::size_t p, int l) -> MaterialPoint& { return points_[point_offset_[element(l)] + p]; };
+        auto run_batch = [&] {
+            for (int i = n; i < w; ++i)  // unused lanes compute on a copy of the first pair
+                for (auto& field : in) field[static_cast<std::size_t>(i)] = field[0];
+            auto pack = [&](std::size_t f) { return RealPack(in[f].data(), stdx::vector_aligned); };
+            const J2PointState<RealPack> old{{pack(0), pack(1), pack(2)}, {pack(3), pack(4), pack(5)}, pack(6), pack(7), pack(8)};
+            RealPack::mask_type used(false);
+            for (int i = 0; i < n; ++i) used[static_cast<std::size_t>(i)] = true;
+            const J2Return<RealPack> ret =
+                j2_return_mapping(j2->return_constants(), old, {pack(9), pack(10), pack(11)}, pack(12), used);
+            for (int i = 0; i < n; ++i) {
+                const std::size_t p = batch_point[static_cast<std::size_t>(i)];
+                const int l = batch_lane[static_cast<std::size_t>(i)];
+                for (std::size_t r = 0; r < 3; ++r) set_lane(new_stress[3 * p + r], l, lane(ret.state.stress[r], i));
+                if (!lane(ret.yielded, i)) continue;  // inside after all (rounding): the trial state
+                set_lane(d_plastic_work[p], l, lane(ret.plastic_work, i));
+                MaterialPoint& mp = point_of(p, l);
+                mp.back_stress = Voigt3(lane(ret.state.back_stress[0], i), lane(ret.state.back_stress[1], i),
+                                        lane(ret.state.back_stress[2], i));
+                mp.plastic_strain = lane(ret.state.plastic_strain, i);
+                mp.plastic_work += lane(ret.plastic_work, i);
+                mp.flow_radius = lane(ret.state.flow_radius, i);
+                mp.flow_slope = lane(ret.state.flow_slope, i);
+            }
+            n = 0;
+        };
+        for (std::size_t p = 0; p < n_pts; ++p) {
+            if (!any_lane(yielding[p])) continue;
+            for (int l = 0; l < k_lanes; ++l) {
+                if (!lane(yielding[p], l)) continue;
+                const MaterialPoint& mp = point_of(p, l);
+                const auto i = static_cast<std::size_t>(n);
+                for (std::size_t r = 0; r < 3; ++r) {
+                    in[r][i] = mp.stress(static_cast<Eigen::Index>(r));
+                    in[3 + r][i] = lane(back_stress[3 * p + r], l);
+                    in[9 + r][i] = lane(d_eps[p][r], l);
+                }
+                in[6][i] = mp.plastic_strain;
+                in[7][i] = mp.flow_radius;
+                in[8][i] = mp.flow_slope;
+                in[12][i] = lane(rate_factor[p], l);
+                batch_point[i] = p;
+                batch_lane[i] = l;
+                if (++n == w) run_batch();
+            }
+        }
+        if (n > 0) run_batch();
     };
     const ElasticTriangleLoads<RealPack> loads =
         j2 ? elastic_triangle_loads(motion, constants, thickness, stress.data(), viscous_rate, &yield, return_mapping)

@@ -105,7 +105,6 @@ private:
     std::vector<Vec3> slot_force_, slot_moment_;
     std::vector<Index> csr_begin_, csr_slot_;     ///< particle -> slots
     // SIMD blocks (elements/elastic_triangle_block.hpp)
-    static constexpr std::size_t k_max_block_points = 35;  ///< 7 in-plane x 5 thickness points, the largest rule
     std::vector<ElasticSectionConstants> elastic_constants_;  ///< per section (zero if not elastic)
     std::vector<Index> block_elements_;   ///< k_lanes elements of one section per block
     std::vector<Index> scalar_elements_;  ///< the elements computed one by one

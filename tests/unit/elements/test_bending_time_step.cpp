@@ -104,3 +104,31 @@ TEST(BendingCriticalStep, GovernsOnlyThickElements) {
     EXPECT_GT(ratio(0.2), 2.0);
     EXPECT_LT(ratio(1.0), 0.9);   // h ~ L_c: below the default time_step_scale
 }
+
+TEST(BendingCriticalStep, SufficientStepSkipsOnlyWhatCannotGovern) {
+    // With `sufficient` (the membrane step), the function may return a lower bound of the step
+    // instead of the step, but only when that bound is at least `sufficient`: then
+    // min(step, sufficient), all the caller uses, is unchanged.
+    const Real lc = std::sqrt(3.0) / 2.0;
+    const Real membrane_dt = lc / std::sqrt(1.0 / (1.0 - 0.09));
+    int bounded = 0;
+    for (const BendingKernel kernel : {BendingKernel::Dkt, BendingKernel::Bciz})
+        for (const TriangleShape* shape : {&k_equilateral, &k_right})
+            for (const Real h : {0.01, 0.05, 0.1, 0.2, 0.3, 0.5, 0.7, 1.0, 2.0}) {
+                SCOPED_TRACE(::testing::Message() << "h " << h << " kernel " << static_cast<int>(kernel));
+                const Real area = 0.5 * shape->two_area;
+                const Real m = h * area / 3.0, j = m * (area / 8.0 + h * h / 12.0);
+                const Mat3 db = plate_rigidity(1.0, 0.3, h);
+                const Real exact = bending_critical_dt(kernel, *shape, db, m, j);
+                const Real fast = bending_critical_dt(kernel, *shape, db, m, j, membrane_dt);
+                EXPECT_LE(fast, exact * (1 + 1e-12));  // a lower bound of the step, never above
+                EXPECT_EQ(std::min(fast, membrane_dt), std::min(exact, membrane_dt));
+                if (fast != exact) {
+                    ++bounded;
+                    EXPECT_GE(fast, membrane_dt);
+                    // the Frobenius norm is within sqrt(6) of lambda_max: the step within 6^(1/4)
+                    EXPECT_GE(fast, exact / std::pow(6.0, 0.25) * (1 - 1e-12));
+                }
+            }
+    EXPECT_GE(bounded, 8);  // the thin elements (h / L_c <= 0.23) do skip the eigenproblem
+}

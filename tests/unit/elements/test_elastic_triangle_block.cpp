@@ -331,12 +331,32 @@ void check_j2_lanes(const RateFactor& rate, Real dt, bool with_return_mapping) {
     for (int l = 0; l < k_lanes; ++l) lanes[static_cast<std::size_t>(l)] = &elements[static_cast<std::size_t>(l)];
     std::vector<std::vector<MaterialPoint>> updated = old_points;  // what the return mapping changes
     int n_returns = 0;
-    auto return_mapping = [&](int l, std::size_t p, const std::array<Real, 3>& d_eps) {
-        ++n_returns;
-        MaterialPoint& mp = updated[static_cast<std::size_t>(l)][p];
-        const Real plastic_work_old = mp.plastic_work;
-        mat.update(mp, Voigt3(d_eps[0], d_eps[1], d_eps[2]), dt, mp);
-        return PointReturn{{mp.stress(0), mp.stress(1), mp.stress(2)}, mp.plastic_work - plastic_work_old, mp.strain_rate};
+    // as ShellElements::compute_block, one point at a time: the return mapping of the yielding
+    // lanes of a point, kept in the lanes' points
+    auto return_mapping = [&](std::size_t n_pts, const RealPack::mask_type* yielding, const std::array<RealPack, 3>* d_eps,
+                              const RealPack* rate_factor, RealPack* new_stress, RealPack* d_plastic_work) {
+        for (std::size_t p = 0; p < n_pts; ++p) {
+            if (!any_lane(yielding[p])) continue;
+            J2PointState<RealPack> old;
+            auto point = [&](auto l) -> MaterialPoint& { return updated[static_cast<std::size_t>(l)][p]; };
+            for (int r = 0; r < 3; ++r) {
+                old.stress[static_cast<std::size_t>(r)] = RealPack([&](auto l) { return point(l).stress(r); });
+                old.back_stress[static_cast<std::size_t>(r)] = RealPack([&](auto l) { return point(l).back_stress(r); });
+            }
+            old.plastic_strain = RealPack([&](auto l) { return point(l).plastic_strain; });
+            old.flow_radius = RealPack([&](auto l) { return point(l).flow_radius; });
+            old.flow_slope = RealPack([&](auto l) { return point(l).flow_slope; });
+            const J2Return<RealPack> ret = j2_return_mapping(mat.return_constants(), old, d_eps[p], rate_factor[p], yielding[p]);
+            for (int l = 0; l < k_lanes; ++l) {
+                if (!lane(ret.yielded, l)) continue;
+                ++n_returns;
+                MaterialPoint& mp = point(l);
+                mp.plastic_strain = lane(ret.state.plastic_strain, l);
+                mp.plastic_work += lane(ret.plastic_work, l);
+                for (std::size_t r = 0; r < 3; ++r) set_lane(new_stress[3 * p + r], l, lane(ret.state.stress[r], l));
+                set_lane(d_plastic_work[p], l, lane(ret.plastic_work, l));
+            }
+        }
     };
     const auto out = with_return_mapping
                          ? elastic_triangle_loads(motion_of<RealPack>(lanes), constants, RealPack(k_thickness),
