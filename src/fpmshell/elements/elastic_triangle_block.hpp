@@ -2,7 +2,7 @@
 // with T = RealPack it computes k_lanes elements at once, one per SIMD lane. It is the same
 // element as reverse_motion + shell_triangle_loads (theory.md §2-§5) for a linear elastic
 // section with DKT bending, or a J2 section (the trial check of §7.3 step 1 on every point at
-// once; the points that yield go one by one to the caller's return mapping), restricted to the
+// once; the points that yield go, all together, to the caller's return mapping), restricted to the
 // path elements of a stable step:
 //   - every rotation of the step (nodal increments, in-plane and relative rotations) is below
 //     0.01 rad, so that the series branches of core/rotation.hpp apply,
