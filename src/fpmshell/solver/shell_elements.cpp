@@ -85,19 +85,16 @@ ShellElements::ShellElements(const Model& model)
         refresh_bending_ratio(static_cast<Index>(e), model.nodes, current_length(static_cast<Index>(e), model.nodes));
     }
     // Material points: a plastic section's points hold their whole history (points_); an elastic
-    // section's points hold a stress only (elastic_stress_), a third of the memory traffic.
+    // section's points hold a stress only, a third of the memory traffic (elastic_stress_, or
+    // block_stress_ for the elements of the SIMD blocks, laid out below).
     point_offset_.resize(ne + 1);
-    stress_offset_.resize(ne + 1);
-    point_offset_[0] = stress_offset_[0] = 0;
+    point_offset_[0] = 0;
     for (std::size_t e = 0; e < ne; ++e) {
-        const std::size_t sec = static_cast<std::size_t>(section_[e]);
-        const std::size_t n = static_cast<std::size_t>(rules_[sec].n_points());
-        const bool elastic = std::holds_alternative<LinearElastic>(materials_[sec]);
-        point_offset_[e + 1] = point_offset_[e] + (elastic ? 0 : n);
-        stress_offset_[e + 1] = stress_offset_[e] + (elastic ? n : 0);
+        const std::size_t n = elastic_point_count(e) > 0 ? 0 : static_cast<std::size_t>(rules_[static_cast<std::size_t>(section_[e])].n_points());
+        point_offset_[e + 1] = point_offset_[e] + n;
+        n_elastic_points_ += elastic_point_count(e);
     }
     points_.assign(point_offset_[ne], MaterialPoint{});
-    elastic_stress_.assign(stress_offset_[ne], Voigt3::Zero());
     slot_force_.assign(k_slots * ne, Vec3::Zero());
     slot_moment_.assign(k_slots * ne, Vec3::Zero());
     // Side neighbours: side i of element e is opposite its corner i; an edge shared by exactly
@@ -168,6 +165,22 @@ ShellElements::ShellElements(const Model& model)
         block_elements_.insert(block_elements_.end(), members.begin(), members.begin() + static_cast<std::ptrdiff_t>(n_blocked));
         scalar_elements_.insert(scalar_elements_.end(), members.begin() + static_cast<std::ptrdiff_t>(n_blocked), members.end());
     }
+    // The stresses of the elastic blocks, block by block, point by point, component by
+    // component, one lane per element: a block reads and writes them as whole packs (gathered
+    // element by element they cost as much as the element itself). The elastic elements
+    // computed alone keep theirs in elastic_stress_.
+    block_lane_.assign(ne, -1);
+    for (std::size_t i = 0; i < block_elements_.size(); ++i) block_lane_[static_cast<std::size_t>(block_elements_[i])] = static_cast<Index>(i);
+    const std::size_t n_blocks = block_elements_.size() / static_cast<std::size_t>(k_lanes);
+    block_stress_offset_.assign(n_blocks + 1, 0);
+    for (std::size_t b = 0; b < n_blocks; ++b)
+        block_stress_offset_[b + 1] =
+            block_stress_offset_[b] + 3 * elastic_point_count(static_cast<std::size_t>(block_elements_[b * static_cast<std::size_t>(k_lanes)]));
+    block_stress_.assign(block_stress_offset_[n_blocks], RealPack(0.0));
+    stress_offset_.resize(ne + 1);
+    stress_offset_[0] = 0;
+    for (std::size_t e = 0; e < ne; ++e) stress_offset_[e + 1] = stress_offset_[e] + (block_lane_[e] < 0 ? elastic_point_count(e) : 0);
+    elastic_stress_.assign(stress_offset_[ne], Voigt3::Zero());
     // CSR particle -> slots, slots in increasing element order (fixed summation order).
     const std::size_t np = model.nodes.size();
     csr_begin_.assign(np + 1, 0);
@@ -321,18 +334,18 @@ void ShellElements::compute_element(Index e, ParticleState& s, Real viscous_rate
     std::span<MaterialPoint> pts(points_.data() + point_offset_[ue],
                                  point_offset_[ue + 1] - point_offset_[ue]);
     // an elastic element's stresses go through material points for the general kernel
-    const std::size_t n_stress = stress_offset_[ue + 1] - stress_offset_[ue];
+    const std::size_t n_stress = elastic_point_count(ue);
     std::array<MaterialPoint, k_max_block_points> elastic_points;
     if (n_stress > 0) {
-        for (std::size_t p = 0; p < n_stress; ++p) elastic_points[p].stress = elastic_stress_[stress_offset_[ue] + p];
         pts = std::span<MaterialPoint>(elastic_points.data(), n_stress);
+        for (std::size_t p = 0; p < n_stress; ++p) pts[p].stress = elastic_stress(ue, p);
     }
     const ShellTriangleLoads loads =
         std::visit([&](const auto& material) {
             return shell_triangle_loads(rt, rules_[sec], material, pts, viscous_rate, dt, thickness_[ue],
                                         smoothed_membrane_ ? &smoothed : nullptr, own_share);
         }, materials_[sec]);
-    for (std::size_t p = 0; p < n_stress; ++p) elastic_stress_[stress_offset_[ue] + p] = elastic_points[p].stress;
+    for (std::size_t p = 0; p < n_stress; ++p) set_elastic_stress(ue, p, elastic_points[p].stress);
     if (thickness_update_) thickness_[ue] *= 1.0 + loads.thickness_strain;  // §3.4
     for (std::size_t i = 0; i < 3; ++i) {
         slot_force_[k_slots * ue + i] = loads.force[i];
@@ -395,15 +408,16 @@ void ShellElements::compute_block(Index b, ParticleState& s, Real viscous_rate, 
     const std::size_t n_points = constants.inplane.size() * constants.through.size();
     // J2 sections: the yield surfaces of the points, kappa_n = flow radius at alpha_n (§7.3)
     const J2Plastic* j2 = std::get_if<J2Plastic>(&materials_[sec]);
-    // the stress of point p of lane l: in the J2 points, or in the elastic stresses
-    auto point_stress = [&](int l, std::size_t p) -> Voigt3& {
-        const std::size_t e = element(l);
-        return j2 ? points_[point_offset_[e] + p].stress : elastic_stress_[stress_offset_[e] + p];
-    };
+    // the stresses: whole packs of an elastic block, or gathered from the J2 points
+    RealPack* block_stress = j2 ? nullptr : block_stress_.data() + block_stress_offset_[static_cast<std::size_t>(b)];
     std::array<RealPack, 3 * k_max_block_points> stress;
-    for (std::size_t p = 0; p < n_points; ++p)
-        for (std::size_t r = 0; r < 3; ++r)
-            stress[3 * p + r] = load([&](int l) { return point_stress(l, p)(static_cast<Eigen::Index>(r)); });
+    if (j2) {
+        for (std::size_t p = 0; p < n_points; ++p)
+            for (std::size_t r = 0; r < 3; ++r)
+                stress[3 * p + r] = load([&](int l) { return points_[point_offset_[element(l)] + p].stress(static_cast<Eigen::Index>(r)); });
+    } else {
+        std::copy(block_stress, block_stress + 3 * n_points, stress.begin());
+    }
     std::array<RealPack, 3 * k_max_block_points> back_stress;
     std::array<RealPack, k_max_block_points> third_k2, strain_rate, new_strain_rate;
     YieldSurfaces<RealPack> yield{back_stress.data(), third_k2.data(), J2Plastic::k_yield_tolerance};
@@ -493,6 +507,9 @@ void ShellElements::compute_block(Index b, ParticleState& s, Real viscous_rate, 
         j2 ? elastic_triangle_loads(motion, constants, thickness, stress.data(), viscous_rate, &yield, return_mapping)
            : elastic_triangle_loads(motion, constants, thickness, stress.data(), viscous_rate);
 
+    // the new stresses of the valid lanes (an invalid lane's old stresses stay for the general code)
+    if (!j2)
+        for (std::size_t i = 0; i < 3 * n_points; ++i) stdx::where(loads.valid, block_stress[i]) = stress[i];
     for (int l = 0; l < k_lanes; ++l) {
         const std::size_t ue = element(l);
         if (!lane(loads.valid, l)) {  // outside the block kernel's bounds: the general code
@@ -507,8 +524,9 @@ void ShellElements::compute_block(Index b, ParticleState& s, Real viscous_rate, 
             slot_force_[k_slots * ue + i] = Vec3(lane(loads.force[i].x, l), lane(loads.force[i].y, l), lane(loads.force[i].z, l));
             slot_moment_[k_slots * ue + i] = Vec3(lane(loads.moment[i].x, l), lane(loads.moment[i].y, l), lane(loads.moment[i].z, l));
         }
-        for (std::size_t p = 0; p < n_points; ++p)
-            point_stress(l, p) = Voigt3(lane(stress[3 * p], l), lane(stress[3 * p + 1], l), lane(stress[3 * p + 2], l));
+        if (j2)
+            for (std::size_t p = 0; p < n_points; ++p)
+                points_[point_offset_[ue] + p].stress = Voigt3(lane(stress[3 * p], l), lane(stress[3 * p + 1], l), lane(stress[3 * p + 2], l));
         if (yield.new_strain_rate)
             for (std::size_t p = 0; p < n_points; ++p) points_[point_offset_[ue] + p].strain_rate = lane(new_strain_rate[p], l);
         if (thickness_update_) thickness_[ue] *= 1.0 + lane(loads.thickness_strain, l);  // §3.4
@@ -605,25 +623,59 @@ ShellElements::StepTotals ShellElements::compute(ParticleState& s, Real viscous_
     return tot;
 }
 
-template <class Archive>
-void ShellElements::transfer_state(Archive& ar) {
-    ar(points_, elastic_stress_, thickness_, bend_ratio_, bend_lc_, membrane_force_, bending_moment_);
+std::size_t ShellElements::elastic_point_count(std::size_t e) const {
+    const std::size_t sec = static_cast<std::size_t>(section_[e]);
+    return std::holds_alternative<LinearElastic>(materials_[sec]) ? static_cast<std::size_t>(rules_[sec].n_points()) : 0;
 }
 
-void ShellElements::save(RestartWriter& out) const { const_cast<ShellElements*>(this)->transfer_state(out); }
+Voigt3 ShellElements::elastic_stress(std::size_t e, std::size_t p) const {
+    const Index at = block_lane_[e];
+    if (at < 0) return elastic_stress_[stress_offset_[e] + p];
+    const std::size_t b = static_cast<std::size_t>(at) / static_cast<std::size_t>(k_lanes);
+    const int l = static_cast<int>(static_cast<std::size_t>(at) % static_cast<std::size_t>(k_lanes));
+    const RealPack* sigma = block_stress_.data() + block_stress_offset_[b] + 3 * p;
+    return Voigt3(lane(sigma[0], l), lane(sigma[1], l), lane(sigma[2], l));
+}
+
+void ShellElements::set_elastic_stress(std::size_t e, std::size_t p, const Voigt3& sigma) {
+    const Index at = block_lane_[e];
+    if (at < 0) {
+        elastic_stress_[stress_offset_[e] + p] = sigma;
+        return;
+    }
+    const std::size_t b = static_cast<std::size_t>(at) / static_cast<std::size_t>(k_lanes);
+    const int l = static_cast<int>(static_cast<std::size_t>(at) % static_cast<std::size_t>(k_lanes));
+    RealPack* packs = block_stress_.data() + block_stress_offset_[b] + 3 * p;
+    for (std::size_t r = 0; r < 3; ++r) set_lane(packs[r], l, sigma(static_cast<Eigen::Index>(r)));
+}
+
+// The restart file holds every elastic point's stress in element order (format 2), whatever
+// the layout in memory.
+void ShellElements::save(RestartWriter& out) const {
+    std::vector<Voigt3> stresses;
+    stresses.reserve(n_elastic_points_);
+    for (std::size_t e = 0; e < thickness_.size(); ++e)
+        for (std::size_t p = 0; p < elastic_point_count(e); ++p) stresses.push_back(elastic_stress(e, p));
+    auto& self = const_cast<ShellElements&>(*this);  // the archive's interface is shared with load
+    out(self.points_, stresses, self.thickness_, self.bend_ratio_, self.bend_lc_, self.membrane_force_, self.bending_moment_);
+}
 
 void ShellElements::load(RestartReader& in) {
-    const std::size_t n_points = points_.size(), n_stresses = elastic_stress_.size(), n_elements = thickness_.size();
+    const std::size_t n_points = points_.size(), n_elements = thickness_.size();
+    std::vector<Voigt3> stresses;
     if (in.format() >= 2) {
-        transfer_state(in);
+        in(points_, stresses, thickness_, bend_ratio_, bend_lc_, membrane_force_, bending_moment_);
     } else {  // format 1: no elastic stresses apart (restart_archive.cpp)
-        if (n_stresses > 0)
+        if (n_elastic_points_ > 0)
             in.fail("restart file of format 1, which holds no elastic stresses apart: it can resume a model "
                     "without elastic sections only");
         in(points_, thickness_, bend_ratio_, bend_lc_, membrane_force_, bending_moment_);
     }
-    if (points_.size() != n_points || elastic_stress_.size() != n_stresses || thickness_.size() != n_elements)
+    if (points_.size() != n_points || stresses.size() != n_elastic_points_ || thickness_.size() != n_elements)
         in.fail("restart file of a model with other elements or integration rules");
+    std::size_t i = 0;
+    for (std::size_t e = 0; e < n_elements; ++e)
+        for (std::size_t p = 0; p < elastic_point_count(e); ++p) set_elastic_stress(e, p, stresses[i++]);
 }
 
 }  // namespace fpmshell

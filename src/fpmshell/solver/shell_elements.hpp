@@ -59,8 +59,6 @@ public:
     void load(RestartReader& in);
 
 private:
-    template <class Archive>
-    void transfer_state(Archive& ar);
     /// Critical step of element e of current length lc: the smaller of the membrane step L_c / c and
     /// the bending step (the stored ratio bend_ratio_ times L_c / c), reduced for stiffness
     /// damping (§6.4).
@@ -78,6 +76,11 @@ private:
     /// Phase 1 of compute for the k_lanes elements of SIMD block b (lanes outside the block
     /// kernel's bounds go to compute_element).
     void compute_block(Index b, ParticleState& s, Real viscous_rate, Real dt);
+    /// Points of element e that hold a stress only (an elastic section), 0 otherwise.
+    [[nodiscard]] std::size_t elastic_point_count(std::size_t e) const;
+    /// The stress of point p of elastic element e, wherever it is kept; and its update.
+    [[nodiscard]] Voigt3 elastic_stress(std::size_t e, std::size_t p) const;
+    void set_elastic_stress(std::size_t e, std::size_t p, const Voigt3& sigma);
 
     std::vector<std::array<Index, 3>> tri_;
     std::vector<Index> section_;               ///< per element
@@ -99,14 +102,19 @@ private:
     std::vector<Voigt3> cst_strain_;          ///< per element, this step's CST strain increment
     std::vector<std::size_t> point_offset_;    ///< first material point of every element (plastic sections)
     std::vector<MaterialPoint> points_;        ///< material points of the plastic sections
-    std::vector<std::size_t> stress_offset_;   ///< first stress of every element (elastic sections)
-    std::vector<Voigt3> elastic_stress_;       ///< stresses of the points of the elastic sections
+    std::vector<std::size_t> stress_offset_;   ///< first stress of every element (elastic, computed alone)
+    std::vector<Voigt3> elastic_stress_;       ///< stresses of the points of those elements
+    std::size_t n_elastic_points_ = 0;         ///< points of all elastic elements
     // 6 slots per element: its 3 corners, then the node across each side (smoothed membrane)
     std::vector<Vec3> slot_force_, slot_moment_;
     std::vector<Index> csr_begin_, csr_slot_;     ///< particle -> slots
     // SIMD blocks (elements/elastic_triangle_block.hpp)
     std::vector<ElasticSectionConstants> elastic_constants_;  ///< per section (zero if not elastic)
     std::vector<Index> block_elements_;   ///< k_lanes elements of one section per block
+    std::vector<Index> block_lane_;       ///< per element: its index in block_elements_, -1: computed alone
+    std::vector<std::size_t> block_stress_offset_;  ///< per block: its first pack in block_stress_
+    /// the stresses of the blocks of elastic sections, [block][point][component], one lane per element
+    std::vector<RealPack> block_stress_;
     std::vector<Index> scalar_elements_;  ///< the elements computed one by one
     std::vector<Real> elem_work_, elem_damp_work_, elem_plastic_work_, elem_dt_;
     std::vector<std::uint8_t> elem_failed_;
