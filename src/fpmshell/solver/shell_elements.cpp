@@ -84,17 +84,6 @@ ShellElements::ShellElements(const Model& model)
         node_inertia_[e] = share.inertia;
         refresh_bending_ratio(static_cast<Index>(e), model.nodes, current_length(static_cast<Index>(e), model.nodes));
     }
-    // Material points: a plastic section's points hold their whole history (points_); an elastic
-    // section's points hold a stress only, a third of the memory traffic (elastic_stress_, or
-    // block_stress_ for the elements of the SIMD blocks, laid out below).
-    point_offset_.resize(ne + 1);
-    point_offset_[0] = 0;
-    for (std::size_t e = 0; e < ne; ++e) {
-        const std::size_t n = elastic_point_count(e) > 0 ? 0 : static_cast<std::size_t>(rules_[static_cast<std::size_t>(section_[e])].n_points());
-        point_offset_[e + 1] = point_offset_[e] + n;
-        n_elastic_points_ += elastic_point_count(e);
-    }
-    points_.assign(point_offset_[ne], MaterialPoint{});
     slot_force_.assign(k_slots * ne, Vec3::Zero());
     slot_moment_.assign(k_slots * ne, Vec3::Zero());
     // Side neighbours: side i of element e is opposite its corner i; an edge shared by exactly
@@ -165,21 +154,31 @@ ShellElements::ShellElements(const Model& model)
         block_elements_.insert(block_elements_.end(), members.begin(), members.begin() + static_cast<std::ptrdiff_t>(n_blocked));
         scalar_elements_.insert(scalar_elements_.end(), members.begin() + static_cast<std::ptrdiff_t>(n_blocked), members.end());
     }
-    // The stresses of the elastic blocks, block by block, point by point, component by
-    // component, one lane per element: a block reads and writes them as whole packs (gathered
-    // element by element they cost as much as the element itself). The elastic elements
-    // computed alone keep theirs in elastic_stress_.
+    // Material points. A plastic section's points hold their whole history; an elastic
+    // section's points hold a stress only, a third of the memory traffic. The elements of the
+    // SIMD blocks keep theirs block by block, point by point, field by field, one lane per
+    // element (block_state_): a block reads and writes them as whole packs (gathered element
+    // by element they cost as much as the element itself). The elements computed alone keep
+    // theirs in points_ (plastic) or elastic_stress_ (elastic).
     block_lane_.assign(ne, -1);
     for (std::size_t i = 0; i < block_elements_.size(); ++i) block_lane_[static_cast<std::size_t>(block_elements_[i])] = static_cast<Index>(i);
     const std::size_t n_blocks = block_elements_.size() / static_cast<std::size_t>(k_lanes);
-    block_stress_offset_.assign(n_blocks + 1, 0);
-    for (std::size_t b = 0; b < n_blocks; ++b)
-        block_stress_offset_[b + 1] =
-            block_stress_offset_[b] + 3 * elastic_point_count(static_cast<std::size_t>(block_elements_[b * static_cast<std::size_t>(k_lanes)]));
-    block_stress_.assign(block_stress_offset_[n_blocks], RealPack(0.0));
+    block_state_offset_.assign(n_blocks + 1, 0);
+    for (std::size_t b = 0; b < n_blocks; ++b) {
+        const std::size_t first = static_cast<std::size_t>(block_elements_[b * static_cast<std::size_t>(k_lanes)]);
+        block_state_offset_[b + 1] = block_state_offset_[b] + point_fields(first) * n_points_of(first);
+    }
+    block_state_.assign(block_state_offset_[n_blocks], RealPack(0.0));
+    point_offset_.resize(ne + 1);
     stress_offset_.resize(ne + 1);
-    stress_offset_[0] = 0;
-    for (std::size_t e = 0; e < ne; ++e) stress_offset_[e + 1] = stress_offset_[e] + (block_lane_[e] < 0 ? elastic_point_count(e) : 0);
+    point_offset_[0] = stress_offset_[0] = 0;
+    for (std::size_t e = 0; e < ne; ++e) {
+        const bool alone = block_lane_[e] < 0, elastic = point_fields(e) == k_stress_fields;
+        point_offset_[e + 1] = point_offset_[e] + (alone && !elastic ? n_points_of(e) : 0);
+        stress_offset_[e + 1] = stress_offset_[e] + (alone && elastic ? n_points_of(e) : 0);
+        (elastic ? n_elastic_points_ : n_plastic_points_) += n_points_of(e);
+    }
+    points_.assign(point_offset_[ne], MaterialPoint{});
     elastic_stress_.assign(stress_offset_[ne], Voigt3::Zero());
     // CSR particle -> slots, slots in increasing element order (fixed summation order).
     const std::size_t np = model.nodes.size();
@@ -246,11 +245,11 @@ Real ShellElements::element_dt(Index e, Real lc) const {
 
 Real ShellElements::plastic_strain(Index e, int k) const {
     const std::size_t ue = static_cast<std::size_t>(e);
+    if (point_fields(ue) == k_stress_fields) return 0.0;  // elastic
     const std::size_t nk = rules_[static_cast<std::size_t>(section_[ue])].through.size();
-    const std::size_t begin = point_offset_[ue], end = point_offset_[ue + 1];
     Real sum = 0;
     std::size_t n = 0;
-    for (std::size_t i = begin + static_cast<std::size_t>(k); i < end; i += nk, ++n) sum += points_[i].plastic_strain;
+    for (std::size_t p = static_cast<std::size_t>(k); p < n_points_of(ue); p += nk, ++n) sum += point_state(ue, p).plastic_strain;
     return n > 0 ? sum / static_cast<Real>(n) : 0.0;
 }
 
@@ -331,21 +330,22 @@ void ShellElements::compute_element(Index e, ParticleState& s, Real viscous_rate
         smoothed += own_share * cst_strain_[ue];
     }
     const std::size_t sec = static_cast<std::size_t>(section_[ue]);
-    std::span<MaterialPoint> pts(points_.data() + point_offset_[ue],
-                                 point_offset_[ue + 1] - point_offset_[ue]);
-    // an elastic element's stresses go through material points for the general kernel
-    const std::size_t n_stress = elastic_point_count(ue);
-    std::array<MaterialPoint, k_max_block_points> elastic_points;
-    if (n_stress > 0) {
-        pts = std::span<MaterialPoint>(elastic_points.data(), n_stress);
-        for (std::size_t p = 0; p < n_stress; ++p) pts[p].stress = elastic_stress(ue, p);
+    // the points of a plastic element computed alone are used in place; the others (elastic
+    // stresses, block layout) go through material points for the general kernel
+    const bool in_place = block_lane_[ue] < 0 && point_fields(ue) != k_stress_fields;
+    std::span<MaterialPoint> pts(points_.data() + point_offset_[ue], point_offset_[ue + 1] - point_offset_[ue]);
+    std::array<MaterialPoint, k_max_block_points> local_points;
+    if (!in_place) {
+        pts = std::span<MaterialPoint>(local_points.data(), n_points_of(ue));
+        for (std::size_t p = 0; p < pts.size(); ++p) pts[p] = point_state(ue, p);
     }
     const ShellTriangleLoads loads =
         std::visit([&](const auto& material) {
             return shell_triangle_loads(rt, rules_[sec], material, pts, viscous_rate, dt, thickness_[ue],
                                         smoothed_membrane_ ? &smoothed : nullptr, own_share);
         }, materials_[sec]);
-    for (std::size_t p = 0; p < n_stress; ++p) set_elastic_stress(ue, p, elastic_points[p].stress);
+    if (!in_place)
+        for (std::size_t p = 0; p < pts.size(); ++p) set_point_state(ue, p, pts[p]);
     if (thickness_update_) thickness_[ue] *= 1.0 + loads.thickness_strain;  // §3.4
     for (std::size_t i = 0; i < 3; ++i) {
         slot_force_[k_slots * ue + i] = loads.force[i];
@@ -406,59 +406,50 @@ void ShellElements::compute_block(Index b, ParticleState& s, Real viscous_rate, 
     }
     const RealPack thickness = load([&](int l) { return thickness_[element(l)]; });
     const std::size_t n_points = constants.inplane.size() * constants.through.size();
-    // J2 sections: the yield surfaces of the points, kappa_n = flow radius at alpha_n (§7.3)
+    // The points' state, whole packs in the block layout: [point][field] (point_fields).
     const J2Plastic* j2 = std::get_if<J2Plastic>(&materials_[sec]);
-    // the stresses: whole packs of an elastic block, or gathered from the J2 points
-    RealPack* block_stress = j2 ? nullptr : block_stress_.data() + block_stress_offset_[static_cast<std::size_t>(b)];
+    const std::size_t fields = j2 ? k_j2_fields : k_stress_fields;
+    RealPack* state = block_state_.data() + block_state_offset_[static_cast<std::size_t>(b)];
+    auto field = [&](std::size_t p, std::size_t f) -> RealPack& { return state[fields * p + f]; };
     std::array<RealPack, 3 * k_max_block_points> stress;
-    if (j2) {
-        for (std::size_t p = 0; p < n_points; ++p)
-            for (std::size_t r = 0; r < 3; ++r)
-                stress[3 * p + r] = load([&](int l) { return points_[point_offset_[element(l)] + p].stress(static_cast<Eigen::Index>(r)); });
-    } else {
-        std::copy(block_stress, block_stress + 3 * n_points, stress.begin());
-    }
+    for (std::size_t p = 0; p < n_points; ++p)
+        for (std::size_t r = 0; r < 3; ++r) stress[3 * p + r] = field(p, k_stress + r);
+    // J2 sections: the yield surfaces of the points, kappa_n = flow radius at alpha_n (§7.3)
     std::array<RealPack, 3 * k_max_block_points> back_stress;
     std::array<RealPack, k_max_block_points> third_k2, strain_rate, new_strain_rate;
     YieldSurfaces<RealPack> yield{back_stress.data(), third_k2.data(), J2Plastic::k_yield_tolerance};
-    if (j2 && j2->rate_dependent()) {
-        yield.rate = &j2->rate_factor();
-        yield.strain_rate = strain_rate.data();
-        yield.new_strain_rate = new_strain_rate.data();
-        yield.dt = dt;
-        yield.rate_filter = J2Plastic::k_rate_filter;
-        for (std::size_t p = 0; p < n_points; ++p)
-            strain_rate[p] = load([&](int l) { return points_[point_offset_[element(l)] + p].strain_rate; });
-    }
     if (j2) {
-        const Real initial_radius = j2->initial_flow_radius();
+        const RealPack initial_radius(j2->initial_flow_radius());
         for (std::size_t p = 0; p < n_points; ++p) {
-            auto point = [&](int l) -> const MaterialPoint& { return points_[point_offset_[element(l)] + p]; };
-            for (std::size_t r = 0; r < 3; ++r)
-                back_stress[3 * p + r] = load([&](int l) { return point(l).back_stress(static_cast<Eigen::Index>(r)); });
-            third_k2[p] = load([&](int l) {
-                const Real kappa = point(l).plastic_strain > 0 ? point(l).flow_radius : initial_radius;
-                return kappa * kappa / 3.0;
-            });
+            for (std::size_t r = 0; r < 3; ++r) back_stress[3 * p + r] = field(p, k_back_stress + r);
+            const RealPack kappa = select(field(p, k_plastic_strain) > 0.0, field(p, k_flow_radius), initial_radius);
+            third_k2[p] = kappa * kappa / 3.0;
+        }
+        if (j2->rate_dependent()) {
+            yield.rate = &j2->rate_factor();
+            yield.strain_rate = strain_rate.data();
+            yield.new_strain_rate = new_strain_rate.data();
+            yield.dt = dt;
+            yield.rate_filter = J2Plastic::k_rate_filter;
+            for (std::size_t p = 0; p < n_points; ++p) strain_rate[p] = field(p, k_strain_rate);
         }
     }
     // The yielding points of J2 lanes: the return mapping of §7.3 on the yielding (point, lane)
-    // pairs of the block, k_lanes pairs at a time (packed densely: the pairs of a
-    // block that yields in part fill whole packs), in place on the stored points (a lane that
-    // takes this path never falls back, so its old state is not needed again).
+    // pairs of the block, k_lanes pairs at a time (packed densely: the pairs of a block that
+    // yields in part fill whole packs), in place in the block's state (a lane that takes this
+    // path never falls back, so its old state is not needed again).
     auto return_mapping = [&](std::size_t n_pts, const RealPack::mask_type* yielding, const std::array<RealPack, 3>* d_eps,
                               const RealPack* rate_factor, RealPack* new_stress, RealPack* d_plastic_work) {
         constexpr int w = k_lanes;
-        // the fields of the batch, structure of arrays: stress 3, back stress 3, alpha, flow
+        // the inputs of the batch, structure of arrays: stress 3, back stress 3, alpha, flow
         // radius, flow slope, strain increment 3, rate factor
         alignas(64) std::array<std::array<Real, w>, 13> in;
         std::array<std::size_t, w> batch_point;
         std::array<int, w> batch_lane;
         int n = 0;
-        auto point_of = [&](std::size_t p, int l) -> MaterialPoint& { return points_[point_offset_[element(l)] + p]; };
         auto run_batch = [&] {
             for (int i = n; i < w; ++i)  // unused lanes compute on a copy of the first pair
-                for (auto& field : in) field[static_cast<std::size_t>(i)] = field[0];
+                for (auto& input : in) input[static_cast<std::size_t>(i)] = input[0];
             auto pack = [&](std::size_t f) { return RealPack(in[f].data(), stdx::vector_aligned); };
             const J2PointState<RealPack> old{{pack(0), pack(1), pack(2)}, {pack(3), pack(4), pack(5)}, pack(6), pack(7), pack(8)};
             RealPack::mask_type used(false);
@@ -471,13 +462,11 @@ void ShellElements::compute_block(Index b, ParticleState& s, Real viscous_rate, 
                 for (std::size_t r = 0; r < 3; ++r) set_lane(new_stress[3 * p + r], l, lane(ret.state.stress[r], i));
                 if (!lane(ret.yielded, i)) continue;  // inside after all (rounding): the trial state
                 set_lane(d_plastic_work[p], l, lane(ret.plastic_work, i));
-                MaterialPoint& mp = point_of(p, l);
-                mp.back_stress = Voigt3(lane(ret.state.back_stress[0], i), lane(ret.state.back_stress[1], i),
-                                        lane(ret.state.back_stress[2], i));
-                mp.plastic_strain = lane(ret.state.plastic_strain, i);
-                mp.plastic_work += lane(ret.plastic_work, i);
-                mp.flow_radius = lane(ret.state.flow_radius, i);
-                mp.flow_slope = lane(ret.state.flow_slope, i);
+                for (std::size_t r = 0; r < 3; ++r) set_lane(field(p, k_back_stress + r), l, lane(ret.state.back_stress[r], i));
+                set_lane(field(p, k_plastic_strain), l, lane(ret.state.plastic_strain, i));
+                set_lane(field(p, k_plastic_work), l, lane(field(p, k_plastic_work), l) + lane(ret.plastic_work, i));
+                set_lane(field(p, k_flow_radius), l, lane(ret.state.flow_radius, i));
+                set_lane(field(p, k_flow_slope), l, lane(ret.state.flow_slope, i));
             }
             n = 0;
         };
@@ -485,16 +474,15 @@ void ShellElements::compute_block(Index b, ParticleState& s, Real viscous_rate, 
             if (!any_lane(yielding[p])) continue;
             for (int l = 0; l < k_lanes; ++l) {
                 if (!lane(yielding[p], l)) continue;
-                const MaterialPoint& mp = point_of(p, l);
                 const auto i = static_cast<std::size_t>(n);
                 for (std::size_t r = 0; r < 3; ++r) {
-                    in[r][i] = mp.stress(static_cast<Eigen::Index>(r));
-                    in[3 + r][i] = lane(back_stress[3 * p + r], l);
+                    in[r][i] = lane(field(p, k_stress + r), l);  // the old stress: not stored yet
+                    in[3 + r][i] = lane(field(p, k_back_stress + r), l);
                     in[9 + r][i] = lane(d_eps[p][r], l);
                 }
-                in[6][i] = mp.plastic_strain;
-                in[7][i] = mp.flow_radius;
-                in[8][i] = mp.flow_slope;
+                in[6][i] = lane(field(p, k_plastic_strain), l);
+                in[7][i] = lane(field(p, k_flow_radius), l);
+                in[8][i] = lane(field(p, k_flow_slope), l);
                 in[12][i] = lane(rate_factor[p], l);
                 batch_point[i] = p;
                 batch_lane[i] = l;
@@ -507,9 +495,12 @@ void ShellElements::compute_block(Index b, ParticleState& s, Real viscous_rate, 
         j2 ? elastic_triangle_loads(motion, constants, thickness, stress.data(), viscous_rate, &yield, return_mapping)
            : elastic_triangle_loads(motion, constants, thickness, stress.data(), viscous_rate);
 
-    // the new stresses of the valid lanes (an invalid lane's old stresses stay for the general code)
-    if (!j2)
-        for (std::size_t i = 0; i < 3 * n_points; ++i) stdx::where(loads.valid, block_stress[i]) = stress[i];
+    // the new stresses (and filtered rates) of the valid lanes; an invalid lane's old state
+    // stays for the general code
+    for (std::size_t p = 0; p < n_points; ++p) {
+        for (std::size_t r = 0; r < 3; ++r) stdx::where(loads.valid, field(p, k_stress + r)) = stress[3 * p + r];
+        if (yield.new_strain_rate) stdx::where(loads.valid, field(p, k_strain_rate)) = new_strain_rate[p];
+    }
     for (int l = 0; l < k_lanes; ++l) {
         const std::size_t ue = element(l);
         if (!lane(loads.valid, l)) {  // outside the block kernel's bounds: the general code
@@ -524,11 +515,6 @@ void ShellElements::compute_block(Index b, ParticleState& s, Real viscous_rate, 
             slot_force_[k_slots * ue + i] = Vec3(lane(loads.force[i].x, l), lane(loads.force[i].y, l), lane(loads.force[i].z, l));
             slot_moment_[k_slots * ue + i] = Vec3(lane(loads.moment[i].x, l), lane(loads.moment[i].y, l), lane(loads.moment[i].z, l));
         }
-        if (j2)
-            for (std::size_t p = 0; p < n_points; ++p)
-                points_[point_offset_[ue] + p].stress = Voigt3(lane(stress[3 * p], l), lane(stress[3 * p + 1], l), lane(stress[3 * p + 2], l));
-        if (yield.new_strain_rate)
-            for (std::size_t p = 0; p < n_points; ++p) points_[point_offset_[ue] + p].strain_rate = lane(new_strain_rate[p], l);
         if (thickness_update_) thickness_[ue] *= 1.0 + lane(loads.thickness_strain, l);  // §3.4
         elem_work_[ue] = lane(loads.strain_work, l);
         elem_damp_work_[ue] = lane(loads.damping_work, l);
@@ -623,59 +609,101 @@ ShellElements::StepTotals ShellElements::compute(ParticleState& s, Real viscous_
     return tot;
 }
 
-std::size_t ShellElements::elastic_point_count(std::size_t e) const {
-    const std::size_t sec = static_cast<std::size_t>(section_[e]);
-    return std::holds_alternative<LinearElastic>(materials_[sec]) ? static_cast<std::size_t>(rules_[sec].n_points()) : 0;
+std::size_t ShellElements::n_points_of(std::size_t e) const {
+    return static_cast<std::size_t>(rules_[static_cast<std::size_t>(section_[e])].n_points());
 }
 
-Voigt3 ShellElements::elastic_stress(std::size_t e, std::size_t p) const {
+std::size_t ShellElements::point_fields(std::size_t e) const {
+    return std::holds_alternative<LinearElastic>(materials_[static_cast<std::size_t>(section_[e])]) ? k_stress_fields
+                                                                                                  : k_j2_fields;
+}
+
+MaterialPoint ShellElements::point_state(std::size_t e, std::size_t p) const {
     const Index at = block_lane_[e];
-    if (at < 0) return elastic_stress_[stress_offset_[e] + p];
+    const bool elastic = point_fields(e) == k_stress_fields;
+    if (at < 0) {
+        if (!elastic) return points_[point_offset_[e] + p];
+        MaterialPoint mp;
+        mp.stress = elastic_stress_[stress_offset_[e] + p];
+        return mp;
+    }
     const std::size_t b = static_cast<std::size_t>(at) / static_cast<std::size_t>(k_lanes);
     const int l = static_cast<int>(static_cast<std::size_t>(at) % static_cast<std::size_t>(k_lanes));
-    const RealPack* sigma = block_stress_.data() + block_stress_offset_[b] + 3 * p;
-    return Voigt3(lane(sigma[0], l), lane(sigma[1], l), lane(sigma[2], l));
+    const RealPack* f = block_state_.data() + block_state_offset_[b] + point_fields(e) * p;
+    MaterialPoint mp;
+    mp.stress = Voigt3(lane(f[k_stress], l), lane(f[k_stress + 1], l), lane(f[k_stress + 2], l));
+    if (elastic) return mp;
+    mp.back_stress = Voigt3(lane(f[k_back_stress], l), lane(f[k_back_stress + 1], l), lane(f[k_back_stress + 2], l));
+    mp.plastic_strain = lane(f[k_plastic_strain], l);
+    mp.plastic_work = lane(f[k_plastic_work], l);
+    mp.strain_rate = lane(f[k_strain_rate], l);
+    mp.flow_radius = lane(f[k_flow_radius], l);
+    mp.flow_slope = lane(f[k_flow_slope], l);
+    return mp;
 }
 
-void ShellElements::set_elastic_stress(std::size_t e, std::size_t p, const Voigt3& sigma) {
+void ShellElements::set_point_state(std::size_t e, std::size_t p, const MaterialPoint& mp) {
     const Index at = block_lane_[e];
+    const bool elastic = point_fields(e) == k_stress_fields;
     if (at < 0) {
-        elastic_stress_[stress_offset_[e] + p] = sigma;
+        if (elastic) elastic_stress_[stress_offset_[e] + p] = mp.stress;
+        else points_[point_offset_[e] + p] = mp;
         return;
     }
     const std::size_t b = static_cast<std::size_t>(at) / static_cast<std::size_t>(k_lanes);
     const int l = static_cast<int>(static_cast<std::size_t>(at) % static_cast<std::size_t>(k_lanes));
-    RealPack* packs = block_stress_.data() + block_stress_offset_[b] + 3 * p;
-    for (std::size_t r = 0; r < 3; ++r) set_lane(packs[r], l, sigma(static_cast<Eigen::Index>(r)));
+    RealPack* f = block_state_.data() + block_state_offset_[b] + point_fields(e) * p;
+    for (std::size_t r = 0; r < 3; ++r) set_lane(f[k_stress + r], l, mp.stress(static_cast<Eigen::Index>(r)));
+    if (elastic) return;
+    for (std::size_t r = 0; r < 3; ++r) set_lane(f[k_back_stress + r], l, mp.back_stress(static_cast<Eigen::Index>(r)));
+    set_lane(f[k_plastic_strain], l, mp.plastic_strain);
+    set_lane(f[k_plastic_work], l, mp.plastic_work);
+    set_lane(f[k_strain_rate], l, mp.strain_rate);
+    set_lane(f[k_flow_radius], l, mp.flow_radius);
+    set_lane(f[k_flow_slope], l, mp.flow_slope);
 }
 
-// The restart file holds every elastic point's stress in element order (format 2), whatever
-// the layout in memory.
+// The restart file holds every plastic point, then every elastic point's stress, in element
+// order (format 2), whatever the layout in memory.
 void ShellElements::save(RestartWriter& out) const {
+    std::vector<MaterialPoint> points;
     std::vector<Voigt3> stresses;
+    points.reserve(n_plastic_points_);
     stresses.reserve(n_elastic_points_);
     for (std::size_t e = 0; e < thickness_.size(); ++e)
-        for (std::size_t p = 0; p < elastic_point_count(e); ++p) stresses.push_back(elastic_stress(e, p));
+        for (std::size_t p = 0; p < n_points_of(e); ++p) {
+            if (point_fields(e) == k_stress_fields) stresses.push_back(point_state(e, p).stress);
+            else points.push_back(point_state(e, p));
+        }
     auto& self = const_cast<ShellElements&>(*this);  // the archive's interface is shared with load
-    out(self.points_, stresses, self.thickness_, self.bend_ratio_, self.bend_lc_, self.membrane_force_, self.bending_moment_);
+    out(points, stresses, self.thickness_, self.bend_ratio_, self.bend_lc_, self.membrane_force_, self.bending_moment_);
 }
 
 void ShellElements::load(RestartReader& in) {
-    const std::size_t n_points = points_.size(), n_elements = thickness_.size();
+    const std::size_t n_elements = thickness_.size();
+    std::vector<MaterialPoint> points;
     std::vector<Voigt3> stresses;
     if (in.format() >= 2) {
-        in(points_, stresses, thickness_, bend_ratio_, bend_lc_, membrane_force_, bending_moment_);
+        in(points, stresses, thickness_, bend_ratio_, bend_lc_, membrane_force_, bending_moment_);
     } else {  // format 1: no elastic stresses apart (restart_archive.cpp)
         if (n_elastic_points_ > 0)
             in.fail("restart file of format 1, which holds no elastic stresses apart: it can resume a model "
                     "without elastic sections only");
-        in(points_, thickness_, bend_ratio_, bend_lc_, membrane_force_, bending_moment_);
+        in(points, thickness_, bend_ratio_, bend_lc_, membrane_force_, bending_moment_);
     }
-    if (points_.size() != n_points || stresses.size() != n_elastic_points_ || thickness_.size() != n_elements)
+    if (points.size() != n_plastic_points_ || stresses.size() != n_elastic_points_ || thickness_.size() != n_elements)
         in.fail("restart file of a model with other elements or integration rules");
-    std::size_t i = 0;
+    std::size_t i = 0, j = 0;
     for (std::size_t e = 0; e < n_elements; ++e)
-        for (std::size_t p = 0; p < elastic_point_count(e); ++p) set_elastic_stress(e, p, stresses[i++]);
+        for (std::size_t p = 0; p < n_points_of(e); ++p) {
+            if (point_fields(e) == k_stress_fields) {
+                MaterialPoint mp;
+                mp.stress = stresses[j++];
+                set_point_state(e, p, mp);
+            } else {
+                set_point_state(e, p, points[i++]);
+            }
+        }
 }
 
 }  // namespace fpmshell

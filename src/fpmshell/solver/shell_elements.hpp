@@ -76,11 +76,19 @@ private:
     /// Phase 1 of compute for the k_lanes elements of SIMD block b (lanes outside the block
     /// kernel's bounds go to compute_element).
     void compute_block(Index b, ParticleState& s, Real viscous_rate, Real dt);
-    /// Points of element e that hold a stress only (an elastic section), 0 otherwise.
-    [[nodiscard]] std::size_t elastic_point_count(std::size_t e) const;
-    /// The stress of point p of elastic element e, wherever it is kept; and its update.
-    [[nodiscard]] Voigt3 elastic_stress(std::size_t e, std::size_t p) const;
-    void set_elastic_stress(std::size_t e, std::size_t p, const Voigt3& sigma);
+    /// Integration points of element e.
+    [[nodiscard]] std::size_t n_points_of(std::size_t e) const;
+    /// Fields of a point of element e in the block layout: the stress only (elastic section,
+    /// k_stress_fields) or the whole history (J2, k_j2_fields).
+    [[nodiscard]] std::size_t point_fields(std::size_t e) const;
+    /// The state of point p of element e, wherever it is kept (an elastic point: its stress);
+    /// and its update.
+    [[nodiscard]] MaterialPoint point_state(std::size_t e, std::size_t p) const;
+    void set_point_state(std::size_t e, std::size_t p, const MaterialPoint& mp);
+    // The fields of a point in the block layout (block_state_), one pack each.
+    static constexpr std::size_t k_stress = 0, k_back_stress = 3, k_plastic_strain = 6, k_plastic_work = 7,
+                                 k_strain_rate = 8, k_flow_radius = 9, k_flow_slope = 10;
+    static constexpr std::size_t k_stress_fields = 3, k_j2_fields = 11;
 
     std::vector<std::array<Index, 3>> tri_;
     std::vector<Index> section_;               ///< per element
@@ -100,8 +108,9 @@ private:
     std::vector<int> side_neighbour_corner_;  ///< per side, the neighbour's corners of its ends (i+1, i+2)
     std::vector<ReversedTriangle> reversed_;  ///< per element, this step's path element
     std::vector<Voigt3> cst_strain_;          ///< per element, this step's CST strain increment
-    std::vector<std::size_t> point_offset_;    ///< first material point of every element (plastic sections)
-    std::vector<MaterialPoint> points_;        ///< material points of the plastic sections
+    std::vector<std::size_t> point_offset_;    ///< first material point of every element (plastic, computed alone)
+    std::vector<MaterialPoint> points_;        ///< material points of those elements
+    std::size_t n_plastic_points_ = 0;         ///< points of all plastic elements
     std::vector<std::size_t> stress_offset_;   ///< first stress of every element (elastic, computed alone)
     std::vector<Voigt3> elastic_stress_;       ///< stresses of the points of those elements
     std::size_t n_elastic_points_ = 0;         ///< points of all elastic elements
@@ -112,9 +121,9 @@ private:
     std::vector<ElasticSectionConstants> elastic_constants_;  ///< per section (zero if not elastic)
     std::vector<Index> block_elements_;   ///< k_lanes elements of one section per block
     std::vector<Index> block_lane_;       ///< per element: its index in block_elements_, -1: computed alone
-    std::vector<std::size_t> block_stress_offset_;  ///< per block: its first pack in block_stress_
-    /// the stresses of the blocks of elastic sections, [block][point][component], one lane per element
-    std::vector<RealPack> block_stress_;
+    std::vector<std::size_t> block_state_offset_;  ///< per block: its first pack in block_state_
+    /// the point states of the blocks, [block][point][field] (point_fields), one lane per element
+    std::vector<RealPack> block_state_;
     std::vector<Index> scalar_elements_;  ///< the elements computed one by one
     std::vector<Real> elem_work_, elem_damp_work_, elem_plastic_work_, elem_dt_;
     std::vector<std::uint8_t> elem_failed_;
