@@ -173,6 +173,7 @@ void ContactSolver::collect_self(const Definition& d, const std::vector<Vec3>& x
     // are merged by a key (slave, edge) or (particle, particle), or the sweeps would split the
     // force between identical constraints and settle slowly.
     keyed_.clear();
+    keyed_constraints_.clear();
     for (std::size_t i = 0; i < d.slaves.size(); ++i) {
         const std::int64_t begin = d.candidate_start[i], end = d.candidate_start[i + 1];
         const Index s = d.slaves[i];
@@ -249,18 +250,20 @@ void ContactSolver::collect_self(const Definition& d, const std::vector<Vec3>& x
                 c.gap = dist - offset;
             }
             if (!(c.gap < (lagrange ? k_activation_fraction * offset : 0.0))) continue;
-            if (key[0] < 0)
+            if (key[0] < 0) {
                 out.push_back(c);
-            else
-                keyed_.push_back({key, c});
+            } else {
+                keyed_.push_back({key, keyed_constraints_.size()});
+                keyed_constraints_.push_back(c);
+            }
         }
     }
     // One constraint per key: the first found (slave order, then candidate order), so the
-    // result does not depend on anything but the mesh and the state.
-    std::stable_sort(keyed_.begin(), keyed_.end(),
-                     [](const auto& p, const auto& q) { return p.first < q.first; });
+    // result does not depend on anything but the mesh and the state. Sorting (key, order
+    // found) pairs, not the constraints themselves, moves 32 bytes per pair instead of ~190.
+    std::sort(keyed_.begin(), keyed_.end());
     for (std::size_t k = 0; k < keyed_.size(); ++k)
-        if (k == 0 || keyed_[k].first != keyed_[k - 1].first) out.push_back(keyed_[k].second);
+        if (k == 0 || keyed_[k].first != keyed_[k - 1].first) out.push_back(keyed_constraints_[keyed_[k].second]);
 }
 
 void ContactSolver::collect_rigid(const Definition& d, const std::vector<Vec3>& y,

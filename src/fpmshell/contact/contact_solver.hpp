@@ -137,8 +137,9 @@ private:
     BucketGrid grid_;
     std::vector<Vec3> box_lo_, box_hi_;             ///< scratch for the grid
     std::vector<Constraint> constraints_, closed_;  ///< scratch, reused every step
-    std::vector<std::pair<std::array<Index, 3>, Constraint>>
-        keyed_;  ///< scratch: edge and corner pairs
+    /// scratch: the edge and corner pairs, (key, index in keyed_constraints_) sorted together
+    std::vector<std::pair<std::array<Index, 3>, std::size_t>> keyed_;
+    std::vector<Constraint> keyed_constraints_;  ///< scratch: their constraints, in the order found
     ContactStatistics stats_;
 };
 
