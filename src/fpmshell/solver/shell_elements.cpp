@@ -156,7 +156,7 @@ ShellElements::ShellElements(const Model& model)
     }
     // Material points. A plastic section's points hold their whole history; an elastic
     // section's points hold a stress only, a third of the memory traffic. The elements of the
-    // SIMD blocks keep theirs block by block, point by point, field by field, one lane per
+    // SIMD blocks keep theirs block by block, field by field, point by point, one lane per
     // element (block_state_): a block reads and writes them as whole packs (gathered element
     // by element they cost as much as the element itself). The elements computed alone keep
     // theirs in points_ (plastic) or elastic_stress_ (elastic).
@@ -406,11 +406,13 @@ void ShellElements::compute_block(Index b, ParticleState& s, Real viscous_rate, 
     }
     const RealPack thickness = load([&](int l) { return thickness_[element(l)]; });
     const std::size_t n_points = constants.inplane.size() * constants.through.size();
-    // The points' state, whole packs in the block layout: [point][field] (point_fields).
+    // The points' state, whole packs in the block layout: [field][point] (point_fields), so
+    // that a step streams only the fields it reads.
     const J2Plastic* j2 = std::get_if<J2Plastic>(&materials_[sec]);
-    const std::size_t fields = j2 ? k_j2_fields : k_stress_fields;
     RealPack* state = block_state_.data() + block_state_offset_[static_cast<std::size_t>(b)];
-    auto field = [&](std::size_t p, std::size_t f) -> RealPack& { return state[fields * p + f]; };
+    auto field = [&](std::size_t p, std::size_t f) -> RealPack& { return state[f * n_points + p]; };
+    // isotropic hardening (beta = 1): the back stress stays zero and is neither read nor written
+    const bool kinematic = j2 && j2->return_constants().beta != 1.0;
     std::array<RealPack, 3 * k_max_block_points> stress;
     for (std::size_t p = 0; p < n_points; ++p)
         for (std::size_t r = 0; r < 3; ++r) stress[3 * p + r] = field(p, k_stress + r);
@@ -421,7 +423,7 @@ void ShellElements::compute_block(Index b, ParticleState& s, Real viscous_rate, 
     if (j2) {
         const RealPack initial_radius(j2->initial_flow_radius());
         for (std::size_t p = 0; p < n_points; ++p) {
-            for (std::size_t r = 0; r < 3; ++r) back_stress[3 * p + r] = field(p, k_back_stress + r);
+            for (std::size_t r = 0; r < 3; ++r) back_stress[3 * p + r] = kinematic ? field(p, k_back_stress + r) : RealPack(0.0);
             const RealPack kappa = select(field(p, k_plastic_strain) > 0.0, field(p, k_flow_radius), initial_radius);
             third_k2[p] = kappa * kappa / 3.0;
         }
@@ -462,7 +464,8 @@ void ShellElements::compute_block(Index b, ParticleState& s, Real viscous_rate, 
                 for (std::size_t r = 0; r < 3; ++r) set_lane(new_stress[3 * p + r], l, lane(ret.state.stress[r], i));
                 if (!lane(ret.yielded, i)) continue;  // inside after all (rounding): the trial state
                 set_lane(d_plastic_work[p], l, lane(ret.plastic_work, i));
-                for (std::size_t r = 0; r < 3; ++r) set_lane(field(p, k_back_stress + r), l, lane(ret.state.back_stress[r], i));
+                if (kinematic)
+                    for (std::size_t r = 0; r < 3; ++r) set_lane(field(p, k_back_stress + r), l, lane(ret.state.back_stress[r], i));
                 set_lane(field(p, k_plastic_strain), l, lane(ret.state.plastic_strain, i));
                 set_lane(field(p, k_plastic_work), l, lane(field(p, k_plastic_work), l) + lane(ret.plastic_work, i));
                 set_lane(field(p, k_flow_radius), l, lane(ret.state.flow_radius, i));
@@ -477,7 +480,7 @@ void ShellElements::compute_block(Index b, ParticleState& s, Real viscous_rate, 
                 const auto i = static_cast<std::size_t>(n);
                 for (std::size_t r = 0; r < 3; ++r) {
                     in[r][i] = lane(field(p, k_stress + r), l);  // the old stress: not stored yet
-                    in[3 + r][i] = lane(field(p, k_back_stress + r), l);
+                    in[3 + r][i] = lane(back_stress[3 * p + r], l);
                     in[9 + r][i] = lane(d_eps[p][r], l);
                 }
                 in[6][i] = lane(field(p, k_plastic_strain), l);
@@ -629,16 +632,18 @@ MaterialPoint ShellElements::point_state(std::size_t e, std::size_t p) const {
     }
     const std::size_t b = static_cast<std::size_t>(at) / static_cast<std::size_t>(k_lanes);
     const int l = static_cast<int>(static_cast<std::size_t>(at) % static_cast<std::size_t>(k_lanes));
-    const RealPack* f = block_state_.data() + block_state_offset_[b] + point_fields(e) * p;
+    const RealPack* base = block_state_.data() + block_state_offset_[b];
+    const std::size_t n = n_points_of(e);
+    auto f = [&](std::size_t k) { return lane(base[k * n + p], l); };  // field k, [field][point]
     MaterialPoint mp;
-    mp.stress = Voigt3(lane(f[k_stress], l), lane(f[k_stress + 1], l), lane(f[k_stress + 2], l));
+    mp.stress = Voigt3(f(k_stress), f(k_stress + 1), f(k_stress + 2));
     if (elastic) return mp;
-    mp.back_stress = Voigt3(lane(f[k_back_stress], l), lane(f[k_back_stress + 1], l), lane(f[k_back_stress + 2], l));
-    mp.plastic_strain = lane(f[k_plastic_strain], l);
-    mp.plastic_work = lane(f[k_plastic_work], l);
-    mp.strain_rate = lane(f[k_strain_rate], l);
-    mp.flow_radius = lane(f[k_flow_radius], l);
-    mp.flow_slope = lane(f[k_flow_slope], l);
+    mp.back_stress = Voigt3(f(k_back_stress), f(k_back_stress + 1), f(k_back_stress + 2));
+    mp.plastic_strain = f(k_plastic_strain);
+    mp.plastic_work = f(k_plastic_work);
+    mp.strain_rate = f(k_strain_rate);
+    mp.flow_radius = f(k_flow_radius);
+    mp.flow_slope = f(k_flow_slope);
     return mp;
 }
 
@@ -652,15 +657,17 @@ void ShellElements::set_point_state(std::size_t e, std::size_t p, const Material
     }
     const std::size_t b = static_cast<std::size_t>(at) / static_cast<std::size_t>(k_lanes);
     const int l = static_cast<int>(static_cast<std::size_t>(at) % static_cast<std::size_t>(k_lanes));
-    RealPack* f = block_state_.data() + block_state_offset_[b] + point_fields(e) * p;
-    for (std::size_t r = 0; r < 3; ++r) set_lane(f[k_stress + r], l, mp.stress(static_cast<Eigen::Index>(r)));
+    RealPack* base = block_state_.data() + block_state_offset_[b];
+    const std::size_t n = n_points_of(e);
+    auto set = [&](std::size_t k, Real v) { set_lane(base[k * n + p], l, v); };  // field k, [field][point]
+    for (std::size_t r = 0; r < 3; ++r) set(k_stress + r, mp.stress(static_cast<Eigen::Index>(r)));
     if (elastic) return;
-    for (std::size_t r = 0; r < 3; ++r) set_lane(f[k_back_stress + r], l, mp.back_stress(static_cast<Eigen::Index>(r)));
-    set_lane(f[k_plastic_strain], l, mp.plastic_strain);
-    set_lane(f[k_plastic_work], l, mp.plastic_work);
-    set_lane(f[k_strain_rate], l, mp.strain_rate);
-    set_lane(f[k_flow_radius], l, mp.flow_radius);
-    set_lane(f[k_flow_slope], l, mp.flow_slope);
+    for (std::size_t r = 0; r < 3; ++r) set(k_back_stress + r, mp.back_stress(static_cast<Eigen::Index>(r)));
+    set(k_plastic_strain, mp.plastic_strain);
+    set(k_plastic_work, mp.plastic_work);
+    set(k_strain_rate, mp.strain_rate);
+    set(k_flow_radius, mp.flow_radius);
+    set(k_flow_slope, mp.flow_slope);
 }
 
 // The restart file holds every plastic point, then every elastic point's stress, in element

@@ -122,7 +122,7 @@ private:
     std::vector<Index> block_elements_;   ///< k_lanes elements of one section per block
     std::vector<Index> block_lane_;       ///< per element: its index in block_elements_, -1: computed alone
     std::vector<std::size_t> block_state_offset_;  ///< per block: its first pack in block_state_
-    /// the point states of the blocks, [block][point][field] (point_fields), one lane per element
+    /// the point states of the blocks, [block][field][point] (point_fields), one lane per element
     std::vector<RealPack> block_state_;
     std::vector<Index> scalar_elements_;  ///< the elements computed one by one
     std::vector<Real> elem_work_, elem_damp_work_, elem_plastic_work_, elem_dt_;
