@@ -406,13 +406,29 @@ void ContactSolver::enforce(const std::vector<Vec3>& x, std::vector<Vec3>& x_pre
         return c.normal.dot(r) - c.offset + c.allowance;
     };
     // Projected Gauss-Seidel on lambda >= 0, g + W dlambda >= 0, complementarity (§8.3).
+    // An open constraint (lambda = 0, gap >= 0 when last evaluated) none of whose particles or
+    // body has moved since gives the same gap again, hence no update and no change to the
+    // sweep's measures: it is skipped, which leaves the result bitwise the same (most pairs
+    // near contact are open; the few closed ones need the sweeps).
+    particle_moved_at_.resize(x_pred.size(), -1);
+    body_moved_at_.resize(body_u_pred.size(), -1);
+    auto unchanged_since_evaluated = [&](const Constraint& c) {
+        if (c.evaluated_at < 0 || particle_moved_at_[static_cast<std::size_t>(c.slave)] > c.evaluated_at) return false;
+        if (c.element >= 0)
+            for (std::size_t k = 0; k < 3; ++k)
+                if (particle_moved_at_[static_cast<std::size_t>(c.master[k])] > c.evaluated_at) return false;
+        return c.body < 0 || body_moved_at_[static_cast<std::size_t>(c.body)] <= c.evaluated_at;
+    };
     int sweeps = 0;
     bool converged = constraints_.empty();
     while (!converged && sweeps < max_iterations) {
         ++sweeps;
         Real deepest = 0, largest_change = 0, largest_lambda = 0, largest_move = 0;
         for (Constraint& c : constraints_) {
+            if (c.lambda == 0 && c.last_gap >= 0 && unchanged_since_evaluated(c)) continue;
             const Real g = gap(c);
+            c.last_gap = g;
+            c.evaluated_at = updates_;
             deepest = std::max(deepest, -g);
             const Real lambda_new = std::max(Real(0), c.lambda - g / c.weight);
             const Real dl = lambda_new - c.lambda;
@@ -421,17 +437,21 @@ void ContactSolver::enforce(const std::vector<Vec3>& x, std::vector<Vec3>& x_pre
             c.lambda = lambda_new;
             largest_change = std::max(largest_change, std::abs(dl));
             largest_move = std::max(largest_move, std::abs(dl) * c.weight);
+            ++updates_;
             const auto us = static_cast<std::size_t>(c.slave);
             x_pred[us] += (beta_particle * dl) * inv_mass_[us].cwiseProduct(c.normal);
+            particle_moved_at_[us] = updates_;
             if (c.element >= 0)
                 for (std::size_t k = 0; k < 3; ++k) {
                     const auto um = static_cast<std::size_t>(c.master[k]);
                     x_pred[um] -=
                         (beta_particle * dl * c.xi[k]) * inv_mass_[um].cwiseProduct(c.normal);
+                    particle_moved_at_[um] = updates_;
                 }
             if (c.body >= 0) {
                 const auto b = static_cast<std::size_t>(c.body);
                 body_u_pred[b] -= (beta_body * dl * bodies[b].inv_mass) * c.normal;
+                body_moved_at_[b] = updates_;
             }
         }
         // §8.3: every gap closed to 1e-3 h and the multipliers settled to 1e-6 (relative), or,

@@ -95,6 +95,9 @@ private:
         Real lambda = 0;
         Real thickness = 1;  ///< slave thickness, for penetration ratios
         Real allowance = 0;  ///< penetration it already had at t_n (held, not pushed out)
+        /// the sweeps' bookkeeping: the gap at its last evaluation and the update count then
+        Real last_gap = 0;
+        std::int64_t evaluated_at = -1;
     };
 
     struct Definition {
@@ -130,6 +133,10 @@ private:
 
     const Model& model_;
     std::vector<Vec3> inv_mass_;
+    /// Sweep bookkeeping (enforce): updates made so far (never reset), and per particle and
+    /// rigid body the count at which its predicted position last changed.
+    std::int64_t updates_ = 0;
+    std::vector<std::int64_t> particle_moved_at_, body_moved_at_;
     std::vector<Real> element_thickness_;
     std::vector<Real> node_thickness_;
     std::vector<Definition> definitions_;
