@@ -302,9 +302,6 @@ bool deserialize(const std::string& data, MeshData& m) {
            r.get_sets(m.node_sets) && r.get_sets(m.element_sets) && r.at_end();
 }
 
-/// Longest a Gmsh read may take before it is considered hung.
-constexpr auto k_read_time_limit = std::chrono::minutes(10);
-
 /// Child side: read, send 'M' + mesh or 'E' + message, exit without running destructors.
 [[noreturn]] void child(const std::string& path, int fd) {
     const int null_fd = ::open("/dev/null", O_WRONLY);
@@ -337,7 +334,7 @@ constexpr auto k_read_time_limit = std::chrono::minutes(10);
 
 }  // namespace
 
-MeshData read_gmsh(const std::string& path) {
+MeshData read_gmsh(const std::string& path, std::chrono::seconds time_limit) {
     check_msh_header(path);
     int fds[2];
     if (::pipe(fds) != 0) return read_in_process(path);  // no isolation possible: read here
@@ -355,7 +352,7 @@ MeshData read_gmsh(const std::string& path) {
 
     std::string data;
     bool timed_out = false;
-    const auto deadline = std::chrono::steady_clock::now() + k_read_time_limit;
+    const auto deadline = std::chrono::steady_clock::now() + time_limit;
     char buffer[1 << 16];
     while (true) {
         const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(
@@ -380,9 +377,8 @@ MeshData read_gmsh(const std::string& path) {
     while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
     }
     if (timed_out)
-        fail(path,
-             "Gmsh did not finish reading the file within 10 minutes; the file is probably "
-             "corrupt");
+        fail(path, "Gmsh did not finish reading the file within " + std::to_string(time_limit.count()) +
+                       " s; the file is probably corrupt");
     if (WIFSIGNALED(status))
         fail(path, "Gmsh crashed while reading the file (signal " +
                        std::to_string(WTERMSIG(status)) +

@@ -1,6 +1,7 @@
 // Reader of Gmsh .msh meshes through the Gmsh SDK (model-format.md `mesh: {file: x.msh}`).
 #pragma once
 
+#include <chrono>
 #include <string>
 
 #include "fpmshell/mesh/mesh_data.hpp"
@@ -18,6 +19,9 @@ namespace fpmshell {
 /// gives no set. Throws InputError (naming `path`) when the file cannot be read, is not a .msh
 /// file, holds other surface element types, or holds no triangle. Gmsh is initialised and
 /// finalised inside the call (also on error), without reading its configuration files.
-[[nodiscard]] MeshData read_gmsh(const std::string& path);
+/// The read runs in a child process: a Gmsh crash or a read longer than time_limit (a hung
+/// Gmsh) is an InputError too.
+[[nodiscard]] MeshData read_gmsh(const std::string& path,
+                                 std::chrono::seconds time_limit = std::chrono::minutes(10));
 
 }  // namespace fpmshell
