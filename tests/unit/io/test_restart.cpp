@@ -5,7 +5,9 @@
 //   on the square tube (plasticity, self-contact, a rigid body, variable step);
 // - a restart file does not resume another model;
 // - a file of format 1 (before the elastic stresses were stored apart) resumes a model without
-//   elastic sections, like the tube, to the same bytes.
+//   elastic sections, like the tube, to the same bytes;
+// - (the same byte comparison, for threads) the tube writes the same results on 1 and 2
+//   threads: elements, particles, rigid body and contact.
 #include <gtest/gtest.h>
 #include <unistd.h>
 
@@ -220,6 +222,26 @@ TEST(Restart, ARestartFileDoesNotResumeAnotherModel) {
     EXPECT_NE(bytes_of(first.output_dir / "fields.pvd").find("frame_00000.vtu"), std::string::npos);
     EXPECT_TRUE(fs::exists(first.output_dir / "fields" / "frame_00000.vtu"));
     fs::remove_all(first.output_dir);
+}
+
+TEST(Restart, TheTubeWritesTheSameResultsOnOneAndTwoThreads) {
+    // 24 x 24 divisions: 2 304 triangles, above the size where the loops run in parallel; the
+    // block presses on the tube from the first step (rigid-body contact, plasticity).
+    const Model model = small_tube(4e-5, 24);
+    RunOptions one;
+    one.output_dir = fresh_dir("threads1");
+    one.echo = false;
+    one.quiet = true;
+    one.threads = 1;
+    ASSERT_EQ(run_model(model, one), 0);
+    RunOptions two = one;
+    two.output_dir = fresh_dir("threads2");
+    two.threads = 2;
+    ASSERT_EQ(run_model(model, two), 0);
+    for (const char* file : {"history.csv", "energy.csv"})
+        EXPECT_EQ(bytes_of(one.output_dir / file), bytes_of(two.output_dir / file)) << file;
+    fs::remove_all(one.output_dir);
+    fs::remove_all(two.output_dir);
 }
 
 }  // namespace
