@@ -172,90 +172,112 @@ void ContactSolver::collect_self(const Definition& d, const std::vector<Vec3>& x
     // that edge or corner, and a particle-to-corner pair once from each particle: such copies
     // are merged by a key (slave, edge) or (particle, particle), or the sweeps would split the
     // force between identical constraints and settle slowly.
+    // The slaves in fixed chunks, in parallel, each into its own buffers; the buffers are then
+    // joined in chunk order, so the constraints come in slave order for any thread count.
+    const std::size_t n_slaves = d.slaves.size();
+    const std::size_t n_chunks = (n_slaves + k_collect_chunk - 1) / k_collect_chunk;
+    if (collect_chunks_.size() < n_chunks) collect_chunks_.resize(n_chunks);
+#pragma omp parallel for schedule(dynamic) if (n_chunks > 1)
+    for (std::size_t chunk = 0; chunk < n_chunks; ++chunk) {
+        CollectBuffers& buf = collect_chunks_[chunk];
+        buf.out.clear();
+        buf.closed.clear();
+        buf.keys.clear();
+        buf.keyed.clear();
+        for (std::size_t i = chunk * k_collect_chunk; i < std::min(n_slaves, (chunk + 1) * k_collect_chunk); ++i) {
+            const std::int64_t begin = d.candidate_start[i], end = d.candidate_start[i + 1];
+            const Index s = d.slaves[i];
+            const std::size_t us = static_cast<std::size_t>(s);
+            for (std::int64_t k = begin; k < end; ++k) {
+                const Index e = d.candidates[static_cast<std::size_t>(k)];
+                const auto& t = tri[static_cast<std::size_t>(e)];
+                const Real offset =
+                    d.slave_offset[i] + 0.5 * element_thickness_[static_cast<std::size_t>(e)];
+                Constraint c;
+                c.slave = s;
+                c.element = e;
+                c.master = t;
+                c.offset = offset;
+                c.thickness = 2 * d.slave_offset[i];
+                // Side of the pair from t_n (§8.2): the surfaces are apart there.
+                const Vec3& xa = x[static_cast<std::size_t>(t[0])];
+                const Vec3& xb = x[static_cast<std::size_t>(t[1])];
+                const Vec3& xc = x[static_cast<std::size_t>(t[2])];
+                const Vec3 n_x = unit_normal(xa, xb, xc);
+                const TriangleClosestPoint cp_x =
+                    closest_point_on_triangle(x[us], xa, xb, xc, k_face_tolerance);
+                const Vec3 rel_x = x[us] - cp_x.point;
+                const Real d_x = rel_x.dot(n_x);
+                const Real sigma = d_x >= 0 ? 1.0 : -1.0;  // side of the slave at t_n
+                // Positions the gap is measured at: the predictor (Lagrange multipliers, normal and
+                // weights frozen there, §8.2) or t_n (penalty).
+                const Vec3& ya = y[static_cast<std::size_t>(t[0])];
+                const Vec3& yb = y[static_cast<std::size_t>(t[1])];
+                const Vec3& yc = y[static_cast<std::size_t>(t[2])];
+                const Vec3 n_y = lagrange ? unit_normal(ya, yb, yc) : n_x;
+                const TriangleClosestPoint cp_y =
+                    lagrange ? closest_point_on_triangle(y[us], ya, yb, yc, k_face_tolerance) : cp_x;
+                const Vec3 rel_y = y[us] - cp_y.point;
+                if (lagrange &&
+                    (cp_x.in_face ? std::abs(d_x) : rel_x.norm()) < k_open_fraction * offset) {
+                    // Already through at t_n (entered sideways, or a pair closed from the start):
+                    // no side to restore; only its penetration is recorded.
+                    if (cp_y.in_face && std::abs(rel_y.dot(n_y)) < offset) {
+                        c.normal = n_y;
+                        c.xi = cp_y.xi;
+                        c.gap = std::abs(rel_y.dot(n_y)) - offset;
+                        buf.closed.push_back(c);
+                    }
+                    continue;
+                }
+                c.xi = cp_y.xi;
+                std::array<Index, 3> key{-1, -1, -1};
+                if (cp_y.in_face) {
+                    c.normal = sigma * n_y;
+                    c.gap = c.normal.dot(rel_y) - offset;
+                } else {
+                    // Beside the triangle: the distance to its nearest edge or corner (a particle
+                    // may pass round an edge from one side to the other).
+                    const auto top = std::max_element(c.xi.begin(), c.xi.end()) - c.xi.begin();
+                    Vec3 rel = rel_y;
+                    if (c.xi[static_cast<std::size_t>(top)] >
+                        k_corner_weight) {  // particle to particle
+                        const Index v = t[static_cast<std::size_t>(top)];
+                        c.xi = {0, 0, 0};
+                        c.xi[static_cast<std::size_t>(top)] = 1;
+                        rel = y[us] - y[static_cast<std::size_t>(v)];
+                        key = {std::min(s, v), std::max(s, v), -1};
+                    } else {
+                        const std::size_t off = c.xi[0] == 0   ? 0
+                                                : c.xi[1] == 0 ? 1
+                                                               : 2;  // the corner not on the edge
+                        const Index a = t[(off + 1) % 3], b = t[(off + 2) % 3];
+                        key = {s, std::min(a, b), std::max(a, b)};
+                    }
+                    const Real dist = rel.norm();
+                    if (!(dist > 1e-12 * offset)) continue;
+                    c.normal = rel / dist;
+                    c.gap = dist - offset;
+                }
+                if (!(c.gap < (lagrange ? k_activation_fraction * offset : 0.0))) continue;
+                if (key[0] < 0) {
+                    buf.out.push_back(c);
+                } else {
+                    buf.keys.push_back(key);
+                    buf.keyed.push_back(c);
+                }
+            }
+        }
+    }
     keyed_.clear();
     keyed_constraints_.clear();
-    for (std::size_t i = 0; i < d.slaves.size(); ++i) {
-        const std::int64_t begin = d.candidate_start[i], end = d.candidate_start[i + 1];
-        const Index s = d.slaves[i];
-        const std::size_t us = static_cast<std::size_t>(s);
-        for (std::int64_t k = begin; k < end; ++k) {
-            const Index e = d.candidates[static_cast<std::size_t>(k)];
-            const auto& t = tri[static_cast<std::size_t>(e)];
-            const Real offset =
-                d.slave_offset[i] + 0.5 * element_thickness_[static_cast<std::size_t>(e)];
-            Constraint c;
-            c.slave = s;
-            c.element = e;
-            c.master = t;
-            c.offset = offset;
-            c.thickness = 2 * d.slave_offset[i];
-            // Side of the pair from t_n (§8.2): the surfaces are apart there.
-            const Vec3& xa = x[static_cast<std::size_t>(t[0])];
-            const Vec3& xb = x[static_cast<std::size_t>(t[1])];
-            const Vec3& xc = x[static_cast<std::size_t>(t[2])];
-            const Vec3 n_x = unit_normal(xa, xb, xc);
-            const TriangleClosestPoint cp_x =
-                closest_point_on_triangle(x[us], xa, xb, xc, k_face_tolerance);
-            const Vec3 rel_x = x[us] - cp_x.point;
-            const Real d_x = rel_x.dot(n_x);
-            const Real sigma = d_x >= 0 ? 1.0 : -1.0;  // side of the slave at t_n
-            // Positions the gap is measured at: the predictor (Lagrange multipliers, normal and
-            // weights frozen there, §8.2) or t_n (penalty).
-            const Vec3& ya = y[static_cast<std::size_t>(t[0])];
-            const Vec3& yb = y[static_cast<std::size_t>(t[1])];
-            const Vec3& yc = y[static_cast<std::size_t>(t[2])];
-            const Vec3 n_y = lagrange ? unit_normal(ya, yb, yc) : n_x;
-            const TriangleClosestPoint cp_y =
-                lagrange ? closest_point_on_triangle(y[us], ya, yb, yc, k_face_tolerance) : cp_x;
-            const Vec3 rel_y = y[us] - cp_y.point;
-            if (lagrange &&
-                (cp_x.in_face ? std::abs(d_x) : rel_x.norm()) < k_open_fraction * offset) {
-                // Already through at t_n (entered sideways, or a pair closed from the start):
-                // no side to restore; only its penetration is recorded.
-                if (cp_y.in_face && std::abs(rel_y.dot(n_y)) < offset) {
-                    c.normal = n_y;
-                    c.xi = cp_y.xi;
-                    c.gap = std::abs(rel_y.dot(n_y)) - offset;
-                    closed.push_back(c);
-                }
-                continue;
-            }
-            c.xi = cp_y.xi;
-            std::array<Index, 3> key{-1, -1, -1};
-            if (cp_y.in_face) {
-                c.normal = sigma * n_y;
-                c.gap = c.normal.dot(rel_y) - offset;
-            } else {
-                // Beside the triangle: the distance to its nearest edge or corner (a particle
-                // may pass round an edge from one side to the other).
-                const auto top = std::max_element(c.xi.begin(), c.xi.end()) - c.xi.begin();
-                Vec3 rel = rel_y;
-                if (c.xi[static_cast<std::size_t>(top)] >
-                    k_corner_weight) {  // particle to particle
-                    const Index v = t[static_cast<std::size_t>(top)];
-                    c.xi = {0, 0, 0};
-                    c.xi[static_cast<std::size_t>(top)] = 1;
-                    rel = y[us] - y[static_cast<std::size_t>(v)];
-                    key = {std::min(s, v), std::max(s, v), -1};
-                } else {
-                    const std::size_t off = c.xi[0] == 0   ? 0
-                                            : c.xi[1] == 0 ? 1
-                                                           : 2;  // the corner not on the edge
-                    const Index a = t[(off + 1) % 3], b = t[(off + 2) % 3];
-                    key = {s, std::min(a, b), std::max(a, b)};
-                }
-                const Real dist = rel.norm();
-                if (!(dist > 1e-12 * offset)) continue;
-                c.normal = rel / dist;
-                c.gap = dist - offset;
-            }
-            if (!(c.gap < (lagrange ? k_activation_fraction * offset : 0.0))) continue;
-            if (key[0] < 0) {
-                out.push_back(c);
-            } else {
-                keyed_.push_back({key, keyed_constraints_.size()});
-                keyed_constraints_.push_back(c);
-            }
+    for (std::size_t chunk = 0; chunk < n_chunks; ++chunk) {
+        const CollectBuffers& buf = collect_chunks_[chunk];
+        out.insert(out.end(), buf.out.begin(), buf.out.end());
+        closed.insert(closed.end(), buf.closed.begin(), buf.closed.end());
+        for (std::size_t k = 0; k < buf.keys.size(); ++k) {
+            keyed_.push_back({buf.keys[k], keyed_constraints_.size()});
+            keyed_constraints_.push_back(buf.keyed[k]);
         }
     }
     // One constraint per key: the first found (slave order, then candidate order), so the

@@ -147,6 +147,13 @@ private:
     /// scratch: the edge and corner pairs, (key, index in keyed_constraints_) sorted together
     std::vector<std::pair<std::array<Index, 3>, std::size_t>> keyed_;
     std::vector<Constraint> keyed_constraints_;  ///< scratch: their constraints, in the order found
+    /// What one chunk of slaves finds (collect_self runs the chunks in parallel).
+    struct CollectBuffers {
+        std::vector<Constraint> out, closed, keyed;
+        std::vector<std::array<Index, 3>> keys;
+    };
+    static constexpr std::size_t k_collect_chunk = 256;  ///< slaves per chunk
+    std::vector<CollectBuffers> collect_chunks_;          ///< scratch, per chunk
     ContactStatistics stats_;
 };
 
