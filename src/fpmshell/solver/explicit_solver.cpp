@@ -21,6 +21,14 @@ constexpr Index k_parallel_min_particles = 2000;
 
 /// Removes from w its components along the constraint directions (Gram-Schmidt on the fly).
 Vec3 remove_components(Vec3 w, const std::array<Vec3, 4>& dirs, int n_dirs) {
+    if (n_dirs == 1) {  // the common particle: the normal alone (the loop below, written out)
+        const Real len = dirs[0].norm();
+        if (len > 1e-8) {
+            const Vec3 b = dirs[0] / len;
+            w -= w.dot(b) * b;
+        }
+        return w;
+    }
     std::array<Vec3, 3> basis;
     int nb = 0;
     for (int i = 0; i < n_dirs && nb < 3; ++i) {
@@ -336,26 +344,21 @@ void ExplicitSolver::cycle(Real load_time, Real dt_new_cap, bool relaxation) {
     const Real t_half = load_time + (relaxation ? 0.0 : 0.5 * dt_new);
     const Real t_next = load_time + (relaxation ? 0.0 : dt_new);
     Real kinetic = 0, damping_work = 0, ext_work = 0;
-    // Every particle on its own; the residual sums in fixed chunks (core/chunked_loop.hpp).
+    // Every particle on its own; the residual sums in fixed chunks (core/chunked_loop.hpp), only
+    // in relaxation (its convergence test is their only reader).
     const std::array<Real, 2> residual = chunked_sum<2>(static_cast<Index>(np), parallel_particles_, sums2_,
                                                          [&](Index ip, std::array<Real, 2>& acc) {
         const std::size_t p = static_cast<std::size_t>(ip);
         const Vec3 force = s_.f_ext[p] - s_.f_int[p] + s_.f_contact[p];
         const Real m = s_.mass[p];
+        const std::array<bool, 6>& fixed = fixed_[p];
         s_.v_prev[p] = s_.v[p];
         Vec3 v_new = c1 * (c2 * s_.v[p] + (dt_n / m) * force);  // v^{n+1/2}
         const Vec3 v_free = v_new;
-        Vec3 force_free = force;
         for (Eigen::Index d = 0; d < 3; ++d)
-            if (fixed_[p][static_cast<std::size_t>(d)]) {
-                v_new[d] = 0;
-                force_free[d] = 0;
-            }
-        if (prescribed_translation_[p]) force_free.setZero();
+            if (fixed[static_cast<std::size_t>(d)]) v_new[d] = 0;
         s_.v[p] = v_new;  // prescribed values are written below
         s_.reaction[p] = (m / (c1 * dt_n)) * (v_new - v_free);
-        acc[0] += force_free.squaredNorm();
-        acc[1] += s_.f_ext[p].squaredNorm() + (force - force_free).squaredNorm();
 
         // Rotations in the tangent plane: w^{n+1/2} = c1 [c2 P w^{n-1/2} + dt_n P M / J].
         // With at most one free rotation axis (symmetry planes, §6.7) the rotation is about that
@@ -364,20 +367,30 @@ void ExplicitSolver::cycle(Real load_time, Real dt_new_cap, bool relaxation) {
         const Vec3 moment = s_.m_ext[p] - s_.m_int[p];
         std::array<Vec3, 4> dirs;
         int nd = 0;
-        const int n_fixed_rot = fixed_[p][3] + fixed_[p][4] + fixed_[p][5];
+        const int n_fixed_rot = fixed[3] + fixed[4] + fixed[5];
         const bool project = !s_.full_rotation[p] && n_fixed_rot < 2;
-        if (project) dirs[static_cast<std::size_t>(nd++)] = s_.normal[p];
+        const Vec3& normal = s_.normal[p];
+        if (project) dirs[static_cast<std::size_t>(nd++)] = normal;
         for (std::size_t d = 0; d < 3; ++d)
-            if (fixed_[p][3 + d]) dirs[static_cast<std::size_t>(nd++)] = Vec3::Unit(static_cast<Eigen::Index>(d));
-        const Vec3 moment_tangent = project ? Vec3(moment - moment.dot(s_.normal[p]) * s_.normal[p]) : moment;
-        const Vec3 omega_tangent = project ? Vec3(s_.omega[p] - s_.omega[p].dot(s_.normal[p]) * s_.normal[p]) : s_.omega[p];
+            if (fixed[3 + d]) dirs[static_cast<std::size_t>(nd++)] = Vec3::Unit(static_cast<Eigen::Index>(d));
+        const Vec3 moment_tangent = project ? Vec3(moment - moment.dot(normal) * normal) : moment;
+        const Vec3 omega_tangent = project ? Vec3(s_.omega[p] - s_.omega[p].dot(normal) * normal) : s_.omega[p];
         s_.omega_prev[p] = s_.omega[p];
         const Real j = s_.inertia[p];
         const Vec3 w_free = c1 * (c2 * omega_tangent + (dt_n / j) * moment_tangent);
         const Vec3 w_new = remove_components(w_free, dirs, nd);
-        const Vec3 moment_free = prescribed_rotation_[p] ? Vec3::Zero() : remove_components(moment_tangent, dirs, nd);
         s_.omega[p] = w_new;
         s_.reaction_moment[p] = (j / (c1 * dt_n)) * (w_new - w_free);
+        if (!relaxation) return;
+
+        // Out-of-balance force and moment on the free directions, against the applied ones.
+        Vec3 force_free = force;
+        for (Eigen::Index d = 0; d < 3; ++d)
+            if (fixed[static_cast<std::size_t>(d)]) force_free[d] = 0;
+        if (prescribed_translation_[p]) force_free.setZero();
+        acc[0] += force_free.squaredNorm();
+        acc[1] += s_.f_ext[p].squaredNorm() + (force - force_free).squaredNorm();
+        const Vec3 moment_free = prescribed_rotation_[p] ? Vec3::Zero() : remove_components(moment_tangent, dirs, nd);
         const Real ls2 = length_scale_ * length_scale_;
         acc[0] += moment_free.squaredNorm() / ls2;
         acc[1] += (s_.m_ext[p].squaredNorm() + (moment_tangent - moment_free).squaredNorm()) / ls2;
@@ -449,6 +462,14 @@ void ExplicitSolver::cycle(Real load_time, Real dt_new_cap, bool relaxation) {
         s_.m_ext_prev[p] = s_.m_ext[p];
         s_.reaction_prev[p] = s_.reaction[p];
         s_.reaction_moment_prev[p] = s_.reaction_moment[p];
+
+        // 5 x^{n+1} = x^n + dt v^{n+1/2}; rotation increment for the next path element. In the
+        // same pass as the energies (which read x^n, x^{n-1} and dtheta first): one sweep over
+        // the particle arrays instead of two.
+        s_.x_prev[p] = s_.x[p];
+        s_.x[p] += dt_new * s_.v[p];
+        s_.dtheta[p] = dt_new * s_.omega[p];
+        s_.rotation[p] = rotation_matrix(s_.dtheta[p]) * s_.rotation[p];
     });
     kinetic += particle_energy[0];
     ext_work += particle_energy[1];
@@ -459,18 +480,11 @@ void ExplicitSolver::cycle(Real load_time, Real dt_new_cap, bool relaxation) {
     energy_.external_work += ext_work;
     energy_.damping += damping_work;
 
-    // 5 positions x^{n+1} = x^n + dt v^{n+1/2}; rotation increments for the next path element.
+    // 5 positions of the rigid bodies (those of the particles: in the energy pass above).
     for (RigidBodyState& b : bodies_) {
         b.u_prev = b.u;
         b.u += dt_new * b.v;
     }
-    parallel_for_each(static_cast<Index>(np), parallel_particles_, [&](Index ip) {
-        const std::size_t p = static_cast<std::size_t>(ip);
-        s_.x_prev[p] = s_.x[p];
-        s_.x[p] += dt_new * s_.v[p];
-        s_.dtheta[p] = dt_new * s_.omega[p];
-        s_.rotation[p] = rotation_matrix(s_.dtheta[p]) * s_.rotation[p];
-    });
     dt_center_ = dt_n;
     dt_half_prev_ = dt_half_;
     dt_half_ = dt_new;
