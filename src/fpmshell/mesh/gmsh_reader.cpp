@@ -6,7 +6,6 @@
 #include "fpmshell/mesh/gmsh_reader.hpp"
 
 #include <fcntl.h>
-#include <gmsh.h>
 #include <poll.h>
 #include <signal.h>
 #include <sys/types.h>
@@ -24,6 +23,7 @@
 #include <unordered_map>
 
 #include "fpmshell/core/errors.hpp"
+#include "fpmshell/mesh/gmsh_library.hpp"
 
 namespace fpmshell {
 namespace {
@@ -31,19 +31,17 @@ namespace {
 /// Initialises Gmsh quietly for the lifetime of the object.
 class GmshSession {
 public:
-    GmshSession() {
-        gmsh::initialize(0, nullptr, /*readConfigFiles=*/false);
-        gmsh::option::setNumber("General.Terminal", 0);
-        gmsh::option::setNumber("General.Verbosity", 0);
+    explicit GmshSession(const GmshLibrary& gmsh) : gmsh_(gmsh) {
+        gmsh_.initialize();
+        gmsh_.set_number_option("General.Terminal", 0);
+        gmsh_.set_number_option("General.Verbosity", 0);
     }
-    ~GmshSession() {
-        try {
-            gmsh::finalize();
-        } catch (...) {  // NOLINT(bugprone-empty-catch): nothing sensible to do in a destructor
-        }
-    }
+    ~GmshSession() { gmsh_.finalize(); }
     GmshSession(const GmshSession&) = delete;
     GmshSession& operator=(const GmshSession&) = delete;
+
+private:
+    const GmshLibrary& gmsh_;
 };
 
 [[noreturn]] void fail(const std::string& path, const std::string& msg) {
@@ -68,15 +66,15 @@ void check_msh_header(const std::string& path) {
 
 /// Reads the mesh with Gmsh in this process.
 MeshData read_in_process(const std::string& path) {
-    GmshSession session;
     MeshData mesh;
     try {
-        gmsh::open(path);
+        const GmshLibrary& gmsh = GmshLibrary::instance();
+        GmshSession session(gmsh);
+        gmsh.open(path);
 
         std::vector<std::size_t> node_tags;
         std::vector<double> coords;
-        std::vector<double> parametric;
-        gmsh::model::mesh::getNodes(node_tags, coords, parametric, -1, -1, false, false);
+        gmsh.get_nodes(node_tags, coords);
         std::unordered_map<std::size_t, std::size_t> position_of_tag;  // tag -> index in coords
         position_of_tag.reserve(node_tags.size());
         for (std::size_t k = 0; k < node_tags.size(); ++k) position_of_tag[node_tags[k]] = k;
@@ -85,7 +83,7 @@ MeshData read_in_process(const std::string& path) {
         std::vector<int> types;
         std::vector<std::vector<std::size_t>> element_tags;
         std::vector<std::vector<std::size_t>> element_nodes;
-        gmsh::model::mesh::getElements(types, element_tags, element_nodes, 2, -1);
+        gmsh.get_elements(types, element_tags, element_nodes, 2, -1);
         std::vector<std::array<std::size_t, 3>> tagged_triangles;  // Gmsh node tags
         std::unordered_map<std::size_t, std::vector<Index>> element_triangles;
         auto coord = [&](std::size_t tag) {
@@ -125,15 +123,7 @@ MeshData read_in_process(const std::string& path) {
                     }
                 }
             } else {
-                std::string name;
-                int dim = 0;
-                int order = 0;
-                int n_nodes = 0;
-                int n_primary = 0;
-                std::vector<double> local;
-                gmsh::model::mesh::getElementProperties(type, name, dim, order, n_nodes, local,
-                                                        n_primary);
-                fail(path, "surface elements of Gmsh type " + std::to_string(type) + " (" + name +
+                fail(path, "surface elements of Gmsh type " + std::to_string(type) + " (" + gmsh.element_type_name(type) +
                                ") are not supported; expected 3-node triangles or 4-node "
                                "quadrangles (set Mesh.ElementOrder = 1)");
             }
@@ -161,23 +151,18 @@ MeshData read_in_process(const std::string& path) {
             mesh.triangles.push_back({index_of_tag[t[0]], index_of_tag[t[1]], index_of_tag[t[2]]});
 
         // Physical groups.
-        gmsh::vectorpair groups;
-        gmsh::model::getPhysicalGroups(groups, -1);
-        for (const auto& [dim, tag] : groups) {
+        for (const auto& [dim, tag] : gmsh.physical_groups()) {
             if (dim > 2) continue;
-            std::string name;
-            gmsh::model::getPhysicalName(dim, tag, name);
+            std::string name = gmsh.physical_name(dim, tag);
             if (name.empty()) name = "physical_" + std::to_string(tag);
             std::vector<Index> node_set;
             if (dim == 2) {
                 std::vector<Index> element_set;
-                std::vector<int> entities;
-                gmsh::model::getEntitiesForPhysicalGroup(dim, tag, entities);
-                for (const int entity : entities) {
+                for (const int entity : gmsh.entities_for_physical_group(dim, tag)) {
                     std::vector<int> etypes;
                     std::vector<std::vector<std::size_t>> etags;
                     std::vector<std::vector<std::size_t>> enodes;
-                    gmsh::model::mesh::getElements(etypes, etags, enodes, 2, entity);
+                    gmsh.get_elements(etypes, etags, enodes, 2, entity);
                     for (const auto& list : etags)
                         for (const std::size_t e : list) {
                             const auto it = element_triangles.find(e);
@@ -199,10 +184,7 @@ MeshData read_in_process(const std::string& path) {
                     es.erase(std::unique(es.begin(), es.end()), es.end());
                 }
             } else {
-                std::vector<std::size_t> tags;
-                std::vector<double> unused;
-                gmsh::model::mesh::getNodesForPhysicalGroup(dim, tag, tags, unused);
-                for (const std::size_t t : tags) {
+                for (const std::size_t t : gmsh.nodes_for_physical_group(dim, tag)) {
                     const auto it = index_of_tag.find(t);
                     if (it != index_of_tag.end()) node_set.push_back(it->second);
                 }
@@ -213,8 +195,6 @@ MeshData read_in_process(const std::string& path) {
             std::sort(ns.begin(), ns.end());
             ns.erase(std::unique(ns.begin(), ns.end()), ns.end());
         }
-    } catch (const std::string& gmsh_error) {  // Gmsh 4.8 throws its message as a string
-        fail(path, "Gmsh cannot read the mesh (" + gmsh_error + ")");
     } catch (const InputError&) {
         throw;
     } catch (const std::exception& e) {
