@@ -441,8 +441,9 @@ void ExplicitSolver::cycle(Real load_time, Real dt_new_cap, bool relaxation) {
         if (b.inv_mass == 0) ext_work -= body_work;  // what drives a fixed body on
     }
     const bool has_contact = static_cast<bool>(contact_);
-    const std::array<Real, 4> particle_energy = chunked_sum<4>(static_cast<Index>(np), parallel_particles_, sums4_,
-                                                                [&](Index ip, std::array<Real, 4>& acc) {
+    // acc[4]: particles whose new state is not finite (a diverged run), checked in the same pass
+    const std::array<Real, 5> particle_energy = chunked_sum<5>(static_cast<Index>(np), parallel_particles_, sums5_,
+                                                                [&](Index ip, std::array<Real, 5>& acc) {
         const std::size_t p = static_cast<std::size_t>(ip);
         // Energies at t_n: leapfrog kinetic energy, work of loads and reactions over
         // [t_{n-1}, t_n] (trapezoidal), mass-damping dissipation over dt_n.
@@ -470,6 +471,7 @@ void ExplicitSolver::cycle(Real load_time, Real dt_new_cap, bool relaxation) {
         s_.x[p] += dt_new * s_.v[p];
         s_.dtheta[p] = dt_new * s_.omega[p];
         s_.rotation[p] = rotation_matrix(s_.dtheta[p]) * s_.rotation[p];
+        if (!finite_state(p)) acc[4] += 1;
     });
     kinetic += particle_energy[0];
     ext_work += particle_energy[1];
@@ -489,21 +491,17 @@ void ExplicitSolver::cycle(Real load_time, Real dt_new_cap, bool relaxation) {
     dt_half_prev_ = dt_half_;
     dt_half_ = dt_new;
     ++steps_;
-    check_state();
+    if (particle_energy[4] > 0) report_non_finite_state();
 }
 
-void ExplicitSolver::check_state() const {
-    const Index n = static_cast<Index>(s_.size());
-    bool bad = false;  // a logical or: the same for any thread count
-#pragma omp parallel for schedule(static) reduction(|| : bad) if (parallel_particles_)
-    for (Index ip = 0; ip < n; ++ip) {
-        const std::size_t p = static_cast<std::size_t>(ip);
-        bad = bad || !s_.x[p].allFinite() || !s_.omega[p].allFinite() || !s_.f_int[p].allFinite();
-    }
-    if (!bad) return;
+bool ExplicitSolver::finite_state(std::size_t p) const {
+    return s_.x[p].allFinite() && s_.omega[p].allFinite() && s_.f_int[p].allFinite();
+}
+
+void ExplicitSolver::report_non_finite_state() const {
     const std::size_t np = s_.size();
     for (std::size_t p = 0; p < np; ++p) {
-        if (!s_.x[p].allFinite() || !s_.omega[p].allFinite() || !s_.f_int[p].allFinite()) {
+        if (!finite_state(p)) {
             std::ostringstream msg;
             msg << "the solution became NaN or infinite at step " << steps_ << " (t = " << time_
                 << ") at particle " << p + 1 << " (internal force " << s_.f_int[p].transpose() << ")";

@@ -84,7 +84,10 @@ private:
     void apply_external_loads(Real t);
     [[nodiscard]] Real curve_value(Index curve, Real t) const;
     [[nodiscard]] Real curve_integral(Index curve, Real t) const;
-    void check_state() const;
+    /// Whether particle p's position, angular velocity and internal force are finite.
+    [[nodiscard]] bool finite_state(std::size_t p) const;
+    /// Throws RunFailure naming the first particle whose state is not finite.
+    void report_non_finite_state() const;
     /// Penalty contact forces at t_n (before the velocity update).
     void penalty_contact(Real dt_n, Real dt_new, Real c1);
     /// Lagrange-multiplier contact: corrects v^{n+1/2} so that x^{n+1} satisfies every gap.
@@ -122,7 +125,7 @@ private:
     };
     std::vector<PressureGather> pressure_gather_;  ///< per load (empty unless a pressure)
     std::vector<std::array<Real, 2>> sums2_;                ///< scratch: per-chunk partial sums
-    std::vector<std::array<Real, 4>> sums4_;
+    std::vector<std::array<Real, 5>> sums5_;
     // Relaxation residual of the last cycle.
     Real residual2_ = 0, reference2_ = 0;
 };

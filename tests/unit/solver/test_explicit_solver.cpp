@@ -5,10 +5,12 @@
 //   a little above it (the estimate is conservative, not wildly so); 1.1x critical blows up;
 // - a rigid rotation of a curved patch in many small steps up to 180 deg gives zero forces;
 // - the forces are bitwise independent of the number of threads;
-// - at static equilibrium the support reactions balance the applied load.
+// - at static equilibrium the support reactions balance the applied load;
+// - a state that is no longer finite stops the run, naming the step and the particle.
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <random>
 
 #ifdef _OPENMP
@@ -332,4 +334,29 @@ TEST(ExplicitSolver, NormalInitialVelocityFollowsTheSurfaceNormal) {
         EXPECT_GT(v.normalized().dot(inward), 1 - 1e-3) << "particle " << p;
     }
     EXPECT_GT(interior, 50);
+}
+
+TEST(ExplicitSolver, NonFiniteStateStopsTheRunNamingStepAndParticle) {
+    // An infinite force on one node (what an overflow upstream would give) makes its velocity
+    // and position infinite in the first step: the run must stop there with RunFailure naming
+    // that step and particle (the check shares the pass of the energies; a missed check would
+    // run on with inf and NaN until an element test happened to catch it).
+    Model m = plate_model(4);
+    simply_support(m);
+    const Index node = 12;  // the middle node of the 5 x 5 grid: free
+    Load push;
+    push.type = LoadType::Force;
+    push.nodes = {node};
+    push.vector = Vec3(0, 0, std::numeric_limits<Real>::infinity());
+    m.loads.push_back(push);
+    ExplicitSolver s(m);
+    try {
+        s.step(1.0);
+        s.step(1.0);
+        FAIL() << "an infinite position did not stop the run";
+    } catch (const RunFailure& e) {
+        const std::string what = e.what();
+        EXPECT_NE(what.find("NaN or infinite at step 1 "), std::string::npos) << what;
+        EXPECT_NE(what.find("at particle " + std::to_string(node + 1) + " "), std::string::npos) << what;
+    }
 }
