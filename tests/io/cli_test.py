@@ -1,6 +1,7 @@
 """Command-line contract tests (model-format.md): exit codes 0/1/2, one-sentence errors naming
-file, line and key, result files of a run, refusal to overwrite another model's results, and a
-diverging run that stops with exit 1 and leaves its last good state on disk.
+file, line and key, result files of a run, refusal to overwrite another model's results, a
+diverging run that stops with exit 1 and leaves its last good state on disk, and a run ended by
+Ctrl-C or SIGTERM that leaves a restart file and exits 128 + the signal.
 
 usage: cli_test.py FPMSHELL WORKDIR
 """
@@ -255,6 +256,40 @@ check("a damaged restart file exits 2 naming it", code == 2 and "restart.bin" in
 relax = write("relax_restart.yaml", BASE.replace("control: {end_time: 1.0e-4}", "control: {end_time: 1.0, mode: relaxation}"))
 code, out = fpm("run", relax, "-o", os.path.join(WORK, "relax_restart"), "--restart-every", "10")
 check("restart files in a relaxation run exit 2 naming control.mode", code == 2 and "control.mode" in out, out)
+# Ctrl-C and SIGTERM (LS-DYNA's sense switch "sw1"): a dynamic run ends after its current step
+# with exit 128 + signal, a restart file and every result so far, and continues with --resume.
+import signal
+import time
+for sig, expected in ((signal.SIGINT, 130), (signal.SIGTERM, 143)):
+    idir = os.path.join(WORK, "interrupted_%d" % sig)
+    proc = subprocess.Popen([FPM, "run", good, "-o", idir, "--quiet", "--threads", "1", "--set", "control.end_time=1e3",
+                             "--set", "output.every=1e-3"], stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+    hist = os.path.join(idir, "history.csv")
+    deadline = time.time() + 60
+    while time.time() < deadline and proc.poll() is None:  # until a few rows are on disk
+        if os.path.isfile(hist) and open(hist).read().count("\n") >= 3:
+            break
+        time.sleep(0.1)
+    proc.send_signal(sig)
+    try:
+        out, _ = proc.communicate(timeout=60)
+    except subprocess.TimeoutExpired:
+        proc.kill()
+        out, _ = proc.communicate()
+    s = json.load(open(os.path.join(idir, "summary.json"))) if os.path.isfile(os.path.join(idir, "summary.json")) else {}
+    name = signal.Signals(sig).name
+    check("%s ends the run with exit %d, restart.bin and summary.json saying so" % (name, expected),
+          proc.returncode == expected and os.path.isfile(os.path.join(idir, "restart.bin"))
+          and s.get("exit_reason", "").startswith("interrupted by " + name) and "--resume" in out,
+          "exit %s: %s %s" % (proc.returncode, s.get("exit_reason"), out))
+    if proc.returncode == expected:
+        t_stop = s["end_time"]
+        code, out = fpm("run", good, "-o", idir, "--quiet", "--threads", "1", "--resume",
+                        "--set", "control.end_time=%.9g" % (t_stop + 5e-3), "--set", "output.every=1e-3")
+        times = [float(r.split(",")[0]) for r in open(hist).read().strip().splitlines()[1:]]
+        check("%s: --resume continues the interrupted run, rows in order" % name,
+              code == 0 and abs(times[-1] - (t_stop + 5e-3)) < 1e-9 and all(b > a for a, b in zip(times, times[1:])),
+              out)
 # Thread-count determinism (issue 5): the cap and the panel, large enough for every parallel
 # loop (over 2000 particles and elements), give the same bytes on 1, 2 and 4 threads.
 for name, example, extra in [("cap", "spherical_cap_elastic", ["--set", "mesh.divisions=30", "--set", "control.end_time=1e-4"]),

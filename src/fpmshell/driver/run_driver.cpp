@@ -13,6 +13,7 @@
 #include "fpmshell/core/errors.hpp"
 #include "fpmshell/core/rotation.hpp"
 #include "fpmshell/driver/history_sampler.hpp"
+#include "fpmshell/driver/interrupt_guard.hpp"
 #include "fpmshell/io/csv_table.hpp"
 #include "fpmshell/io/field_frame.hpp"
 #include "fpmshell/io/progress.hpp"
@@ -363,6 +364,7 @@ int run_model(const Model& model, const RunOptions& opt) {
     try {
         double last_flush = 0;
         if (!relaxation) {
+            const InterruptGuard interrupts;
             while (solver.time() < end * (1 - 1e-12)) {
                 last_good = solver.state().x;
                 // No sliver step at the end: when less than two steps remain, take two equal
@@ -389,7 +391,9 @@ int run_model(const Model& model, const RunOptions& opt) {
                     last_flush = wall();
                 }
                 progress.update(t, solver.steps(), solver.last_dt(), solver.energy().error());
-                const bool stop_here = opt.stop_at_step > 0 && solver.steps() >= opt.stop_at_step && !at_end;
+                const int interrupted = at_end ? 0 : InterruptGuard::received();
+                const bool stop_here = (opt.stop_at_step > 0 && solver.steps() >= opt.stop_at_step && !at_end) ||
+                                       interrupted != 0;
                 if ((opt.restart_every > 0 && (wall() - last_restart >= opt.restart_every || at_end)) || stop_here) {
                     out.flush();
                     write_restart();
@@ -400,6 +404,15 @@ int run_model(const Model& model, const RunOptions& opt) {
                     log.print("the rigid body '{}' has stopped at t = {:.6g} (control.end_when_body_stops): end of the run",
                               name, t);
                     reason = fmt::format("completed: rigid body {} stopped", name);
+                    break;
+                }
+                if (interrupted != 0) {
+                    progress.finish();
+                    log.print("interrupted by {} after step {} at t = {:.6g}; the state is in {}: continue with "
+                              "--resume", signal_name(interrupted), solver.steps(), t, restart_path.string());
+                    reason = fmt::format("interrupted by {} at step {}: resume with --resume", signal_name(interrupted),
+                                         solver.steps());
+                    code = 128 + interrupted;  // the shell's convention for a process ended by a signal
                     break;
                 }
                 if (stop_here) {

@@ -27,7 +27,9 @@ struct RunOptions {
 };
 
 /// Runs the model; returns the exit code (0 success, 1 the run failed: the last good state,
-/// the histories and summary.json are written all the same). Throws InputError when the
+/// the histories and summary.json are written all the same; 128 + the signal number when a
+/// dynamic run was interrupted by SIGINT or SIGTERM, after writing a restart file and every
+/// result so far: driver/interrupt_guard.hpp). Throws InputError when the
 /// output folder cannot be used or its restart file does not fit the model (exit 2).
 int run_model(const Model& model, const RunOptions& options);
 
