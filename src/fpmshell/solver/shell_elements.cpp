@@ -71,6 +71,8 @@ ShellElements::ShellElements(const Model& model)
     node_inertia_.resize(ne);
     bend_ratio_.assign(ne, 1.0);
     bend_lc_.assign(ne, 0.0);
+    // Every element on its own (the bending step's eigenproblem is most of the set-up's time).
+#pragma omp parallel for schedule(dynamic, 256) if (static_cast<Index>(ne) >= k_parallel_min_elements)
     for (std::size_t e = 0; e < ne; ++e) {
         const auto& t = tri_[e];
         const Vec3& p0 = model.nodes[static_cast<std::size_t>(t[0])];
