@@ -352,11 +352,14 @@ void ExplicitSolver::cycle(Real load_time, Real dt_new_cap, bool relaxation) {
         const Vec3 force = s_.f_ext[p] - s_.f_int[p] + s_.f_contact[p];
         const Real m = s_.mass[p];
         const std::array<bool, 6>& fixed = fixed_[p];
+        auto without_fixed = [&fixed](Vec3 u) {  // the fixed translation components set to 0
+            for (Eigen::Index d = 0; d < 3; ++d)
+                if (fixed[static_cast<std::size_t>(d)]) u[d] = 0;
+            return u;
+        };
         s_.v_prev[p] = s_.v[p];
-        Vec3 v_new = c1 * (c2 * s_.v[p] + (dt_n / m) * force);  // v^{n+1/2}
-        const Vec3 v_free = v_new;
-        for (Eigen::Index d = 0; d < 3; ++d)
-            if (fixed[static_cast<std::size_t>(d)]) v_new[d] = 0;
+        const Vec3 v_free = c1 * (c2 * s_.v[p] + (dt_n / m) * force);  // v^{n+1/2}
+        const Vec3 v_new = without_fixed(v_free);
         s_.v[p] = v_new;  // prescribed values are written below
         s_.reaction[p] = (m / (c1 * dt_n)) * (v_new - v_free);
 
@@ -384,10 +387,7 @@ void ExplicitSolver::cycle(Real load_time, Real dt_new_cap, bool relaxation) {
         if (!relaxation) return;
 
         // Out-of-balance force and moment on the free directions, against the applied ones.
-        Vec3 force_free = force;
-        for (Eigen::Index d = 0; d < 3; ++d)
-            if (fixed[static_cast<std::size_t>(d)]) force_free[d] = 0;
-        if (prescribed_translation_[p]) force_free.setZero();
+        const Vec3 force_free = prescribed_translation_[p] ? Vec3::Zero() : without_fixed(force);
         acc[0] += force_free.squaredNorm();
         acc[1] += s_.f_ext[p].squaredNorm() + (force - force_free).squaredNorm();
         const Vec3 moment_free = prescribed_rotation_[p] ? Vec3::Zero() : remove_components(moment_tangent, dirs, nd);
@@ -492,10 +492,6 @@ void ExplicitSolver::cycle(Real load_time, Real dt_new_cap, bool relaxation) {
     dt_half_ = dt_new;
     ++steps_;
     if (particle_energy[4] > 0) report_non_finite_state();
-}
-
-bool ExplicitSolver::finite_state(std::size_t p) const {
-    return s_.x[p].allFinite() && s_.omega[p].allFinite() && s_.f_int[p].allFinite();
 }
 
 void ExplicitSolver::report_non_finite_state() const {

@@ -84,8 +84,11 @@ private:
     void apply_external_loads(Real t);
     [[nodiscard]] Real curve_value(Index curve, Real t) const;
     [[nodiscard]] Real curve_integral(Index curve, Real t) const;
-    /// Whether particle p's position, angular velocity and internal force are finite.
-    [[nodiscard]] bool finite_state(std::size_t p) const;
+    /// Whether particle p's position, angular velocity and internal force are finite (defined
+    /// here so that the per-step particle pass inlines it).
+    [[nodiscard]] bool finite_state(std::size_t p) const {
+        return s_.x[p].allFinite() && s_.omega[p].allFinite() && s_.f_int[p].allFinite();
+    }
     /// Throws RunFailure naming the first particle whose state is not finite.
     void report_non_finite_state() const;
     /// Penalty contact forces at t_n (before the velocity update).
