@@ -18,7 +18,7 @@ namespace fpmshell {
 namespace {
 
 constexpr Index k_parallel_min_elements = 2000;
-constexpr int k_slots = 6;  // per element: 3 corners + the 3 nodes across the sides
+constexpr std::size_t k_slot_components = 6;  // force x y z, moment x y z
 // Smoothed membrane: neighbours whose normals differ by more than this (a fold, such as a tube
 // corner) are not averaged with (cos 20 deg, like the kink limit of §1.3).
 constexpr Real k_smooth_cosine = 0.9397;
@@ -86,8 +86,6 @@ ShellElements::ShellElements(const Model& model)
         node_inertia_[e] = share.inertia;
         refresh_bending_ratio(static_cast<Index>(e), model.nodes, current_length(static_cast<Index>(e), model.nodes));
     }
-    slot_force_.assign(k_slots * ne, Vec3::Zero());
-    slot_moment_.assign(k_slots * ne, Vec3::Zero());
     // Side neighbours: side i of element e is opposite its corner i; an edge shared by exactly
     // two elements joins them.
     smoothed_membrane_ = model.control.membrane == MembraneKernel::Smoothed;
@@ -156,6 +154,13 @@ ShellElements::ShellElements(const Model& model)
         block_elements_.insert(block_elements_.end(), members.begin(), members.begin() + static_cast<std::ptrdiff_t>(n_blocked));
         scalar_elements_.insert(scalar_elements_.end(), members.begin() + static_cast<std::ptrdiff_t>(n_blocked), members.end());
     }
+    // The slots: the blocks' (3 per element), then those of the elements computed alone.
+    slots_per_alone_ = smoothed_membrane_ ? 6 : 3;
+    alone_position_.assign(ne, -1);
+    for (std::size_t i = 0; i < scalar_elements_.size(); ++i) alone_position_[static_cast<std::size_t>(scalar_elements_[i])] = static_cast<Index>(i);
+    const std::size_t n_slots = 3 * block_elements_.size() + slots_per_alone_ * scalar_elements_.size();
+    const std::size_t n_groups = (n_slots + static_cast<std::size_t>(k_lanes) - 1) / static_cast<std::size_t>(k_lanes);
+    slot_loads_.assign(n_groups * k_slot_components * static_cast<std::size_t>(k_lanes), 0.0);
     // Material points. A plastic section's points hold their whole history; an elastic
     // section's points hold a stress only, a third of the memory traffic. The elements of the
     // SIMD blocks keep theirs block by block, field by field, point by point, one lane per
@@ -191,17 +196,26 @@ ShellElements::ShellElements(const Model& model)
         const Index n = side_neighbour_[3 * e + static_cast<std::size_t>(k - 3)];
         return n < 0 ? -1 : tri_[static_cast<std::size_t>(n)][static_cast<std::size_t>(side_neighbour_side_[3 * e + static_cast<std::size_t>(k - 3)])];
     };
+    const int used_slots = static_cast<int>(slots_per_alone_);  // the 3 across the sides: smoothed only
     for (std::size_t e = 0; e < ne; ++e)
-        for (int k = 0; k < k_slots; ++k)
+        for (int k = 0; k < used_slots; ++k)
             if (const Index p = slot_particle(e, k); p >= 0) ++csr_begin_[static_cast<std::size_t>(p) + 1];
     for (std::size_t p = 0; p < np; ++p) csr_begin_[p + 1] += csr_begin_[p];
     csr_slot_.assign(static_cast<std::size_t>(csr_begin_[np]), 0);
     std::vector<Index> fill(csr_begin_.begin(), csr_begin_.end() - 1);
     for (std::size_t e = 0; e < ne; ++e)
-        for (int k = 0; k < k_slots; ++k)
+        for (int k = 0; k < used_slots; ++k)
             if (const Index p = slot_particle(e, k); p >= 0)
-                csr_slot_[static_cast<std::size_t>(fill[static_cast<std::size_t>(p)]++)] =
-                    static_cast<Index>(k_slots * e + static_cast<std::size_t>(k));
+                csr_slot_[static_cast<std::size_t>(fill[static_cast<std::size_t>(p)]++)] = slot_offset(e, static_cast<std::size_t>(k));
+}
+
+std::size_t ShellElements::slot_offset(std::size_t e, std::size_t k) const {
+    constexpr auto w = static_cast<std::size_t>(k_lanes);
+    const Index at = block_lane_[e];
+    const std::size_t slot = at >= 0 ? (3 * (static_cast<std::size_t>(at) / w) + k) * w + static_cast<std::size_t>(at) % w
+                                     : 3 * block_elements_.size() +
+                                           slots_per_alone_ * static_cast<std::size_t>(alone_position_[e]) + k;
+    return slot / w * (k_slot_components * w) + slot % w;
 }
 
 Real ShellElements::bending_ratio(Index e, const std::vector<Vec3>& x) const {
@@ -287,10 +301,11 @@ void ShellElements::compute_element(Index e, ParticleState& s, Real viscous_rate
     const Real lc = current_length(e, s.x);  // once per element and step
     refresh_bending_ratio(e, s.x, lc);
     elem_dt_[ue] = element_dt(e, lc);
-    // the 3 slots across the sides are used (and gathered) only with the smoothed membrane
-    const int used_slots = smoothed_membrane_ ? k_slots : 3;
-    for (int k = 0; k < used_slots; ++k)
-        slot_force_[k_slots * ue + static_cast<std::size_t>(k)] = slot_moment_[k_slots * ue + static_cast<std::size_t>(k)] = Vec3::Zero();
+    // the 3 slots across the sides exist (and are gathered) only with the smoothed membrane
+    constexpr auto w = static_cast<std::size_t>(k_lanes);
+    const std::size_t used_slots = block_lane_[ue] >= 0 ? 3 : slots_per_alone_;
+    for (std::size_t k = 0; k < used_slots; ++k)
+        for (std::size_t c = 0, at = slot_offset(ue, k); c < k_slot_components; ++c) slot_loads_[at + c * w] = 0;
     // A tilt over 90 deg or an area change by a factor 2 within one step is no deformation a
     // stable step can produce: the run has diverged (theory.md §2.8).
     if (rt.degenerate || rt.normal_cosine < 0 || !(rt.area_ratio > 0.5 && rt.area_ratio < 2.0)) {
@@ -350,8 +365,11 @@ void ShellElements::compute_element(Index e, ParticleState& s, Real viscous_rate
         for (std::size_t p = 0; p < pts.size(); ++p) set_point_state(ue, p, pts[p]);
     if (thickness_update_) thickness_[ue] *= 1.0 + loads.thickness_strain;  // §3.4
     for (std::size_t i = 0; i < 3; ++i) {
-        slot_force_[k_slots * ue + i] = loads.force[i];
-        slot_moment_[k_slots * ue + i] = loads.moment[i];
+        const std::size_t at = slot_offset(ue, i);
+        for (std::size_t c = 0; c < 3; ++c) {
+            slot_loads_[at + c * w] = loads.force[i](static_cast<Eigen::Index>(c));
+            slot_loads_[at + (3 + c) * w] = loads.moment[i](static_cast<Eigen::Index>(c));
+        }
     }
     if (smoothed_membrane_) {
         // The neighbours' share of the membrane forces: A_e w_n B_n^T T^T N, in the
@@ -368,10 +386,11 @@ void ShellElements::compute_element(Index e, ParticleState& s, Real viscous_rate
             for (int k = 0; k < 3; ++k) {
                 const Vec3 f = to_global * Vec3(f_local(2 * k), f_local(2 * k + 1), 0.0);
                 const Index p = tri_[n][static_cast<std::size_t>(k)];
-                std::size_t slot = k_slots * ue + 3 + static_cast<std::size_t>(i);  // the node across side i
+                std::size_t slot = 3 + static_cast<std::size_t>(i);  // the node across side i
                 for (std::size_t j = 0; j < 3; ++j)
-                    if (tri_[ue][j] == p) slot = k_slots * ue + j;
-                slot_force_[slot] += f;
+                    if (tri_[ue][j] == p) slot = j;
+                const std::size_t at = slot_offset(ue, slot);
+                for (std::size_t c = 0; c < 3; ++c) slot_loads_[at + c * w] += f(static_cast<Eigen::Index>(c));
             }
         }
     }
@@ -506,6 +525,15 @@ void ShellElements::compute_block(Index b, ParticleState& s, Real viscous_rate, 
         for (std::size_t r = 0; r < 3; ++r) stdx::where(loads.valid, field(p, k_stress + r)) = stress[3 * p + r];
         if (yield.new_strain_rate) stdx::where(loads.valid, field(p, k_strain_rate)) = new_strain_rate[p];
     }
+    // the corner loads, 6 whole packs per corner (an invalid lane's are rewritten below by the
+    // general code)
+    for (std::size_t i = 0; i < 3; ++i) {
+        Real* at = slot_loads_.data() + (3 * static_cast<std::size_t>(b) + i) * k_slot_components * static_cast<std::size_t>(k_lanes);
+        const std::array<const RealPack*, k_slot_components> component{
+            &loads.force[i].x, &loads.force[i].y, &loads.force[i].z, &loads.moment[i].x, &loads.moment[i].y, &loads.moment[i].z};
+        for (std::size_t c = 0; c < k_slot_components; ++c)
+            component[c]->copy_to(at + c * static_cast<std::size_t>(k_lanes), stdx::element_aligned);
+    }
     for (int l = 0; l < k_lanes; ++l) {
         const std::size_t ue = element(l);
         if (!lane(loads.valid, l)) {  // outside the block kernel's bounds: the general code
@@ -516,10 +544,6 @@ void ShellElements::compute_block(Index b, ParticleState& s, Real viscous_rate, 
         refresh_bending_ratio(static_cast<Index>(ue), s.x, lc);
         elem_dt_[ue] = element_dt(static_cast<Index>(ue), lc);
         elem_failed_[ue] = 0;
-        for (std::size_t i = 0; i < 3; ++i) {
-            slot_force_[k_slots * ue + i] = Vec3(lane(loads.force[i].x, l), lane(loads.force[i].y, l), lane(loads.force[i].z, l));
-            slot_moment_[k_slots * ue + i] = Vec3(lane(loads.moment[i].x, l), lane(loads.moment[i].y, l), lane(loads.moment[i].z, l));
-        }
         if (thickness_update_) thickness_[ue] *= 1.0 + lane(loads.thickness_strain, l);  // §3.4
         elem_work_[ue] = lane(loads.strain_work, l);
         elem_damp_work_[ue] = lane(loads.damping_work, l);
@@ -567,11 +591,12 @@ ShellElements::StepTotals ShellElements::compute(ParticleState& s, Real viscous_
 #pragma omp parallel for schedule(static) if (parallel)
     for (Index p = 0; p < np; ++p) {
         const std::size_t up = static_cast<std::size_t>(p);
+        constexpr auto w = static_cast<std::size_t>(k_lanes);
         Vec3 f = Vec3::Zero(), m = Vec3::Zero();
         for (Index k = csr_begin_[up]; k < csr_begin_[up + 1]; ++k) {
-            const std::size_t slot = static_cast<std::size_t>(csr_slot_[static_cast<std::size_t>(k)]);
-            f += slot_force_[slot];
-            m += slot_moment_[slot];
+            const Real* slot = slot_loads_.data() + csr_slot_[static_cast<std::size_t>(k)];
+            f += Vec3(slot[0], slot[w], slot[2 * w]);
+            m += Vec3(slot[3 * w], slot[4 * w], slot[5 * w]);
         }
         s.f_int[up] = f;
         s.m_int[up] = m;

@@ -114,9 +114,20 @@ private:
     std::vector<std::size_t> stress_offset_;   ///< first stress of every element (elastic, computed alone)
     std::vector<Voigt3> elastic_stress_;       ///< stresses of the points of those elements
     std::size_t n_elastic_points_ = 0;         ///< points of all elastic elements
-    // 6 slots per element: its 3 corners, then the node across each side (smoothed membrane)
-    std::vector<Vec3> slot_force_, slot_moment_;
-    std::vector<Index> csr_begin_, csr_slot_;     ///< particle -> slots
+    // Element-corner slots: the force and moment on each corner of every element (and, with
+    // the smoothed membrane, on the node across each side), kept like the block state: groups
+    // of k_lanes slots, component by component (fx fy fz mx my mz, k_lanes values each), so that
+    // a block stores its corner loads as 6 whole packs per corner. Slot sigma lies in group
+    // sigma / k_lanes at lane sigma % k_lanes; corner i of block b is slot (3 b + i) k_lanes +
+    // lane, and the elements computed alone follow the blocks, slots_per_alone_ slots each.
+    // Only the slots that are used exist: 3 per element without the smoothed membrane.
+    std::vector<Real, Eigen::aligned_allocator<Real>> slot_loads_;
+    std::vector<Index> alone_position_;  ///< per element: its index in scalar_elements_, -1: in a block
+    std::size_t slots_per_alone_ = 3;
+    /// Offset in slot_loads_ of component 0 of slot k of element e (component c: + c k_lanes).
+    [[nodiscard]] std::size_t slot_offset(std::size_t e, std::size_t k) const;
+    std::vector<Index> csr_begin_;  ///< particle -> its slots (csr_slot_[csr_begin_[p]...])
+    std::vector<std::size_t> csr_slot_;  ///< slot_offset of each slot, by particle, in element order
     // SIMD blocks (elements/elastic_triangle_block.hpp)
     std::vector<ElasticSectionConstants> elastic_constants_;  ///< per section (zero if not elastic)
     std::vector<Index> block_elements_;   ///< k_lanes elements of one section per block
