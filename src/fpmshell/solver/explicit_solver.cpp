@@ -97,6 +97,11 @@ ExplicitSolver::ExplicitSolver(const Model& model) : model_(model), elements_(mo
             }
         }
     }
+    constrained_.assign(np, 0);
+    for (std::size_t p = 0; p < np; ++p)
+        constrained_[p] = prescribed_translation_[p] || prescribed_rotation_[p] ||
+                          std::any_of(fixed_[p].begin(), fixed_[p].end(), [](bool f) { return f; });
+    for (const Load& load : model.loads) has_moment_loads_ = has_moment_loads_ || load.type == LoadType::Moment;
     // Initial conditions: v^0, w^0 (the first cycle uses v^{-1/2} := v^0).
     for (const InitialVelocity& ic : model.initial_conditions)
         for (Index p : ic.nodes) {
@@ -251,7 +256,8 @@ void ExplicitSolver::update_normals() {
 void ExplicitSolver::apply_external_loads(Real t) {
     // Uses element_cross_ of the current positions: update_normals() runs first in every cycle.
     parallel_for_each(static_cast<Index>(s_.size()), parallel_particles_, [&](Index ip) {
-        s_.f_ext[static_cast<std::size_t>(ip)] = s_.m_ext[static_cast<std::size_t>(ip)] = Vec3::Zero();
+        s_.f_ext[static_cast<std::size_t>(ip)] = Vec3::Zero();
+        if (has_moment_loads_) s_.m_ext[static_cast<std::size_t>(ip)] = Vec3::Zero();
     });
     for (std::size_t l = 0; l < model_.loads.size(); ++l) {
         const Load& load = model_.loads[l];
@@ -333,10 +339,8 @@ void ExplicitSolver::cycle(Real load_time, Real dt_new_cap, bool relaxation) {
         b.force.setZero();
     }
     if (contact_) {
-        for (std::size_t p = 0; p < np; ++p) {
-            s_.f_contact_prev[p] = s_.f_contact[p];
-            s_.f_contact[p].setZero();
-        }
+        std::swap(s_.f_contact, s_.f_contact_prev);
+        for (std::size_t p = 0; p < np; ++p) s_.f_contact[p].setZero();
         if (contact_->has_penalty()) penalty_contact(dt_n, dt_new, c1);
     }
 
@@ -345,29 +349,35 @@ void ExplicitSolver::cycle(Real load_time, Real dt_new_cap, bool relaxation) {
     const Real t_next = load_time + (relaxation ? 0.0 : dt_new);
     Real kinetic = 0, damping_work = 0, ext_work = 0;
     // Every particle on its own; the residual sums in fixed chunks (core/chunked_loop.hpp), only
-    // in relaxation (its convergence test is their only reader).
+    // in relaxation (its convergence test is their only reader). v^{n-1/2} and w^{n-1/2} become
+    // the previous half-step values by exchanging the arrays, not by a copy (every particle's
+    // new value is written below).
+    std::swap(s_.v, s_.v_prev);
+    std::swap(s_.omega, s_.omega_prev);
+    const bool has_contact = static_cast<bool>(contact_);
     const std::array<Real, 2> residual = chunked_sum<2>(static_cast<Index>(np), parallel_particles_, sums2_,
                                                          [&](Index ip, std::array<Real, 2>& acc) {
         const std::size_t p = static_cast<std::size_t>(ip);
-        const Vec3 force = s_.f_ext[p] - s_.f_int[p] + s_.f_contact[p];
+        Vec3 force = s_.f_ext[p] - s_.f_int[p];
+        if (has_contact) force += s_.f_contact[p];
         const Real m = s_.mass[p];
+        const bool constrained = constrained_[p];
         const std::array<bool, 6>& fixed = fixed_[p];
         auto without_fixed = [&fixed](Vec3 u) {  // the fixed translation components set to 0
             for (Eigen::Index d = 0; d < 3; ++d)
                 if (fixed[static_cast<std::size_t>(d)]) u[d] = 0;
             return u;
         };
-        s_.v_prev[p] = s_.v[p];
-        const Vec3 v_free = c1 * (c2 * s_.v[p] + (dt_n / m) * force);  // v^{n+1/2}
+        const Vec3 v_free = c1 * (c2 * s_.v_prev[p] + (dt_n / m) * force);  // v^{n+1/2}
         const Vec3 v_new = without_fixed(v_free);
         s_.v[p] = v_new;  // prescribed values are written below
-        s_.reaction[p] = (m / (c1 * dt_n)) * (v_new - v_free);
+        if (constrained) s_.reaction[p] = (m / (c1 * dt_n)) * (v_new - v_free);
 
         // Rotations in the tangent plane: w^{n+1/2} = c1 [c2 P w^{n-1/2} + dt_n P M / J].
         // With at most one free rotation axis (symmetry planes, §6.7) the rotation is about that
         // axis alone; the tangent-plane projection is skipped because the one-sided normal of a
         // particle on a symmetry plane is tilted out of the plane and would also block it.
-        const Vec3 moment = s_.m_ext[p] - s_.m_int[p];
+        const Vec3 moment = has_moment_loads_ ? Vec3(s_.m_ext[p] - s_.m_int[p]) : Vec3(-s_.m_int[p]);
         std::array<Vec3, 4> dirs;
         int nd = 0;
         const int n_fixed_rot = fixed[3] + fixed[4] + fixed[5];
@@ -377,13 +387,14 @@ void ExplicitSolver::cycle(Real load_time, Real dt_new_cap, bool relaxation) {
         for (std::size_t d = 0; d < 3; ++d)
             if (fixed[3 + d]) dirs[static_cast<std::size_t>(nd++)] = Vec3::Unit(static_cast<Eigen::Index>(d));
         const Vec3 moment_tangent = project ? Vec3(moment - moment.dot(normal) * normal) : moment;
-        const Vec3 omega_tangent = project ? Vec3(s_.omega[p] - s_.omega[p].dot(normal) * normal) : s_.omega[p];
-        s_.omega_prev[p] = s_.omega[p];
+        const Vec3& omega = s_.omega_prev[p];  // w^{n-1/2}
+        const Vec3 omega_tangent = project ? Vec3(omega - omega.dot(normal) * normal) : omega;
         const Real j = s_.inertia[p];
         const Vec3 w_free = c1 * (c2 * omega_tangent + (dt_n / j) * moment_tangent);
         const Vec3 w_new = remove_components(w_free, dirs, nd);
         s_.omega[p] = w_new;
-        s_.reaction_moment[p] = (j / (c1 * dt_n)) * (w_new - w_free);
+        // a free particle's w_new - w_free is rounding only (w_free is tangent already)
+        if (constrained) s_.reaction_moment[p] = (j / (c1 * dt_n)) * (w_new - w_free);
         if (!relaxation) return;
 
         // Out-of-balance force and moment on the free directions, against the applied ones.
@@ -440,7 +451,6 @@ void ExplicitSolver::cycle(Real load_time, Real dt_new_cap, bool relaxation) {
         kinetic += 0.5 * b.mass * b.v_prev.dot(b.v);
         if (b.inv_mass == 0) ext_work -= body_work;  // what drives a fixed body on
     }
-    const bool has_contact = static_cast<bool>(contact_);
     // acc[4]: particles whose new state is not finite (a diverged run), checked in the same pass
     const std::array<Real, 5> particle_energy = chunked_sum<5>(static_cast<Index>(np), parallel_particles_, sums5_,
                                                                 [&](Index ip, std::array<Real, 5>& acc) {
@@ -449,10 +459,15 @@ void ExplicitSolver::cycle(Real load_time, Real dt_new_cap, bool relaxation) {
         // [t_{n-1}, t_n] (trapezoidal), mass-damping dissipation over dt_n.
         acc[0] += 0.5 * s_.mass[p] * s_.v_prev[p].dot(s_.v[p]) +
                    0.5 * s_.inertia[p] * s_.omega_prev[p].dot(s_.omega[p]);
-        acc[1] += 0.5 * (s_.f_ext_prev[p] + s_.f_ext[p] + s_.reaction_prev[p] + s_.reaction[p])
-                              .dot(s_.x[p] - s_.x_prev[p]) +
-                    0.5 * (s_.m_ext_prev[p] + s_.m_ext[p] + s_.reaction_moment_prev[p] + s_.reaction_moment[p])
-                              .dot(s_.dtheta[p]);
+        // (a free particle has no reactions; without moment loads m_ext stays zero)
+        const bool constrained = constrained_[p];
+        Vec3 force_sum = s_.f_ext_prev[p] + s_.f_ext[p];
+        Vec3 moment_sum = has_moment_loads_ ? Vec3(s_.m_ext_prev[p] + s_.m_ext[p]) : Vec3::Zero();
+        if (constrained) {
+            force_sum = force_sum + s_.reaction_prev[p] + s_.reaction[p];
+            moment_sum = moment_sum + s_.reaction_moment_prev[p] + s_.reaction_moment[p];
+        }
+        acc[1] += 0.5 * force_sum.dot(s_.x[p] - s_.x_prev[p]) + 0.5 * moment_sum.dot(s_.dtheta[p]);
         if (has_contact) acc[2] += 0.5 * (s_.f_contact_prev[p] + s_.f_contact[p]).dot(s_.x[p] - s_.x_prev[p]);
         if (a_m > 0) {
             const Vec3 vbar = 0.5 * (s_.v_prev[p] + s_.v[p]);
@@ -460,19 +475,22 @@ void ExplicitSolver::cycle(Real load_time, Real dt_new_cap, bool relaxation) {
             acc[3] += a_m * dt_n * (s_.mass[p] * vbar.squaredNorm() + s_.inertia[p] * wbar.squaredNorm());
         }
         s_.f_ext_prev[p] = s_.f_ext[p];
-        s_.m_ext_prev[p] = s_.m_ext[p];
-        s_.reaction_prev[p] = s_.reaction[p];
-        s_.reaction_moment_prev[p] = s_.reaction_moment[p];
+        if (has_moment_loads_) s_.m_ext_prev[p] = s_.m_ext[p];
+        if (constrained) {
+            s_.reaction_prev[p] = s_.reaction[p];
+            s_.reaction_moment_prev[p] = s_.reaction_moment[p];
+        }
 
-        // 5 x^{n+1} = x^n + dt v^{n+1/2}; rotation increment for the next path element. In the
-        // same pass as the energies (which read x^n, x^{n-1} and dtheta first): one sweep over
-        // the particle arrays instead of two.
-        s_.x_prev[p] = s_.x[p];
-        s_.x[p] += dt_new * s_.v[p];
+        // 5 x^{n+1} = x^n + dt v^{n+1/2}, written over x^{n-1} (the arrays are exchanged after
+        // the pass); rotation increment for the next path element. In the same pass as the
+        // energies (which read x^n, x^{n-1} and dtheta first): one sweep over the particle
+        // arrays instead of two.
+        s_.x_prev[p] = s_.x[p] + dt_new * s_.v[p];
         s_.dtheta[p] = dt_new * s_.omega[p];
         s_.rotation[p] = rotation_matrix(s_.dtheta[p]) * s_.rotation[p];
-        if (!finite_state(p)) acc[4] += 1;
+        if (!(s_.x_prev[p].allFinite() && s_.omega[p].allFinite() && s_.f_int[p].allFinite())) acc[4] += 1;  // finite_state
     });
+    std::swap(s_.x, s_.x_prev);
     kinetic += particle_energy[0];
     ext_work += particle_energy[1];
     contact_work += particle_energy[2];
@@ -614,6 +632,10 @@ void ExplicitSolver::load(RestartReader& in) {
     // The model's initial positions must be those the run started from, bit for bit.
     if (s_.x0 != model_.nodes) in.fail("restart file of another model: its particles are not those of this mesh");
     if (bodies_.size() != n_bodies) in.fail("restart file of a model with other rigid bodies");
+    // a free particle's reactions are zero (earlier versions stored rounding noise there)
+    for (std::size_t p = 0; p < s_.size(); ++p)
+        if (!constrained_[p])
+            s_.reaction[p] = s_.reaction_prev[p] = s_.reaction_moment[p] = s_.reaction_moment_prev[p] = Vec3::Zero();
     in.section("elements");
     elements_.load(in);
     in.section("contact");

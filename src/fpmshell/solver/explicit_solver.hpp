@@ -105,6 +105,10 @@ private:
     EnergyBalance energy_;
     std::vector<std::array<bool, 6>> fixed_;  ///< per particle, ux uy uz rx ry rz
     std::vector<std::uint8_t> prescribed_translation_, prescribed_rotation_;
+    /// per particle: a fixed or prescribed component (the only ones with reactions; a free
+    /// particle's stay zero and are neither written nor read by the time loop)
+    std::vector<std::uint8_t> constrained_;
+    bool has_moment_loads_ = false;  ///< m_ext can be nonzero (else neither written nor read)
     std::vector<Prescribed> prescribed_;
     std::vector<Vec3> prescribed_rotation_applied_;  ///< relaxation: rotation imposed so far
     std::vector<RigidBodyState> bodies_;
