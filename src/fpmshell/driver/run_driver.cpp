@@ -62,12 +62,12 @@ FieldFrame make_frame(const Model& model, const ExplicitSolver& solver, Real tim
     FieldArray nf{"membrane_force", 3, {}}, bm{"bending_moment", 3, {}}, th{"thickness", 1, {}};
     FieldArray ep_top{"plastic_strain_top", 1, {}}, ep_mid{"plastic_strain_middle", 1, {}},
         ep_bot{"plastic_strain_bottom", 1, {}};
-    const auto& n_el = solver.elements().membrane_force();
-    const auto& m_el = solver.elements().bending_moment();
     for (std::size_t e = 0; e < ne; ++e) {
+        const Voigt3 n = solver.elements().membrane_force(static_cast<Index>(e));
+        const Voigt3 m = solver.elements().bending_moment(static_cast<Index>(e));
         for (int c = 0; c < 3; ++c) {
-            nf.values.push_back(n_el[e][c]);
-            bm.values.push_back(m_el[e][c]);
+            nf.values.push_back(n[c]);
+            bm.values.push_back(m[c]);
         }
         th.values.push_back(solver.elements().thickness(static_cast<Index>(e)));
         const Index ie = static_cast<Index>(e);

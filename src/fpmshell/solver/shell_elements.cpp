@@ -119,11 +119,6 @@ ShellElements::ShellElements(const Model& model)
         reversed_.resize(ne);
         cst_strain_.assign(ne, Voigt3::Zero());
     }
-    elem_work_.assign(ne, 0.0);
-    elem_damp_work_.assign(ne, 0.0);
-    elem_plastic_work_.assign(ne, 0.0);
-    elem_dt_.assign(ne, 0.0);
-    elem_failed_.assign(ne, 0);
     membrane_force_.assign(ne, Voigt3::Zero());
     bending_moment_.assign(ne, Voigt3::Zero());
     // SIMD blocks: the elements of DKT sections, linear elastic or J2 (whose elastic steps the
@@ -161,6 +156,9 @@ ShellElements::ShellElements(const Model& model)
     const std::size_t n_slots = 3 * block_elements_.size() + slots_per_alone_ * scalar_elements_.size();
     const std::size_t n_groups = (n_slots + static_cast<std::size_t>(k_lanes) - 1) / static_cast<std::size_t>(k_lanes);
     slot_loads_.assign(n_groups * k_slot_components * static_cast<std::size_t>(k_lanes), 0.0);
+    block_totals_.assign(block_elements_.size() / static_cast<std::size_t>(k_lanes), ElementTotals{});
+    alone_totals_.assign(scalar_elements_.size(), ElementTotals{});
+    block_resultants_.assign(6 * block_totals_.size(), RealPack(0.0));
     // Material points. A plastic section's points hold their whole history; an elastic
     // section's points hold a stress only, a third of the memory traffic. The elements of the
     // SIMD blocks keep theirs block by block, field by field, point by point, one lane per
@@ -295,12 +293,14 @@ ReversedTriangle ShellElements::reverse_element(std::size_t ue, const ParticleSt
     return reverse_motion(base, cur, dth);
 }
 
-void ShellElements::compute_element(Index e, ParticleState& s, Real viscous_rate, Real dt) {
+ShellElements::ElementTotals ShellElements::compute_element(Index e, ParticleState& s, Real viscous_rate, Real dt) {
     const std::size_t ue = static_cast<std::size_t>(e);
     const ReversedTriangle rt = smoothed_membrane_ ? reversed_[ue] : reverse_element(ue, s);
     const Real lc = current_length(e, s.x);  // once per element and step
     refresh_bending_ratio(e, s.x, lc);
-    elem_dt_[ue] = element_dt(e, lc);
+    ElementTotals totals;
+    totals.dt = element_dt(e, lc);
+    totals.dt_element = e;
     // the 3 slots across the sides exist (and are gathered) only with the smoothed membrane
     constexpr auto w = static_cast<std::size_t>(k_lanes);
     const std::size_t used_slots = block_lane_[ue] >= 0 ? 3 : slots_per_alone_;
@@ -309,11 +309,9 @@ void ShellElements::compute_element(Index e, ParticleState& s, Real viscous_rate
     // A tilt over 90 deg or an area change by a factor 2 within one step is no deformation a
     // stable step can produce: the run has diverged (theory.md §2.8).
     if (rt.degenerate || rt.normal_cosine < 0 || !(rt.area_ratio > 0.5 && rt.area_ratio < 2.0)) {
-        elem_failed_[ue] = 1;
-        elem_work_[ue] = elem_damp_work_[ue] = elem_plastic_work_[ue] = 0;
-        return;
+        totals.failed = e;
+        return totals;
     }
-    elem_failed_[ue] = 0;
     // Smoothed membrane strain (membrane_smoothing.hpp): the mean of the three side strains,
     // a side strain being the area-weighted mean of the CST strains of the two elements
     // there (the neighbour's unfolded into this frame), or this element's own on a side
@@ -394,11 +392,48 @@ void ShellElements::compute_element(Index e, ParticleState& s, Real viscous_rate
             }
         }
     }
-    elem_work_[ue] = loads.strain_work;
-    elem_damp_work_[ue] = loads.damping_work;
-    elem_plastic_work_[ue] = loads.plastic_work;
-    membrane_force_[ue] = loads.membrane_force;
-    bending_moment_[ue] = loads.bending_moment;
+    totals.strain_work = loads.strain_work;
+    totals.damping_work = loads.damping_work;
+    totals.plastic_work = loads.plastic_work;
+    set_resultants(ue, loads.membrane_force, loads.bending_moment);
+    return totals;
+}
+
+void ShellElements::ElementTotals::add(const ElementTotals& o) {
+    strain_work += o.strain_work;
+    damping_work += o.damping_work;
+    plastic_work += o.plastic_work;
+    // the lowest-numbered element among equals, as a scan in element order finds
+    if (o.dt < dt || (o.dt == dt && o.dt_element >= 0 && (dt_element < 0 || o.dt_element < dt_element))) {
+        dt = o.dt;
+        dt_element = o.dt_element;
+    }
+    if (o.failed >= 0 && (failed < 0 || o.failed < failed)) failed = o.failed;
+}
+
+Voigt3 ShellElements::resultant(std::size_t e, std::size_t first) const {
+    const Index at = block_lane_[e];
+    if (at < 0) return first == 0 ? membrane_force_[e] : bending_moment_[e];
+    const std::size_t b = static_cast<std::size_t>(at) / static_cast<std::size_t>(k_lanes);
+    const int l = static_cast<int>(static_cast<std::size_t>(at) % static_cast<std::size_t>(k_lanes));
+    const RealPack* r = block_resultants_.data() + 6 * b + first;
+    return Voigt3(lane(r[0], l), lane(r[1], l), lane(r[2], l));
+}
+
+void ShellElements::set_resultants(std::size_t e, const Voigt3& n, const Voigt3& m) {
+    const Index at = block_lane_[e];
+    if (at < 0) {
+        membrane_force_[e] = n;
+        bending_moment_[e] = m;
+        return;
+    }
+    const std::size_t b = static_cast<std::size_t>(at) / static_cast<std::size_t>(k_lanes);
+    const int l = static_cast<int>(static_cast<std::size_t>(at) % static_cast<std::size_t>(k_lanes));
+    RealPack* r = block_resultants_.data() + 6 * b;
+    for (Eigen::Index c = 0; c < 3; ++c) {
+        set_lane(r[c], l, n(c));
+        set_lane(r[3 + c], l, m(c));
+    }
 }
 
 void ShellElements::compute_block(Index b, ParticleState& s, Real viscous_rate, Real dt) {
@@ -534,23 +569,32 @@ void ShellElements::compute_block(Index b, ParticleState& s, Real viscous_rate, 
         for (std::size_t c = 0; c < k_slot_components; ++c)
             component[c]->copy_to(at + c * static_cast<std::size_t>(k_lanes), stdx::element_aligned);
     }
+    // N and M, whole packs (an invalid lane's are rewritten below by the general code)
+    RealPack* resultants = block_resultants_.data() + 6 * static_cast<std::size_t>(b);
+    for (std::size_t r = 0; r < 3; ++r) {
+        resultants[r] = loads.membrane_force[r];
+        resultants[3 + r] = loads.bending_moment[r];
+    }
+    // the block's totals, lane by lane in lane order
+    ElementTotals totals;
     for (int l = 0; l < k_lanes; ++l) {
         const std::size_t ue = element(l);
         if (!lane(loads.valid, l)) {  // outside the block kernel's bounds: the general code
-            compute_element(static_cast<Index>(ue), s, viscous_rate, dt);
+            totals.add(compute_element(static_cast<Index>(ue), s, viscous_rate, dt));
             continue;
         }
         const Real lc = lane(loads.characteristic_length, l);
         refresh_bending_ratio(static_cast<Index>(ue), s.x, lc);
-        elem_dt_[ue] = element_dt(static_cast<Index>(ue), lc);
-        elem_failed_[ue] = 0;
         if (thickness_update_) thickness_[ue] *= 1.0 + lane(loads.thickness_strain, l);  // §3.4
-        elem_work_[ue] = lane(loads.strain_work, l);
-        elem_damp_work_[ue] = lane(loads.damping_work, l);
-        elem_plastic_work_[ue] = lane(loads.plastic_work, l);
-        membrane_force_[ue] = Voigt3(lane(loads.membrane_force[0], l), lane(loads.membrane_force[1], l), lane(loads.membrane_force[2], l));
-        bending_moment_[ue] = Voigt3(lane(loads.bending_moment[0], l), lane(loads.bending_moment[1], l), lane(loads.bending_moment[2], l));
+        ElementTotals t;
+        t.strain_work = lane(loads.strain_work, l);
+        t.damping_work = lane(loads.damping_work, l);
+        t.plastic_work = lane(loads.plastic_work, l);
+        t.dt = element_dt(static_cast<Index>(ue), lc);
+        t.dt_element = static_cast<Index>(ue);
+        totals.add(t);
     }
+    block_totals_[static_cast<std::size_t>(b)] = totals;
 }
 
 ShellElements::StepTotals ShellElements::compute(ParticleState& s, Real viscous_rate, Real dt) {
@@ -584,7 +628,7 @@ ShellElements::StepTotals ShellElements::compute(ParticleState& s, Real viscous_
         for (Index b = 0; b < n_blocks; ++b) compute_block(b, s, viscous_rate, dt);
 #pragma omp for schedule(static)
         for (Index i = 0; i < n_scalar; ++i)
-            compute_element(scalar_elements_[static_cast<std::size_t>(i)], s, viscous_rate, dt);
+            alone_totals_[static_cast<std::size_t>(i)] = compute_element(scalar_elements_[static_cast<std::size_t>(i)], s, viscous_rate, dt);
     }
     // Phase 2: every particle sums its slots in a fixed order (bitwise thread-independent).
     const Index np = static_cast<Index>(s.size());
@@ -601,41 +645,27 @@ ShellElements::StepTotals ShellElements::compute(ParticleState& s, Real viscous_
         s.f_int[up] = f;
         s.m_int[up] = m;
     }
-    // Totals in fixed chunks (core/chunked_loop.hpp): the same for any thread count. The
-    // smallest step and the first failed element keep the lowest index, as a serial scan does.
-    StepTotals tot;
-    const std::array<Real, 3> work = chunked_sum<3>(ne, parallel, element_sums_, [&](Index e, std::array<Real, 3>& acc) {
-        const std::size_t ue = static_cast<std::size_t>(e);
-        acc[0] += elem_work_[ue];
-        acc[1] += elem_damp_work_[ue];
-        acc[2] += elem_plastic_work_[ue];
-    });
-    tot.strain_work = work[0];
-    tot.damping_work = work[1];
-    tot.plastic_work = work[2];
-    tot.min_dt = std::numeric_limits<Real>::infinity();
-    const Index n_chunks = (ne + k_chunk_size - 1) / k_chunk_size;
-    chunk_min_.resize(static_cast<std::size_t>(n_chunks));
+    // Totals over the blocks, then the elements computed alone, in fixed chunks of them
+    // (core/chunked_loop.hpp): the same for any thread count.
+    const Index n_units = n_blocks + n_scalar;
+    const Index n_chunks = (n_units + k_chunk_size - 1) / k_chunk_size;
+    chunk_totals_.resize(static_cast<std::size_t>(n_chunks));
 #pragma omp parallel for schedule(static) if (parallel)
     for (Index c = 0; c < n_chunks; ++c) {
-        ChunkMin m;
-        for (Index e = c * k_chunk_size; e < std::min(ne, (c + 1) * k_chunk_size); ++e) {
-            const std::size_t ue = static_cast<std::size_t>(e);
-            if (elem_failed_[ue] && m.failed < 0) m.failed = e;
-            if (elem_dt_[ue] < m.dt) {
-                m.dt = elem_dt_[ue];
-                m.element = e;
-            }
-        }
-        chunk_min_[static_cast<std::size_t>(c)] = m;
+        ElementTotals t;
+        for (Index u = c * k_chunk_size; u < std::min(n_units, (c + 1) * k_chunk_size); ++u)
+            t.add(u < n_blocks ? block_totals_[static_cast<std::size_t>(u)] : alone_totals_[static_cast<std::size_t>(u - n_blocks)]);
+        chunk_totals_[static_cast<std::size_t>(c)] = t;
     }
-    for (const ChunkMin& m : chunk_min_) {
-        if (m.failed >= 0 && tot.failed_element < 0) tot.failed_element = m.failed;
-        if (m.dt < tot.min_dt) {
-            tot.min_dt = m.dt;
-            tot.min_dt_element = m.element;
-        }
-    }
+    ElementTotals all;
+    for (const ElementTotals& t : chunk_totals_) all.add(t);
+    StepTotals tot;
+    tot.strain_work = all.strain_work;
+    tot.damping_work = all.damping_work;
+    tot.plastic_work = all.plastic_work;
+    tot.min_dt = all.dt;
+    tot.min_dt_element = all.dt_element;
+    tot.failed_element = all.failed;
     return tot;
 }
 
@@ -709,24 +739,31 @@ void ShellElements::save(RestartWriter& out) const {
             if (point_fields(e) == k_stress_fields) stresses.push_back(point_state(e, p).stress);
             else points.push_back(point_state(e, p));
         }
+    std::vector<Voigt3> n(thickness_.size()), m(thickness_.size());
+    for (std::size_t e = 0; e < thickness_.size(); ++e) {
+        n[e] = resultant(e, 0);
+        m[e] = resultant(e, 3);
+    }
     auto& self = const_cast<ShellElements&>(*this);  // the archive's interface is shared with load
-    out(points, stresses, self.thickness_, self.bend_ratio_, self.bend_lc_, self.membrane_force_, self.bending_moment_);
+    out(points, stresses, self.thickness_, self.bend_ratio_, self.bend_lc_, n, m);
 }
 
 void ShellElements::load(RestartReader& in) {
     const std::size_t n_elements = thickness_.size();
     std::vector<MaterialPoint> points;
-    std::vector<Voigt3> stresses;
+    std::vector<Voigt3> stresses, n, m;  // the resultants N, M of every element
     if (in.format() >= 2) {
-        in(points, stresses, thickness_, bend_ratio_, bend_lc_, membrane_force_, bending_moment_);
+        in(points, stresses, thickness_, bend_ratio_, bend_lc_, n, m);
     } else {  // format 1: no elastic stresses apart (restart_archive.cpp)
         if (n_elastic_points_ > 0)
             in.fail("restart file of format 1, which holds no elastic stresses apart: it can resume a model "
                     "without elastic sections only");
-        in(points, thickness_, bend_ratio_, bend_lc_, membrane_force_, bending_moment_);
+        in(points, thickness_, bend_ratio_, bend_lc_, n, m);
     }
-    if (points.size() != n_plastic_points_ || stresses.size() != n_elastic_points_ || thickness_.size() != n_elements)
+    if (points.size() != n_plastic_points_ || stresses.size() != n_elastic_points_ || thickness_.size() != n_elements ||
+        n.size() != n_elements || m.size() != n_elements)
         in.fail("restart file of a model with other elements or integration rules");
+    for (std::size_t e = 0; e < n_elements; ++e) set_resultants(e, n[e], m[e]);
     std::size_t i = 0, j = 0;
     for (std::size_t e = 0; e < n_elements; ++e)
         for (std::size_t p = 0; p < n_points_of(e); ++p) {

@@ -42,8 +42,10 @@ public:
     [[nodiscard]] Real min_critical_dt(const std::vector<Vec3>& x, Index* where = nullptr) const;
 
     [[nodiscard]] Index size() const { return static_cast<Index>(tri_.size()); }
-    [[nodiscard]] const std::vector<Voigt3>& membrane_force() const { return membrane_force_; }
-    [[nodiscard]] const std::vector<Voigt3>& bending_moment() const { return bending_moment_; }
+    /// Membrane force N and bending moment M of element e averaged over the element, in its
+    /// local frame, at the end of the last step.
+    [[nodiscard]] Voigt3 membrane_force(Index e) const { return resultant(static_cast<std::size_t>(e), 0); }
+    [[nodiscard]] Voigt3 bending_moment(Index e) const { return resultant(static_cast<std::size_t>(e), 3); }
     /// Equivalent plastic strain of element e averaged over its in-plane points, at the
     /// thickness point of index k (0 = bottom, n-1 = top).
     [[nodiscard]] Real plastic_strain(Index e, int k) const;
@@ -59,6 +61,15 @@ public:
     void load(RestartReader& in);
 
 private:
+    /// What the step totals need of a group of elements (a block, an element computed alone,
+    /// a chunk of them): its works, its smallest critical step and the lowest-numbered element
+    /// with it, the lowest-numbered failed element (-1: none).
+    struct ElementTotals {
+        Real strain_work = 0, damping_work = 0, plastic_work = 0;
+        Real dt = std::numeric_limits<Real>::infinity();
+        Index dt_element = -1, failed = -1;
+        void add(const ElementTotals& o);  ///< o's works added after this one's
+    };
     /// Critical step of element e of current length lc: the smaller of the membrane step L_c / c and
     /// the bending step (the stored ratio bend_ratio_ times L_c / c), reduced for stiffness
     /// damping (§6.4).
@@ -72,7 +83,8 @@ private:
     /// Path element of element e (§2).
     [[nodiscard]] ReversedTriangle reverse_element(std::size_t e, const ParticleState& s) const;
     /// Phase 1 of compute for one element by the general (scalar) code.
-    void compute_element(Index e, ParticleState& s, Real viscous_rate, Real dt);
+    /// Its totals: see ElementTotals.
+    [[nodiscard]] ElementTotals compute_element(Index e, ParticleState& s, Real viscous_rate, Real dt);
     /// Phase 1 of compute for the k_lanes elements of SIMD block b (lanes outside the block
     /// kernel's bounds go to compute_element).
     void compute_block(Index b, ParticleState& s, Real viscous_rate, Real dt);
@@ -136,15 +148,16 @@ private:
     /// the point states of the blocks, [block][field][point] (point_fields), one lane per element
     std::vector<RealPack> block_state_;
     std::vector<Index> scalar_elements_;  ///< the elements computed one by one
-    std::vector<Real> elem_work_, elem_damp_work_, elem_plastic_work_, elem_dt_;
-    std::vector<std::uint8_t> elem_failed_;
-    struct ChunkMin {  ///< smallest step and first failure of one chunk of elements
-        Real dt = std::numeric_limits<Real>::infinity();
-        Index element = -1, failed = -1;
-    };
-    std::vector<ChunkMin> chunk_min_;                 ///< scratch, per chunk
-    std::vector<std::array<Real, 3>> element_sums_;  ///< scratch, per chunk
-    std::vector<Voigt3> membrane_force_, bending_moment_;
+    std::vector<ElementTotals> block_totals_;  ///< per block
+    std::vector<ElementTotals> alone_totals_;  ///< per element computed alone (scalar_elements_ order)
+    std::vector<ElementTotals> chunk_totals_;  ///< scratch, per chunk of blocks and elements alone
+    /// N and M of the elements of the blocks, 6 packs per block (N then M, component by
+    /// component); those of the elements computed alone in membrane_force_, bending_moment_.
+    std::vector<RealPack> block_resultants_;
+    /// Component c of N (c < 3) or of M (c - 3) of element e, wherever it is kept.
+    [[nodiscard]] Voigt3 resultant(std::size_t e, std::size_t first) const;
+    void set_resultants(std::size_t e, const Voigt3& n, const Voigt3& m);
+    std::vector<Voigt3> membrane_force_, bending_moment_;  ///< per element computed alone (others: zero)
     Real stiffness_damping_ = 0;
 };
 
