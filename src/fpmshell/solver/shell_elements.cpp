@@ -469,6 +469,24 @@ void ShellElements::compute_block(Index b, ParticleState& s, Real viscous_rate, 
     auto field = [&](std::size_t p, std::size_t f) -> RealPack& { return state[f * n_points + p]; };
     // isotropic hardening (beta = 1): the back stress stays zero and is neither read nor written
     const bool kinematic = j2 && j2->return_constants().beta != 1.0;
+    // The fields this function reads of the next block's points (taken to be of this block's
+    // section), fetched while this block computes: without it, the loads of the stresses
+    // stalled on memory (perf: a fifth of this function's time on the elastic 10^5 plate).
+    if (static_cast<std::size_t>(b) + 2 < block_state_offset_.size()) {
+        const std::size_t next = block_state_offset_[static_cast<std::size_t>(b) + 1];
+        const std::size_t end = block_state_offset_[static_cast<std::size_t>(b) + 2];
+        auto prefetch = [&](std::size_t first_field, std::size_t n_fields) {
+            for (std::size_t k = next + first_field * n_points; k < std::min(end, next + (first_field + n_fields) * n_points); ++k)
+                __builtin_prefetch(block_state_.data() + k);
+        };
+        prefetch(k_stress, 3);
+        if (kinematic) prefetch(k_back_stress, 3);
+        if (j2) {
+            prefetch(k_plastic_strain, 1);
+            prefetch(k_flow_radius, 1);
+            if (j2->rate_dependent()) prefetch(k_strain_rate, 1);
+        }
+    }
     std::array<RealPack, 3 * k_max_block_points> stress;
     for (std::size_t p = 0; p < n_points; ++p)
         for (std::size_t r = 0; r < 3; ++r) stress[3 * p + r] = field(p, k_stress + r);
