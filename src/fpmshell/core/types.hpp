@@ -14,6 +14,7 @@ using Index = std::int32_t;
 using Vec2 = Eigen::Matrix<Real, 2, 1>;
 using Vec3 = Eigen::Matrix<Real, 3, 1>;
 using Mat3 = Eigen::Matrix<Real, 3, 3>;
+using Quat = Eigen::Quaternion<Real>;
 /// Plane-stress Voigt vector: stress [sxx, syy, sxy] or strain [exx, eyy, gxy] (engineering shear).
 using Voigt3 = Eigen::Matrix<Real, 3, 1>;
 

@@ -11,7 +11,7 @@ namespace {
 
 constexpr char k_magic[8] = {'F', 'P', 'M', 'S', 'H', 'R', 'S', 'T'};
 // Raised whenever the content of a restart file changes, so an older file is refused.
-constexpr std::uint32_t k_format_version = 2;  // 2: elastic stresses apart from the material points
+constexpr std::uint32_t k_format_version = 3;  // 2: elastic stresses apart from the material points; 3: rotations as quaternions
 // Format 1 differs only by the elastic stresses; ShellElements::load reads it for models
 // without elastic sections (a long plastic run started before format 2 can go on).
 constexpr std::uint32_t k_oldest_format_read = 1;

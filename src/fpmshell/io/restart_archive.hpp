@@ -12,6 +12,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 #include <array>
 #include <cstdint>
 #include <cstring>
@@ -45,6 +46,10 @@ template <class T>
 constexpr bool is_fixed_eigen = fixed_eigen<T>::value;
 template <class T>
 constexpr bool is_raw = std::is_arithmetic_v<T> || std::is_enum_v<T>;
+template <class T>
+struct is_quaternion : std::false_type {};
+template <class S, int O>
+struct is_quaternion<Eigen::Quaternion<S, O>> : std::true_type {};
 }  // namespace restart_detail
 
 /// Name of the restart file inside a result folder.
@@ -75,6 +80,8 @@ private:
             raw(&v, sizeof(T));
         } else if constexpr (is_fixed_eigen<T>) {
             raw(v.data(), sizeof(typename T::Scalar) * static_cast<std::size_t>(T::SizeAtCompileTime));
+        } else if constexpr (is_quaternion<T>::value) {
+            put(v.coeffs());
         } else if constexpr (std::is_same_v<T, std::string>) {
             put(static_cast<std::uint64_t>(v.size()));
             raw(v.data(), v.size());
@@ -129,6 +136,8 @@ private:
             raw(&v, sizeof(T));
         } else if constexpr (is_fixed_eigen<T>) {
             raw(v.data(), sizeof(typename T::Scalar) * static_cast<std::size_t>(T::SizeAtCompileTime));
+        } else if constexpr (is_quaternion<T>::value) {
+            get(v.coeffs());
         } else if constexpr (std::is_same_v<T, std::string>) {
             v.resize(length());
             raw(v.data(), v.size());

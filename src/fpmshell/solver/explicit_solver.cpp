@@ -487,7 +487,7 @@ void ExplicitSolver::cycle(Real load_time, Real dt_new_cap, bool relaxation) {
         // arrays instead of two.
         s_.x_prev[p] = s_.x[p] + dt_new * s_.v[p];
         s_.dtheta[p] = dt_new * s_.omega[p];
-        s_.rotation[p] = rotation_matrix(s_.dtheta[p]) * s_.rotation[p];
+        s_.rotation[p] = rotation_quaternion(s_.dtheta[p]) * s_.rotation[p];
         if (!(s_.x_prev[p].allFinite() && s_.omega[p].allFinite() && s_.f_int[p].allFinite())) acc[4] += 1;  // finite_state
     });
     std::swap(s_.x, s_.x_prev);
@@ -568,7 +568,7 @@ void ExplicitSolver::move_to_kinetic_energy_peak(Real ke_before, Real ke_peak, R
             // undo the last increment, apply the one to the peak; the next path element goes
             // from x_n to the peak state
             const Vec3 dtheta_peak = back * s_.omega_prev[p];
-            s_.rotation[p] = rotation_matrix(dtheta_peak) * rotation_matrix(s_.dtheta[p]).transpose() * s_.rotation[p];
+            s_.rotation[p] = rotation_quaternion(dtheta_peak) * rotation_quaternion(s_.dtheta[p]).conjugate() * s_.rotation[p];
             s_.dtheta[p] = dtheta_peak;
         }
     }

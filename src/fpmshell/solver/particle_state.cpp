@@ -7,7 +7,7 @@ void ParticleState::resize(std::size_t n) {
                     &m_int, &f_ext, &m_ext, &f_ext_prev, &m_ext_prev, &reaction,
                     &reaction_moment, &reaction_prev, &reaction_moment_prev, &f_contact, &f_contact_prev})
         f->assign(n, Vec3::Zero());
-    rotation.assign(n, Mat3::Identity());
+    rotation.assign(n, Quat::Identity());
     mass.assign(n, 0.0);
     inertia.assign(n, 0.0);
     full_rotation.assign(n, 0);

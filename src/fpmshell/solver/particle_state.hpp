@@ -19,7 +19,7 @@ struct ParticleState {
     std::vector<Vec3> omega;      ///< half-step angular velocity (global vector, tangent plane)
     std::vector<Vec3> omega_prev;
     std::vector<Vec3> dtheta;     ///< rotation increment of the last step (global vector)
-    std::vector<Mat3> rotation;   ///< accumulated rotation (output only)
+    std::vector<Quat> rotation;   ///< accumulated rotation, a unit quaternion (output only)
     std::vector<Vec3> normal;     ///< tangent-plane normal n_alpha at t_n (§1.3)
     std::vector<Vec3> f_int, m_int;      ///< internal force / moment at t_n
     std::vector<Vec3> f_ext, m_ext;      ///< external force / moment at t_n
@@ -38,7 +38,20 @@ struct ParticleState {
 /// Every field, for a restart file (io/restart_archive.hpp).
 template <class Archive>
 void transfer(Archive& ar, ParticleState& s) {
-    ar(s.x0, s.x, s.x_prev, s.v, s.v_prev, s.omega, s.omega_prev, s.dtheta, s.rotation, s.normal);
+    ar(s.x0, s.x, s.x_prev, s.v, s.v_prev, s.omega, s.omega_prev, s.dtheta);
+    if constexpr (requires { ar.format(); }) {  // reading
+        if (ar.format() < 3) {  // formats 1 and 2 kept the rotations as matrices
+            std::vector<Mat3> matrices;
+            ar(matrices);
+            s.rotation.resize(matrices.size());
+            for (std::size_t p = 0; p < matrices.size(); ++p) s.rotation[p] = Quat(matrices[p]);
+        } else {
+            ar(s.rotation);
+        }
+    } else {
+        ar(s.rotation);
+    }
+    ar(s.normal);
     ar(s.f_int, s.m_int, s.f_ext, s.m_ext, s.f_ext_prev, s.m_ext_prev, s.reaction, s.reaction_moment);
     ar(s.reaction_prev, s.reaction_moment_prev, s.f_contact, s.f_contact_prev, s.mass, s.inertia, s.full_rotation);
 }

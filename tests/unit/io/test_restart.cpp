@@ -175,12 +175,36 @@ TEST(Restart, AFormatOneFileResumesAModelWithoutElasticSections) {
     const Model model = small_tube(4e-4);
     RunOptions straight, first;
     ASSERT_NO_FATAL_FAILURE(run_straight_and_stopped(model, "_format1", straight, first));
-    // Turn the format-2 file into the format-1 file of the same state: version 1, and no
-    // length of the (empty) elastic stresses after the material points of section "elements".
+    // Turn the format-3 file into the format-1 file of the same state: version 1, the particle
+    // rotations as matrices (formats 1 and 2), and no length of the (empty) elastic stresses
+    // after the material points of section "elements".
     const fs::path file = first.output_dir / k_restart_file;
     std::string bytes = bytes_of(file);
     const std::uint32_t one = 1;
     bytes.replace(8, sizeof(one), reinterpret_cast<const char*>(&one), sizeof(one));  // after the magic word
+    {
+        // section "solver": 4 doubles, a long, a bool, a long, then the particle state: 8 arrays
+        // of Vec3 (each its length and 3 doubles an item), then the rotations
+        const std::size_t solver = bytes.find("solver");
+        ASSERT_NE(solver, std::string::npos);
+        std::size_t at = solver + 6 + 4 * sizeof(double) + 2 * sizeof(long) + sizeof(bool);
+        std::uint64_t n = 0;
+        for (int field = 0; field < 8; ++field) {
+            std::memcpy(&n, bytes.data() + at, sizeof(n));
+            at += sizeof(n) + n * 3 * sizeof(double);
+        }
+        std::memcpy(&n, bytes.data() + at, sizeof(n));
+        ASSERT_GT(n, 0u);
+        at += sizeof(n);
+        std::string matrices;
+        for (std::uint64_t p = 0; p < n; ++p) {
+            Quat q;
+            std::memcpy(q.coeffs().data(), bytes.data() + at + p * 4 * sizeof(double), 4 * sizeof(double));
+            const Mat3 r = q.toRotationMatrix();
+            matrices.append(reinterpret_cast<const char*>(r.data()), 9 * sizeof(double));
+        }
+        bytes.replace(at, n * 4 * sizeof(double), matrices);
+    }
     const std::size_t elements = bytes.find("elements");
     ASSERT_NE(elements, std::string::npos);
     std::uint64_t n_points = 0;
