@@ -44,6 +44,15 @@ inline void set_lane(Real& v, int /*l*/, Real x) { v = x; }
 inline void set_lane(RealPack& v, int l, Real x) { v[static_cast<std::size_t>(l)] = x; }
 [[nodiscard]] inline bool any_lane(bool m) { return m; }
 [[nodiscard]] inline bool any_lane(const RealPack::mask_type& m) { return stdx::any_of(m); }
+/// Asks the cache for packs [first, first + count) ahead of their use. The empty asm
+/// statement keeps the loop: GCC 12 otherwise deletes a loop of prefetches whose bound it
+/// cannot fold, as a loop without side effects (-ffinite-loops, the C++ default).
+inline void prefetch_packs(const RealPack* first, std::size_t count) {
+    for (std::size_t i = 0; i < count; ++i) {
+        __builtin_prefetch(first + i);
+        asm volatile("" : : "r"(i));
+    }
+}
 /// Number of lanes of T.
 template <class T>
 inline constexpr int lanes_of = std::is_same_v<T, Real> ? 1 : k_lanes;

@@ -460,7 +460,10 @@ void ShellElements::compute_block(Index b, ParticleState& s, Real viscous_rate, 
         gather(s.x, motion.current[i]);
         gather(s.dtheta, motion.dtheta[i]);
     }
-    const RealPack thickness = load([&](int l) { return thickness_[element(l)]; });
+    // Without the thickness update (§3.4) every element keeps its section's thickness: a
+    // broadcast, not a gather (whose pack, filled through memory, stalled the block: perf).
+    const RealPack thickness = thickness_update_ ? load([&](int l) { return thickness_[element(l)]; })
+                                                 : RealPack(rules_[sec].thickness);
     const std::size_t n_points = constants.inplane.size() * constants.through.size();
     // The points' state, whole packs in the block layout: [field][point] (point_fields), so
     // that a step streams only the fields it reads.
@@ -476,8 +479,8 @@ void ShellElements::compute_block(Index b, ParticleState& s, Real viscous_rate, 
         const std::size_t next = block_state_offset_[static_cast<std::size_t>(b) + 1];
         const std::size_t end = block_state_offset_[static_cast<std::size_t>(b) + 2];
         auto prefetch = [&](std::size_t first_field, std::size_t n_fields) {
-            for (std::size_t k = next + first_field * n_points; k < std::min(end, next + (first_field + n_fields) * n_points); ++k)
-                __builtin_prefetch(block_state_.data() + k);
+            const std::size_t from = std::min(end, next + first_field * n_points);
+            prefetch_packs(block_state_.data() + from, std::min(end, from + n_fields * n_points) - from);
         };
         prefetch(k_stress, 3);
         if (kinematic) prefetch(k_back_stress, 3);
