@@ -360,13 +360,15 @@ int run_model(const Model& model, const RunOptions& opt) {
     };
     std::string reason = "completed";
     int code = 0;
+    // The positions a failed run writes when its own are no longer finite: in a dynamic run
+    // those before the failed step, which the solver keeps as x_prev (no copy per step); in a
+    // relaxation run those before the load level.
     std::vector<Vec3> last_good = solver.state().x;
     try {
         double last_flush = 0;
         if (!relaxation) {
             const InterruptGuard interrupts;
             while (solver.time() < end * (1 - 1e-12)) {
-                last_good = solver.state().x;
                 // No sliver step at the end: when less than two steps remain, take two equal
                 // ones (a last step ten times shorter than the one before jolts the leapfrog
                 // kinetic energy and showed as a 0.1 % jump of the energy error).
@@ -454,7 +456,8 @@ int run_model(const Model& model, const RunOptions& opt) {
         log.print("the last good state (t = {:.6g}) is in the last frame of fields.pvd", solver.time());
         reason = std::string("failed: ") + failure.what();
         code = 1;
-        const std::vector<Vec3>* pos = all_finite(solver.state().x) ? nullptr : &last_good;
+        const std::vector<Vec3>* pos =
+            all_finite(solver.state().x) ? nullptr : relaxation ? &last_good : &solver.state().x_prev;
         try {
             out.frame(solver, solver.time(), pos);
         } catch (const std::exception& e) {

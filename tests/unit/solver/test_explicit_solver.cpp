@@ -359,4 +359,8 @@ TEST(ExplicitSolver, NonFiniteStateStopsTheRunNamingStepAndParticle) {
         EXPECT_NE(what.find("NaN or infinite at step 1 "), std::string::npos) << what;
         EXPECT_NE(what.find("at particle " + std::to_string(node + 1) + " "), std::string::npos) << what;
     }
+    // The positions before the failed step are kept as x_prev: the driver writes them as the
+    // last good frame (run_driver.cpp) when the positions are no longer finite.
+    EXPECT_FALSE(s.state().x[static_cast<std::size_t>(node)].allFinite());
+    EXPECT_EQ(s.state().x_prev, m.nodes);
 }
