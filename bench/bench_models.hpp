@@ -139,6 +139,13 @@ inline Model steady_plastic_plate_model(Index n, int inplane_points, int steps_t
     return m;
 }
 
+/// bench/whole_run/plate_plastic.yaml, the plastic plate of the whole-run measure (issue 5:
+/// clamped, J2 5 x 3 points, a sudden pressure that makes it yield), with 2 n^2 triangles.
+inline Model whole_run_plastic_plate_model(Index n) {
+    const std::string path = std::string(FPMSHELL_SOURCE_DIR) + "/bench/whole_run/plate_plastic.yaml";
+    return read_model(path, {"mesh.nx=" + std::to_string(n), "mesh.ny=" + std::to_string(n)});
+}
+
 /// examples/square_tube/model.yaml (Johnson-Cook, 5 x 3 points, self-contact and the rigid
 /// striker) with divisions across a face and along the tube.
 inline Model square_tube_model(int divisions_width, int divisions_length) {
