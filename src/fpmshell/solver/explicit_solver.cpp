@@ -391,9 +391,11 @@ void ExplicitSolver::cycle(Real load_time, Real dt_new_cap, bool relaxation) {
         const Vec3 omega_tangent = project ? Vec3(omega - omega.dot(normal) * normal) : omega;
         const Real j = s_.inertia[p];
         const Vec3 w_free = c1 * (c2 * omega_tangent + (dt_n / j) * moment_tangent);
-        const Vec3 w_new = remove_components(w_free, dirs, nd);
+        // A particle whose only constraint is its tangent plane: w_free is tangent already (both
+        // of its terms are), and projecting it again would change it by rounding only.
+        const bool tangent_only = project && nd == 1;
+        const Vec3 w_new = tangent_only ? w_free : remove_components(w_free, dirs, nd);
         s_.omega[p] = w_new;
-        // a free particle's w_new - w_free is rounding only (w_free is tangent already)
         if (constrained) s_.reaction_moment[p] = (j / (c1 * dt_n)) * (w_new - w_free);
         if (!relaxation) return;
 
