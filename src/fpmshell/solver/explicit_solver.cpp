@@ -147,6 +147,12 @@ ExplicitSolver::ExplicitSolver(const Model& model) : model_(model), elements_(mo
             g.begin.push_back(static_cast<Index>(g.element.size()));
         }
     }
+    // A first load that is a pressure on every triangle (in element order) is summed in the
+    // pass of the normals, over the same triangles in the same order (the same bits).
+    if (!model.loads.empty() && model.loads[0].type == LoadType::Pressure) {
+        const PressureGather& g = pressure_gather_[0];
+        fused_pressure_ = g.particle.size() == np && g.begin == node_element_begin_ && g.element == node_element_;
+    }
     parallel_particles_ = static_cast<Index>(np) >= k_parallel_min_particles;
     // Rigid bodies and contact (theory.md §8).
     bodies_ = RigidBodyState::from_model(model);
@@ -232,41 +238,42 @@ Vec3 ExplicitSolver::acceleration(Index p) const {
     return (s_.v[up] - s_.v_prev[up]) / dt_center_;
 }
 
-void ExplicitSolver::update_normals() {
+void ExplicitSolver::update_normals_and_loads(Real t) {
     // §1.3 area-weighted normal, recomputed from the current positions: the cross product of
     // every triangle, then each particle sums those of its triangles in element order (the
     // order of a serial scatter, without its write conflicts).
     const Index ne = static_cast<Index>(model_.triangles.size());
     parallel_for_each(ne, parallel_particles_, [&](Index e) {
-        const auto& t = model_.triangles[static_cast<std::size_t>(e)];
+        const auto& tri = model_.triangles[static_cast<std::size_t>(e)];
         element_cross_[static_cast<std::size_t>(e)] =
-            (s_.x[static_cast<std::size_t>(t[1])] - s_.x[static_cast<std::size_t>(t[0])])
-                .cross(s_.x[static_cast<std::size_t>(t[2])] - s_.x[static_cast<std::size_t>(t[0])]);
+            (s_.x[static_cast<std::size_t>(tri[1])] - s_.x[static_cast<std::size_t>(tri[0])])
+                .cross(s_.x[static_cast<std::size_t>(tri[2])] - s_.x[static_cast<std::size_t>(tri[0])]);
     });
+    // §6.7 follower pressure: f_i = -p A_t n_t / 3 (positive pushes against n), A n = cr / 2.
+    auto pressure_scale = [&](const Load& load) { return -load.pressure * curve_value(load.curve, t) / 6.0; };
+    // The external loads start from zero (the fused pressure: from its first triangle).
+    const Real fused_scale = fused_pressure_ ? pressure_scale(model_.loads[0]) : 0.0;
     parallel_for_each(static_cast<Index>(s_.size()), parallel_particles_, [&](Index ip) {
         const std::size_t p = static_cast<std::size_t>(ip);
-        Vec3 sum = Vec3::Zero();
-        for (Index k = node_element_begin_[p]; k < node_element_begin_[p + 1]; ++k)
-            sum += element_cross_[static_cast<std::size_t>(node_element_[static_cast<std::size_t>(k)])];
+        Vec3 sum = Vec3::Zero(), f = Vec3::Zero();
+        for (Index k = node_element_begin_[p]; k < node_element_begin_[p + 1]; ++k) {
+            const Vec3& cross = element_cross_[static_cast<std::size_t>(node_element_[static_cast<std::size_t>(k)])];
+            sum += cross;
+            if (fused_pressure_) f += fused_scale * cross;
+        }
         const Real len = sum.norm();
         s_.normal[p] = len > 0 ? Vec3(sum / len) : Vec3::UnitZ();
+        s_.f_ext[p] = f;
+        if (has_moment_loads_) s_.m_ext[p] = Vec3::Zero();
     });
-}
-
-void ExplicitSolver::apply_external_loads(Real t) {
-    // Uses element_cross_ of the current positions: update_normals() runs first in every cycle.
-    parallel_for_each(static_cast<Index>(s_.size()), parallel_particles_, [&](Index ip) {
-        s_.f_ext[static_cast<std::size_t>(ip)] = Vec3::Zero();
-        if (has_moment_loads_) s_.m_ext[static_cast<std::size_t>(ip)] = Vec3::Zero();
-    });
-    for (std::size_t l = 0; l < model_.loads.size(); ++l) {
+    for (std::size_t l = fused_pressure_ ? 1 : 0; l < model_.loads.size(); ++l) {
         const Load& load = model_.loads[l];
         const Real factor = curve_value(load.curve, t);
         switch (load.type) {
             case LoadType::Pressure: {
-                // §6.7 follower pressure: f_i = -p A_t n_t / 3 (positive pushes against n). Each
-                // particle adds its loaded triangles in the load's order (that of a serial scatter).
-                const Real scale = -load.pressure * factor / 6.0;  // A n = cr / 2
+                // Each particle adds its loaded triangles in the load's order (that of a serial
+                // scatter).
+                const Real scale = pressure_scale(load);
                 const PressureGather& g = pressure_gather_[l];
                 parallel_for_each(static_cast<Index>(g.particle.size()), parallel_particles_, [&](Index i) {
                     const std::size_t ui = static_cast<std::size_t>(i);
@@ -307,8 +314,7 @@ void ExplicitSolver::cycle(Real load_time, Real dt_new_cap, bool relaxation) {
     energy_.damping += tot.damping_work;
 
     // 2 tangent planes and external loads at t_n.
-    update_normals();
-    apply_external_loads(load_time);
+    update_normals_and_loads(load_time);
 
     // 3 dt_{n+1/2} = s min dt_e, growth capped at 1.2 dt_{n-1/2} (§6.4).
     // Relaxation caps the factor at 0.75, inside the provably stable 0.8 of §6.4: with a mode

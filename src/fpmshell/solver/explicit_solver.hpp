@@ -80,8 +80,9 @@ private:
     /// The cycle shared by dynamic and relaxation modes. load_time: time at which loads and
     /// prescribed motions are evaluated; advance: whether time moves on (dynamic) or not.
     void cycle(Real load_time, Real dt_new_cap, bool relaxation);
-    void update_normals();
-    void apply_external_loads(Real t);
+    /// The tangent-plane normals of the current positions (§1.3) and the external loads at
+    /// time t (§6.7), whose pressures use the triangles' current cross products.
+    void update_normals_and_loads(Real t);
     [[nodiscard]] Real curve_value(Index curve, Real t) const;
     [[nodiscard]] Real curve_integral(Index curve, Real t) const;
     /// Whether particle p's position, angular velocity and internal force are finite (defined
@@ -131,6 +132,7 @@ private:
         std::vector<Index> particle, begin, element;
     };
     std::vector<PressureGather> pressure_gather_;  ///< per load (empty unless a pressure)
+    bool fused_pressure_ = false;  ///< load 0: a pressure on every triangle, summed with the normals
     std::vector<std::array<Real, 2>> sums2_;                ///< scratch: per-chunk partial sums
     std::vector<std::array<Real, 5>> sums5_;
     // Relaxation residual of the last cycle.
