@@ -174,6 +174,17 @@ ShellElements::ShellElements(const Model& model)
         block_state_offset_[b + 1] = block_state_offset_[b] + point_fields(first) * n_points_of(first);
     }
     block_state_.assign(block_state_offset_[n_blocks], RealPack(0.0));
+    // The flow radius of a J2 point in a block is kept valid from the start: sigma_f(0) until
+    // the point first yields (the material point's own convention is 0 with alpha = 0), so
+    // that the trial check reads the radius alone, not the plastic strain too.
+    for (std::size_t b = 0; b < n_blocks; ++b) {
+        const std::size_t first = static_cast<std::size_t>(block_elements_[b * static_cast<std::size_t>(k_lanes)]);
+        const auto* j2 = std::get_if<J2Plastic>(&materials_[static_cast<std::size_t>(section_[first])]);
+        if (!j2) continue;
+        const std::size_t n = n_points_of(first);
+        for (std::size_t p = 0; p < n; ++p)
+            block_state_[block_state_offset_[b] + k_flow_radius * n + p] = RealPack(j2->initial_flow_radius());
+    }
     point_offset_.resize(ne + 1);
     stress_offset_.resize(ne + 1);
     point_offset_[0] = stress_offset_[0] = 0;
@@ -485,7 +496,6 @@ void ShellElements::compute_block(Index b, ParticleState& s, Real viscous_rate, 
         prefetch(k_stress, 3);
         if (kinematic) prefetch(k_back_stress, 3);
         if (j2) {
-            prefetch(k_plastic_strain, 1);
             prefetch(k_flow_radius, 1);
             if (j2->rate_dependent()) prefetch(k_strain_rate, 1);
         }
@@ -498,10 +508,9 @@ void ShellElements::compute_block(Index b, ParticleState& s, Real viscous_rate, 
     std::array<RealPack, k_max_block_points> third_k2, strain_rate, new_strain_rate;
     YieldSurfaces<RealPack> yield{back_stress.data(), third_k2.data(), J2Plastic::k_yield_tolerance};
     if (j2) {
-        const RealPack initial_radius(j2->initial_flow_radius());
         for (std::size_t p = 0; p < n_points; ++p) {
             for (std::size_t r = 0; r < 3; ++r) back_stress[3 * p + r] = kinematic ? field(p, k_back_stress + r) : RealPack(0.0);
-            const RealPack kappa = select(field(p, k_plastic_strain) > 0.0, field(p, k_flow_radius), initial_radius);
+            const RealPack kappa = field(p, k_flow_radius);  // sigma_f(0) before the first yield (constructor)
             third_k2[p] = kappa * kappa / 3.0;
         }
         if (j2->rate_dependent()) {
@@ -744,7 +753,9 @@ void ShellElements::set_point_state(std::size_t e, std::size_t p, const Material
     set(k_plastic_strain, mp.plastic_strain);
     set(k_plastic_work, mp.plastic_work);
     set(k_strain_rate, mp.strain_rate);
-    set(k_flow_radius, mp.flow_radius);
+    // the block convention: the radius is valid before the first yield too (constructor)
+    const Real initial_radius = std::get<J2Plastic>(materials_[static_cast<std::size_t>(section_[e])]).initial_flow_radius();
+    set(k_flow_radius, mp.plastic_strain > 0 ? mp.flow_radius : initial_radius);
     set(k_flow_slope, mp.flow_slope);
 }
 
