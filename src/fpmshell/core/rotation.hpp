@@ -13,8 +13,9 @@ namespace fpmshell {
     const Real t2 = phi.squaredNorm();
     Real a, b;
     if (t2 < 1e-4) {  // t < 0.01 (every step of a stable run): series, next terms < 1e-21
-        a = 1.0 - t2 / 6.0 * (1.0 - t2 / 20.0 * (1.0 - t2 / 42.0));
-        b = 0.5 - t2 / 24.0 * (1.0 - t2 / 30.0 * (1.0 - t2 / 56.0));
+        // (multiplications by the reciprocal constants: as the block kernel's series)
+        a = 1.0 - t2 * (1.0 / 6.0) * (1.0 - t2 * (1.0 / 20.0) * (1.0 - t2 * (1.0 / 42.0)));
+        b = 0.5 - t2 * (1.0 / 24.0) * (1.0 - t2 * (1.0 / 30.0) * (1.0 - t2 * (1.0 / 56.0)));
     } else {
         const Real t = std::sqrt(t2);
         a = std::sin(t) / t;
@@ -39,8 +40,8 @@ namespace fpmshell {
     const Real t2 = phi.squaredNorm();
     Real c, s;
     if (t2 < 1e-4) {  // t < 0.01 (every step of a stable run): series, next terms < 1e-22
-        c = 1.0 - t2 / 8.0 * (1.0 - t2 / 48.0 * (1.0 - t2 / 120.0));
-        s = 0.5 * (1.0 - t2 / 24.0 * (1.0 - t2 / 80.0 * (1.0 - t2 / 168.0)));
+        c = 1.0 - t2 * (1.0 / 8.0) * (1.0 - t2 * (1.0 / 48.0) * (1.0 - t2 * (1.0 / 120.0)));
+        s = 0.5 * (1.0 - t2 * (1.0 / 24.0) * (1.0 - t2 * (1.0 / 80.0) * (1.0 - t2 * (1.0 / 168.0))));
     } else {
         const Real t = std::sqrt(t2);
         c = std::cos(0.5 * t);

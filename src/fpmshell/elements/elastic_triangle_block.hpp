@@ -76,10 +76,13 @@ struct ElasticTriangleLoads {
 namespace block_detail {
 
 /// R(phi) by the series of core/rotation.hpp (|phi|^2 < 1e-4, checked by the caller).
+/// Multiplications by the reciprocal constants, not divisions: a pack division occupies the
+/// divider for about 16 cycles, and the block kernel's divisions by constants were most of
+/// its divider time.
 template <class T>
 [[nodiscard]] FPMSHELL_INLINE M3<T> rotation_matrix_series(const V3<T>& phi, const T& t2) {
-    const T a = 1.0 - t2 / 6.0 * (1.0 - t2 / 20.0 * (1.0 - t2 / 42.0));
-    const T b = 0.5 - t2 / 24.0 * (1.0 - t2 / 30.0 * (1.0 - t2 / 56.0));
+    const T a = 1.0 - t2 * (1.0 / 6.0) * (1.0 - t2 * (1.0 / 20.0) * (1.0 - t2 * (1.0 / 42.0)));
+    const T b = 0.5 - t2 * (1.0 / 24.0) * (1.0 - t2 * (1.0 / 30.0) * (1.0 - t2 * (1.0 / 56.0)));
     const T d = 1.0 - b * t2;
     const T bxy = b * phi.x * phi.y, bxz = b * phi.x * phi.z, byz = b * phi.y * phi.z;
     return {{V3<T>{d + b * phi.x * phi.x, bxy - a * phi.z, bxz + a * phi.y},
@@ -99,9 +102,11 @@ template <class T>
              V3<T>{fxz - v.y, fyz + v.x, d + f * v.z * v.z}}};
 }
 
+/// v / s by one division and three multiplications.
 template <class T>
 [[nodiscard]] FPMSHELL_INLINE V3<T> divide(const V3<T>& v, const T& s) {
-    return {v.x / s, v.y / s, v.z / s};
+    const T inv = 1.0 / s;
+    return {v.x * inv, v.y * inv, v.z * inv};
 }
 
 /// Rotation-only DKT curvature matrix at a corner: the corner's shape-function derivative
@@ -166,9 +171,10 @@ template <class T, class ReturnMapping = NoReturnMapping>
     const V3<T> na_raw = cross(a2, a3), n_raw = cross(r2, r3);
     const T lmax2 = max(max(squared_norm(a2), squared_norm(a3)), squared_norm(a3 - a2));
     const T na_norm = sqrt(squared_norm(na_raw)), n_norm = sqrt(squared_norm(n_raw));
-    const V3<T> na = divide(na_raw, na_norm), n = divide(n_raw, n_norm);
+    const T inv_na_norm = 1.0 / na_norm;
+    const V3<T> na = inv_na_norm * na_raw, n = divide(n_raw, n_norm);
     const T area = 0.5 * na_norm;
-    const T area_ratio = n_norm / na_norm;
+    const T area_ratio = n_norm * inv_na_norm;
     const T normal_cosine = dot(na, n);
     MaskOf<T> valid = (na_norm > 1e-12 * lmax2) && (n_norm > 1e-12 * lmax2) && (normal_cosine > 0.0) &&
                       (area_ratio > 0.5) && (area_ratio < 2.0);
@@ -184,7 +190,8 @@ template <class T, class ReturnMapping = NoReturnMapping>
     const M3<T> r_ip = rotation_matrix_series(phi_ip, phi_ip2);
     const V3<T> r2pp = transpose_times(r_ip, r2p), r3pp = transpose_times(r_ip, r3p);
     const T x2 = sqrt(squared_norm(a2));                                   // §2.5
-    const V3<T> ex = divide(a2, x2), ez = na, ey = cross(ez, ex);
+    const T inv_x2 = 1.0 / x2;
+    const V3<T> ex = inv_x2 * a2, ez = na, ey = cross(ez, ex);
     const T x3 = dot(ex, a3), y3 = dot(ey, a3);
     const V3<T> d2 = r2pp - a2, d3 = r3pp - a3;                             // §2.4
     const std::array<T, 3> ux{T(0.0), dot(ex, d2), dot(ex, d3)}, uy{T(0.0), dot(ey, d2), dot(ey, d3)};
@@ -223,8 +230,12 @@ template <class T, class ReturnMapping = NoReturnMapping>
     {
         // sides 23, 31, 12: (x_i - x_j, y_i - y_j)
         const std::array<T, 3> xij{x2 - x3, x3, -x2}, yij{-y3, y3, T(0.0)};
+        std::array<T, 3> l2;
+        for (std::size_t s = 0; s < 3; ++s) l2[s] = xij[s] * xij[s] + yij[s] * yij[s];
+        const T inv_product = 1.0 / (l2[0] * l2[1] * l2[2]);  // one division for the three sides
+        const std::array<T, 3> inv_side{l2[1] * l2[2] * inv_product, l2[0] * l2[2] * inv_product, l2[0] * l2[1] * inv_product};
         for (std::size_t s = 0; s < 3; ++s) {
-            const T inv_l2 = 1.0 / (xij[s] * xij[s] + yij[s] * yij[s]);
+            const T inv_l2 = inv_side[s];
             cb[s] = 0.75 * xij[s] * yij[s] * inv_l2;
             cc[s] = (0.25 * xij[s] * xij[s] - 0.5 * yij[s] * yij[s]) * inv_l2;
             ce[s] = (0.25 * yij[s] * yij[s] - 0.5 * xij[s] * xij[s]) * inv_l2;
@@ -278,7 +289,7 @@ template <class T, class ReturnMapping = NoReturnMapping>
             const T* b = yield->back_stress + 3 * point;
             const T xs = (sigma[0] - b[0]) + (sigma[1] - b[1]), xd = (sigma[1] - b[1]) - (sigma[0] - b[0]);
             const T x12 = sigma[2] - b[2];
-            const T half_p2 = 0.5 * (xs * xs / 6.0 + 0.5 * xd * xd + 2.0 * x12 * x12);
+            const T half_p2 = 0.5 * (xs * xs * (1.0 / 6.0) + 0.5 * xd * xd + 2.0 * x12 * x12);
             const T k2 = yield->third_k2[point];
             MaskOf<T> inside = (half_p2 - k2 <= yield->tolerance * k2);
             if (yield->rate) {  // effective_strain_rate of j2_plastic.cpp, filtered (§7.4 a)
@@ -347,7 +358,7 @@ template <class T, class ReturnMapping = NoReturnMapping>
             out.bending_moment[r] += ip.weight * m_g[r];
         }
         if (viscous_rate > 0) {  // §6.5 viscous resultants
-            const T fn = viscous_rate * h, fm = viscous_rate * (h * h * h / 12.0);
+            const T fn = viscous_rate * h, fm = viscous_rate * (h * h * h * (1.0 / 12.0));
             const std::array<T, 3> n_v{fn * (sec.c11 * d_eps_m[0] + sec.c12 * d_eps_m[1]),
                                        fn * (sec.c12 * d_eps_m[0] + sec.c11 * d_eps_m[1]), fn * (sec.c33 * d_eps_m[2])};
             const std::array<T, 3> m_v{fm * (sec.c11 * d_kappa[0] + sec.c12 * d_kappa[1]),
@@ -383,8 +394,8 @@ template <class T, class ReturnMapping = NoReturnMapping>
         m_b[q] = sum;
     }
     const T sum_mx = m_b[0] + m_b[2] + m_b[4], sum_my = m_b[1] + m_b[3] + m_b[5];
-    const T f3z = -sum_mx / y3;
-    const T f2z = (sum_my - x3 * f3z) / x2;
+    const T f3z = -sum_mx * (x2 * inv_two_area);  // 1 / y3 = x2 / (x2 y3)
+    const T f2z = (sum_my - x3 * f3z) * inv_x2;
     const T f1z = -f2z - f3z;
     const std::array<T, 3> fz{f1z, f2z, f3z};
     // §5 forward rotation: global = T_t^T local.

@@ -511,7 +511,7 @@ void ShellElements::compute_block(Index b, ParticleState& s, Real viscous_rate, 
         for (std::size_t p = 0; p < n_points; ++p) {
             for (std::size_t r = 0; r < 3; ++r) back_stress[3 * p + r] = kinematic ? field(p, k_back_stress + r) : RealPack(0.0);
             const RealPack kappa = field(p, k_flow_radius);  // sigma_f(0) before the first yield (constructor)
-            third_k2[p] = kappa * kappa / 3.0;
+            third_k2[p] = kappa * kappa * (1.0 / 3.0);
         }
         if (j2->rate_dependent()) {
             yield.rate = &j2->rate_factor();
