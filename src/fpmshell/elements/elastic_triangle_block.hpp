@@ -297,7 +297,7 @@ template <class T, class ReturnMapping = NoReturnMapping>
                 if (yield->dt > 0) {
                     const T e12 = 0.5 * de[2];
                     const T q = de[0] * de[0] + de[1] * de[1] + de[0] * de[1] + e12 * e12;
-                    rate = (2.0 / std::sqrt(3.0)) * sqrt(max(T(0.0), q)) / yield->dt;
+                    rate = sqrt(max(T(0.0), q)) * ((2.0 / std::sqrt(3.0)) / yield->dt);  // a scalar division
                 }
                 const T new_rate = yield->rate_filter * rate + (1.0 - yield->rate_filter) * yield->strain_rate[point];
                 yield->new_strain_rate[point] = new_rate;
