@@ -496,7 +496,7 @@ void ExplicitSolver::cycle(Real load_time, Real dt_new_cap, bool relaxation) {
         s_.x_prev[p] = s_.x[p] + dt_new * s_.v[p];
         s_.dtheta[p] = dt_new * s_.omega[p];
         s_.rotation[p] = rotation_quaternion(s_.dtheta[p]) * s_.rotation[p];
-        if (!(s_.x_prev[p].allFinite() && s_.omega[p].allFinite() && s_.f_int[p].allFinite())) acc[4] += 1;  // finite_state
+        if (!finite_state(p, s_.x_prev[p])) acc[4] += 1;
     });
     std::swap(s_.x, s_.x_prev);
     kinetic += particle_energy[0];
@@ -523,7 +523,7 @@ void ExplicitSolver::cycle(Real load_time, Real dt_new_cap, bool relaxation) {
 void ExplicitSolver::report_non_finite_state() const {
     const std::size_t np = s_.size();
     for (std::size_t p = 0; p < np; ++p) {
-        if (!finite_state(p)) {
+        if (!finite_state(p, s_.x[p])) {
             std::ostringstream msg;
             msg << "the solution became NaN or infinite at step " << steps_ << " (t = " << time_
                 << ") at particle " << p + 1 << " (internal force " << s_.f_int[p].transpose() << ")";

@@ -85,10 +85,11 @@ private:
     void update_normals_and_loads(Real t);
     [[nodiscard]] Real curve_value(Index curve, Real t) const;
     [[nodiscard]] Real curve_integral(Index curve, Real t) const;
-    /// Whether particle p's position, angular velocity and internal force are finite (defined
-    /// here so that the per-step particle pass inlines it).
-    [[nodiscard]] bool finite_state(std::size_t p) const {
-        return s_.x[p].allFinite() && s_.omega[p].allFinite() && s_.f_int[p].allFinite();
+    /// Whether particle p at `position` has a finite state: the position, its angular velocity
+    /// and internal force (defined here so that the per-step particle pass inlines it; that
+    /// pass checks the new position before it becomes s_.x).
+    [[nodiscard]] bool finite_state(std::size_t p, const Vec3& position) const {
+        return position.allFinite() && s_.omega[p].allFinite() && s_.f_int[p].allFinite();
     }
     /// Throws RunFailure naming the first particle whose state is not finite.
     void report_non_finite_state() const;
