@@ -21,14 +21,6 @@ constexpr Index k_parallel_min_particles = 2000;
 
 /// Removes from w its components along the constraint directions (Gram-Schmidt on the fly).
 Vec3 remove_components(Vec3 w, const std::array<Vec3, 4>& dirs, int n_dirs) {
-    if (n_dirs == 1) {  // the common particle: the normal alone (the loop below, written out)
-        const Real len = dirs[0].norm();
-        if (len > 1e-8) {
-            const Vec3 b = dirs[0] / len;
-            w -= w.dot(b) * b;
-        }
-        return w;
-    }
     std::array<Vec3, 3> basis;
     int nb = 0;
     for (int i = 0; i < n_dirs && nb < 3; ++i) {
