@@ -425,8 +425,7 @@ void ShellElements::ElementTotals::add(const ElementTotals& o) {
 Voigt3 ShellElements::resultant(std::size_t e, std::size_t first) const {
     const Index at = block_lane_[e];
     if (at < 0) return first == 0 ? membrane_force_[e] : bending_moment_[e];
-    const std::size_t b = static_cast<std::size_t>(at) / static_cast<std::size_t>(k_lanes);
-    const int l = static_cast<int>(static_cast<std::size_t>(at) % static_cast<std::size_t>(k_lanes));
+    const auto [b, l] = block_and_lane(at);
     const RealPack* r = block_resultants_.data() + 6 * b + first;
     return Voigt3(lane(r[0], l), lane(r[1], l), lane(r[2], l));
 }
@@ -438,8 +437,7 @@ void ShellElements::set_resultants(std::size_t e, const Voigt3& n, const Voigt3&
         bending_moment_[e] = m;
         return;
     }
-    const std::size_t b = static_cast<std::size_t>(at) / static_cast<std::size_t>(k_lanes);
-    const int l = static_cast<int>(static_cast<std::size_t>(at) % static_cast<std::size_t>(k_lanes));
+    const auto [b, l] = block_and_lane(at);
     RealPack* r = block_resultants_.data() + 6 * b;
     for (Eigen::Index c = 0; c < 3; ++c) {
         set_lane(r[c], l, n(c));
@@ -717,8 +715,7 @@ MaterialPoint ShellElements::point_state(std::size_t e, std::size_t p) const {
         mp.stress = elastic_stress_[stress_offset_[e] + p];
         return mp;
     }
-    const std::size_t b = static_cast<std::size_t>(at) / static_cast<std::size_t>(k_lanes);
-    const int l = static_cast<int>(static_cast<std::size_t>(at) % static_cast<std::size_t>(k_lanes));
+    const auto [b, l] = block_and_lane(at);
     const RealPack* base = block_state_.data() + block_state_offset_[b];
     const std::size_t n = n_points_of(e);
     auto f = [&](std::size_t k) { return lane(base[k * n + p], l); };  // field k, [field][point]
@@ -742,8 +739,7 @@ void ShellElements::set_point_state(std::size_t e, std::size_t p, const Material
         else points_[point_offset_[e] + p] = mp;
         return;
     }
-    const std::size_t b = static_cast<std::size_t>(at) / static_cast<std::size_t>(k_lanes);
-    const int l = static_cast<int>(static_cast<std::size_t>(at) % static_cast<std::size_t>(k_lanes));
+    const auto [b, l] = block_and_lane(at);
     RealPack* base = block_state_.data() + block_state_offset_[b];
     const std::size_t n = n_points_of(e);
     auto set = [&](std::size_t k, Real v) { set_lane(base[k * n + p], l, v); };  // field k, [field][point]

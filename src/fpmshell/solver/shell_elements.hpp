@@ -5,6 +5,7 @@
 
 #include <array>
 #include <limits>
+#include <utility>
 #include <variant>
 #include <vector>
 
@@ -144,6 +145,11 @@ private:
     std::vector<ElasticSectionConstants> elastic_constants_;  ///< per section (zero if not elastic)
     std::vector<Index> block_elements_;   ///< k_lanes elements of one section per block
     std::vector<Index> block_lane_;       ///< per element: its index in block_elements_, -1: computed alone
+    /// The block and the lane of index `at` of block_elements_ (at >= 0).
+    [[nodiscard]] static std::pair<std::size_t, int> block_and_lane(Index at) {
+        const auto i = static_cast<std::size_t>(at), w = static_cast<std::size_t>(k_lanes);
+        return {i / w, static_cast<int>(i % w)};
+    }
     std::vector<std::size_t> block_state_offset_;  ///< per block: its first pack in block_state_
     /// the point states of the blocks, [block][field][point] (point_fields), one lane per element
     std::vector<RealPack> block_state_;
