@@ -14,11 +14,15 @@
 
 #include <map>
 
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
 namespace fpmshell {
 namespace {
 
 constexpr Index k_parallel_min_elements = 2000;
-constexpr std::size_t k_slot_components = 6;  // force x y z, moment x y z
+constexpr std::size_t k_slot_components = SlotGatherPlan::k_components;  // force x y z, moment x y z
 // Smoothed membrane: neighbours whose normals differ by more than this (a fold, such as a tube
 // corner) are not averaged with (cos 20 deg, like the kink limit of §1.3).
 constexpr Real k_smooth_cosine = 0.9397;
@@ -445,7 +449,7 @@ void ShellElements::set_resultants(std::size_t e, const Voigt3& n, const Voigt3&
     }
 }
 
-void ShellElements::compute_block(Index b, ParticleState& s, Real viscous_rate, Real dt) {
+void ShellElements::compute_block(Index b, ParticleState& s, Real viscous_rate, Real dt, Real* ring_slots) {
     const Index* ids = block_elements_.data() + static_cast<std::size_t>(b) * k_lanes;
     auto element = [ids](int l) { return static_cast<std::size_t>(ids[l]); };
     const std::size_t sec = static_cast<std::size_t>(section_[element(0)]);  // one per block
@@ -588,15 +592,20 @@ void ShellElements::compute_block(Index b, ParticleState& s, Real viscous_rate, 
         for (std::size_t r = 0; r < 3; ++r) stdx::where(loads.valid, field(p, k_stress + r)) = stress[3 * p + r];
         if (yield.new_strain_rate) stdx::where(loads.valid, field(p, k_strain_rate)) = new_strain_rate[p];
     }
-    // the corner loads, 6 whole packs per corner (an invalid lane's are rewritten below by the
-    // general code)
-    for (std::size_t i = 0; i < 3; ++i) {
-        Real* at = slot_loads_.data() + (3 * static_cast<std::size_t>(b) + i) * k_slot_components * static_cast<std::size_t>(k_lanes);
-        const std::array<const RealPack*, k_slot_components> component{
-            &loads.force[i].x, &loads.force[i].y, &loads.force[i].z, &loads.moment[i].x, &loads.moment[i].y, &loads.moment[i].z};
-        for (std::size_t c = 0; c < k_slot_components; ++c)
-            component[c]->copy_to(at + c * static_cast<std::size_t>(k_lanes), stdx::element_aligned);
-    }
+    // the corner loads, 6 whole packs per corner, into the ring and (kept or without a ring)
+    // into slot_loads_; an invalid lane's are rewritten below by the general code
+    constexpr auto w = static_cast<std::size_t>(k_lanes);
+    Real* full_slots = slot_loads_.data() + 3 * static_cast<std::size_t>(b) * k_slot_components * w;
+    auto store = [&](Real* slots) {
+        for (std::size_t i = 0; i < 3; ++i) {
+            const std::array<const RealPack*, k_slot_components> component{
+                &loads.force[i].x, &loads.force[i].y, &loads.force[i].z, &loads.moment[i].x, &loads.moment[i].y, &loads.moment[i].z};
+            for (std::size_t c = 0; c < k_slot_components; ++c)
+                component[c]->copy_to(slots + (i * k_slot_components + c) * w, stdx::element_aligned);
+        }
+    };
+    if (!ring_slots || gather_plan_.keep[static_cast<std::size_t>(b)]) store(full_slots);
+    if (ring_slots) store(ring_slots);
     // N and M, whole packs (an invalid lane's are rewritten below by the general code)
     RealPack* resultants = block_resultants_.data() + 6 * static_cast<std::size_t>(b);
     for (std::size_t r = 0; r < 3; ++r) {
@@ -609,6 +618,9 @@ void ShellElements::compute_block(Index b, ParticleState& s, Real viscous_rate, 
         const std::size_t ue = element(l);
         if (!lane(loads.valid, l)) {  // outside the block kernel's bounds: the general code
             totals.add(compute_element(static_cast<Index>(ue), s, viscous_rate, dt));
+            // (which writes slot_loads_; the ring takes a copy of the lane)
+            if (ring_slots)
+                for (std::size_t k = 0; k < 3 * k_slot_components; ++k) ring_slots[k * w + static_cast<std::size_t>(l)] = full_slots[k * w + static_cast<std::size_t>(l)];
             continue;
         }
         const Real lc = lane(loads.characteristic_length, l);
@@ -623,6 +635,18 @@ void ShellElements::compute_block(Index b, ParticleState& s, Real viscous_rate, 
         totals.add(t);
     }
     block_totals_[static_cast<std::size_t>(b)] = totals;
+}
+
+void ShellElements::gather_particle(std::size_t p, const Real* base, ParticleState& s) const {
+    constexpr auto w = static_cast<std::size_t>(k_lanes);
+    Vec3 f = Vec3::Zero(), m = Vec3::Zero();
+    for (Index k = csr_begin_[p]; k < csr_begin_[p + 1]; ++k) {
+        const Real* slot = base + gather_plan_.offset[static_cast<std::size_t>(k)];
+        f += Vec3(slot[0], slot[w], slot[2 * w]);
+        m += Vec3(slot[3 * w], slot[4 * w], slot[5 * w]);
+    }
+    s.f_int[p] = f;
+    s.m_int[p] = m;
 }
 
 ShellElements::StepTotals ShellElements::compute(ParticleState& s, Real viscous_rate, Real dt) {
@@ -647,31 +671,44 @@ ShellElements::StepTotals ShellElements::compute(ParticleState& s, Real viscous_
     }
     // Phase 1: every triangle writes its corner loads (and, smoothed, the loads on the nodes
     // across its sides) into its own slots: the elastic blocks k_lanes elements at a time
-    // (elements/elastic_triangle_block.hpp), the other elements one by one.
+    // (elements/elastic_triangle_block.hpp), the other elements one by one. Phase 2: every
+    // particle sums its slots in element order (bitwise thread-independent): as soon as its
+    // last block is done where the plan allows (from the ring, still in the cache), the others
+    // after the loop (slot_gather_plan.hpp).
     const Index n_blocks = static_cast<Index>(block_elements_.size()) / k_lanes;
     const Index n_scalar = static_cast<Index>(scalar_elements_.size());
+    int ranges = 1;
+#ifdef _OPENMP
+    if (parallel) ranges = omp_get_max_threads();
+#endif
+    if (gather_plan_.ranges != ranges) gather_plan_ = make_slot_gather_plan(n_blocks, ranges, csr_begin_, csr_slot_);
+    const SlotGatherPlan& plan = gather_plan_;
+    constexpr Index tile = SlotGatherPlan::k_tile_blocks, ring_blocks = SlotGatherPlan::k_ring_blocks;
 #pragma omp parallel if (parallel)
     {
-#pragma omp for schedule(static) nowait
-        for (Index b = 0; b < n_blocks; ++b) compute_block(b, s, viscous_rate, dt);
+        // one range per thread (any team size gives the same sums: a range is a unit of work)
+#pragma omp for schedule(static, 1) nowait
+        for (int r = 0; r < plan.ranges; ++r) {
+            const auto ur = static_cast<std::size_t>(r);
+            Real* ring = plan.use_ring ? gather_plan_.rings[ur].data() : nullptr;
+            const Index first = plan.range_begin[ur], end = plan.range_begin[ur + 1];
+            for (Index t = plan.range_first_tile[ur]; t < plan.range_first_tile[ur + 1]; ++t) {
+                const Index from = first + (t - plan.range_first_tile[ur]) * tile;
+                for (Index b = from; b < std::min(end, from + tile); ++b)
+                    compute_block(b, s, viscous_rate, dt,
+                                  ring ? ring + static_cast<std::size_t>((b - first) % ring_blocks) * SlotGatherPlan::k_block_reals
+                                       : nullptr);
+                for (Index k = plan.ready_begin[static_cast<std::size_t>(t)]; k < plan.ready_begin[static_cast<std::size_t>(t) + 1]; ++k)
+                    gather_particle(static_cast<std::size_t>(plan.ready[static_cast<std::size_t>(k)]), ring, s);
+            }
+        }
 #pragma omp for schedule(static)
         for (Index i = 0; i < n_scalar; ++i)
             alone_totals_[static_cast<std::size_t>(i)] = compute_element(scalar_elements_[static_cast<std::size_t>(i)], s, viscous_rate, dt);
-    }
-    // Phase 2: every particle sums its slots in a fixed order (bitwise thread-independent).
-    const Index np = static_cast<Index>(s.size());
-#pragma omp parallel for schedule(static) if (parallel)
-    for (Index p = 0; p < np; ++p) {
-        const std::size_t up = static_cast<std::size_t>(p);
-        constexpr auto w = static_cast<std::size_t>(k_lanes);
-        Vec3 f = Vec3::Zero(), m = Vec3::Zero();
-        for (Index k = csr_begin_[up]; k < csr_begin_[up + 1]; ++k) {
-            const Real* slot = slot_loads_.data() + csr_slot_[static_cast<std::size_t>(k)];
-            f += Vec3(slot[0], slot[w], slot[2 * w]);
-            m += Vec3(slot[3 * w], slot[4 * w], slot[5 * w]);
-        }
-        s.f_int[up] = f;
-        s.m_int[up] = m;
+        // (the barrier of the loop above: every slot is written)
+#pragma omp for schedule(static)
+        for (Index k = 0; k < static_cast<Index>(plan.after.size()); ++k)
+            gather_particle(static_cast<std::size_t>(plan.after[static_cast<std::size_t>(k)]), slot_loads_.data(), s);
     }
     // Totals over the blocks, then the elements computed alone, in fixed chunks of them
     // (core/chunked_loop.hpp): the same for any thread count.

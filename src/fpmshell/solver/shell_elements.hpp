@@ -15,6 +15,7 @@
 #include "fpmshell/materials/section_material.hpp"
 #include "fpmshell/model/model.hpp"
 #include "fpmshell/solver/particle_state.hpp"
+#include "fpmshell/solver/slot_gather_plan.hpp"
 
 namespace fpmshell {
 
@@ -87,8 +88,13 @@ private:
     /// Its totals: see ElementTotals.
     [[nodiscard]] ElementTotals compute_element(Index e, ParticleState& s, Real viscous_rate, Real dt);
     /// Phase 1 of compute for the k_lanes elements of SIMD block b (lanes outside the block
-    /// kernel's bounds go to compute_element).
-    void compute_block(Index b, ParticleState& s, Real viscous_rate, Real dt);
+    /// kernel's bounds go to compute_element). Its corner loads go to ring_slots (the block's
+    /// place in a ring of slot_gather_plan.hpp; nullptr: none) and, where the plan keeps the
+    /// block or there is no ring, to slot_loads_.
+    void compute_block(Index b, ParticleState& s, Real viscous_rate, Real dt, Real* ring_slots);
+    /// Sums the slots of particle p (in element order) into s.f_int, s.m_int; base: the ring
+    /// or slot_loads_, which gather_plan_.offset points into.
+    void gather_particle(std::size_t p, const Real* base, ParticleState& s) const;
     /// Integration points of element e.
     [[nodiscard]] std::size_t n_points_of(std::size_t e) const;
     /// Fields of a point of element e in the block layout: the stress only (elastic section,
@@ -141,6 +147,9 @@ private:
     [[nodiscard]] std::size_t slot_offset(std::size_t e, std::size_t k) const;
     std::vector<Index> csr_begin_;  ///< particle -> its slots (csr_slot_[csr_begin_[p]...])
     std::vector<std::size_t> csr_slot_;  ///< slot_offset of each slot, by particle, in element order
+    /// When each particle is summed, and from where (ring or slot_loads_); made for a thread
+    /// count, remade when it changes.
+    SlotGatherPlan gather_plan_;
     // SIMD blocks (elements/elastic_triangle_block.hpp)
     std::vector<ElasticSectionConstants> elastic_constants_;  ///< per section (zero if not elastic)
     std::vector<Index> block_elements_;   ///< k_lanes elements of one section per block
