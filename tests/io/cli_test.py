@@ -287,9 +287,12 @@ for sig, expected in ((signal.SIGINT, 130), (signal.SIGTERM, 143)):
         code, out = fpm("run", good, "-o", idir, "--quiet", "--threads", "1", "--resume",
                         "--set", "control.end_time=%.9g" % (t_stop + 5e-3), "--set", "output.every=1e-3")
         times = [float(r.split(",")[0]) for r in open(hist).read().strip().splitlines()[1:]]
+        # history.csv prints 9 significant digits: its last time is the end time to 5e-9
+        # relative (a loaded machine can let the run reach t ~ 10 before the signal lands)
+        target = t_stop + 5e-3
         check("%s: --resume continues the interrupted run, rows in order" % name,
-              code == 0 and abs(times[-1] - (t_stop + 5e-3)) < 1e-9 and all(b > a for a, b in zip(times, times[1:])),
-              out)
+              code == 0 and abs(times[-1] - target) <= 1e-8 * max(1.0, abs(target))
+              and all(b > a for a, b in zip(times, times[1:])), out)
 # Thread-count determinism (issue 5): the cap and the panel, large enough for every parallel
 # loop (over 2000 particles and elements), give the same bytes on 1, 2 and 4 threads.
 for name, example, extra in [("cap", "spherical_cap_elastic", ["--set", "mesh.divisions=30", "--set", "control.end_time=1e-4"]),
