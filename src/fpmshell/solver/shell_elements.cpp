@@ -3,7 +3,9 @@
 #include "fpmshell/io/restart_archive.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 
 #include "fpmshell/core/chunked_loop.hpp"
@@ -38,6 +40,12 @@ TriangleShape local_shape(const Vec3& p0, const Vec3& p1, const Vec3& p2) {
     const Vec3 ex = e1 / x2;
     const Vec3 d = p2 - p0;
     return TriangleShape(x2, d.dot(ex), ex.cross(d).norm());
+}
+
+/// The class of a local coordinate for sharing the bending step ratio between elements of one
+/// shape: its bits with the mantissa rounded to 32 bits (2^-32 relative).
+std::int64_t shape_class(Real v) {
+    return static_cast<std::int64_t>((std::bit_cast<std::uint64_t>(v) + (std::uint64_t{1} << 19)) >> 20);
 }
 
 Real characteristic_length(const Vec3& p0, const Vec3& p1, const Vec3& p2) {
@@ -75,8 +83,15 @@ ShellElements::ShellElements(const Model& model)
     node_inertia_.resize(ne);
     bend_ratio_.assign(ne, 1.0);
     bend_lc_.assign(ne, 0.0);
-    // Every element on its own (the bending step's eigenproblem is most of the set-up's time).
-#pragma omp parallel for schedule(dynamic, 256) if (static_cast<Index>(ne) >= k_parallel_min_elements)
+    // The bending step ratio needs a 9 x 9 eigenproblem per element where h / L_c is near 1
+    // (nearly all the set-up's time on a fine mesh). It depends on the section and the local
+    // shape only, and the elements of a structured mesh come in a few shapes: it is computed
+    // once per section and shape class (local coordinates equal to 2^-32 relative, far below
+    // the 5 % drift the ratio is allowed before it is re-evaluated), for the lowest-numbered
+    // element of the class, and shared by the others.
+    std::vector<std::array<std::int64_t, 4>> shape_key(ne);
+    std::vector<Real> initial_lc(ne);
+#pragma omp parallel for schedule(static) if (static_cast<Index>(ne) >= k_parallel_min_elements)
     for (std::size_t e = 0; e < ne; ++e) {
         const auto& t = tri_[e];
         const Vec3& p0 = model.nodes[static_cast<std::size_t>(t[0])];
@@ -88,7 +103,33 @@ ShellElements::ShellElements(const Model& model)
             lumped_node_share(mat.density, sec.thickness, 0.5 * (p1 - p0).cross(p2 - p0).norm());
         node_mass_[e] = share.mass;
         node_inertia_[e] = share.inertia;
-        refresh_bending_ratio(static_cast<Index>(e), model.nodes, current_length(static_cast<Index>(e), model.nodes));
+        initial_lc[e] = current_length(static_cast<Index>(e), model.nodes);
+        const TriangleShape shape = local_shape(p0, p1, p2);
+        shape_key[e] = {section_[e], shape_class(shape.x[1]), shape_class(shape.x[2]), shape_class(shape.y[2])};
+    }
+    std::vector<Index> by_shape;  // the elements with a length, by key, each class in element order
+    for (std::size_t e = 0; e < ne; ++e)
+        if (initial_lc[e] > 0) by_shape.push_back(static_cast<Index>(e));
+    std::sort(by_shape.begin(), by_shape.end(), [&](Index a, Index b) {
+        const auto& ka = shape_key[static_cast<std::size_t>(a)];
+        const auto& kb = shape_key[static_cast<std::size_t>(b)];
+        return ka != kb ? ka < kb : a < b;
+    });
+    std::vector<std::size_t> class_begin;  // first entry of each class in by_shape
+    for (std::size_t i = 0; i < by_shape.size(); ++i)
+        if (i == 0 || shape_key[static_cast<std::size_t>(by_shape[i])] != shape_key[static_cast<std::size_t>(by_shape[i - 1])])
+            class_begin.push_back(i);
+    class_begin.push_back(by_shape.size());
+    const auto n_classes = static_cast<Index>(class_begin.size()) - 1;
+#pragma omp parallel for schedule(dynamic, 64) if (n_classes >= k_parallel_min_elements)
+    for (Index c = 0; c < n_classes; ++c) {
+        const auto first = class_begin[static_cast<std::size_t>(c)], end = class_begin[static_cast<std::size_t>(c) + 1];
+        const Real ratio = bending_ratio(by_shape[first], model.nodes);
+        for (std::size_t i = first; i < end; ++i) {
+            const auto e = static_cast<std::size_t>(by_shape[i]);
+            bend_ratio_[e] = ratio;
+            bend_lc_[e] = initial_lc[e];
+        }
     }
     // Side neighbours: side i of element e is opposite its corner i; an edge shared by exactly
     // two elements joins them.
