@@ -327,7 +327,7 @@ Real ShellElements::min_critical_dt(const std::vector<Vec3>& x, Index* where) co
     Real best = std::numeric_limits<Real>::infinity();
     Index arg = -1;
     for (Index e = 0; e < size(); ++e) {
-        const Real dt = element_dt(e, current_length(e, x));
+        const Real dt = critical_dt(e, x);
         if (dt < best) {
             best = dt;
             arg = e;

@@ -42,6 +42,8 @@ public:
 
     /// Critical step of every element from the current geometry (§6.4), unscaled, minimum.
     [[nodiscard]] Real min_critical_dt(const std::vector<Vec3>& x, Index* where = nullptr) const;
+    /// Critical step of element e at positions x (§6.4), unscaled.
+    [[nodiscard]] Real critical_dt(Index e, const std::vector<Vec3>& x) const { return element_dt(e, current_length(e, x)); }
 
     [[nodiscard]] Index size() const { return static_cast<Index>(tri_.size()); }
     /// Membrane force N and bending moment M of element e averaged over the element, in its
