@@ -17,6 +17,7 @@
 #include <fstream>
 #include <map>
 #include <string>
+#include <thread>
 #include <vector>
 
 #ifdef _OPENMP
@@ -72,6 +73,10 @@ constexpr int k_steps_to_yield = 10;
 // Steps per sample at most: the plastic plate stretches by ~0.1 % per step, and a window of a few
 // tens of steps keeps every mesh size in the same state (strain, distortion, bending ratio).
 constexpr long k_max_steps_per_sample = 10;
+// Steps per sample at least: the first step of a sample starts cold (the other measure ran in
+// between: the element-loop twin has arrays of its own), which on 10^5 and 10^6 elements, one
+// step per sample, made the whole step 20-30 % dearer than the time loop of `fpmshell run`.
+constexpr long k_min_steps_per_sample = 3;
 // The plastic plate under pressure of the whole-run measure (bench/whole_run/plate_plastic.yaml)
 // is sampled from this step on: the middle of the ~100 steps run.py times.
 constexpr long k_whole_run_warm_up = 50;
@@ -165,6 +170,14 @@ private:
 /// warm_up_steps < 0: the default (the steady plastic plate's first yield + 2 steps, 5 elastic);
 /// every_point_yields: the flop counts take every point as yielding (the steady plate), else the
 /// share measured at a step after the samples.
+/// Before a one-thread sample of a round after the first (which follows a sample on more
+/// threads): libgomp's idle threads spin for some 20 ms after a parallel region (3e5 pause
+/// instructions) and took the second core from the one-thread sample (its rows showed
+/// 130-160 % CPU). They fall asleep meanwhile.
+void let_idle_threads_sleep(int threads, int round) {
+    if (threads == 1 && round > 0) std::this_thread::sleep_for(std::chrono::milliseconds(100));
+}
+
 void measure_plate(const Model& m, int loop_order, const std::string& loop_name, int step_order,
                    const std::string& step_name, const Options& o, const std::vector<int>& threads,
                    std::vector<Row>& rows, std::vector<std::string>& notes, long warm_up_steps = -1,
@@ -178,7 +191,7 @@ void measure_plate(const Model& m, int loop_order, const std::string& loop_name,
     const double ppe = static_cast<double>(ps.size()) / static_cast<double>(ne);
     const bool plastic = m.materials[0].plastic();
     const double target = o.quick ? 2e4 : 1e5;  // element-steps per sample
-    const long batch = std::clamp<long>(static_cast<long>(std::ceil(target / static_cast<double>(ne))), 1,
+    const long batch = std::clamp<long>(static_cast<long>(std::ceil(target / static_cast<double>(ne))), k_min_steps_per_sample,
                                         k_max_steps_per_sample);
     const int repeats = o.quick ? 3 : (ne > 500'000 ? 3 : 5);
     const long warm_up = warm_up_steps >= 0 ? warm_up_steps : plastic ? k_steps_to_yield + 2 : (ne > 500'000 ? 3 : 5);
@@ -212,6 +225,7 @@ void measure_plate(const Model& m, int loop_order, const std::string& loop_name,
     for (int r = 0; r < repeats; ++r) {
         for (int t : threads) {
             use_threads(t);
+            let_idle_threads_sleep(t, r);
             double c0 = process_cpu_seconds();
             auto t0 = Clock::now();
             for (long i = 0; i < batch; ++i) solver.step(1e30);
@@ -284,6 +298,7 @@ void measure_tube(int order, const Options& o, const std::vector<int>& threads, 
     for (int r = 0; r < repeats; ++r) {
         for (int t : threads) {
             use_threads(t);
+            let_idle_threads_sleep(t, r);
             const double c0 = solver.contact_statistics() ? solver.contact_statistics()->seconds : 0.0;
             const double cpu0 = process_cpu_seconds();
             const auto t0 = Clock::now();
@@ -493,7 +508,7 @@ int run_table(int argc, char** argv) {
     std::printf("\nNotes\n\n");
     std::printf(
         "- ns / element-step: median of the samples (5 per row, 3 for 10^6 elements and --quick), each sample a run of\n"
-        "  steps of about %.0e element-steps (1 to %ld steps). Whole step: ExplicitSolver::step. Element loop:\n"
+        "  steps of about %.0e element-steps (%ld to %ld steps). Whole step: ExplicitSolver::step. Element loop:\n"
         "  ShellElements::compute alone, on a twin of the solver's elements given the solver's current path element\n"
         "  (untimed copy; on the small meshes computed up to %ld times in a row, its material points moving on).\n"
         "- Plates: 2 n^2 triangles, n = 22, 71, 224, 707. Elastic: the clamped plate under pressure (bench_elastic_plate.cpp),\n"
@@ -507,7 +522,7 @@ int run_table(int argc, char** argv) {
         "  plastic_plate of the Google benchmark overshoots its 1 MPa yield stress many times over at first: its\n"
         "  cost per step falls ~10x over its first 200 steps, and differently on every mesh.) Square tube:\n"
         "  bench_square_tube.cpp's model.\n",
-        o.quick ? 2e4 : 1e5, k_max_steps_per_sample, k_max_steps_per_sample, k_whole_run_warm_up, k_steps_to_yield,
+        o.quick ? 2e4 : 1e5, k_min_steps_per_sample, k_max_steps_per_sample, k_max_steps_per_sample, k_whole_run_warm_up, k_steps_to_yield,
         k_steps_to_yield + 2);
     std::printf(
         "- Flop and byte counts are analytic (bench/kernel_costs.hpp; no hardware counters on this machine), +-20 %%.\n"
