@@ -261,6 +261,14 @@ ShellElements::ShellElements(const Model& model)
         for (int k = 0; k < used_slots; ++k)
             if (const Index p = slot_particle(e, k); p >= 0)
                 csr_slot_[static_cast<std::size_t>(fill[static_cast<std::size_t>(p)]++)] = slot_offset(e, static_cast<std::size_t>(k));
+    gather_plan_ = make_slot_gather_plan(static_cast<Index>(n_blocks), gather_ranges(), csr_begin_, csr_slot_);
+}
+
+int ShellElements::gather_ranges() const {
+#ifdef _OPENMP
+    if (size() >= k_parallel_min_elements) return omp_get_max_threads();
+#endif
+    return 1;
 }
 
 std::size_t ShellElements::slot_offset(std::size_t e, std::size_t k) const {
@@ -718,11 +726,9 @@ ShellElements::StepTotals ShellElements::compute(ParticleState& s, Real viscous_
     // after the loop (slot_gather_plan.hpp).
     const Index n_blocks = static_cast<Index>(block_elements_.size()) / k_lanes;
     const Index n_scalar = static_cast<Index>(scalar_elements_.size());
-    int ranges = 1;
-#ifdef _OPENMP
-    if (parallel) ranges = omp_get_max_threads();
-#endif
-    if (gather_plan_.ranges != ranges) gather_plan_ = make_slot_gather_plan(n_blocks, ranges, csr_begin_, csr_slot_);
+    // (made at construction; remade only if the thread count has changed since)
+    if (const int ranges = gather_ranges(); gather_plan_.ranges != ranges)
+        gather_plan_ = make_slot_gather_plan(n_blocks, ranges, csr_begin_, csr_slot_);
     const SlotGatherPlan& plan = gather_plan_;
     constexpr Index tile = SlotGatherPlan::k_tile_blocks, ring_blocks = SlotGatherPlan::k_ring_blocks;
 #pragma omp parallel if (parallel)

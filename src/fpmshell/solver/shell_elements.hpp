@@ -152,6 +152,9 @@ private:
     /// When each particle is summed, and from where (ring or slot_loads_); made for a thread
     /// count, remade when it changes.
     SlotGatherPlan gather_plan_;
+    /// The ranges of blocks the element loop runs: one per thread (1 for a model small enough
+    /// to stay serial).
+    [[nodiscard]] int gather_ranges() const;
     // SIMD blocks (elements/elastic_triangle_block.hpp)
     std::vector<ElasticSectionConstants> elastic_constants_;  ///< per section (zero if not elastic)
     std::vector<Index> block_elements_;   ///< k_lanes elements of one section per block
