@@ -353,9 +353,9 @@ void ExplicitSolver::cycle(Real load_time, Real dt_new_cap, bool relaxation) {
     std::swap(s_.v, s_.v_prev);
     std::swap(s_.omega, s_.omega_prev);
     const bool has_contact = static_cast<bool>(contact_);
-    const std::array<Real, 2> residual = chunked_sum<2>(static_cast<Index>(np), parallel_particles_, sums2_,
-                                                         [&](Index ip, std::array<Real, 2>& acc) {
-        const std::size_t p = static_cast<std::size_t>(ip);
+    // v^{n+1/2}, w^{n+1/2} and the reactions of particle p; in relaxation, its out-of-balance
+    // and applied loads squared into residual[0], residual[1].
+    auto update_particle = [&](std::size_t p, Real* residual) {
         Vec3 force = s_.f_ext[p] - s_.f_int[p];
         if (has_contact) force += s_.f_contact[p];
         const Real m = s_.mass[p];
@@ -399,13 +399,71 @@ void ExplicitSolver::cycle(Real load_time, Real dt_new_cap, bool relaxation) {
 
         // Out-of-balance force and moment on the free directions, against the applied ones.
         const Vec3 force_free = prescribed_translation_[p] ? Vec3::Zero() : without_fixed(force);
-        acc[0] += force_free.squaredNorm();
-        acc[1] += s_.f_ext[p].squaredNorm() + (force - force_free).squaredNorm();
+        residual[0] += force_free.squaredNorm();
+        residual[1] += s_.f_ext[p].squaredNorm() + (force - force_free).squaredNorm();
         const Vec3 moment_free = prescribed_rotation_[p] ? Vec3::Zero() : remove_components(moment_tangent, dirs, nd);
         const Real ls2 = length_scale_ * length_scale_;
-        acc[0] += moment_free.squaredNorm() / ls2;
-        acc[1] += (s_.m_ext[p].squaredNorm() + (moment_tangent - moment_free).squaredNorm()) / ls2;
-    });
+        residual[0] += moment_free.squaredNorm() / ls2;
+        residual[1] += (s_.m_ext[p].squaredNorm() + (moment_tangent - moment_free).squaredNorm()) / ls2;
+    };
+    // The energies of particle p at t_n into energy[0..3] (kinetic, work of loads and reactions,
+    // contact work, damping), energy[4]: 1 if its new state is not finite (a diverged run); then
+    // its x^{n+1} and rotation increment.
+    auto advance_particle = [&](std::size_t p, Real* energy) {
+        // Energies at t_n: leapfrog kinetic energy, work of loads and reactions over
+        // [t_{n-1}, t_n] (trapezoidal), mass-damping dissipation over dt_n.
+        energy[0] += 0.5 * s_.mass[p] * s_.v_prev[p].dot(s_.v[p]) +
+                     0.5 * s_.inertia[p] * s_.omega_prev[p].dot(s_.omega[p]);
+        // (a free particle has no reactions; without moment loads m_ext stays zero)
+        const bool constrained = constrained_[p];
+        Vec3 force_sum = s_.f_ext_prev[p] + s_.f_ext[p];
+        Vec3 moment_sum = has_moment_loads_ ? Vec3(s_.m_ext_prev[p] + s_.m_ext[p]) : Vec3::Zero();
+        if (constrained) {
+            force_sum = force_sum + s_.reaction_prev[p] + s_.reaction[p];
+            moment_sum = moment_sum + s_.reaction_moment_prev[p] + s_.reaction_moment[p];
+        }
+        energy[1] += 0.5 * force_sum.dot(s_.x[p] - s_.x_prev[p]) + 0.5 * moment_sum.dot(s_.dtheta[p]);
+        if (has_contact) energy[2] += 0.5 * (s_.f_contact_prev[p] + s_.f_contact[p]).dot(s_.x[p] - s_.x_prev[p]);
+        if (a_m > 0) {
+            const Vec3 vbar = 0.5 * (s_.v_prev[p] + s_.v[p]);
+            const Vec3 wbar = 0.5 * (s_.omega_prev[p] + s_.omega[p]);
+            energy[3] += a_m * dt_n * (s_.mass[p] * vbar.squaredNorm() + s_.inertia[p] * wbar.squaredNorm());
+        }
+        s_.f_ext_prev[p] = s_.f_ext[p];
+        if (has_moment_loads_) s_.m_ext_prev[p] = s_.m_ext[p];
+        if (constrained) {
+            s_.reaction_prev[p] = s_.reaction[p];
+            s_.reaction_moment_prev[p] = s_.reaction_moment[p];
+        }
+
+        // 5 x^{n+1} = x^n + dt v^{n+1/2}, written over x^{n-1} (the arrays are exchanged after
+        // the pass); rotation increment for the next path element. In the same pass as the
+        // energies (which read x^n, x^{n-1} and dtheta first): one sweep over the particle
+        // arrays instead of two.
+        s_.x_prev[p] = s_.x[p] + dt_new * s_.v[p];
+        s_.dtheta[p] = dt_new * s_.omega[p];
+        s_.rotation[p] = rotation_quaternion(s_.dtheta[p]) * s_.rotation[p];
+        if (!finite_state(p, s_.x_prev[p])) energy[4] += 1;
+    };
+    // Without prescribed motions and Lagrange contact, which change v^{n+1/2} between the two,
+    // the update and the energy pass are one sweep over the particle arrays instead of two (the
+    // same sums in the same order).
+    const bool one_pass = prescribed_.empty() && !(contact_ && contact_->has_lagrange());
+    std::array<Real, 2> residual{};
+    std::array<Real, 5> particle_energy{};
+    if (one_pass) {
+        const std::array<Real, 7> sums = chunked_sum<7>(static_cast<Index>(np), parallel_particles_, sums7_,
+                                                        [&](Index ip, std::array<Real, 7>& acc) {
+            const std::size_t p = static_cast<std::size_t>(ip);
+            update_particle(p, acc.data() + 5);
+            advance_particle(p, acc.data());
+        });
+        std::copy_n(sums.begin(), 5, particle_energy.begin());
+        std::copy_n(sums.begin() + 5, 2, residual.begin());
+    } else {
+        residual = chunked_sum<2>(static_cast<Index>(np), parallel_particles_, sums2_,
+                                  [&](Index ip, std::array<Real, 2>& acc) { update_particle(static_cast<std::size_t>(ip), acc.data()); });
+    }
     residual2_ = residual[0];
     reference2_ = residual[1];
     for (const Prescribed& pr : prescribed_) {
@@ -451,45 +509,9 @@ void ExplicitSolver::cycle(Real load_time, Real dt_new_cap, bool relaxation) {
         kinetic += 0.5 * b.mass * b.v_prev.dot(b.v);
         if (b.inv_mass == 0) ext_work -= body_work;  // what drives a fixed body on
     }
-    // acc[4]: particles whose new state is not finite (a diverged run), checked in the same pass
-    const std::array<Real, 5> particle_energy = chunked_sum<5>(static_cast<Index>(np), parallel_particles_, sums5_,
-                                                                [&](Index ip, std::array<Real, 5>& acc) {
-        const std::size_t p = static_cast<std::size_t>(ip);
-        // Energies at t_n: leapfrog kinetic energy, work of loads and reactions over
-        // [t_{n-1}, t_n] (trapezoidal), mass-damping dissipation over dt_n.
-        acc[0] += 0.5 * s_.mass[p] * s_.v_prev[p].dot(s_.v[p]) +
-                   0.5 * s_.inertia[p] * s_.omega_prev[p].dot(s_.omega[p]);
-        // (a free particle has no reactions; without moment loads m_ext stays zero)
-        const bool constrained = constrained_[p];
-        Vec3 force_sum = s_.f_ext_prev[p] + s_.f_ext[p];
-        Vec3 moment_sum = has_moment_loads_ ? Vec3(s_.m_ext_prev[p] + s_.m_ext[p]) : Vec3::Zero();
-        if (constrained) {
-            force_sum = force_sum + s_.reaction_prev[p] + s_.reaction[p];
-            moment_sum = moment_sum + s_.reaction_moment_prev[p] + s_.reaction_moment[p];
-        }
-        acc[1] += 0.5 * force_sum.dot(s_.x[p] - s_.x_prev[p]) + 0.5 * moment_sum.dot(s_.dtheta[p]);
-        if (has_contact) acc[2] += 0.5 * (s_.f_contact_prev[p] + s_.f_contact[p]).dot(s_.x[p] - s_.x_prev[p]);
-        if (a_m > 0) {
-            const Vec3 vbar = 0.5 * (s_.v_prev[p] + s_.v[p]);
-            const Vec3 wbar = 0.5 * (s_.omega_prev[p] + s_.omega[p]);
-            acc[3] += a_m * dt_n * (s_.mass[p] * vbar.squaredNorm() + s_.inertia[p] * wbar.squaredNorm());
-        }
-        s_.f_ext_prev[p] = s_.f_ext[p];
-        if (has_moment_loads_) s_.m_ext_prev[p] = s_.m_ext[p];
-        if (constrained) {
-            s_.reaction_prev[p] = s_.reaction[p];
-            s_.reaction_moment_prev[p] = s_.reaction_moment[p];
-        }
-
-        // 5 x^{n+1} = x^n + dt v^{n+1/2}, written over x^{n-1} (the arrays are exchanged after
-        // the pass); rotation increment for the next path element. In the same pass as the
-        // energies (which read x^n, x^{n-1} and dtheta first): one sweep over the particle
-        // arrays instead of two.
-        s_.x_prev[p] = s_.x[p] + dt_new * s_.v[p];
-        s_.dtheta[p] = dt_new * s_.omega[p];
-        s_.rotation[p] = rotation_quaternion(s_.dtheta[p]) * s_.rotation[p];
-        if (!finite_state(p, s_.x_prev[p])) acc[4] += 1;
-    });
+    if (!one_pass)
+        particle_energy = chunked_sum<5>(static_cast<Index>(np), parallel_particles_, sums5_,
+                                         [&](Index ip, std::array<Real, 5>& acc) { advance_particle(static_cast<std::size_t>(ip), acc.data()); });
     std::swap(s_.x, s_.x_prev);
     kinetic += particle_energy[0];
     ext_work += particle_energy[1];

@@ -136,6 +136,7 @@ private:
     bool fused_pressure_ = false;  ///< load 0: a pressure on every triangle, summed with the normals
     std::vector<std::array<Real, 2>> sums2_;                ///< scratch: per-chunk partial sums
     std::vector<std::array<Real, 5>> sums5_;
+    std::vector<std::array<Real, 7>> sums7_;
     // Relaxation residual of the last cycle.
     Real residual2_ = 0, reference2_ = 0;
 };
