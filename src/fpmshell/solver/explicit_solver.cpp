@@ -243,7 +243,11 @@ void ExplicitSolver::update_normals_and_loads(Real t) {
     });
     // §6.7 follower pressure: f_i = -p A_t n_t / 3 (positive pushes against n), A n = cr / 2.
     auto pressure_scale = [&](const Load& load) { return -load.pressure * curve_value(load.curve, t) / 6.0; };
-    // The external loads start from zero (the fused pressure: from its first triangle).
+    // The external loads start from zero (the fused pressure: from its first triangle); those of
+    // t_{n-1} stay for the work of the step by exchanging the arrays (every entry of the new
+    // ones is written below).
+    std::swap(s_.f_ext, s_.f_ext_prev);
+    if (has_moment_loads_) std::swap(s_.m_ext, s_.m_ext_prev);
     const Real fused_scale = fused_pressure_ ? pressure_scale(model_.loads[0]) : 0.0;
     parallel_for_each(static_cast<Index>(s_.size()), parallel_particles_, [&](Index ip) {
         const std::size_t p = static_cast<std::size_t>(ip);
@@ -429,8 +433,6 @@ void ExplicitSolver::cycle(Real load_time, Real dt_new_cap, bool relaxation) {
             const Vec3 wbar = 0.5 * (s_.omega_prev[p] + s_.omega[p]);
             energy[3] += a_m * dt_n * (s_.mass[p] * vbar.squaredNorm() + s_.inertia[p] * wbar.squaredNorm());
         }
-        s_.f_ext_prev[p] = s_.f_ext[p];
-        if (has_moment_loads_) s_.m_ext_prev[p] = s_.m_ext[p];
         if (constrained) {
             s_.reaction_prev[p] = s_.reaction[p];
             s_.reaction_moment_prev[p] = s_.reaction_moment[p];

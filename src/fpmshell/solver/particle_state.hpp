@@ -23,7 +23,7 @@ struct ParticleState {
     std::vector<Vec3> normal;     ///< tangent-plane normal n_alpha at t_n (§1.3)
     std::vector<Vec3> f_int, m_int;      ///< internal force / moment at t_n
     std::vector<Vec3> f_ext, m_ext;      ///< external force / moment at t_n
-    std::vector<Vec3> f_ext_prev, m_ext_prev;
+    std::vector<Vec3> f_ext_prev, m_ext_prev;  ///< the same at t_{n-1} (m_ext_prev kept with moment loads only)
     std::vector<Vec3> reaction, reaction_moment;  ///< constraint force / moment at t_n
     std::vector<Vec3> reaction_prev, reaction_moment_prev;
     std::vector<Vec3> f_contact, f_contact_prev;  ///< contact force at t_n, t_{n-1} (§8)
