@@ -1,7 +1,7 @@
-// The DKT shell triangle written once for a scalar type T (core/simd.hpp):
+// The shell triangle (DKT or BCIZ bending) written once for a scalar type T (core/simd.hpp):
 // with T = RealPack it computes k_lanes elements at once, one per SIMD lane. It is the same
 // element as reverse_motion + shell_triangle_loads (theory.md §2-§5) for a linear elastic
-// section with DKT bending, or a J2 section (the trial check of §7.3 step 1 on every point at
+// section, or a J2 section (the trial check of §7.3 step 1 on every point at
 // once; the points that yield go, all together, to the caller's return mapping), restricted to the
 // path elements of a stable step:
 //   - every rotation of the step (nodal increments, in-plane and relative rotations) is below
@@ -22,6 +22,7 @@
 #include "fpmshell/core/simd.hpp"
 #include "fpmshell/elements/quadrature.hpp"
 #include "fpmshell/materials/flow_stress.hpp"
+#include "fpmshell/model/model.hpp"
 
 namespace fpmshell {
 
@@ -37,6 +38,7 @@ struct ElasticSectionConstants {
     Real thickness_factor = 0;       ///< (1 - 2 nu) / E, §3.4
     std::span<const TrianglePoint> inplane;
     std::span<const ThicknessPoint> through;
+    BendingKernel bending = BendingKernel::Dkt;  ///< the curvature matrix: §4.7 DKT or §4.3 BCIZ
 };
 
 /// The yield surfaces of the points of a J2 section at the start of the step, [g][k].
@@ -109,15 +111,50 @@ template <class T>
     return {v.x * inv, v.y * inv, v.z * inv};
 }
 
-/// Rotation-only DKT curvature matrix at a corner: the corner's shape-function derivative
-/// arrays n_xi, n_eta (constants) and the element's side coefficients (triangle_shape.cpp).
+/// The rotation-only curvature matrix at a corner e_i (§4.3: linear in L, so the three
+/// corners give it everywhere).
 template <class T>
-struct DktCorner {
+struct CornerCurvature {
     std::array<std::array<T, 6>, 3> b;  ///< B(e_i), rows kxx, kyy, kxy
 };
 
+/// BCIZ at corner m: bending_b_bciz of triangle_shape.cpp at L = e_m, the same operations
+/// (theory.md §4.2-§4.3). b, c: b_i = y_j - y_k, c_i = x_k - x_j of the local triangle;
+/// f = -1 / (2A)^2.
 template <class T>
-[[nodiscard]] FPMSHELL_INLINE DktCorner<T> dkt_corner(const std::array<Real, 6>& n_xi, const std::array<Real, 6>& n_eta,
+[[nodiscard]] FPMSHELL_INLINE CornerCurvature<T> bciz_corner(std::size_t m, const std::array<T, 3>& b,
+                                                             const std::array<T, 3>& c, const T& f) {
+    std::array<Real, 3> L{0.0, 0.0, 0.0};
+    L[m] = 1.0;
+    auto q_g = [&L](std::size_t i, std::size_t j, const std::array<T, 3>& u, const std::array<T, 3>& v) {
+        return 2 * L[j] * u[i] * v[i] + 2 * L[i] * (u[i] * v[j] + u[j] * v[i]);
+    };
+    auto q_bubble = [&L](const std::array<T, 3>& u, const std::array<T, 3>& v) {
+        return L[2] * (u[0] * v[1] + u[1] * v[0]) + L[1] * (u[0] * v[2] + u[2] * v[0]) + L[0] * (u[1] * v[2] + u[2] * v[1]);
+    };
+    const T bub_bb = q_bubble(b, b), bub_cc = q_bubble(c, c), bub_bc = q_bubble(b, c);
+    CornerCurvature<T> out;
+    static constexpr std::array<std::array<std::size_t, 3>, 3> k_cyclic{{{0, 1, 2}, {1, 2, 0}, {2, 0, 1}}};
+    for (const auto& [i, j, k] : k_cyclic) {
+        const T gik_bb = q_g(i, k, b, b), gik_cc = q_g(i, k, c, c), gik_bc = q_g(i, k, b, c);
+        const T gij_bb = q_g(i, j, b, b), gij_cc = q_g(i, j, c, c), gij_bc = q_g(i, j, b, c);
+        // N_i^thx = b_j g_ik - b_k g_ij + (b_j - b_k)/2 B; N_i^thy likewise with c (§4.2)
+        for (std::size_t col = 0; col < 2; ++col) {
+            const std::array<T, 3>& w = col == 0 ? b : c;
+            const T hb = 0.5 * (w[j] - w[k]);
+            out.b[0][2 * i + col] = f * (w[j] * gik_bb - w[k] * gij_bb + hb * bub_bb);
+            out.b[1][2 * i + col] = f * (w[j] * gik_cc - w[k] * gij_cc + hb * bub_cc);
+            out.b[2][2 * i + col] = 2 * f * (w[j] * gik_bc - w[k] * gij_bc + hb * bub_bc);
+        }
+    }
+    return out;
+}
+
+/// DKT at a corner: the corner's shape-function derivative arrays n_xi, n_eta (constants)
+/// and the element's side coefficients (triangle_shape.cpp).
+
+template <class T>
+[[nodiscard]] FPMSHELL_INLINE CornerCurvature<T> dkt_corner(const std::array<Real, 6>& n_xi, const std::array<Real, 6>& n_eta,
                                              const std::array<T, 3>& cb, const std::array<T, 3>& cc,
                                              const std::array<T, 3>& ce, const T& x2, const T& x3, const T& y3,
                                              const T& inv_two_area) {
@@ -134,7 +171,7 @@ template <class T>
     h_of(n_xi, hx_xi, hy_xi);
     h_of(n_eta, hx_eta, hy_eta);
     // Local frame: x31 = x3, y31 = y3, x12 = -x2, y12 = 0 (node 1 at the origin, §2.5).
-    DktCorner<T> out;
+    CornerCurvature<T> out;
     for (std::size_t q = 0; q < 6; ++q) {
         out.b[0][q] = (y3 * hx_xi[q]) * inv_two_area;
         out.b[1][q] = (-(x3 * hy_xi[q]) + x2 * hy_eta[q]) * inv_two_area;
@@ -145,7 +182,7 @@ template <class T>
 
 }  // namespace block_detail
 
-/// Elastic step of the DKT triangle on one path element per lane (theory.md §2-§5).
+/// Elastic step of the triangle on one path element per lane (theory.md §2-§5).
 /// stress: the section's points [g][k], 3 components each, old in, new out (only meaningful
 /// on valid lanes). thickness: h at the start of the step. viscous_rate as shell_triangle_loads.
 /// yield: for a J2 section, the yield surfaces of the trial check.
@@ -225,33 +262,39 @@ template <class T, class ReturnMapping = NoReturnMapping>
     const std::array<T, 3> d_eps_m{bx[1] * ux[1] + bx[2] * ux[2], cy[1] * uy[1] + cy[2] * uy[2],
                                    cy[1] * ux[1] + cy[2] * ux[2] + bx[1] * uy[1] + bx[2] * uy[2]};
 
-    // ---- §4.7 DKT at the three corners (the curvature matrix is linear in L, §4.3) ----
-    std::array<T, 3> cb, cc, ce;
-    {
-        // sides 23, 31, 12: (x_i - x_j, y_i - y_j)
-        const std::array<T, 3> xij{x2 - x3, x3, -x2}, yij{-y3, y3, T(0.0)};
-        std::array<T, 3> l2;
-        for (std::size_t s = 0; s < 3; ++s) l2[s] = xij[s] * xij[s] + yij[s] * yij[s];
-        const T inv_product = 1.0 / (l2[0] * l2[1] * l2[2]);  // one division for the three sides
-        const std::array<T, 3> inv_side{l2[1] * l2[2] * inv_product, l2[0] * l2[2] * inv_product, l2[0] * l2[1] * inv_product};
-        for (std::size_t s = 0; s < 3; ++s) {
-            const T inv_l2 = inv_side[s];
-            cb[s] = 0.75 * xij[s] * yij[s] * inv_l2;
-            cc[s] = (0.25 * xij[s] * xij[s] - 0.5 * yij[s] * yij[s]) * inv_l2;
-            ce[s] = (0.25 * yij[s] * yij[s] - 0.5 * xij[s] * xij[s]) * inv_l2;
+    // ---- §4.7 DKT or §4.3 BCIZ at the three corners (the curvature matrix is linear in L) ----
+    std::array<CornerCurvature<T>, 3> corner;
+    if (sec.bending == BendingKernel::Bciz) {
+        const std::array<T, 3> b{-y3, y3, T(0.0)}, c{x3 - x2, -x3, x2};  // TriangleShape's b, c
+        const T f = -(inv_two_area * inv_two_area);
+        for (std::size_t i = 0; i < 3; ++i) corner[i] = bciz_corner(i, b, c, f);
+    } else {
+        std::array<T, 3> cb, cc, ce;
+        {
+            // sides 23, 31, 12: (x_i - x_j, y_i - y_j)
+            const std::array<T, 3> xij{x2 - x3, x3, -x2}, yij{-y3, y3, T(0.0)};
+            std::array<T, 3> l2;
+            for (std::size_t s = 0; s < 3; ++s) l2[s] = xij[s] * xij[s] + yij[s] * yij[s];
+            const T inv_product = 1.0 / (l2[0] * l2[1] * l2[2]);  // one division for the three sides
+            const std::array<T, 3> inv_side{l2[1] * l2[2] * inv_product, l2[0] * l2[2] * inv_product, l2[0] * l2[1] * inv_product};
+            for (std::size_t s = 0; s < 3; ++s) {
+                const T inv_l2 = inv_side[s];
+                cb[s] = 0.75 * xij[s] * yij[s] * inv_l2;
+                cc[s] = (0.25 * xij[s] * xij[s] - 0.5 * yij[s] * yij[s]) * inv_l2;
+                ce[s] = (0.25 * yij[s] * yij[s] - 0.5 * xij[s] * xij[s]) * inv_l2;
+            }
         }
+        // n_xi, n_eta of bending_b_dkt at L = e_1, e_2, e_3 (xi = L_2, eta = L_3)
+        static constexpr std::array<std::array<Real, 6>, 3> k_n_xi{{{-3, -1, 0, 0, 0, 4},
+                                                                    {1, 3, 0, 0, 0, -4},
+                                                                    {1, -1, 0, 4, -4, 0}}};
+        static constexpr std::array<std::array<Real, 6>, 3> k_n_eta{{{-3, 0, -1, 0, 4, 0},
+                                                                     {1, 0, -1, 4, 0, -4},
+                                                                     {1, 0, 3, 0, -4, 0}}};
+        for (std::size_t i = 0; i < 3; ++i) corner[i] = dkt_corner(k_n_xi[i], k_n_eta[i], cb, cc, ce, x2, x3, y3, inv_two_area);
     }
-    // n_xi, n_eta of bending_b_dkt at L = e_1, e_2, e_3 (xi = L_2, eta = L_3)
-    static constexpr std::array<std::array<Real, 6>, 3> k_n_xi{{{-3, -1, 0, 0, 0, 4},
-                                                                {1, 3, 0, 0, 0, -4},
-                                                                {1, -1, 0, 4, -4, 0}}};
-    static constexpr std::array<std::array<Real, 6>, 3> k_n_eta{{{-3, 0, -1, 0, 4, 0},
-                                                                 {1, 0, -1, 4, 0, -4},
-                                                                 {1, 0, 3, 0, -4, 0}}};
-    std::array<DktCorner<T>, 3> corner;
     std::array<std::array<T, 3>, 3> kappa_corner, m_corner;
     for (std::size_t i = 0; i < 3; ++i) {
-        corner[i] = dkt_corner(k_n_xi[i], k_n_eta[i], cb, cc, ce, x2, x3, y3, inv_two_area);
         for (std::size_t r = 0; r < 3; ++r) {
             const auto& row = corner[i].b[r];
             kappa_corner[i][r] = row[0] * th[0] + row[1] * th[1] + row[2] * th[2] + row[3] * th[3] +

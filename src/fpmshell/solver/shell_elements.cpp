@@ -166,7 +166,7 @@ ShellElements::ShellElements(const Model& model)
     }
     membrane_force_.assign(ne, Voigt3::Zero());
     bending_moment_.assign(ne, Voigt3::Zero());
-    // SIMD blocks: the elements of DKT sections, linear elastic or J2 (whose elastic steps the
+    // SIMD blocks: the elements of DKT and BCIZ sections, linear elastic or J2 (whose elastic steps the
     // block kernel does), without the smoothed membrane (which couples
     // neighbours); k_lanes elements of one section per block, the rest one by one.
     for (std::size_t sec = 0; sec < rules_.size(); ++sec) {
@@ -180,11 +180,11 @@ ShellElements::ShellElements(const Model& model)
         }, materials_[sec]);
         c.inplane = rules_[sec].inplane;
         c.through = rules_[sec].through;
+        c.bending = rules_[sec].bending;
         elastic_constants_.push_back(c);
     }
     auto blockable = [&](std::size_t sec) {
-        return !smoothed_membrane_ && rules_[sec].bending == BendingKernel::Dkt &&
-               static_cast<std::size_t>(rules_[sec].n_points()) <= k_max_block_points;
+        return !smoothed_membrane_ && static_cast<std::size_t>(rules_[sec].n_points()) <= k_max_block_points;
     };
     for (std::size_t sec = 0; sec < rules_.size(); ++sec) {
         std::vector<Index> members;
