@@ -85,7 +85,7 @@ bool has_avx2_fma() { return __builtin_cpu_supports("avx2") && __builtin_cpu_sup
 
 /// Every thread runs sweep(iterations); GFLOP/s of all threads together, best of the repeats.
 template <class Sweep>
-FlopPeak run_sweeps(int threads, long iterations, int repeats, double flops_per_sweep, Sweep sweep) {
+FlopPeak run_sweeps([[maybe_unused]] int threads, long iterations, int repeats, double flops_per_sweep, Sweep sweep) {
     FlopPeak best;
     const double x = g_x, y = g_y;
     for (int r = 0; r < repeats; ++r) {
@@ -130,7 +130,7 @@ std::string isa_flop_name() {
     return "none";
 }
 
-StreamPeak measure_stream_triad(int threads, std::size_t n, int repeats) {
+StreamPeak measure_stream_triad([[maybe_unused]] int threads, std::size_t n, int repeats) {
     const std::unique_ptr<double[]> a(new double[n]), b(new double[n]), c(new double[n]);
     double* pa = a.get();
     double* pb = b.get();

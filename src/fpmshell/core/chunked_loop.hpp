@@ -21,7 +21,7 @@ inline constexpr Index k_chunk_size = 256;
 /// `sums` (a std::array<Real, N> it receives zeroed per chunk). The body must touch only
 /// index i's data besides `sums`. scratch: per-chunk partial sums, reused between calls.
 template <int N, class Body>
-std::array<Real, N> chunked_sum(Index n, bool parallel, std::vector<std::array<Real, N>>& scratch, Body&& body) {
+std::array<Real, N> chunked_sum(Index n, [[maybe_unused]] bool parallel, std::vector<std::array<Real, N>>& scratch, Body&& body) {
     const Index n_chunks = (n + k_chunk_size - 1) / k_chunk_size;
     scratch.resize(static_cast<std::size_t>(n_chunks));
 #pragma omp parallel for schedule(static) if (parallel)
@@ -39,7 +39,7 @@ std::array<Real, N> chunked_sum(Index n, bool parallel, std::vector<std::array<R
 
 /// Runs body(i) for i in [0, n), in parallel when asked; the body must touch only index i's data.
 template <class Body>
-void parallel_for_each(Index n, bool parallel, Body&& body) {
+void parallel_for_each(Index n, [[maybe_unused]] bool parallel, Body&& body) {
 #pragma omp parallel for schedule(static) if (parallel)
     for (Index i = 0; i < n; ++i) body(i);
 }

@@ -701,7 +701,7 @@ void ShellElements::gather_particle(std::size_t p, const Real* base, ParticleSta
 ShellElements::StepTotals ShellElements::compute(ParticleState& s, Real viscous_rate, Real dt) {
     const Index ne = size();
     // Small models stay serial: a parallel region per step costs more than it saves there.
-    const bool parallel = ne >= k_parallel_min_elements;
+    [[maybe_unused]] const bool parallel = ne >= k_parallel_min_elements;
     // Phase 0 (smoothed membrane only): every element's path element and CST strain increment.
     if (smoothed_membrane_) {
 #pragma omp parallel for schedule(static) if (parallel)
