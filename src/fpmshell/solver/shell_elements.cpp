@@ -727,7 +727,7 @@ ShellElements::StepTotals ShellElements::compute(ParticleState& s, Real viscous_
     const Index n_blocks = static_cast<Index>(block_elements_.size()) / k_lanes;
     const Index n_scalar = static_cast<Index>(scalar_elements_.size());
     // (made at construction; remade only if the thread count has changed since)
-    if (const int ranges = gather_ranges(); gather_plan_.ranges != ranges)
+    if (const int ranges = gather_ranges(); gather_plan_.ranges() != ranges)
         gather_plan_ = make_slot_gather_plan(n_blocks, ranges, csr_begin_, csr_slot_);
     const SlotGatherPlan& plan = gather_plan_;
     constexpr Index tile = SlotGatherPlan::k_tile_blocks, ring_blocks = SlotGatherPlan::k_ring_blocks;
@@ -735,9 +735,9 @@ ShellElements::StepTotals ShellElements::compute(ParticleState& s, Real viscous_
     {
         // one range per thread (any team size gives the same sums: a range is a unit of work)
 #pragma omp for schedule(static, 1) nowait
-        for (int r = 0; r < plan.ranges; ++r) {
+        for (int r = 0; r < plan.ranges(); ++r) {
             const auto ur = static_cast<std::size_t>(r);
-            Real* ring = plan.use_ring ? gather_plan_.rings[ur].data() : nullptr;
+            Real* ring = plan.use_ring() ? gather_plan_.rings[ur].data() : nullptr;
             const Index first = plan.range_begin[ur], end = plan.range_begin[ur + 1];
             for (Index t = plan.range_first_tile[ur]; t < plan.range_first_tile[ur + 1]; ++t) {
                 const Index from = first + (t - plan.range_first_tile[ur]) * tile;

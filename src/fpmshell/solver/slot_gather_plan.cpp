@@ -11,8 +11,7 @@ SlotGatherPlan make_slot_gather_plan(Index n_blocks, int ranges, const std::vect
     constexpr std::size_t group_reals = SlotGatherPlan::k_components * w;
     constexpr Index tile = SlotGatherPlan::k_tile_blocks, ring = SlotGatherPlan::k_ring_blocks;
     SlotGatherPlan plan;
-    plan.ranges = std::max(1, ranges);
-    const auto n_ranges = static_cast<std::size_t>(plan.ranges);
+    const auto n_ranges = static_cast<std::size_t>(std::max(1, ranges));
     plan.range_begin.resize(n_ranges + 1);
     plan.range_first_tile.assign(n_ranges + 1, 0);
     for (std::size_t t = 0; t <= n_ranges; ++t) {
@@ -51,8 +50,8 @@ SlotGatherPlan make_slot_gather_plan(Index n_blocks, int ranges, const std::vect
         if (last < plan.range_begin[t + 1] && tile_end(last, t) <= first + ring) ready_tile[p] = tile_of(last, t);
     }
     const auto n_ready = static_cast<std::size_t>(std::count_if(ready_tile.begin(), ready_tile.end(), [](Index t) { return t >= 0; }));
-    plan.use_ring = n_particles > 0 && 2 * n_ready >= n_particles;
-    if (!plan.use_ring) std::fill(ready_tile.begin(), ready_tile.end(), -1);
+    const bool use_ring = n_particles > 0 && 2 * n_ready >= n_particles;
+    if (!use_ring) std::fill(ready_tile.begin(), ready_tile.end(), -1);
     // The ready particles by tile (in particle order within a tile), the others in order.
     plan.ready_begin.assign(static_cast<std::size_t>(n_tiles) + 1, 0);
     for (Index t : ready_tile)
@@ -60,7 +59,7 @@ SlotGatherPlan make_slot_gather_plan(Index n_blocks, int ranges, const std::vect
     for (std::size_t t = 0; t < static_cast<std::size_t>(n_tiles); ++t) plan.ready_begin[t + 1] += plan.ready_begin[t];
     plan.ready.resize(static_cast<std::size_t>(plan.ready_begin.back()));
     std::vector<Index> fill(plan.ready_begin.begin(), plan.ready_begin.end() - 1);
-    plan.keep.assign(static_cast<std::size_t>(n_blocks), plan.use_ring ? 0 : 1);
+    plan.keep.assign(static_cast<std::size_t>(n_blocks), use_ring ? 0 : 1);
     plan.offset = slot_offset;
     for (std::size_t p = 0; p < n_particles; ++p) {
         const Index t = ready_tile[p];
@@ -82,7 +81,7 @@ SlotGatherPlan make_slot_gather_plan(Index n_blocks, int ranges, const std::vect
             at = (3 * position + group % 3) * group_reals + in_group;
         }
     }
-    if (plan.use_ring)
+    if (use_ring)
         plan.rings.assign(n_ranges, std::vector<Real, Eigen::aligned_allocator<Real>>(
                                         static_cast<std::size_t>(ring) * SlotGatherPlan::k_block_reals, 0.0));
     return plan;

@@ -37,8 +37,6 @@ struct SlotGatherPlan {
     /// Reals of the slots of one block: 3 corners x 6 components x k_lanes.
     static constexpr std::size_t k_block_reals = 3 * k_components * static_cast<std::size_t>(k_lanes);
 
-    int ranges = 0;                     ///< the thread count it was made for
-    bool use_ring = false;              ///< false: every particle is summed after the loop
     std::vector<Index> range_begin;     ///< per range: its first block (ranges + 1 entries)
     std::vector<Index> range_first_tile;  ///< per range: its first tile (ranges + 1 entries)
     std::vector<Index> ready_begin;     ///< per tile: its first entry in ready (tiles + 1 entries)
@@ -48,13 +46,18 @@ struct SlotGatherPlan {
     /// per entry of the particle -> slot map: the slot's offset in its particle's ring (ready
     /// particles) or in the full slot array (the others)
     std::vector<std::size_t> offset;
-    std::vector<std::vector<Real, Eigen::aligned_allocator<Real>>> rings;  ///< per range
+    std::vector<std::vector<Real, Eigen::aligned_allocator<Real>>> rings;  ///< per range; none without the ring
+
+    /// The thread count it was made for (0: none yet).
+    [[nodiscard]] int ranges() const { return range_begin.empty() ? 0 : static_cast<int>(range_begin.size()) - 1; }
+    /// false: every particle is summed after the loop.
+    [[nodiscard]] bool use_ring() const { return !rings.empty(); }
 };
 
 /// The plan for n_blocks blocks on `ranges` threads. slot_begin / slot_offset: the particle ->
 /// slot map into the full array, whose slot groups (k_lanes slots, 6 components each) hold
 /// corner c of block b as group 3 b + c, and slots of elements computed alone after them.
-/// The ring is left out (use_ring false) when fewer than half of the particles would be
+/// The ring is left out (use_ring() false) when fewer than half of the particles would be
 /// summed from it: a mesh numbered without locality would pay for both arrays.
 [[nodiscard]] SlotGatherPlan make_slot_gather_plan(Index n_blocks, int ranges, const std::vector<Index>& slot_begin,
                                                    const std::vector<std::size_t>& slot_offset);

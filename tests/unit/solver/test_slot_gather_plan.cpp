@@ -66,9 +66,8 @@ std::vector<std::array<Real, 6>> replay(const SlotGatherPlan& plan, const SlotMa
             for (std::size_t c = 0; c < 6; ++c) s[c] += base[plan.offset[static_cast<std::size_t>(k)] + c * w];
         sums[static_cast<std::size_t>(p)] = s;
     };
-    for (std::size_t r = 0; r < static_cast<std::size_t>(plan.ranges); ++r) {
-        std::vector<Real> ring = plan.use_ring ? std::vector<Real>(plan.rings[r].begin(), plan.rings[r].end()) : std::vector<Real>();
-        std::fill(ring.begin(), ring.end(), -3.0);
+    for (std::size_t r = 0; r < static_cast<std::size_t>(plan.ranges()); ++r) {
+        std::vector<Real> ring(plan.use_ring() ? plan.rings[r].size() : 0, -3.0);
         const Index first = plan.range_begin[r], end = plan.range_begin[r + 1];
         for (Index t = plan.range_first_tile[r]; t < plan.range_first_tile[r + 1]; ++t) {
             const Index from = first + (t - plan.range_first_tile[r]) * tile;
@@ -76,8 +75,8 @@ std::vector<std::array<Real, 6>> replay(const SlotGatherPlan& plan, const SlotMa
                 for (std::size_t k = 0; k < SlotGatherPlan::k_block_reals; ++k) {
                     const std::size_t at = static_cast<std::size_t>(b) * SlotGatherPlan::k_block_reals + k;
                     const Real v = slot_value(at / group_reals * group_reals + at % w, at % group_reals / w);
-                    if (!plan.use_ring || plan.keep[static_cast<std::size_t>(b)]) full[at] = v;
-                    if (plan.use_ring) ring[static_cast<std::size_t>((b - first) % ring_blocks) * SlotGatherPlan::k_block_reals + k] = v;
+                    if (!plan.use_ring() || plan.keep[static_cast<std::size_t>(b)]) full[at] = v;
+                    if (plan.use_ring()) ring[static_cast<std::size_t>((b - first) % ring_blocks) * SlotGatherPlan::k_block_reals + k] = v;
                 }
             for (Index k = plan.ready_begin[static_cast<std::size_t>(t)]; k < plan.ready_begin[static_cast<std::size_t>(t) + 1]; ++k)
                 sum(plan.ready[static_cast<std::size_t>(k)], ring.data());
@@ -128,7 +127,7 @@ TEST(SlotGatherPlan, EveryParticleSumsExactlyItsOwnSlotsFromTheRingForAnyRangeCo
     for (int ranges : {1, 2, 3}) {
         SCOPED_TRACE(ranges);
         const SlotGatherPlan plan = make_slot_gather_plan(m.n_blocks, ranges, m.begin, m.offset);
-        ASSERT_TRUE(plan.use_ring);
+        ASSERT_TRUE(plan.use_ring());
         expect_each_particle_once(plan, static_cast<std::size_t>(np));
         // the generated plate is numbered row by row: nearly every particle from the ring (the
         // others: on the seams between ranges)
@@ -145,7 +144,7 @@ TEST(SlotGatherPlan, AMeshWithoutLocalityGoesWithoutTheRing) {
     const auto np = static_cast<Index>(mesh.nodes.size());
     const SlotMap m = slot_map(mesh.triangles, np, 0);
     const SlotGatherPlan plan = make_slot_gather_plan(m.n_blocks, 2, m.begin, m.offset);
-    EXPECT_FALSE(plan.use_ring);
+    EXPECT_FALSE(plan.use_ring());
     EXPECT_TRUE(plan.ready.empty());
     EXPECT_EQ(plan.after.size(), static_cast<std::size_t>(np));
     EXPECT_TRUE(std::all_of(plan.keep.begin(), plan.keep.end(), [](auto k) { return k == 1; }));
@@ -158,7 +157,7 @@ TEST(SlotGatherPlan, ParticlesOfElementsComputedAloneAreSummedAfterTheLoop) {
     const std::size_t n_alone = 5 + 3 * w;  // more than a block's worth, not a multiple of it
     const SlotMap m = slot_map(mesh.triangles, np, n_alone);
     const SlotGatherPlan plan = make_slot_gather_plan(m.n_blocks, 2, m.begin, m.offset);
-    ASSERT_TRUE(plan.use_ring);
+    ASSERT_TRUE(plan.use_ring());
     expect_each_particle_once(plan, static_cast<std::size_t>(np));
     const std::size_t n_blocked = static_cast<std::size_t>(m.n_blocks) * w;
     for (std::size_t e = n_blocked; e < mesh.triangles.size(); ++e)
