@@ -20,6 +20,7 @@
 #include <span>
 
 #include "fpmshell/core/simd.hpp"
+#include "fpmshell/elements/bciz_curvature.hpp"
 #include "fpmshell/elements/quadrature.hpp"
 #include "fpmshell/materials/flow_stress.hpp"
 #include "fpmshell/model/model.hpp"
@@ -117,38 +118,6 @@ template <class T>
 struct CornerCurvature {
     std::array<std::array<T, 6>, 3> b;  ///< B(e_i), rows kxx, kyy, kxy
 };
-
-/// BCIZ at corner m: bending_b_bciz of triangle_shape.cpp at L = e_m, the same operations
-/// (theory.md §4.2-§4.3). b, c: b_i = y_j - y_k, c_i = x_k - x_j of the local triangle;
-/// f = -1 / (2A)^2.
-template <class T>
-[[nodiscard]] FPMSHELL_INLINE CornerCurvature<T> bciz_corner(std::size_t m, const std::array<T, 3>& b,
-                                                             const std::array<T, 3>& c, const T& f) {
-    std::array<Real, 3> L{0.0, 0.0, 0.0};
-    L[m] = 1.0;
-    auto q_g = [&L](std::size_t i, std::size_t j, const std::array<T, 3>& u, const std::array<T, 3>& v) {
-        return 2 * L[j] * u[i] * v[i] + 2 * L[i] * (u[i] * v[j] + u[j] * v[i]);
-    };
-    auto q_bubble = [&L](const std::array<T, 3>& u, const std::array<T, 3>& v) {
-        return L[2] * (u[0] * v[1] + u[1] * v[0]) + L[1] * (u[0] * v[2] + u[2] * v[0]) + L[0] * (u[1] * v[2] + u[2] * v[1]);
-    };
-    const T bub_bb = q_bubble(b, b), bub_cc = q_bubble(c, c), bub_bc = q_bubble(b, c);
-    CornerCurvature<T> out;
-    static constexpr std::array<std::array<std::size_t, 3>, 3> k_cyclic{{{0, 1, 2}, {1, 2, 0}, {2, 0, 1}}};
-    for (const auto& [i, j, k] : k_cyclic) {
-        const T gik_bb = q_g(i, k, b, b), gik_cc = q_g(i, k, c, c), gik_bc = q_g(i, k, b, c);
-        const T gij_bb = q_g(i, j, b, b), gij_cc = q_g(i, j, c, c), gij_bc = q_g(i, j, b, c);
-        // N_i^thx = b_j g_ik - b_k g_ij + (b_j - b_k)/2 B; N_i^thy likewise with c (§4.2)
-        for (std::size_t col = 0; col < 2; ++col) {
-            const std::array<T, 3>& w = col == 0 ? b : c;
-            const T hb = 0.5 * (w[j] - w[k]);
-            out.b[0][2 * i + col] = f * (w[j] * gik_bb - w[k] * gij_bb + hb * bub_bb);
-            out.b[1][2 * i + col] = f * (w[j] * gik_cc - w[k] * gij_cc + hb * bub_cc);
-            out.b[2][2 * i + col] = 2 * f * (w[j] * gik_bc - w[k] * gij_bc + hb * bub_bc);
-        }
-    }
-    return out;
-}
 
 /// DKT at a corner: the corner's shape-function derivative arrays n_xi, n_eta (constants)
 /// and the element's side coefficients (triangle_shape.cpp).
@@ -267,7 +236,11 @@ template <class T, class ReturnMapping = NoReturnMapping>
     if (sec.bending == BendingKernel::Bciz) {
         const std::array<T, 3> b{-y3, y3, T(0.0)}, c{x3 - x2, -x3, x2};  // TriangleShape's b, c
         const T f = -(inv_two_area * inv_two_area);
-        for (std::size_t i = 0; i < 3; ++i) corner[i] = bciz_corner(i, b, c, f);
+        for (std::size_t i = 0; i < 3; ++i) {
+            std::array<Real, 3> L{0.0, 0.0, 0.0};
+            L[i] = 1.0;
+            corner[i].b = bciz_curvature(L, b, c, f);
+        }
     } else {
         std::array<T, 3> cb, cc, ce;
         {

@@ -1,5 +1,7 @@
 #include "fpmshell/elements/triangle_shape.hpp"
 
+#include "fpmshell/elements/bciz_curvature.hpp"
+
 namespace fpmshell {
 namespace {
 
@@ -27,34 +29,10 @@ Mat36 membrane_b(const TriangleShape& s) {
 }
 
 Mat36 bending_b_bciz(const TriangleShape& s, const std::array<Real, 3>& L) {
-    // Second derivatives in closed form (theory.md §4.3): for u, v in {b, c},
-    //   u.H(g_ij).v = 2 L_j u_i v_i + 2 L_i (u_i v_j + u_j v_i)       (g_ij = L_i^2 L_j)
-    //   u.H(B).v    = L3 (u1 v2 + u2 v1) + L2 (u1 v3 + u3 v1) + L1 (u2 v3 + u3 v2)
-    // and f,xx = b.H.b / (2A)^2, f,yy = c.H.c / (2A)^2, f,xy = b.H.c / (2A)^2.
-    const auto& b = s.b;
-    const auto& c = s.c;
-    auto q_g = [&L](int i, int j, const std::array<Real, 3>& u, const std::array<Real, 3>& v) {
-        return 2 * L[j] * u[i] * v[i] + 2 * L[i] * (u[i] * v[j] + u[j] * v[i]);
-    };
-    auto q_bubble = [&L](const std::array<Real, 3>& u, const std::array<Real, 3>& v) {
-        return L[2] * (u[0] * v[1] + u[1] * v[0]) + L[1] * (u[0] * v[2] + u[2] * v[0]) +
-               L[0] * (u[1] * v[2] + u[2] * v[1]);
-    };
-    const Real f = -1.0 / (s.two_area * s.two_area);
-    const Real bub_bb = q_bubble(b, b), bub_cc = q_bubble(c, c), bub_bc = q_bubble(b, c);
+    const auto rows = bciz_curvature(L, s.b, s.c, -1.0 / (s.two_area * s.two_area));  // §4.2-§4.3
     Mat36 bb;
-    for (const auto& [i, j, k] : k_cyclic) {
-        const Real gik_bb = q_g(i, k, b, b), gik_cc = q_g(i, k, c, c), gik_bc = q_g(i, k, b, c);
-        const Real gij_bb = q_g(i, j, b, b), gij_cc = q_g(i, j, c, c), gij_bc = q_g(i, j, b, c);
-        // N_i^thx = b_j g_ik - b_k g_ij + (b_j - b_k)/2 B; N_i^thy likewise with c (§4.2).
-        for (int col = 0; col < 2; ++col) {
-            const auto& w = col == 0 ? b : c;
-            const Real hb = 0.5 * (w[j] - w[k]);
-            bb(0, 2 * i + col) = f * (w[j] * gik_bb - w[k] * gij_bb + hb * bub_bb);
-            bb(1, 2 * i + col) = f * (w[j] * gik_cc - w[k] * gij_cc + hb * bub_cc);
-            bb(2, 2 * i + col) = 2 * f * (w[j] * gik_bc - w[k] * gij_bc + hb * bub_bc);
-        }
-    }
+    for (Eigen::Index r = 0; r < 3; ++r)
+        for (Eigen::Index q = 0; q < 6; ++q) bb(r, q) = rows[static_cast<std::size_t>(r)][static_cast<std::size_t>(q)];
     return bb;
 }
 
