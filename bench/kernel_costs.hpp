@@ -54,6 +54,8 @@ inline constexpr double k_transcendental = 20;  // log / pow: ~20 flop of polyno
 //   x2, x3, y3                          norm + 2 dot                                 16
 //   u2, u3                              2 x (Vec3 sub + 3x3 * 3)                     36
 //   r_r                                 3x3 * 3x3                                    45
+//   omega_r = rotation_vector(r_r)      series branch                                23
+//   3 x drill-axis term (eq. 2.6c)      sub 3, dot 5, mul 1, scale 3, add 3          45
 //   3 x phi_i                           rotation_matrix 50 + 3x3^T*3x3 45 +
 //                                       rotation_vector 23 + 2 rows of T_a phi 10   384
 //   frame_current                       3x3 * 3x3^T                                  45
@@ -62,7 +64,7 @@ inline constexpr double k_transcendental = 20;  // log / pow: ~20 flop of polyno
 // branch): trace 4, w 3, s2 6, series 7 + 3 = 23. small_angle_atan2: test 1, t 1, t^2 1,
 // series 7. (Counted on the working tree of 22 Nov 13:05: e89e679 plus minimal_rotation in closed
 // form and small_angle_atan2; before those two, 43 + 20 more.)
-inline constexpr double k_reverse_motion = 835;
+inline constexpr double k_reverse_motion = 903;
 
 // The rest of compute() per element: current_length (2 Vec3 sub 6, cross 9, norm 6, 3 edge
 // squaredNorms with their subs 24, sqrt, div) = 47; element_dt + drift test 4; phase 2 gathers
@@ -154,8 +156,8 @@ inline double element_loop_flops(int n_inplane, int n_thickness, BendingKernel b
 // membrane force and bending moment 48 written.
 inline constexpr double k_element_loop_bytes_per_element =
     12 + 4 + 8 + 8 + 16 + 8 + 144 + 144 + 12 + 2 + 24 + 32 + 48;
-// Per particle: x_prev, x, dtheta gathered 72, CSR begin 4, f_int and m_int written 48.
-inline constexpr double k_element_loop_bytes_per_particle = 72 + 4 + 48;
+// Per particle: x_prev, x, dtheta, drill_axis gathered 96, CSR begin 4, f_int and m_int written 48.
+inline constexpr double k_element_loop_bytes_per_particle = 96 + 4 + 48;
 // Per material point: the whole MaterialPoint read and written back.
 inline constexpr double k_bytes_per_material_point = 2.0 * sizeof(MaterialPoint);
 

@@ -202,6 +202,7 @@ void measure_plate(const Model& m, int loop_order, const std::string& loop_name,
         ps.x_prev = s.x_prev;  // same sizes: plain copies, no allocation
         ps.x = s.x;
         ps.dtheta = s.dtheta;
+        ps.drill_axis = s.drill_axis;
     };
     auto twin_compute = [&] {
         const Real dt = solver.last_dt();
@@ -543,7 +544,7 @@ int run_table(int argc, char** argv) {
         cost::k_step_pressure_flops_per_element, cost::k_step_flops_per_particle, cost::k_step_contact_flops_per_particle);
     std::printf(
         "  Bytes: compulsory traffic if every array streams once per step: per element %.0f, per particle %.0f\n"
-        "  (gathered x_prev, x, dtheta counted once per particle), per material point %.0f (read + write of %zu B);\n"
+        "  (gathered x_prev, x, dtheta, drill_axis counted once per particle), per material point %.0f (read + write of %zu B);\n"
         "  whole step adds per element %.0f (+%.0f pressure), per particle %.0f (+%.0f pressure, +%.0f contact).\n"
         "  Meshes that fit the caches move far less to memory: their %% STREAM is a rate of touching data, not DRAM use.\n",
         cost::k_element_loop_bytes_per_element, cost::k_element_loop_bytes_per_particle, cost::k_bytes_per_material_point,

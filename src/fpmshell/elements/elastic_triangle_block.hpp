@@ -27,10 +27,11 @@
 
 namespace fpmshell {
 
-/// One path element per lane: node positions at t_{n-1} and t_n, nodal rotation increments.
+/// One path element per lane: node positions at t_{n-1} and t_n, nodal rotation increments
+/// and the nodes' drill axes (reverse_motion.hpp: zero where the increment is complete).
 template <class T>
 struct TriangleMotion {
-    std::array<V3<T>, 3> base, current, dtheta;
+    std::array<V3<T>, 3> base, current, dtheta, drill_axis;
 };
 
 /// The constants of a linear elastic section with its integration rule.
@@ -91,6 +92,17 @@ template <class T>
     return {{V3<T>{d + b * phi.x * phi.x, bxy - a * phi.z, bxz + a * phi.y},
              V3<T>{bxy + a * phi.z, d + b * phi.y * phi.y, byz - a * phi.x},
              V3<T>{bxz - a * phi.y, byz + a * phi.x, d + b * phi.z * phi.z}}};
+}
+
+/// log(R) by the series of core/rotation.hpp's rotation_vector, with the lanes where it holds
+/// (cos > 0, sin^2 < 1e-4) in `valid`.
+template <class T>
+[[nodiscard]] FPMSHELL_INLINE V3<T> rotation_vector_series(const M3<T>& r, MaskOf<T>& valid) {
+    const T c = (r.row[0].x + r.row[1].y + r.row[2].z - 1.0) * 0.5;
+    const V3<T> w{r.row[2].y - r.row[1].z, r.row[0].z - r.row[2].x, r.row[1].x - r.row[0].y};
+    const T s2 = 0.25 * squared_norm(w);
+    valid = valid && (c > 0.0) && (s2 < 1e-4);
+    return (0.5 * (1.0 + s2 * (1.0 / 6.0 + s2 * (3.0 / 40.0 + s2 * (5.0 / 112.0))))) * w;
 }
 
 /// Minimal rotation taking unit a to unit b (a.b > 0 here), as core/rotation.hpp.
@@ -202,17 +214,16 @@ template <class T, class ReturnMapping = NoReturnMapping>
     const V3<T> d2 = r2pp - a2, d3 = r3pp - a3;                             // §2.4
     const std::array<T, 3> ux{T(0.0), dot(ex, d2), dot(ex, d3)}, uy{T(0.0), dot(ey, d2), dot(ey, d3)};
     const M3<T> r_r = r_op * r_ip;
+    // eq. 2.6c: each node's rotation about its drill axis d_i is the element's rigid one
+    const V3<T> omega_r = rotation_vector_series(r_r, valid);
     std::array<T, 6> th;  // [thx1 thy1 thx2 thy2 thx3 thy3], §2.6
     for (std::size_t i = 0; i < 3; ++i) {
-        const T dth2 = squared_norm(m.dtheta[i]);
+        const V3<T>& d = m.drill_axis[i];
+        const V3<T> dtheta = m.dtheta[i] + dot(omega_r - m.dtheta[i], d) * d;
+        const T dth2 = squared_norm(dtheta);
         valid = valid && (dth2 < 1e-4);
-        const M3<T> rel = transpose_times(r_r, rotation_matrix_series(m.dtheta[i], dth2));
-        // log(rel) by the series of rotation_vector (c > 0, sin^2 < 1e-4)
-        const T c = (rel.row[0].x + rel.row[1].y + rel.row[2].z - 1.0) * 0.5;
-        const V3<T> w{rel.row[2].y - rel.row[1].z, rel.row[0].z - rel.row[2].x, rel.row[1].x - rel.row[0].y};
-        const T s2 = 0.25 * squared_norm(w);
-        valid = valid && (c > 0.0) && (s2 < 1e-4);
-        const V3<T> phi = (0.5 * (1.0 + s2 * (1.0 / 6.0 + s2 * (3.0 / 40.0 + s2 * (5.0 / 112.0))))) * w;
+        const M3<T> rel = transpose_times(r_r, rotation_matrix_series(dtheta, dth2));
+        const V3<T> phi = rotation_vector_series(rel, valid);  // eq. 2.6b
         th[2 * i] = dot(ex, phi);
         th[2 * i + 1] = dot(ey, phi);
     }

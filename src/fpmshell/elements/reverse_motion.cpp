@@ -8,7 +8,8 @@ namespace fpmshell {
 
 ReversedTriangle reverse_motion(const std::array<Vec3, 3>& base,
                                 const std::array<Vec3, 3>& current,
-                                const std::array<Vec3, 3>& dtheta) {
+                                const std::array<Vec3, 3>& dtheta,
+                                const std::array<Vec3, 3>& drill_axis) {
     ReversedTriangle out;
     // §2.1 reverse translation by the motion of node 1.
     const Vec3 a2 = base[1] - base[0], a3 = base[2] - base[0];
@@ -55,10 +56,15 @@ ReversedTriangle reverse_motion(const std::array<Vec3, 3>& base,
     out.u[0] = Vec2::Zero();
     out.u[1] = u2.head<2>();
     out.u[2] = u3.head<2>();
-    // §2.6 deformation rotations: phi_i = log(R_r^T R(dtheta_i)), exact form.
+    // §2.6 deformation rotations, exact form: phi_i = log(R_r^T R(dtheta~_i)) (eq. 2.6b) with
+    // dtheta~_i = dtheta_i + ((omega_r - dtheta_i) . d_i) d_i (eq. 2.6c): a node whose rotation
+    // about its drill axis d_i is no degree of freedom takes the element's rigid rotation
+    // omega_r = log(R_r) about it, so that a rigid rotation leaves phi_i = 0 on a curved shell.
     const Mat3 r_r = r_op * r_ip;
-    for (int i = 0; i < 3; ++i) {
-        const Vec3 phi = rotation_vector(r_r.transpose() * rotation_matrix(dtheta[i]));
+    const Vec3 omega_r = rotation_vector(r_r);
+    for (std::size_t i = 0; i < 3; ++i) {
+        const Vec3 dtheta_node = dtheta[i] + (omega_r - dtheta[i]).dot(drill_axis[i]) * drill_axis[i];
+        const Vec3 phi = rotation_vector(r_r.transpose() * rotation_matrix(dtheta_node));
         out.theta[i] = (t_a * phi).head<2>();  // drilling component discarded
     }
     // §2.7 convected current frame T_t = T_a R_r^T.

@@ -22,11 +22,19 @@ struct ReversedTriangle {
     bool degenerate = false;      ///< zero-area base or current triangle (§2.8)
 };
 
+/// The drill axes of three nodes whose rotation increments are complete (kinks, prescribed
+/// rotations, or a single element's test): none.
+inline const std::array<Vec3, 3> k_no_drill_axes{Vec3::Zero(), Vec3::Zero(), Vec3::Zero()};
+
 /// Reverse motion of one triangle (theory.md §2.1-§2.7).
 /// base: node positions at t_{n-1}; current: at t_n; dtheta: nodal rotation increments
-/// (global rotation vectors) over the step. Frame: global in, element-local out.
+/// (global rotation vectors) over the step. drill_axis: per node, the unit axis about which
+/// its rotation is not a degree of freedom (the particle normal of the step; zero where the
+/// increment is complete): the node's rotation about it is the element's own rigid rotation
+/// (§2.6, eq. 2.6c). Frame: global in, element-local out.
 [[nodiscard]] ReversedTriangle reverse_motion(const std::array<Vec3, 3>& base,
                                               const std::array<Vec3, 3>& current,
-                                              const std::array<Vec3, 3>& dtheta);
+                                              const std::array<Vec3, 3>& dtheta,
+                                              const std::array<Vec3, 3>& drill_axis);
 
 }  // namespace fpmshell

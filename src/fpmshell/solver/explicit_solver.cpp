@@ -93,6 +93,22 @@ ExplicitSolver::ExplicitSolver(const Model& model) : model_(model), elements_(mo
     for (std::size_t p = 0; p < np; ++p)
         constrained_[p] = prescribed_translation_[p] || prescribed_rotation_[p] ||
                           std::any_of(fixed_[p].begin(), fixed_[p].end(), [](bool f) { return f; });
+    // §2.6 eq. 2.6c: the rotation the update leaves out (as the particle update below decides
+    // whether to project onto the tangent plane).
+    drill_kind_.assign(np, DrillKind::None);
+    drill_free_axis_.assign(np, 0);
+    for (std::size_t p = 0; p < np; ++p) {
+        const int n_fixed_rot = fixed_[p][3] + fixed_[p][4] + fixed_[p][5];
+        if (prescribed_rotation_[p] || s_.full_rotation[p] || n_fixed_rot == 3) continue;
+        if (n_fixed_rot < 2) {
+            drill_kind_[p] = DrillKind::Normal;
+        } else {
+            drill_kind_[p] = DrillKind::InSymmetryPlane;
+            for (Eigen::Index d = 0; d < 3; ++d)
+                if (!fixed_[p][3 + static_cast<std::size_t>(d)]) drill_free_axis_[p] = d;
+        }
+        s_.drill_axis[p] = drill_axis(p, s_.normal[p]);
+    }
     for (const Load& load : model.loads) has_moment_loads_ = has_moment_loads_ || load.type == LoadType::Moment;
     // Initial conditions: v^0, w^0 (the first cycle uses v^{-1/2} := v^0).
     for (const InitialVelocity& ic : model.initial_conditions)
@@ -259,6 +275,7 @@ void ExplicitSolver::update_normals_and_loads(Real t) {
         }
         const Real len = sum.norm();
         s_.normal[p] = len > 0 ? Vec3(sum / len) : Vec3::UnitZ();
+        s_.drill_axis[p] = drill_axis(p, s_.normal[p]);
         s_.f_ext[p] = f;
         if (has_moment_loads_) s_.m_ext[p] = Vec3::Zero();
     });
@@ -656,6 +673,7 @@ void ExplicitSolver::load(RestartReader& in) {
     // The model's initial positions must be those the run started from, bit for bit.
     if (s_.x0 != model_.nodes) in.fail("restart file of another model: its particles are not those of this mesh");
     if (bodies_.size() != n_bodies) in.fail("restart file of a model with other rigid bodies");
+    for (std::size_t p = 0; p < s_.size(); ++p) s_.drill_axis[p] = drill_axis(p, s_.normal[p]);
     // a free particle's reactions are zero (earlier versions stored rounding noise there)
     for (std::size_t p = 0; p < s_.size(); ++p)
         if (!constrained_[p])

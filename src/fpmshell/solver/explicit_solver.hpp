@@ -91,6 +91,23 @@ private:
     [[nodiscard]] bool finite_state(std::size_t p, const Vec3& position) const {
         return position.allFinite() && s_.omega[p].allFinite() && s_.f_int[p].allFinite();
     }
+    /// The drill axis of particle p for the tangent-plane normal n (§2.6, eq. 2.6c): the axis
+    /// about which its rotation increment is neither integrated nor constrained.
+    [[nodiscard]] Vec3 drill_axis(std::size_t p, const Vec3& n) const {
+        switch (drill_kind_[p]) {
+            case DrillKind::Normal:
+                return n;
+            case DrillKind::InSymmetryPlane: {  // the normal in the plane normal to the free axis
+                const Vec3 a = Vec3::Unit(drill_free_axis_[p]);
+                const Vec3 v = n - n.dot(a) * a;
+                const Real len = v.norm();
+                return len > 1e-8 ? Vec3(v / len) : Vec3::Zero();
+            }
+            case DrillKind::None:
+                break;
+        }
+        return Vec3::Zero();
+    }
     /// Throws RunFailure naming the first particle whose state is not finite.
     void report_non_finite_state() const;
     /// Penalty contact forces at t_n (before the velocity update).
@@ -107,6 +124,13 @@ private:
     EnergyBalance energy_;
     std::vector<std::array<bool, 6>> fixed_;  ///< per particle, ux uy uz rx ry rz
     std::vector<std::uint8_t> prescribed_translation_, prescribed_rotation_;
+    /// What a particle's rotation increment lacks (§2.6, eq. 2.6c): nothing (a kink, a prescribed
+    /// rotation, a clamp), the rotation about its normal (tangent-plane rotations), or, on a
+    /// symmetry plane that leaves one rotation free, the rotation about its normal turned
+    /// into that plane.
+    enum class DrillKind : std::uint8_t { None, Normal, InSymmetryPlane };
+    std::vector<DrillKind> drill_kind_;
+    std::vector<Eigen::Index> drill_free_axis_;  ///< InSymmetryPlane: the free rotation component
     /// per particle: a fixed or prescribed component (the only ones with reactions; a free
     /// particle's stay zero and are neither written nor read by the time loop)
     std::vector<std::uint8_t> constrained_;

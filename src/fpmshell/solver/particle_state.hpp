@@ -21,6 +21,10 @@ struct ParticleState {
     std::vector<Vec3> dtheta;     ///< rotation increment of the last step (global vector)
     std::vector<Quat> rotation;   ///< accumulated rotation, a unit quaternion (output only)
     std::vector<Vec3> normal;     ///< tangent-plane normal n_alpha at t_n (§1.3)
+    /// Unit axis about which the rotation increment `dtheta` is no degree of freedom, zero where
+    /// it is complete (§2.6, eq. 2.6c): the next path element gives the node its own rigid
+    /// rotation about it. Derived from `normal` and the constraints (not in restart files).
+    std::vector<Vec3> drill_axis;
     std::vector<Vec3> f_int, m_int;      ///< internal force / moment at t_n
     std::vector<Vec3> f_ext, m_ext;      ///< external force / moment at t_n
     std::vector<Vec3> f_ext_prev, m_ext_prev;  ///< the same at t_{n-1} (m_ext_prev kept with moment loads only)

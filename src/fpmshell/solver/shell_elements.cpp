@@ -347,14 +347,15 @@ Real ShellElements::min_critical_dt(const std::vector<Vec3>& x, Index* where) co
 
 ReversedTriangle ShellElements::reverse_element(std::size_t ue, const ParticleState& s) const {
     const auto& t = tri_[ue];
-    std::array<Vec3, 3> base, cur, dth;
+    std::array<Vec3, 3> base, cur, dth, drill;
     for (std::size_t i = 0; i < 3; ++i) {
         const std::size_t p = static_cast<std::size_t>(t[i]);
         base[i] = s.x_prev[p];
         cur[i] = s.x[p];
         dth[i] = s.dtheta[p];
+        drill[i] = s.drill_axis[p];
     }
-    return reverse_motion(base, cur, dth);
+    return reverse_motion(base, cur, dth, drill);
 }
 
 ShellElements::ElementTotals ShellElements::compute_element(Index e, ParticleState& s, Real viscous_rate, Real dt) {
@@ -521,6 +522,7 @@ void ShellElements::compute_block(Index b, ParticleState& s, Real viscous_rate, 
         gather(s.x_prev, motion.base[i]);
         gather(s.x, motion.current[i]);
         gather(s.dtheta, motion.dtheta[i]);
+        gather(s.drill_axis, motion.drill_axis[i]);
     }
     // Without the thickness update (§3.4) every element keeps its section's thickness: a
     // broadcast, not a gather (whose pack, filled through memory, stalled the block: perf).

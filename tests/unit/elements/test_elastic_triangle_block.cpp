@@ -27,6 +27,7 @@ constexpr Real k_young = 200e9, k_poisson = 0.3, k_thickness = 0.01;
 
 struct PathElement {
     std::array<Vec3, 3> base, current, dtheta;
+    std::array<Vec3, 3> drill_axis = k_no_drill_axes;
     std::vector<Voigt3> stress;  // old stresses, [g][k]
 };
 
@@ -53,7 +54,9 @@ ElasticSectionConstants constants_of(const LinearElastic& m, const ShellRule& r)
 
 /// A path element of a stable step: a random triangle of size ~1 in a random orientation,
 /// moved rigidly by a rotation of `step_rotation` rad and a translation, deformed by nodal
-/// displacements ~1e-3 (strains ~1e-3) and relative nodal rotations ~2e-4 (bending).
+/// displacements ~1e-3 (strains ~1e-3) and relative nodal rotations ~2e-4 (bending). Nodes 1
+/// and 2 rotate in a tangent plane of their own (a drill axis within ~20 deg of the element
+/// normal, as on a curved shell), node 3 by a complete increment (as a kink).
 PathElement random_path_element(std::mt19937& rng, int n_points, Real step_rotation) {
     std::uniform_real_distribution<Real> u(-1.0, 1.0);
     auto rvec = [&] { return Vec3(u(rng), u(rng), u(rng)); };
@@ -68,6 +71,12 @@ PathElement random_path_element(std::mt19937& rng, int n_points, Real step_rotat
         p.base[i] = origin + orientation * flat[i];
         p.current[i] = r * (p.base[i] - origin) + origin + Vec3(0.002, -0.001, 0.003) + 1e-3 * rvec();
         p.dtheta[i] = phi + 2e-4 * rvec();           // rigid rotation + bending
+    }
+    const Vec3 normal = orientation.col(2);
+    for (std::size_t i = 0; i < 2; ++i) {
+        const Vec3 d = (normal + 0.3 * rvec()).normalized();
+        p.drill_axis[i] = d;
+        p.dtheta[i] -= p.dtheta[i].dot(d) * d;
     }
     p.stress.resize(static_cast<std::size_t>(n_points));
     for (Voigt3& s : p.stress) s = 1e8 * Voigt3(u(rng), u(rng), u(rng));
@@ -92,9 +101,11 @@ TriangleMotion<T> motion_of(const std::array<const PathElement*, k_lanes>& lanes
             T* base[3] = {&m.base[i].x, &m.base[i].y, &m.base[i].z};
             T* cur[3] = {&m.current[i].x, &m.current[i].y, &m.current[i].z};
             T* dth[3] = {&m.dtheta[i].x, &m.dtheta[i].y, &m.dtheta[i].z};
+            T* drill[3] = {&m.drill_axis[i].x, &m.drill_axis[i].y, &m.drill_axis[i].z};
             *base[c] = pick(&PathElement::base);
             *cur[c] = pick(&PathElement::current);
             *dth[c] = pick(&PathElement::dtheta);
+            *drill[c] = pick(&PathElement::drill_axis);
         }
     return m;
 }
@@ -112,7 +123,7 @@ Reference scalar_reference(const PathElement& p, const ShellRule& rule, const Li
         mp.stress = s;
         ref.points.push_back(mp);
     }
-    ref.loads = shell_triangle_loads(reverse_motion(p.base, p.current, p.dtheta), rule, mat, ref.points, viscous_rate);
+    ref.loads = shell_triangle_loads(reverse_motion(p.base, p.current, p.dtheta, p.drill_axis), rule, mat, ref.points, viscous_rate);
     const Vec3 e1 = p.current[1] - p.current[0], e2 = p.current[2] - p.current[1], e3 = p.current[0] - p.current[2];
     ref.characteristic_length = e1.cross(p.current[2] - p.current[0]).norm() /
                                 std::sqrt(std::max({e1.squaredNorm(), e2.squaredNorm(), e3.squaredNorm()}));
@@ -379,7 +390,7 @@ void check_j2_lanes(const RateFactor& rate, Real dt, bool with_return_mapping) {
         const PathElement& pe = elements[static_cast<std::size_t>(l)];
         std::vector<MaterialPoint> points = old_points[static_cast<std::size_t>(l)];
         const ShellTriangleLoads ref =
-            shell_triangle_loads(reverse_motion(pe.base, pe.current, pe.dtheta), rule, mat, points, 0.0, dt);
+            shell_triangle_loads(reverse_motion(pe.base, pe.current, pe.dtheta, pe.drill_axis), rule, mat, points, 0.0, dt);
         if (l == 1) {
             EXPECT_GT(points[4].plastic_strain, 0.0);  // the scalar element did yield there
             EXPECT_GT(ref.plastic_work, 0.0);

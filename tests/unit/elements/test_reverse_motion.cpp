@@ -38,7 +38,7 @@ TEST(ReverseMotion, RigidMotionUpTo180DegreesGivesNoDeformation) {
                 cur[i] = r * base[i] + shift;
                 dth[i] = angle * axis;
             }
-            const ReversedTriangle rt = reverse_motion(base, cur, dth);
+            const ReversedTriangle rt = reverse_motion(base, cur, dth, k_no_drill_axes);
             ASSERT_FALSE(rt.degenerate);
             // Round-off of O(1) coordinates through ~5 rotations: 1e-12 is ~1e4 eps.
             EXPECT_LT(max_deformation(rt), 1e-12) << "angle " << angle;
@@ -61,7 +61,7 @@ TEST(ReverseMotion, DeformationIsRecoveredUnderLargeRigidRotation) {
     const std::array<Vec3, 3> bend{Vec3(1e-4, -2e-4, 0), Vec3(-3e-4, 1e-4, 0), Vec3(2e-4, 1e-4, 0)};
     std::array<Vec3, 3> deformed;
     for (int i = 0; i < 3; ++i) deformed[i] = base[i] + g * (base[i] - base[0]);
-    const ReversedTriangle ref = reverse_motion(base, deformed, bend);
+    const ReversedTriangle ref = reverse_motion(base, deformed, bend, k_no_drill_axes);
 
     const Mat3 r = rotation_matrix(Vec3(0.7, -1.9, 1.2));  // 2.3 rad rigid rotation
     std::array<Vec3, 3> cur, dth;
@@ -69,7 +69,7 @@ TEST(ReverseMotion, DeformationIsRecoveredUnderLargeRigidRotation) {
         cur[i] = r * deformed[i] + Vec3(3, -1, 2);
         dth[i] = rotation_vector(r * rotation_matrix(bend[i]));  // rigid after deformation
     }
-    const ReversedTriangle rt = reverse_motion(base, cur, dth);
+    const ReversedTriangle rt = reverse_motion(base, cur, dth, k_no_drill_axes);
     for (int i = 0; i < 3; ++i) {
         // Same deformation to round-off (the rigid rotation is removed exactly, §2.6).
         EXPECT_LT((rt.u[i] - ref.u[i]).norm(), 1e-14);
@@ -80,4 +80,33 @@ TEST(ReverseMotion, DeformationIsRecoveredUnderLargeRigidRotation) {
     EXPECT_NEAR(ref.u[1].x(), 2e-4, 1e-8);  // second-order terms (|G|^2 |a| ~ 1e-8)
     EXPECT_NEAR(ref.theta[0].x(), 1e-4, 1e-7);
     EXPECT_NEAR(ref.theta[0].y(), -2e-4, 1e-7);
+}
+
+TEST(ReverseMotion, RigidRotationOfTangentPlaneIncrementsGivesNoDeformation) {
+    // Curved-shell nodes (theory.md §2.6, eq. 2.6c): each node's increment is the rigid
+    // rotation less its part about the node's own normal d_i, tilted by up to ~25 deg from the
+    // element's. With the drill axes the element restores that part from its own rigid rotation
+    // and sees no deformation; without them it sees -(omega . d_i) d_i, whose in-plane part
+    // is a bending rotation of ~|omega| sin(tilt).
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<Real> u(-1, 1);
+    const auto base = sample_triangle();
+    const Vec3 na = (base[1] - base[0]).cross(base[2] - base[0]).normalized();
+    for (Real angle : {1e-4, 0.01, 0.5}) {
+        for (int trial = 0; trial < 10; ++trial) {
+            const Vec3 axis = (na + 0.5 * Vec3(u(rng), u(rng), u(rng))).normalized();  // near the normals
+            const Mat3 r = rotation_matrix(angle * axis);
+            std::array<Vec3, 3> cur, dth, drill;
+            for (std::size_t i = 0; i < 3; ++i) {
+                cur[i] = r * base[i] + Vec3(0.3, -0.1, 0.2);
+                drill[i] = (na + 0.25 * Vec3(u(rng), u(rng), u(rng))).normalized();
+                dth[i] = angle * axis - (angle * axis).dot(drill[i]) * drill[i];
+            }
+            // Round-off of O(1) coordinates through ~5 rotations: 1e-12 is ~1e4 eps.
+            EXPECT_LT(max_deformation(reverse_motion(base, cur, dth, drill)), 1e-12) << "angle " << angle;
+            // The same increments without their drill axes: a spurious bending rotation of
+            // order angle x tilt (> 1e-3 angle for these tilts), the inconsistency the axes remove.
+            EXPECT_GT(max_deformation(reverse_motion(base, cur, dth, k_no_drill_axes)), 1e-3 * angle);
+        }
+    }
 }

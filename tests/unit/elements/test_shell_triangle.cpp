@@ -38,7 +38,7 @@ ElementRun run(const std::array<Vec3, 3>& base, const std::array<Vec3, 3>& cur,
     const LinearElastic mat(200e9, 0.3);
     ElementRun out;
     out.points.assign(static_cast<std::size_t>(r.n_points()), MaterialPoint{});
-    out.loads = shell_triangle_loads(reverse_motion(base, cur, dth), r, mat, out.points, 0.0);
+    out.loads = shell_triangle_loads(reverse_motion(base, cur, dth, k_no_drill_axes), r, mat, out.points, 0.0);
     return out;
 }
 
@@ -137,7 +137,7 @@ TEST(ShellTriangle, PlasticElementReducesToElasticBelowYieldAndYieldsInBending) 
     const std::array<Vec3, 3> cur{Vec3(0.1, 0.0, 0.2), Vec3(1.2003, 0.3, 0.1012), Vec3(0.2, 0.9002, 0.401)};
     const std::array<Vec3, 3> dth{Vec3(0.001, -0.002, 0.0), Vec3(-0.0015, 0.001, 0.0), Vec3(0.0005, 0.002, 0.0)};
     const ShellRule r = rule(BendingKernel::Dkt, 5, 7);
-    const ReversedTriangle rt = reverse_motion(k_base, cur, dth);
+    const ReversedTriangle rt = reverse_motion(k_base, cur, dth, k_no_drill_axes);
     const LinearElastic elastic(200e9, 0.3);
     FlowStress flow;
     flow.yield_stress = 1e30;
