@@ -217,8 +217,10 @@ template <class T, class ReturnMapping = NoReturnMapping>
     // eq. 2.6c: each node's rotation about its drill axis d_i is the element's rigid one
     const V3<T> omega_r = rotation_vector_series(r_r, valid);
     std::array<T, 6> th;  // [thx1 thy1 thx2 thy2 thx3 thy3], §2.6
+    std::array<V3<T>, 3> drill_local;  // the drill axes in the local frame (eq. 4.6b)
     for (std::size_t i = 0; i < 3; ++i) {
         const V3<T>& d = m.drill_axis[i];
+        drill_local[i] = V3<T>{dot(ex, d), dot(ey, d), dot(ez, d)};
         const V3<T> dtheta = m.dtheta[i] + dot(omega_r - m.dtheta[i], d) * d;
         const T dth2 = squared_norm(dtheta);
         valid = valid && (dth2 < 1e-4);
@@ -420,15 +422,25 @@ template <class T, class ReturnMapping = NoReturnMapping>
                    corner[i].b[2][q] * m_corner[i][2];
         m_b[q] = sum;
     }
-    const T sum_mx = m_b[0] + m_b[2] + m_b[4], sum_my = m_b[1] + m_b[3] + m_b[5];
-    const T f3z = -sum_mx * (x2 * inv_two_area);  // 1 / y3 = x2 / (x2 y3)
+    // eq. 4.6b: the moments the particles take, less their part about each drill axis
+    std::array<V3<T>, 3> m_node;
+    for (std::size_t i = 0; i < 3; ++i) {
+        const V3<T>& d = drill_local[i];
+        const T along = m_b[2 * i] * d.x + m_b[2 * i + 1] * d.y;
+        m_node[i] = V3<T>{m_b[2 * i] - along * d.x, m_b[2 * i + 1] - along * d.y, -(along * d.z)};
+    }
+    const T sum_mx = m_node[0].x + m_node[1].x + m_node[2].x, sum_my = m_node[0].y + m_node[1].y + m_node[2].y;
+    const T sum_mz = m_node[0].z + m_node[1].z + m_node[2].z;
+    const T f3z = -sum_mx * (x2 * inv_two_area);  // 1 / y3 = x2 / (x2 y3); eq. 4.6a
     const T f2z = (sum_my - x3 * f3z) * inv_x2;
     const T f1z = -f2z - f3z;
     const std::array<T, 3> fz{f1z, f2z, f3z};
+    const T f_couple = sum_mz * inv_x2;  // eq. 4.6c
+    const std::array<T, 3> fy_couple{f_couple, -f_couple, T(0.0)};
     // §5 forward rotation: global = T_t^T local.
     for (std::size_t i = 0; i < 3; ++i) {
-        out.force[i] = transpose_times(frame_current, V3<T>{f_m[2 * i], f_m[2 * i + 1], fz[i]});
-        out.moment[i] = transpose_times(frame_current, V3<T>{m_b[2 * i], m_b[2 * i + 1], T(0.0)});
+        out.force[i] = transpose_times(frame_current, V3<T>{f_m[2 * i], f_m[2 * i + 1] + fy_couple[i], fz[i]});
+        out.moment[i] = transpose_times(frame_current, m_node[i]);
     }
     out.valid = valid;
     return out;

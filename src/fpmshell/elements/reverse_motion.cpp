@@ -66,6 +66,7 @@ ReversedTriangle reverse_motion(const std::array<Vec3, 3>& base,
         const Vec3 dtheta_node = dtheta[i] + (omega_r - dtheta[i]).dot(drill_axis[i]) * drill_axis[i];
         const Vec3 phi = rotation_vector(r_r.transpose() * rotation_matrix(dtheta_node));
         out.theta[i] = (t_a * phi).head<2>();  // drilling component discarded
+        out.drill_local[i] = t_a * drill_axis[i];
     }
     // §2.7 convected current frame T_t = T_a R_r^T.
     out.frame_current = t_a * r_r.transpose();

@@ -136,17 +136,31 @@ ShellTriangleLoads shell_triangle_loads(const ReversedTriangle& rt, const ShellR
     const Eigen::Matrix<Real, 6, 1> m_b = b_corner[0].transpose() * m_corner[0] +  // §4.5
                                           b_corner[1].transpose() * m_corner[1] +
                                           b_corner[2].transpose() * m_corner[2];
-    // §4.6 out-of-plane forces from the equilibrium of the element (node-1-origin frame).
-    const Real sum_mx = m_b(0) + m_b(2) + m_b(4), sum_my = m_b(1) + m_b(3) + m_b(5);
+    // §4.6 eq. 4.6b: the moments the particles take, less their part about each node's drill
+    // axis (the rotation the node has from the element, eq. 2.6c).
+    std::array<Vec3, 3> m_node;
+    for (std::size_t i = 0; i < 3; ++i) {
+        const Vec3& d = rt.drill_local[i];
+        const Vec3 m(m_b(2 * static_cast<Eigen::Index>(i)), m_b(2 * static_cast<Eigen::Index>(i) + 1), 0.0);
+        m_node[i] = m - m.dot(d) * d;
+    }
+    // §4.6 eq. 4.6a out-of-plane forces from the equilibrium of the element (node-1-origin
+    // frame); eq. 4.6c the in-plane couple on side 1-2 that balances the moments' drilling part.
+    const Real sum_mx = m_node[0].x() + m_node[1].x() + m_node[2].x();
+    const Real sum_my = m_node[0].y() + m_node[1].y() + m_node[2].y();
+    const Real sum_mz = m_node[0].z() + m_node[1].z() + m_node[2].z();
     const Real f3z = -sum_mx / rt.y3;
     const Real f2z = (sum_my - rt.x3 * f3z) / rt.x2;
     const Real f1z = -f2z - f3z;
     const std::array<Real, 3> fz{f1z, f2z, f3z};
+    const Real f_couple = sum_mz / rt.x2;
+    const std::array<Real, 3> fy_couple{f_couple, -f_couple, 0.0};
     // §5 forward rotation: global = T_t^T local.
     const Mat3 to_global = rt.frame_current.transpose();
-    for (int i = 0; i < 3; ++i) {
-        out.force[i] = to_global * Vec3(f_m(2 * i), f_m(2 * i + 1), fz[i]);
-        out.moment[i] = to_global * Vec3(m_b(2 * i), m_b(2 * i + 1), 0.0);
+    for (std::size_t i = 0; i < 3; ++i) {
+        const auto k = 2 * static_cast<Eigen::Index>(i);
+        out.force[i] = to_global * Vec3(f_m(k), f_m(k + 1) + fy_couple[i], fz[i]);
+        out.moment[i] = to_global * m_node[i];
     }
     return out;
 }
