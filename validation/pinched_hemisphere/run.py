@@ -1,0 +1,140 @@
+#!/usr/bin/env python3
+"""Pinched hemisphere with an 18 degree hole (MacNeal & Harder 1985): radial displacement under
+the load.
+
+Quarter model (model.yaml) on 4x4 ... 32x32 mapped meshes (colatitude 18..90 deg x azimuth
+0..90 deg, written by write_inp as Abaqus .inp files) with the BCIZ and DKT bending kernels.
+The loads are applied at 1/1000 (linear response, see model.yaml) and the displacement scaled
+back. See README.md. Protocol: validation/README.md.
+"""
+import math
+import os
+import sys
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(HERE, "..", "..", "tools"))
+import fpmv  # noqa: E402
+
+PROBLEM = "pinched_hemisphere"
+R, HOLE_DEG = 10.0, 18.0
+P = 1.0                 # quarter model: half of the load 2 at each of the two load points
+U_REF = 0.093           # MacNeal & Harder (1985) as quoted by later papers (0.094 originally)
+BAND = (0.091, 0.095)   # the issue's acceptance band for the 16x16 mesh
+
+KERNELS = ["bciz", "dkt"]
+MESHES_FULL = [4, 8, 16, 32]     # divisions per side of the quarter (colatitude x azimuth)
+MESHES_QUICK = [16]
+# 16x16 (full and quick: both run it, 15 s for the two kernels): inside 0.091..0.095, i.e.
+# |u - 0.093| <= 0.002 (absolute rows). That is the issue's acceptance band: about 2 % around
+# the reference (MacNeal & Harder's grading of a good element on a fine mesh), and it holds
+# both quoted reference values, 0.093 and the original paper's 0.094.
+TOL_BAND = 0.002
+# 16x16 within 1 % of 32x32 (full only): 16x16 is converged to engineering accuracy, so the
+# band test above tests the limit of the discretisation, not a coarse mesh that crosses the
+# band on its way to another value.
+TOL_CONV = 0.01
+
+
+def write_inp(path, n):
+    """Abaqus .inp of the quarter hemisphere, n x n cells, two S3 per cell. Node (i, j):
+    azimuth phi = 90 deg i / n, colatitude theta = 90 deg - 72 deg j / n (j = 0 equator,
+    j = n hole), at (R sin theta cos phi, R sin theta sin phi, R cos theta). The diagonals turn
+    at phi = 45 deg so that the mesh is mirror-symmetric about that plane (then the two load
+    points see the same mesh); every triangle is numbered counter-clockwise seen from outside
+    (normal outward)."""
+    def node(i, j):
+        return j * (n + 1) + i + 1
+    with open(path, "w") as f:
+        f.write("** pinched hemisphere, quarter, %dx%d (validation/pinched_hemisphere/run.py)\n"
+                "*NODE\n" % (n, n))
+        for j in range(n + 1):
+            th = math.radians(90.0 - (90.0 - HOLE_DEG) * j / n)
+            for i in range(n + 1):
+                ph = math.radians(90.0 * i / n)
+                f.write("%d, %.15g, %.15g, %.15g\n" % (
+                    node(i, j), R * math.sin(th) * math.cos(ph), R * math.sin(th) * math.sin(ph),
+                    R * math.cos(th)))
+        f.write("*ELEMENT, TYPE=S3\n")
+        e = 0
+        for j in range(n):
+            for i in range(n):
+                a, b, c, d = node(i, j), node(i + 1, j), node(i + 1, j + 1), node(i, j + 1)
+                tris = [(a, b, c), (a, c, d)] if 2 * i < n else [(a, b, d), (b, c, d)]
+                for t in tris:
+                    e += 1
+                    f.write("%d, %d, %d, %d\n" % ((e,) + t))
+
+
+def main():
+    args = fpmv.parse_args(__doc__)
+    meshes = MESHES_QUICK if args.quick else MESHES_FULL
+    model = os.path.join(HERE, "model.yaml")
+    plot = fpmv.plot_path(PROBLEM + ("-quick" if args.quick else "") + ".png")
+    plot_name = os.path.basename(plot)
+    os.makedirs(args.out, exist_ok=True)
+    rows, results = [], {}
+    for kernel in KERNELS:
+        for n in meshes:
+            out = os.path.join(args.out, "%s-%d" % (kernel, n))
+            mesh = os.path.abspath(os.path.join(args.out, "mesh_%dx%d.inp" % (n, n)))
+            write_inp(mesh, n)
+            res, wall = fpmv.run(args.fpmshell, model, out,
+                                 ["mesh.file=" + mesh, "control.bending=" + kernel], threads=1)
+            h = res["history"]
+            scale = P / h["fx"][-1]                    # linear: scale to the full load
+            u_a, u_b = h["u_a"][-1] * scale, -h["u_b"][-1] * scale
+            u = 0.5 * (u_a + u_b)
+            conv = bool(h["converged"][-1])
+            results[(kernel, n)] = u
+            tol = TOL_BAND if n == 16 else None
+            r = fpmv.row(PROBLEM, "radial u under the load %s" % kernel, U_REF, u, tol,
+                         mesh="quarter %dx%d" % (n, n), wall=wall, plot=plot_name,
+                         relative=False,
+                         note="MacNeal-Harder 0.093 (0.094 originally); band 0.091-0.095 on "
+                              "16x16; u_A %.5g, u_B %.5g; load x%.3g, scaled"
+                              % (u_a, u_b, h["fx"][-1] / P)
+                              + ("" if conv else "; relaxation NOT converged"))
+            if not conv:
+                r["pass"] = False
+            rows.append(r)
+        if len(meshes) >= 3:
+            p = fpmv.observed_order(*[results[(kernel, n)] for n in meshes[-3:]])
+            if math.isnan(p):     # not monotone: no order (and no NaN in rows.json)
+                rows[-1]["note"] += "; %d/%d/%d not monotone, no observed order" % tuple(
+                    meshes[-3:])
+            else:
+                rows.append(fpmv.row(PROBLEM, "observed order %s" % kernel, 2.0, p, None,
+                                     mesh="%d/%d/%d" % tuple(meshes[-3:]), plot=plot_name,
+                                     note="log2((u1-u2)/(u2-u3)); report only"))
+        if 16 in meshes and 32 in meshes:
+            u16, u32 = results[(kernel, 16)], results[(kernel, 32)]
+            rows.append(fpmv.row(PROBLEM, "16x16 against 32x32 %s" % kernel, u32, u16, TOL_CONV,
+                                 mesh="16/32", plot=plot_name,
+                                 note="|u16 - u32| / u32 <= 1 %: 16x16 converged, so the band "
+                                      "test on 16x16 tests the limit"))
+    draw(plot, meshes, results)
+    return fpmv.finish(args.out, rows)
+
+
+def draw(path, meshes, results):
+    plt = fpmv.pyplot()
+    fig, ax = plt.subplots(figsize=(6, 4))
+    for kernel, mark in zip(KERNELS, ["o-", "s--"]):
+        ax.plot(meshes, [results[(kernel, n)] for n in meshes], mark, label="fpmshell " + kernel)
+    ax.axhline(U_REF, color="k", lw=1, label="reference 0.093")
+    ax.axhline(0.094, color="k", lw=1, ls=":", label="MacNeal-Harder 1985: 0.094")
+    ax.axhspan(BAND[0], BAND[1], color="0.85", label="band 0.091-0.095")
+    ax.set_xscale("log", base=2)
+    ax.set_xticks(meshes)
+    ax.set_xticklabels([str(n) for n in meshes])
+    ax.set_xlabel("divisions per side of the quarter")
+    ax.set_ylabel("radial displacement under the load")
+    ax.legend(fontsize=8)
+    ax.set_title("Pinched hemisphere, 18° hole (quarter model), linear response")
+    fig.tight_layout()
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
+
+
+if __name__ == "__main__":
+    sys.exit(main())
