@@ -1,5 +1,5 @@
-// Deterministic parallel loops over particles (style.md §4; issue 5: results bitwise the same
-// for any number of threads). The range is cut into chunks of a fixed size that does not
+// Deterministic parallel loops over particles (style.md §4): results bitwise the same for any
+// number of threads. The range is cut into chunks of a fixed size that does not
 // depend on the thread count; a sum is the ordered sum of the per-chunk partial sums, each
 // accumulated in index order, so it never depends on how OpenMP shares the chunks out.
 #pragma once

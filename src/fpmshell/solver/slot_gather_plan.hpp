@@ -1,5 +1,5 @@
-// When and from where every particle sums the loads of its element corners (issue 5, the
-// assembly of style.md §4 without its round trip through memory).
+// When and from where every particle sums the loads of its element corners (the assembly of
+// style.md §4 without its round trip through memory).
 //
 // The element loop writes each element corner's force and moment into a slot; each particle
 // then sums its slots in element order, which makes the result bitwise the same for any thread
