@@ -136,6 +136,27 @@ def pyplot():
     return plt
 
 
+def mesh_study_axis(ax, ns, labels, xlabel, ylabel):
+    """A mesh-convergence axis: log2 x with one tick per mesh, labelled, and the legend."""
+    ax.set_xscale("log", base=2)
+    ax.set_xticks(ns)
+    ax.set_xticklabels(labels)
+    ax.set_xlabel(xlabel)
+    ax.set_ylabel(ylabel)
+    ax.legend(fontsize=8)
+
+
+def save_figure(fig, path, title):
+    """Titles, lays out, writes (110 dpi) and closes a figure."""
+    if len(fig.axes) == 1:
+        fig.axes[0].set_title(title)
+    else:
+        fig.suptitle(title)
+    fig.tight_layout()
+    fig.savefig(path, dpi=110)
+    pyplot().close(fig)
+
+
 def read_vtu(path):
     """Arrays of one fields/frame_NNNNN.vtu (fpmshell's base64 binary VTK XML, UInt64 headers):
     dict name -> list of tuples (or of floats for one component), plus 'points'."""

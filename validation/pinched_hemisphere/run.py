@@ -124,16 +124,9 @@ def draw(path, meshes, results):
     ax.axhline(U_REF, color="k", lw=1, label="reference 0.093")
     ax.axhline(0.094, color="k", lw=1, ls=":", label="MacNeal-Harder 1985: 0.094")
     ax.axhspan(BAND[0], BAND[1], color="0.85", label="band 0.091-0.095")
-    ax.set_xscale("log", base=2)
-    ax.set_xticks(meshes)
-    ax.set_xticklabels([str(n) for n in meshes])
-    ax.set_xlabel("divisions per side of the quarter")
-    ax.set_ylabel("radial displacement under the load")
-    ax.legend(fontsize=8)
-    ax.set_title("Pinched hemisphere, 18° hole (quarter model), linear response")
-    fig.tight_layout()
-    fig.savefig(path, dpi=110)
-    plt.close(fig)
+    fpmv.mesh_study_axis(ax, meshes, [str(n) for n in meshes], "divisions per side of the quarter",
+                         "radial displacement under the load")
+    fpmv.save_figure(fig, path, "Pinched hemisphere, 18° hole (quarter model), linear response")
 
 
 if __name__ == "__main__":

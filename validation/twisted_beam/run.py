@@ -124,16 +124,9 @@ def draw(path, meshes, results):
     ax.axhline(1.0, color="k", lw=1, label="reference (0.005424 / 0.001754)")
     tol = (TOL_QUICK if len(meshes) == 1 else TOL_FINE)["in-plane"]
     ax.axhspan(1 - tol, 1 + tol, color="0.85", label="$\\pm$%g %%" % (100 * tol))
-    ax.set_xscale("log", base=2)
-    ax.set_xticks(ns)
-    ax.set_xticklabels(["%dx%d" % m for m in meshes])
-    ax.set_xlabel("mesh (width x length)")
-    ax.set_ylabel("tip displacement along the load / reference")
-    ax.legend(fontsize=8)
-    ax.set_title("Twisted beam, unit tip load, linear response")
-    fig.tight_layout()
-    fig.savefig(path, dpi=110)
-    plt.close(fig)
+    fpmv.mesh_study_axis(ax, ns, ["%dx%d" % m for m in meshes], "mesh (width x length)",
+                         "tip displacement along the load / reference")
+    fpmv.save_figure(fig, path, "Twisted beam, unit tip load, linear response")
 
 
 if __name__ == "__main__":

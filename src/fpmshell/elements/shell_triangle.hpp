@@ -140,9 +140,9 @@ ShellTriangleLoads shell_triangle_loads(const ReversedTriangle& rt, const ShellR
     // axis (the rotation the node has from the element, eq. 2.6c).
     std::array<Vec3, 3> m_node;
     for (std::size_t i = 0; i < 3; ++i) {
-        const Vec3& d = rt.drill_local[i];
-        const Vec3 m(m_b(2 * static_cast<Eigen::Index>(i)), m_b(2 * static_cast<Eigen::Index>(i) + 1), 0.0);
-        m_node[i] = m - m.dot(d) * d;
+        const auto k = 2 * static_cast<Eigen::Index>(i);
+        const Vec3 m(m_b(k), m_b(k + 1), 0.0);
+        m_node[i] = m - m.dot(rt.drill_local[i]) * rt.drill_local[i];
     }
     // §4.6 eq. 4.6a out-of-plane forces from the equilibrium of the element (node-1-origin
     // frame); eq. 4.6c the in-plane couple on side 1-2 that balances the moments' drilling part.
