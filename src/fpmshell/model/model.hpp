@@ -20,7 +20,14 @@ struct Curve {
 
     /// Factor at time t (flat extrapolation before the first and after the last point).
     [[nodiscard]] Real value(Real t) const;
+    /// Integral of the factor from 0 to t, exact for the piecewise-linear curve.
+    [[nodiscard]] Real integral(Real t) const;
 };
+
+/// Factor of curves[curve] at time t; 1 at all times for curve -1 (no curve).
+[[nodiscard]] Real curve_factor(const std::vector<Curve>& curves, Index curve, Real t);
+/// Integral of that factor from 0 to t (t for curve -1).
+[[nodiscard]] Real curve_factor_integral(const std::vector<Curve>& curves, Index curve, Real t);
 
 enum class MaterialType { Elastic, J2Plastic, JohnsonCook };
 

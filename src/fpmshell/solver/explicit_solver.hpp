@@ -1,6 +1,7 @@
-// The explicit FPM cycle (theory.md §6.8): element loop -> external loads -> variable-step
-// central difference for translations and tangent-plane rotations -> boundary conditions ->
-// energy balance. Also dynamic relaxation (control.mode: relaxation) built on the same cycle.
+// The explicit FPM solver (theory.md §6.8): the cycle t_n -> t_{n+1} as a list of phases —
+// element loop, normals and external loads, stable step, contact, central difference for
+// translations and tangent-plane rotations, boundary conditions, energy balance — for dynamic
+// runs and for dynamic relaxation (control.mode: relaxation), which runs the same cycle.
 #pragma once
 
 #include <memory>
@@ -11,7 +12,10 @@
 #include "fpmshell/contact/rigid_body_state.hpp"
 #include "fpmshell/core/types.hpp"
 #include "fpmshell/model/model.hpp"
+#include "fpmshell/solver/boundary_conditions.hpp"
+#include "fpmshell/solver/cycle_policy.hpp"
 #include "fpmshell/solver/energy_balance.hpp"
+#include "fpmshell/solver/external_loads.hpp"
 #include "fpmshell/solver/particle_state.hpp"
 #include "fpmshell/solver/shell_elements.hpp"
 
@@ -68,52 +72,74 @@ public:
     void load(RestartReader& in);
 
 private:
+    /// The lengths of this cycle's steps and the central-difference factors (§6.6):
+    /// dt_n = (dt_{n-1/2} + dt_{n+1/2}) / 2, c1 = 1 / (1 + a_m dt_n / 2), c2 = 1 - a_m dt_n / 2.
+    struct StepLengths {
+        Real dt_n = 0, dt_new = 0, c1 = 1, c2 = 1, a_m = 0;
+    };
+    /// Sums over the particles of one cycle: kinetic energy, work of loads and reactions,
+    /// contact work, damping, the count of non-finite states (energies at t_n, §6.8), then the
+    /// out-of-balance and applied loads squared (relaxation residual).
+    struct ParticleSums {
+        Real kinetic = 0, external_work = 0, contact_work = 0, damping = 0, non_finite = 0;
+        Real residual2 = 0, reference2 = 0;
+    };
     template <class Archive>
     void transfer_state(Archive& ar);
-    struct Prescribed {
-        Index particle;
-        PrescribedKind kind;
-        Vec3 value;
-        Index curve;
-    };
 
-    /// The cycle shared by dynamic and relaxation modes. load_time: time at which loads and
-    /// prescribed motions are evaluated; advance: whether time moves on (dynamic) or not.
-    void cycle(Real load_time, Real dt_new_cap, bool relaxation);
-    /// The tangent-plane normals of the current positions (§1.3) and the external loads at
-    /// time t (§6.7), whose pressures use the triangles' current cross products.
-    void update_normals_and_loads(Real t);
-    [[nodiscard]] Real curve_value(Index curve, Real t) const;
-    [[nodiscard]] Real curve_integral(Index curve, Real t) const;
+    /// The cycle t_n -> t_{n+1} (§6.8), shared by dynamic and relaxation modes. load_time: the
+    /// time at which loads and prescribed motions are evaluated; dt_cap: the largest step.
+    void cycle(const CyclePolicy& policy, Real load_time, Real dt_cap);
+    // The phases of the cycle, in its order.
+    /// 1 element loop on the path element (x^{n-1}, x^n, dtheta^{n-1/2}) -> f_int^n, m_int^n
+    /// (§2-§5); books the strain, plastic and damping work.
+    [[nodiscard]] ShellElements::StepTotals compute_internal_loads(const CyclePolicy& policy);
+    /// 3 dt_{n+1/2} = scale min dt_e, growth capped at 1.2 dt_{n-1/2} (§6.4), and dt_n.
+    [[nodiscard]] StepLengths next_step_lengths(const CyclePolicy& policy, const ShellElements::StepTotals& elements,
+                                                Real dt_cap);
+    /// 4 contact forces at t_n: the penalty forces from x^n (the multipliers come after the
+    /// velocity update).
+    void penalty_contact(const StepLengths& dt);
+    /// 5 central difference (§6.6) with the fixed components removed and their reactions, fused
+    /// with 8-9 (energies at t_n and x^{n+1}) in one sweep over the particle arrays: taken when
+    /// nothing changes v^{n+1/2} in between (no prescribed motion, no Lagrange contact).
+    [[nodiscard]] ParticleSums update_velocities_and_advance_particles(const CyclePolicy& policy, const StepLengths& dt);
+    /// 5 central difference alone (the sweep above without 8-9).
+    [[nodiscard]] ParticleSums update_velocities(const CyclePolicy& policy, const StepLengths& dt);
+    /// 6 prescribed motions (§6.7) and the rigid bodies' velocities.
+    void impose_prescribed_motions(const CyclePolicy& policy, Real load_time, const StepLengths& dt);
+    void update_body_velocities(const StepLengths& dt);
+    /// 7 Lagrange-multiplier contact (§8.3): corrects v^{n+1/2} so that x^{n+1} satisfies every gap.
+    void lagrange_contact(const StepLengths& dt);
+    /// 8-9 energies at t_n (into sums) and x^{n+1}, dtheta^{n+1/2} of every particle (the
+    /// second sweep).
+    void advance_particles(const StepLengths& dt, ParticleSums& sums);
+    /// 8 the energy balance at t_n (§6.8) from the particles' sums and the rigid bodies.
+    void book_energies(const ParticleSums& particles);
+    /// 9 the rigid bodies' positions, the step lengths and the step count.
+    void finish_step(const StepLengths& dt, const ParticleSums& particles);
+
+    // Per particle (inlined in the sweeps above).
+    /// v^{n+1/2}, w^{n+1/2} and the reactions of particle p; with policy.residual, its
+    /// out-of-balance and applied loads squared added to residual[0], residual[1].
+    void update_particle_velocity(std::size_t p, const CyclePolicy& policy, const StepLengths& dt, Real* residual);
+    /// The energies of particle p at t_n added to energy[0..3] (kinetic, work of loads and
+    /// reactions, contact work, damping), energy[4] += 1 if its new state is not finite; then
+    /// its x^{n+1} and rotation increment.
+    void advance_particle(std::size_t p, const StepLengths& dt, Real* energy);
+
     /// Whether particle p at `position` has a finite state: the position, its angular velocity
     /// and internal force (defined here so that the per-step particle pass inlines it; that
     /// pass checks the new position before it becomes s_.x).
     [[nodiscard]] bool finite_state(std::size_t p, const Vec3& position) const {
         return position.allFinite() && s_.omega[p].allFinite() && s_.f_int[p].allFinite();
     }
-    /// The drill axis of particle p for the tangent-plane normal n (§2.6, eq. 2.6c): the axis
-    /// about which its rotation increment is neither integrated nor constrained.
-    [[nodiscard]] Vec3 drill_axis(std::size_t p, const Vec3& n) const {
-        switch (drill_kind_[p]) {
-            case DrillKind::Normal:
-                return n;
-            case DrillKind::InSymmetryPlane: {  // the normal in the plane normal to the free axis
-                const Vec3 a = Vec3::Unit(drill_free_axis_[p]);
-                const Vec3 v = n - n.dot(a) * a;
-                const Real len = v.norm();
-                return len > 1e-8 ? Vec3(v / len) : Vec3::Zero();
-            }
-            case DrillKind::None:
-                break;
-        }
-        return Vec3::Zero();
-    }
     /// Throws RunFailure naming the first particle whose state is not finite.
     void report_non_finite_state() const;
-    /// Penalty contact forces at t_n (before the velocity update).
-    void penalty_contact(Real dt_n, Real dt_new, Real c1);
-    /// Lagrange-multiplier contact: corrects v^{n+1/2} so that x^{n+1} satisfies every gap.
-    void lagrange_contact(Real dt_n, Real dt_new, Real c1);
+    /// Throws RunFailure naming the failed element.
+    [[noreturn]] void report_failed_element(Index e) const;
+    /// Throws RunFailure when the energy balance error exceeds control.energy_error_limit.
+    void check_energy_balance() const;
     /// Kinetic damping: moves the state back to the kinetic-energy peak bracketed by the last
     /// three half steps (Barnes 1988).
     void move_to_kinetic_energy_peak(Real ke_before, Real ke_peak, Real ke_after);
@@ -122,47 +148,28 @@ private:
     ShellElements elements_;
     ParticleState s_;
     EnergyBalance energy_;
-    std::vector<std::array<bool, 6>> fixed_;  ///< per particle, ux uy uz rx ry rz
-    std::vector<std::uint8_t> prescribed_translation_, prescribed_rotation_;
-    /// What a particle's rotation increment lacks (§2.6, eq. 2.6c): nothing (a kink, a prescribed
-    /// rotation, a clamp), the rotation about its normal (tangent-plane rotations), or, on a
-    /// symmetry plane that leaves one rotation free, the rotation about its normal turned
-    /// into that plane.
-    enum class DrillKind : std::uint8_t { None, Normal, InSymmetryPlane };
-    std::vector<DrillKind> drill_kind_;
-    std::vector<Eigen::Index> drill_free_axis_;  ///< InSymmetryPlane: the free rotation component
-    /// per particle: a fixed or prescribed component (the only ones with reactions; a free
-    /// particle's stay zero and are neither written nor read by the time loop)
-    std::vector<std::uint8_t> constrained_;
-    bool has_moment_loads_ = false;  ///< m_ext can be nonzero (else neither written nor read)
-    std::vector<Prescribed> prescribed_;
-    std::vector<Vec3> prescribed_rotation_applied_;  ///< relaxation: rotation imposed so far
+    std::vector<Index> particle_element_begin_, particle_element_;  ///< CSR particle -> triangles
+    std::unique_ptr<BoundaryConditions> bc_;  ///< built once the kink particles are known
+    std::unique_ptr<ExternalLoads> loads_;
     std::vector<RigidBodyState> bodies_;
-    std::unique_ptr<ContactSolver> contact_;     ///< null without contact definitions
-    std::vector<Vec3> inv_mass_;                 ///< per particle and direction; 0 where fixed or prescribed
-    std::vector<Vec3> x_pred_, body_u_pred_;     ///< contact scratch: predicted x^{n+1}
+    std::unique_ptr<ContactSolver> contact_;  ///< null without contact definitions
+    /// Steps 5 and 8-9 in one sweep (update_velocities_and_advance_particles).
+    bool fused_particle_pass_ = false;
+    bool parallel_particles_ = false;  ///< particle loops in parallel (large models)
+    Real length_scale_ = 1;  ///< mean edge length: converts moments to forces in residuals
+    std::vector<Vec3> x_pred_, body_u_pred_;           ///< contact scratch: predicted x^{n+1}
     std::vector<Vec3> x_pred_before_, body_u_before_;  ///< the predictor before the multipliers
+    std::vector<std::array<Real, 2>> sums2_;           ///< scratch: per-chunk partial sums
+    std::vector<std::array<Real, 5>> sums5_;
+    std::vector<std::array<Real, 7>> sums7_;
     Real time_ = 0;
     Real dt_half_ = 0;       ///< dt_{n-1/2} (0 before the first step)
     Real dt_half_prev_ = 0;  ///< the step before dt_half_
     Real dt_center_ = 0;     ///< dt_n of the last cycle
     long steps_ = 0;
-    bool restart_ = false;   ///< next cycle restarts from rest (kinetic damping)
+    bool restart_ = false;  ///< next cycle restarts from rest (kinetic damping)
     long element_steps_ = 0;
-    Real length_scale_ = 1;  ///< mean edge length: converts moments to forces in residuals
-    bool parallel_particles_ = false;  ///< particle loops in parallel (large models)
-    std::vector<Index> node_element_begin_, node_element_;  ///< CSR particle -> triangles
-    std::vector<Vec3> element_cross_;                       ///< scratch: (x2 - x1) x (x3 - x1)
-    struct PressureGather {  ///< per pressure load: loaded particle -> its loaded triangles (CSR)
-        std::vector<Index> particle, begin, element;
-    };
-    std::vector<PressureGather> pressure_gather_;  ///< per load (empty unless a pressure)
-    bool fused_pressure_ = false;  ///< load 0: a pressure on every triangle, summed with the normals
-    std::vector<std::array<Real, 2>> sums2_;                ///< scratch: per-chunk partial sums
-    std::vector<std::array<Real, 5>> sums5_;
-    std::vector<std::array<Real, 7>> sums7_;
-    // Relaxation residual of the last cycle.
-    Real residual2_ = 0, reference2_ = 0;
+    Real residual2_ = 0, reference2_ = 0;  ///< relaxation residual of the last cycle
 };
 
 }  // namespace fpmshell

@@ -1,0 +1,99 @@
+#include "fpmshell/solver/external_loads.hpp"
+
+#include "fpmshell/core/chunked_loop.hpp"
+
+namespace fpmshell {
+
+ExternalLoads::ExternalLoads(const Model& model, const std::vector<Index>& particle_element_begin,
+                             const std::vector<Index>& particle_element)
+    : model_(model), particle_element_begin_(particle_element_begin), particle_element_(particle_element) {
+    const std::size_t np = model.nodes.size();
+    for (const Load& load : model.loads) has_moment_loads_ = has_moment_loads_ || load.type == LoadType::Moment;
+    element_cross_.assign(model.triangles.size(), Vec3::Zero());
+    pressure_gather_.resize(model.loads.size());
+    for (std::size_t l = 0; l < model.loads.size(); ++l) {
+        const Load& load = model.loads[l];
+        if (load.type != LoadType::Pressure) continue;
+        std::vector<std::vector<Index>> of_particle(np);
+        for (Index e : load.elements)
+            for (Index p : model.triangles[static_cast<std::size_t>(e)]) of_particle[static_cast<std::size_t>(p)].push_back(e);
+        PressureGather& g = pressure_gather_[l];
+        g.begin.push_back(0);
+        for (std::size_t p = 0; p < np; ++p) {
+            if (of_particle[p].empty()) continue;
+            g.particle.push_back(static_cast<Index>(p));
+            g.element.insert(g.element.end(), of_particle[p].begin(), of_particle[p].end());
+            g.begin.push_back(static_cast<Index>(g.element.size()));
+        }
+    }
+    // A first load that is a pressure on every triangle (in element order) is summed in the
+    // pass of the normals, over the same triangles in the same order (the same bits).
+    if (!model.loads.empty() && model.loads[0].type == LoadType::Pressure) {
+        const PressureGather& g = pressure_gather_[0];
+        fused_pressure_ = g.particle.size() == np && g.begin == particle_element_begin_ && g.element == particle_element_;
+    }
+}
+
+void ExternalLoads::update_normals_and_loads(ParticleState& s, const BoundaryConditions& bc, Real t, bool parallel) {
+    // §1.3 area-weighted normal, recomputed from the current positions: the cross product of
+    // every triangle, then each particle sums those of its triangles in element order (the
+    // order of a serial scatter, without its write conflicts).
+    const Index ne = static_cast<Index>(model_.triangles.size());
+    parallel_for_each(ne, parallel, [&](Index e) {
+        const auto& tri = model_.triangles[static_cast<std::size_t>(e)];
+        element_cross_[static_cast<std::size_t>(e)] =
+            (s.x[static_cast<std::size_t>(tri[1])] - s.x[static_cast<std::size_t>(tri[0])])
+                .cross(s.x[static_cast<std::size_t>(tri[2])] - s.x[static_cast<std::size_t>(tri[0])]);
+    });
+    // §6.7 follower pressure: f_i = -p A_t n_t / 3 (positive pushes against n), A n = cr / 2.
+    auto pressure_scale = [&](const Load& load) {
+        return -load.pressure * curve_factor(model_.curves, load.curve, t) / 6.0;
+    };
+    // The external loads start from zero (the fused pressure: from its first triangle); those of
+    // t_{n-1} stay for the work of the step by exchanging the arrays (every entry of the new
+    // ones is written below).
+    std::swap(s.f_ext, s.f_ext_prev);
+    if (has_moment_loads_) std::swap(s.m_ext, s.m_ext_prev);
+    const Real fused_scale = fused_pressure_ ? pressure_scale(model_.loads[0]) : 0.0;
+    parallel_for_each(static_cast<Index>(s.size()), parallel, [&](Index ip) {
+        const std::size_t p = static_cast<std::size_t>(ip);
+        Vec3 sum = Vec3::Zero(), f = Vec3::Zero();
+        for (Index k = particle_element_begin_[p]; k < particle_element_begin_[p + 1]; ++k) {
+            const Vec3& cross = element_cross_[static_cast<std::size_t>(particle_element_[static_cast<std::size_t>(k)])];
+            sum += cross;
+            if (fused_pressure_) f += fused_scale * cross;
+        }
+        const Real len = sum.norm();
+        s.normal[p] = len > 0 ? Vec3(sum / len) : Vec3::UnitZ();
+        s.drill_axis[p] = bc.drill_axis(p, s.normal[p]);
+        s.f_ext[p] = f;
+        if (has_moment_loads_) s.m_ext[p] = Vec3::Zero();
+    });
+    for (std::size_t l = fused_pressure_ ? 1 : 0; l < model_.loads.size(); ++l) {
+        const Load& load = model_.loads[l];
+        const Real factor = curve_factor(model_.curves, load.curve, t);
+        switch (load.type) {
+            case LoadType::Pressure: {
+                // Each particle adds its loaded triangles in the load's order (that of a serial
+                // scatter).
+                const Real scale = pressure_scale(load);
+                const PressureGather& g = pressure_gather_[l];
+                parallel_for_each(static_cast<Index>(g.particle.size()), parallel, [&](Index i) {
+                    const std::size_t ui = static_cast<std::size_t>(i);
+                    Vec3& f = s.f_ext[static_cast<std::size_t>(g.particle[ui])];
+                    for (Index k = g.begin[ui]; k < g.begin[ui + 1]; ++k)
+                        f += scale * element_cross_[static_cast<std::size_t>(g.element[static_cast<std::size_t>(k)])];
+                });
+                break;
+            }
+            case LoadType::Force:
+                for (Index p : load.nodes) s.f_ext[static_cast<std::size_t>(p)] += factor * load.vector;
+                break;
+            case LoadType::Moment:
+                for (Index p : load.nodes) s.m_ext[static_cast<std::size_t>(p)] += factor * load.vector;
+                break;
+        }
+    }
+}
+
+}  // namespace fpmshell

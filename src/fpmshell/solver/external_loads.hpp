@@ -1,0 +1,47 @@
+// The external loads of the model at time t (theory.md §6.7): follower pressures on elements,
+// forces and moments on nodes, each times its curve; and the tangent-plane normals of the
+// particles (§1.3), computed in the same pass because both come from the triangles' current
+// cross products.
+#pragma once
+
+#include <array>
+#include <vector>
+
+#include "fpmshell/core/types.hpp"
+#include "fpmshell/model/model.hpp"
+#include "fpmshell/solver/boundary_conditions.hpp"
+#include "fpmshell/solver/particle_state.hpp"
+
+namespace fpmshell {
+
+class ExternalLoads {
+public:
+    /// particle_element_begin, particle_element: each particle's triangles in element order
+    /// (CSR); kept by reference, they must outlive the loads.
+    ExternalLoads(const Model& model, const std::vector<Index>& particle_element_begin,
+                  const std::vector<Index>& particle_element);
+
+    /// Whether a moment load exists (else s.m_ext stays zero and is neither written nor read).
+    [[nodiscard]] bool has_moment_loads() const { return has_moment_loads_; }
+
+    /// The tangent-plane normals and drill axes of the current positions s.x (§1.3, eq. 2.6c)
+    /// and the external loads at time t into s.f_ext, s.m_ext; those of the previous call move
+    /// to s.f_ext_prev, s.m_ext_prev (for the work of the step). parallel: particle loops in
+    /// parallel (bitwise the same either way).
+    void update_normals_and_loads(ParticleState& s, const BoundaryConditions& bc, Real t, bool parallel);
+
+private:
+    struct PressureGather {  ///< loaded particle -> its loaded triangles (CSR), in the load's order
+        std::vector<Index> particle, begin, element;
+    };
+
+    const Model& model_;
+    const std::vector<Index>& particle_element_begin_;
+    const std::vector<Index>& particle_element_;
+    bool has_moment_loads_ = false;
+    std::vector<PressureGather> pressure_gather_;  ///< per load (empty unless a pressure)
+    bool fused_pressure_ = false;  ///< load 0: a pressure on every triangle, summed with the normals
+    std::vector<Vec3> element_cross_;  ///< scratch: (x2 - x1) x (x3 - x1) per triangle
+};
+
+}  // namespace fpmshell

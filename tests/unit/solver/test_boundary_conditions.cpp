@@ -1,0 +1,123 @@
+// Boundary conditions (solver/boundary_conditions.hpp, theory.md §6.7, §2.6):
+// - what each constraint leaves of a particle's rotation: the tangent plane of a free particle,
+//   the free axis of a symmetry plane, all three axes of a kink particle, nothing of a clamp;
+// - the drill axis that follows (eq. 2.6c): the normal, the normal turned into the symmetry
+//   plane, or none;
+// - prescribed velocities, displacements and angular velocities reach their targets, with the
+//   reactions m / (c1 dt_n) times the change they make.
+#include <gtest/gtest.h>
+
+#include "fpmshell/solver/boundary_conditions.hpp"
+
+using namespace fpmshell;
+
+namespace {
+
+/// Four free particles (no elements are needed by the constraints themselves).
+Model four_particles() {
+    Model m;
+    m.nodes = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(1, 1, 0)};
+    return m;
+}
+
+BoundaryCondition fixed(std::vector<Index> nodes, std::array<bool, 6> dofs) {
+    BoundaryCondition bc;
+    bc.nodes = std::move(nodes);
+    bc.fixed = dofs;
+    return bc;
+}
+
+}  // namespace
+
+TEST(BoundaryConditions, RotationConstraintsAndDrillAxes) {
+    Model m = four_particles();
+    m.boundary.push_back(fixed({1}, {true, false, false, false, true, true}));  // symmetry x
+    m.boundary.push_back(fixed({2}, {true, true, true, true, true, true}));     // clamp
+    const std::vector<std::uint8_t> kink{0, 0, 0, 1};
+    const BoundaryConditions bc(m, kink);
+    const Vec3 n = Vec3(0.6, 0.0, 0.8);  // a normal tilted out of the symmetry plane x = 0
+    const Vec3 w(1.0, 2.0, 3.0);
+
+    // Free particle: rotation in the tangent plane, the drill axis is the normal.
+    EXPECT_TRUE(bc.rotates_in_tangent_plane(0));
+    EXPECT_TRUE(bc.tangent_plane_only(0));
+    EXPECT_NEAR(bc.tangent_part(0, w, n).dot(n), 0.0, 1e-15);
+    EXPECT_TRUE(bc.drill_axis(0, n).isApprox(n));
+    EXPECT_FALSE(bc.constrained(0));
+
+    // Symmetry plane x: only the rotation about x is free; the drill axis is the normal with
+    // its x component removed, normalised.
+    EXPECT_FALSE(bc.rotates_in_tangent_plane(1));
+    const Vec3 w1 = bc.without_constrained_rotation(1, w, n);
+    EXPECT_DOUBLE_EQ(w1.x(), 1.0);
+    EXPECT_DOUBLE_EQ(w1.y(), 0.0);
+    EXPECT_DOUBLE_EQ(w1.z(), 0.0);
+    EXPECT_TRUE(bc.drill_axis(1, n).isApprox(Vec3::UnitZ()));
+    EXPECT_TRUE(bc.constrained(1));
+    EXPECT_EQ(bc.without_fixed_translation(1, w), Vec3(0.0, 2.0, 3.0));
+
+    // Clamp: no rotation left, no drill axis.
+    EXPECT_EQ(bc.without_constrained_rotation(2, w, n), Vec3::Zero());
+    EXPECT_EQ(bc.drill_axis(2, n), Vec3::Zero());
+
+    // Kink particle: three free rotations, nothing removed, no drill axis.
+    EXPECT_FALSE(bc.rotates_in_tangent_plane(3));
+    EXPECT_EQ(bc.without_constrained_rotation(3, w, n), w);
+    EXPECT_EQ(bc.drill_axis(3, n), Vec3::Zero());
+}
+
+TEST(BoundaryConditions, PrescribedMotionsReachTheirTargetsWithTheirReactions) {
+    Model m = four_particles();
+    m.curves.push_back({"ramp", {{0.0, 0.0}, {1.0, 1.0}}});
+    BoundaryCondition velocity;
+    velocity.nodes = {0};
+    velocity.prescribed = PrescribedKind::Velocity;
+    velocity.value = Vec3(0, 0, 2.0);
+    velocity.curve = 0;
+    BoundaryCondition displacement;
+    displacement.nodes = {1};
+    displacement.prescribed = PrescribedKind::Displacement;
+    displacement.value = Vec3(0.1, 0, 0);
+    BoundaryCondition spin;
+    spin.nodes = {2};
+    spin.prescribed = PrescribedKind::AngularVelocity;
+    spin.value = Vec3(0, 0, 3.0);
+    m.boundary = {velocity, displacement, spin};
+    BoundaryConditions bc(m, std::vector<std::uint8_t>(4, 0));
+    EXPECT_TRUE(bc.has_prescribed_motions());
+    EXPECT_TRUE(bc.prescribed_translation(0));
+    EXPECT_TRUE(bc.prescribed_rotation(2));
+    EXPECT_EQ(bc.drill_axis(2, Vec3::UnitZ()), Vec3::Zero());  // a prescribed rotation is complete
+
+    ParticleState s;
+    s.resize(4);
+    s.x0 = m.nodes;
+    s.x = m.nodes;
+    s.mass.assign(4, 2.0);
+    s.inertia.assign(4, 0.5);
+    PrescribedMotionTimes at;
+    at.load_time = 0.5;
+    at.t_half = 0.55;
+    at.t_next = 0.6;
+    at.dt_n = 0.1;
+    at.dt_new = 0.1;
+    at.c1 = 1.0;
+    bc.impose_prescribed_motions(s, m.curves, at);
+    // velocity: ramp(t_{n+1/2}) times the value; reaction m / dt_n times the change
+    EXPECT_DOUBLE_EQ(s.v[0].z(), 0.55 * 2.0);
+    EXPECT_DOUBLE_EQ(s.reaction[0].z(), 2.0 / 0.1 * (0.55 * 2.0));
+    // displacement (no curve): x^{n+1} = x0 + value after this step
+    EXPECT_NEAR((s.x[1] + at.dt_new * s.v[1] - s.x0[1] - displacement.value).norm(), 0.0, 1e-15);
+    // angular velocity: about the fixed axis, reaction moment J / dt_n times the change
+    EXPECT_DOUBLE_EQ(s.omega[2].z(), 3.0);
+    EXPECT_DOUBLE_EQ(s.reaction_moment[2].z(), 0.5 / 0.1 * 3.0);
+
+    // Relaxation: the prescribed velocity is reached as a position, its integral over the
+    // curve up to the load level (0.5^2 / 2 = 0.125 times the value).
+    ParticleState r = s;
+    r.x = m.nodes;
+    r.v.assign(4, Vec3::Zero());
+    at.relaxation = true;
+    bc.impose_prescribed_motions(r, m.curves, at);
+    EXPECT_NEAR(r.x[0].z() + at.dt_new * r.v[0].z(), 0.125 * 2.0, 1e-15);
+}
