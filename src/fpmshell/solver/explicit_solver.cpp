@@ -35,7 +35,7 @@ Vec3 remove_components(Vec3 w, const std::array<Vec3, 4>& dirs, int n_dirs) {
 
 }  // namespace
 
-ExplicitSolver::ExplicitSolver(const Model& model) : model_(model), elements_(model) {
+ExplicitSolver::ExplicitSolver(const Model& model) : model_(model), topology_(model), elements_(model, topology_) {
     const std::size_t np = model.nodes.size();
     s_.resize(np);
     s_.x0 = model.nodes;

@@ -10,6 +10,7 @@
 #include "fpmshell/contact/contact_solver.hpp"
 #include "fpmshell/contact/rigid_body_state.hpp"
 #include "fpmshell/core/types.hpp"
+#include "fpmshell/model/mesh_topology.hpp"
 #include "fpmshell/model/model.hpp"
 #include "fpmshell/solver/energy_balance.hpp"
 #include "fpmshell/solver/particle_state.hpp"
@@ -119,6 +120,7 @@ private:
     void move_to_kinetic_energy_peak(Real ke_before, Real ke_peak, Real ke_after);
 
     const Model& model_;
+    MeshTopology topology_;
     ShellElements elements_;
     ParticleState s_;
     EnergyBalance energy_;
