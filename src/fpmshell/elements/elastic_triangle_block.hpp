@@ -231,7 +231,7 @@ template <class T, class ReturnMapping = NoReturnMapping>
     }
     const M3<T> t_a{{ex, ey, ez}};
     const M3<T> frame_current = times_transpose(t_a, r_r);                // §2.7
-    // current L_c (§6.4), the same operations as characteristic_length in shell_elements.cpp
+    // current L_c (§6.4), the same operations as characteristic_length in solver/element_time_steps.cpp
     const T lmax2_current = max(max(squared_norm(r2), squared_norm(m.current[2] - m.current[1])),
                                 squared_norm(m.current[0] - m.current[2]));
     out.characteristic_length = n_norm / sqrt(lmax2_current);

@@ -20,7 +20,7 @@ constexpr Index k_parallel_min_particles = 2000;
 
 }  // namespace
 
-ExplicitSolver::ExplicitSolver(const Model& model) : model_(model), elements_(model) {
+ExplicitSolver::ExplicitSolver(const Model& model) : model_(model), topology_(model), elements_(model, topology_) {
     const std::size_t np = model.nodes.size();
     s_.resize(np);
     s_.x0 = model.nodes;

@@ -11,6 +11,7 @@
 #include "fpmshell/contact/contact_solver.hpp"
 #include "fpmshell/contact/rigid_body_state.hpp"
 #include "fpmshell/core/types.hpp"
+#include "fpmshell/model/mesh_topology.hpp"
 #include "fpmshell/model/model.hpp"
 #include "fpmshell/solver/boundary_conditions.hpp"
 #include "fpmshell/solver/cycle_policy.hpp"
@@ -145,6 +146,7 @@ private:
     void move_to_kinetic_energy_peak(Real ke_before, Real ke_peak, Real ke_after);
 
     const Model& model_;
+    MeshTopology topology_;
     ShellElements elements_;
     ParticleState s_;
     EnergyBalance energy_;

@@ -51,7 +51,8 @@ Patch patch(DiagonalPattern pattern, Real perturb, BendingKernel kernel,
 /// Largest interior residual relative to the largest nodal load of the patch.
 /// bending: w = 1/2 (a x^2 + b y^2) + c x y; membrane: u = G x.
 Real interior_residual(const Patch& pt, bool bending) {
-    ShellElements el(pt.model);
+    const MeshTopology topology(pt.model);
+    ShellElements el(pt.model, topology);
     ParticleState s;
     s.resize(pt.model.nodes.size());
     s.x_prev = pt.model.nodes;

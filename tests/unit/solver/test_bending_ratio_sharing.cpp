@@ -1,5 +1,5 @@
 // The bending step ratio is computed once per section and element shape class at set-up and
-// shared (solver/shell_elements.cpp): on a fine plate (h / L_c ~ 2.8, where the bending modes
+// shared (solver/element_time_steps.cpp): on a fine plate (h / L_c ~ 2.8, where the bending modes
 // set the step) the critical step of every element must be what the element's own 9 x 9
 // eigenproblem gives (theory.md §6.4), both on the regular mesh (few classes, shared) and on a
 // jittered one (nearly every element its own class).
@@ -70,7 +70,8 @@ TEST(BendingRatioSharing, EveryElementKeepsTheStepOfItsOwnEigenproblem) {
     for (Real jitter : {0.0, 0.2}) {
         SCOPED_TRACE(jitter);
         const Model m = fine_plate(40, 0.05, jitter);
-        const ShellElements elements(m);
+        const MeshTopology topology(m);
+        const ShellElements elements(m, topology);
         Real worst = 0;
         int bending_sets_step = 0;
         for (Index e = 0; e < elements.size(); ++e) {

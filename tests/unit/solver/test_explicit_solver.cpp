@@ -153,7 +153,8 @@ TEST(ExplicitSolver, RigidRotationInManyStepsGivesNoForce) {
     m.sections.push_back({0, 0.02, 2, 3});
     m.element_section.assign(m.triangles.size(), 0);
     m.control.membrane = membrane;  // smoothed: neighbours on the curved cap are not coplanar
-    ShellElements el(m);
+    const MeshTopology topology(m);
+    ShellElements el(m, topology);
     ParticleState s;
     s.resize(m.nodes.size());
     s.x = s.x_prev = m.nodes;

@@ -1,0 +1,112 @@
+#include "fpmshell/model/mesh_topology.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "fpmshell/elements/lumped_inertia.hpp"
+
+namespace fpmshell {
+namespace {
+
+/// CSR begin array from per-row counts (counts[p + 1] holds row p's count on entry).
+void prefix_sum(std::vector<Index>& begin) {
+    for (std::size_t p = 0; p + 1 < begin.size(); ++p) begin[p + 1] += begin[p];
+}
+
+}  // namespace
+
+MeshTopology::MeshTopology(const Model& model) {
+    const auto& tri = model.triangles;
+    const std::size_t np = model.nodes.size(), ne = tri.size();
+
+    // Particle -> elements, ascending (filled in element order).
+    element_begin.assign(np + 1, 0);
+    for (const auto& t : tri)
+        for (const Index p : t) ++element_begin[static_cast<std::size_t>(p) + 1];
+    prefix_sum(element_begin);
+    element.assign(static_cast<std::size_t>(element_begin[np]), 0);
+    {
+        std::vector<Index> fill(element_begin.begin(), element_begin.end() - 1);
+        for (std::size_t e = 0; e < ne; ++e)
+            for (const Index p : tri[e])
+                element[static_cast<std::size_t>(fill[static_cast<std::size_t>(p)]++)] =
+                    static_cast<Index>(e);
+    }
+
+    // Particle -> particles of its elements, ascending, unique.
+    neighbour_begin.assign(np + 1, 0);
+    std::vector<Index> around;
+    for (std::size_t p = 0; p < np; ++p) {
+        around.clear();
+        for (const Index e : elements_of(static_cast<Index>(p))) {
+            const auto& t = tri[static_cast<std::size_t>(e)];
+            for (std::size_t k = 0; k < 3; ++k)
+                if (t[k] == static_cast<Index>(p))
+                    for (std::size_t j = 0; j < 3; ++j)
+                        if (j != k) around.push_back(t[j]);
+        }
+        std::sort(around.begin(), around.end());
+        around.erase(std::unique(around.begin(), around.end()), around.end());
+        neighbour.insert(neighbour.end(), around.begin(), around.end());
+        neighbour_begin[p + 1] = static_cast<Index>(neighbour.size());
+    }
+
+    // Side neighbours: side i of e joins (i + 1) and (i + 2); the elements on it are those of
+    // the first end that also hold the second.
+    side_neighbour.assign(3 * ne, -1);
+    side_neighbour_side.assign(3 * ne, -1);
+    side_neighbour_corner.assign(6 * ne, -1);
+    for (std::size_t e = 0; e < ne; ++e)
+        for (std::size_t i = 0; i < 3; ++i) {
+            const Index a = tri[e][(i + 1) % 3], b = tri[e][(i + 2) % 3];
+            int on_side = 0;
+            Index other = -1;
+            for (const Index n : elements_of(a)) {
+                const auto& tn = tri[static_cast<std::size_t>(n)];
+                if (std::find(tn.begin(), tn.end(), b) == tn.end()) continue;
+                ++on_side;
+                if (n != static_cast<Index>(e)) other = n;
+            }
+            if (on_side != 2 || other < 0) continue;
+            const std::size_t side = 3 * e + i;
+            const auto& tn = tri[static_cast<std::size_t>(other)];
+            side_neighbour[side] = other;
+            for (int c = 0; c < 3; ++c) {
+                const Index q = tn[static_cast<std::size_t>(c)];
+                if (q == a)
+                    side_neighbour_corner[2 * side] = c;
+                else if (q == b)
+                    side_neighbour_corner[2 * side + 1] = c;
+                else
+                    side_neighbour_side[side] = c;  // the side opposite the corner off it
+            }
+        }
+
+    // §6.1-6.2 lumped masses and rotary inertias, summed in element order.
+    particle_mass.assign(np, 0.0);
+    particle_inertia.assign(np, 0.0);
+    element_node_mass.resize(ne);
+    element_node_inertia.resize(ne);
+    for (std::size_t e = 0; e < ne; ++e) {
+        const auto& t = tri[e];
+        const Section& sec = model.sections[static_cast<std::size_t>(model.element_section[e])];
+        const Material& mat = model.materials[static_cast<std::size_t>(sec.material)];
+        const Vec3& p0 = model.nodes[static_cast<std::size_t>(t[0])];
+        const Vec3& p1 = model.nodes[static_cast<std::size_t>(t[1])];
+        const Vec3& p2 = model.nodes[static_cast<std::size_t>(t[2])];
+        const Vec3 cr = (p1 - p0).cross(p2 - p0);
+        const Real area = 0.5 * cr.norm();
+        const NodeInertiaShare share = lumped_node_share(mat.density, sec.thickness, area);
+        element_node_mass[e] = share.mass;
+        element_node_inertia[e] = share.inertia;
+        for (const Index p : t) {
+            particle_mass[static_cast<std::size_t>(p)] += share.mass;
+            // a fused multiply-add, as the compiler contracts `inertia += share.inertia` of
+            // the inlined share where the particle sums are made next to it
+            auto& inertia = particle_inertia[static_cast<std::size_t>(p)];
+            inertia = std::fma(share.mass, share.gyration2, inertia);
+        }
+    }
+}
+
+}  // namespace fpmshell

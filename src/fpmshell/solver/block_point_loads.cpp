@@ -1,0 +1,121 @@
+#include "fpmshell/solver/block_point_loads.hpp"
+
+namespace fpmshell {
+
+ElasticTriangleLoads<RealPack> block_point_loads(const J2Plastic& material, const BlockStep& step) {
+    using namespace block_points_detail;
+    using J2 = J2Plastic;
+    const std::size_t n_points = step.n_points;
+    auto field = [&](std::size_t p, std::size_t f) -> RealPack& {
+        return step.state[f * n_points + p];
+    };
+    // isotropic hardening (beta = 1): the back stress stays zero and is neither read nor written
+    const bool kinematic = material.return_constants().beta != 1.0;
+    prefetch_fields(step, J2::k_stress, 3);
+    if (kinematic) prefetch_fields(step, J2::k_back_stress, 3);
+    prefetch_fields(step, J2::k_flow_radius, 1);
+    if (material.rate_dependent()) prefetch_fields(step, J2::k_strain_rate, 1);
+
+    std::array<RealPack, 3 * k_max_block_points> stress;
+    for (std::size_t p = 0; p < n_points; ++p)
+        for (std::size_t r = 0; r < 3; ++r) stress[3 * p + r] = field(p, J2::k_stress + r);
+    // the yield surfaces of the points, kappa_n = flow radius at alpha_n (§7.3)
+    std::array<RealPack, 3 * k_max_block_points> back_stress;
+    std::array<RealPack, k_max_block_points> third_k2, strain_rate, new_strain_rate;
+    YieldSurfaces<RealPack> yield{back_stress.data(), third_k2.data(), J2::k_yield_tolerance};
+    for (std::size_t p = 0; p < n_points; ++p) {
+        for (std::size_t r = 0; r < 3; ++r)
+            back_stress[3 * p + r] = kinematic ? field(p, J2::k_back_stress + r) : RealPack(0.0);
+        const RealPack kappa = field(
+            p, J2::k_flow_radius);  // sigma_f(0) before the first yield (J2Plastic::write_point)
+        third_k2[p] = kappa * kappa * (1.0 / 3.0);
+    }
+    if (material.rate_dependent()) {
+        yield.rate = &material.rate_factor();
+        yield.strain_rate = strain_rate.data();
+        yield.new_strain_rate = new_strain_rate.data();
+        yield.dt = step.dt;
+        yield.rate_filter = J2::k_rate_filter;
+        for (std::size_t p = 0; p < n_points; ++p) strain_rate[p] = field(p, J2::k_strain_rate);
+    }
+    // The yielding points: the return mapping of §7.3 on the yielding (point, lane) pairs of
+    // the block, k_lanes pairs at a time (packed densely: the pairs of a block that yields in
+    // part fill whole packs), in place in the block's state (a lane that takes this path never
+    // falls back, so its old state is not needed again).
+    auto return_mapping = [&](std::size_t n_pts, const RealPack::mask_type* yielding,
+                              const std::array<RealPack, 3>* d_eps, const RealPack* rate_factor,
+                              RealPack* new_stress, RealPack* d_plastic_work) {
+        constexpr int w = k_lanes;
+        // the inputs of the batch, structure of arrays: stress 3, back stress 3, alpha, flow
+        // radius, flow slope, strain increment 3, rate factor
+        alignas(64) std::array<std::array<Real, w>, 13> in;
+        std::array<std::size_t, w> batch_point;
+        std::array<int, w> batch_lane;
+        int n = 0;
+        auto run_batch = [&] {
+            for (int i = n; i < w; ++i)  // unused lanes compute on a copy of the first pair
+                for (auto& input : in) input[static_cast<std::size_t>(i)] = input[0];
+            auto pack = [&](std::size_t f) { return RealPack(in[f].data(), stdx::vector_aligned); };
+            const J2PointState<RealPack> old{{pack(0), pack(1), pack(2)},
+                                             {pack(3), pack(4), pack(5)},
+                                             pack(6),
+                                             pack(7),
+                                             pack(8)};
+            RealPack::mask_type used(false);
+            for (int i = 0; i < n; ++i) used[static_cast<std::size_t>(i)] = true;
+            const J2Return<RealPack> ret = j2_return_mapping(
+                material.return_constants(), old, {pack(9), pack(10), pack(11)}, pack(12), used);
+            for (int i = 0; i < n; ++i) {
+                const std::size_t p = batch_point[static_cast<std::size_t>(i)];
+                const int l = batch_lane[static_cast<std::size_t>(i)];
+                for (std::size_t r = 0; r < 3; ++r)
+                    set_lane(new_stress[3 * p + r], l, lane(ret.state.stress[r], i));
+                if (!lane(ret.yielded, i))
+                    continue;  // inside after all (rounding): the trial state
+                set_lane(d_plastic_work[p], l, lane(ret.plastic_work, i));
+                if (kinematic)
+                    for (std::size_t r = 0; r < 3; ++r)
+                        set_lane(field(p, J2::k_back_stress + r), l,
+                                 lane(ret.state.back_stress[r], i));
+                set_lane(field(p, J2::k_plastic_strain), l, lane(ret.state.plastic_strain, i));
+                set_lane(field(p, J2::k_plastic_work), l,
+                         lane(field(p, J2::k_plastic_work), l) + lane(ret.plastic_work, i));
+                set_lane(field(p, J2::k_flow_radius), l, lane(ret.state.flow_radius, i));
+                set_lane(field(p, J2::k_flow_slope), l, lane(ret.state.flow_slope, i));
+            }
+            n = 0;
+        };
+        for (std::size_t p = 0; p < n_pts; ++p) {
+            if (!any_lane(yielding[p])) continue;
+            for (int l = 0; l < k_lanes; ++l) {
+                if (!lane(yielding[p], l)) continue;
+                const auto i = static_cast<std::size_t>(n);
+                for (std::size_t r = 0; r < 3; ++r) {
+                    in[r][i] =
+                        lane(field(p, J2::k_stress + r), l);  // the old stress: not stored yet
+                    in[3 + r][i] = lane(back_stress[3 * p + r], l);
+                    in[9 + r][i] = lane(d_eps[p][r], l);
+                }
+                in[6][i] = lane(field(p, J2::k_plastic_strain), l);
+                in[7][i] = lane(field(p, J2::k_flow_radius), l);
+                in[8][i] = lane(field(p, J2::k_flow_slope), l);
+                in[12][i] = lane(rate_factor[p], l);
+                batch_point[i] = p;
+                batch_lane[i] = l;
+                if (++n == w) run_batch();
+            }
+        }
+        if (n > 0) run_batch();
+    };
+    const ElasticTriangleLoads<RealPack> loads =
+        elastic_triangle_loads(*step.motion, *step.constants, step.thickness, stress.data(),
+                               step.viscous_rate, &yield, return_mapping);
+    // the new stresses and filtered rates of the valid lanes
+    store_stress(step, loads.valid, stress.data(), J2::k_stress);
+    if (yield.new_strain_rate)
+        for (std::size_t p = 0; p < n_points; ++p)
+            stdx::where(loads.valid, field(p, J2::k_strain_rate)) = new_strain_rate[p];
+    return loads;
+}
+
+}  // namespace fpmshell

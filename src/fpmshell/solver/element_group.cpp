@@ -1,0 +1,76 @@
+#include "fpmshell/solver/element_group.hpp"
+
+#include <cmath>
+#include <variant>
+
+#include "fpmshell/materials/section_material.hpp"
+
+namespace fpmshell {
+
+ElementGroup::ElementGroup(const Model& model, std::size_t section, const Mat3& stiffness,
+                           Real youngs_modulus, Real poisson_ratio, std::size_t point_fields)
+    : point_fields_(point_fields) {
+    const Section& sec = model.sections[section];
+    const Material& mat = model.materials[static_cast<std::size_t>(sec.material)];
+    rule_.thickness = sec.thickness;
+    rule_.inplane = triangle_rule(sec.inplane_points);
+    rule_.through = thickness_rule(sec.thickness_points);
+    rule_.bending = model.control.bending;
+    wave_speed_ = std::sqrt(youngs_modulus / (mat.density * (1.0 - poisson_ratio * poisson_ratio)));
+    bending_rigidity_ = stiffness * (sec.thickness * sec.thickness * sec.thickness / 12.0);
+    block_constants_.c11 = stiffness(0, 0);
+    block_constants_.c12 = stiffness(0, 1);
+    block_constants_.c33 = stiffness(2, 2);
+    block_constants_.thickness_factor = (1.0 - 2.0 * poisson_ratio) / youngs_modulus;  // §3.4
+    block_constants_.inplane = rule_.inplane;
+    block_constants_.through = rule_.through;
+    block_constants_.bending = rule_.bending;
+}
+
+void ElementGroup::allocate(std::size_t n_blocks, std::size_t n_alone) {
+    const std::size_t n = n_points();
+    n_blocks_ = n_blocks;
+    block_state_.assign(n_blocks * block_size(), RealPack(0.0));
+    alone_state_.assign(n_alone * n * point_fields_, 0.0);
+    for (std::size_t k = 0; k < point_fields_; ++k) {
+        const Real v = initial_field(k);
+        if (v == 0) continue;
+        for (std::size_t b = 0; b < n_blocks; ++b)
+            for (std::size_t p = 0; p < n; ++p)
+                block_state_[b * block_size() + k * n + p] = RealPack(v);
+        for (std::size_t e = 0; e < n_alone; ++e)
+            for (std::size_t p = 0; p < n; ++p) alone_state_[(e * n + p) * point_fields_ + k] = v;
+    }
+}
+
+Real ElementGroup::field(GroupPlace place, std::size_t p, std::size_t k) const {
+    const std::size_t n = n_points();
+    if (!place.in_block) return alone_state_[(place.index * n + p) * point_fields_ + k];
+    const auto w = static_cast<std::size_t>(k_lanes);
+    return lane(block_state_[place.index / w * block_size() + k * n + p],
+                static_cast<int>(place.index % w));
+}
+
+void ElementGroup::set_field(GroupPlace place, std::size_t p, std::size_t k, Real v) {
+    const std::size_t n = n_points();
+    if (!place.in_block) {
+        alone_state_[(place.index * n + p) * point_fields_ + k] = v;
+        return;
+    }
+    const auto w = static_cast<std::size_t>(k_lanes);
+    set_lane(block_state_[place.index / w * block_size() + k * n + p],
+             static_cast<int>(place.index % w), v);
+}
+
+std::unique_ptr<ElementGroup> make_element_group(const Model& model, std::size_t section) {
+    const Material& mat =
+        model.materials[static_cast<std::size_t>(model.sections[section].material)];
+    return std::visit(
+        [&](const auto& material) -> std::unique_ptr<ElementGroup> {
+            return std::make_unique<MaterialGroup<std::decay_t<decltype(material)>>>(
+                material, model, section);
+        },
+        make_section_material(mat));
+}
+
+}  // namespace fpmshell

@@ -1,0 +1,185 @@
+// An element group: the elements of one section, the unit the element loop dispatches on (the
+// element groups of OpenRadioss, the styles of LAMMPS). A group owns its material, its
+// integration rule and the state of its material points, stored in the layout its material
+// declares (k_point_fields numbers per point, materials/*.hpp):
+//   - the elements of its SIMD blocks (k_lanes elements, one per lane) keep theirs block by
+//     block, [field][point] as whole packs (solver/block_point_loads.hpp);
+//   - the elements computed one by one keep theirs element by element, [point][field].
+// A material with a block path (an overload of block_point_loads) has its elements computed
+// k_lanes at a time; any other material, or any element outside the block kernel's bounds,
+// goes through the general element shell_triangle_loads and the material's scalar update.
+//
+// A new material is a class with the scalar update (update, stiffness, youngs_modulus,
+// poisson_ratio) and its point layout (k_point_fields, k_stress_only, read_point, write_point,
+// initial_field), made a group by MaterialGroup<Material>: see make_element_group.
+#pragma once
+
+#include <array>
+#include <concepts>
+#include <functional>
+#include <memory>
+#include <span>
+#include <stdexcept>
+#include <vector>
+
+#include "fpmshell/core/simd.hpp"
+#include "fpmshell/elements/elastic_triangle_block.hpp"
+#include "fpmshell/elements/shell_triangle.hpp"
+#include "fpmshell/model/model.hpp"
+#include "fpmshell/solver/block_point_loads.hpp"
+
+namespace fpmshell {
+
+/// Where an element's state lies in its group: lane index % k_lanes of the group's block
+/// index / k_lanes, or the index-th of the group's elements computed alone.
+struct GroupPlace {
+    bool in_block = false;
+    std::size_t index = 0;
+};
+
+/// The element loop's view of a group, whatever its material.
+class ElementGroup {
+public:
+    virtual ~ElementGroup() = default;
+
+    [[nodiscard]] const ShellRule& rule() const { return rule_; }
+    [[nodiscard]] std::size_t n_points() const {
+        return static_cast<std::size_t>(rule_.n_points());
+    }
+    /// c = sqrt(E / rho (1 - nu^2)), the membrane wave speed (§6.4).
+    [[nodiscard]] Real wave_speed() const { return wave_speed_; }
+    /// D_b = (h^3 / 12) C (§4.1), for the bending critical step.
+    [[nodiscard]] const Mat3& bending_rigidity() const { return bending_rigidity_; }
+    /// The section's constants for the block kernel.
+    [[nodiscard]] const ElasticSectionConstants& block_constants() const {
+        return block_constants_;
+    }
+    /// Whether the material has a block path (its elements may be computed k_lanes at a time).
+    [[nodiscard]] virtual bool has_block_path() const = 0;
+    /// Whether a point's state is its stress only (restart files keep such points apart).
+    [[nodiscard]] virtual bool stress_only() const = 0;
+
+    /// Makes the state of n_blocks blocks and n_alone elements computed alone, at its
+    /// initial values.
+    void allocate(std::size_t n_blocks, std::size_t n_alone);
+
+    /// The loads of the k_lanes elements of the group's block b (lanes outside the block
+    /// kernel's bounds are reported in `valid`, their state left as it was).
+    [[nodiscard]] virtual ElasticTriangleLoads<RealPack> block_loads(
+        std::size_t b, const TriangleMotion<RealPack>& motion, const RealPack& thickness,
+        Real viscous_rate, Real dt) = 0;
+    /// The loads of one element by the general element (shell_triangle.hpp; arguments as
+    /// there), its points read from and written back to `place`.
+    [[nodiscard]] virtual ShellTriangleLoads element_loads(
+        GroupPlace place, const ReversedTriangle& rt, Real viscous_rate, Real dt, Real thickness,
+        const Voigt3* smoothed_membrane, Real own_share) = 0;
+    /// The state of point p of the element at `place`, and its update.
+    [[nodiscard]] virtual MaterialPoint point_state(GroupPlace place, std::size_t p) const = 0;
+    virtual void set_point_state(GroupPlace place, std::size_t p, const MaterialPoint& mp) = 0;
+
+protected:
+    ElementGroup(const Model& model, std::size_t section, const Mat3& stiffness,
+                 Real youngs_modulus, Real poisson_ratio, std::size_t point_fields);
+    /// The initial value of field k of a point.
+    [[nodiscard]] virtual Real initial_field(std::size_t k) const = 0;
+    /// Field k of point p of the element at `place`.
+    [[nodiscard]] Real field(GroupPlace place, std::size_t p, std::size_t k) const;
+    void set_field(GroupPlace place, std::size_t p, std::size_t k, Real v);
+    /// The state of the group's block b and of the next one (nullptr: b is the last).
+    [[nodiscard]] RealPack* block_state(std::size_t b) {
+        return block_state_.data() + b * block_size();
+    }
+    [[nodiscard]] const RealPack* next_block_state(std::size_t b) const {
+        return b + 1 < n_blocks_ ? block_state_.data() + (b + 1) * block_size() : nullptr;
+    }
+
+    ShellRule rule_;
+    std::size_t point_fields_;
+
+private:
+    [[nodiscard]] std::size_t block_size() const { return point_fields_ * n_points(); }
+
+    Real wave_speed_ = 0;
+    Mat3 bending_rigidity_ = Mat3::Zero();
+    ElasticSectionConstants block_constants_;
+    std::size_t n_blocks_ = 0;
+    std::vector<RealPack> block_state_;  ///< [block][field][point]
+    std::vector<Real> alone_state_;      ///< [element alone][point][field]
+};
+
+/// Whether Material has a block path.
+template <class Material>
+concept BlockMaterial = requires(const Material& m, const BlockStep& step) {
+    { block_point_loads(m, step) } -> std::same_as<ElasticTriangleLoads<RealPack>>;
+};
+
+/// The group of a section of Material.
+template <class Material>
+class MaterialGroup final : public ElementGroup {
+public:
+    MaterialGroup(const Material& material, const Model& model, std::size_t section)
+        : ElementGroup(model, section, material.stiffness(), material.youngs_modulus(),
+                       material.poisson_ratio(), Material::k_point_fields),
+          material_(material) {}
+
+    [[nodiscard]] const Material& material() const { return material_; }
+    [[nodiscard]] bool has_block_path() const override { return BlockMaterial<Material>; }
+    [[nodiscard]] bool stress_only() const override { return Material::k_stress_only; }
+
+    [[nodiscard]] ElasticTriangleLoads<RealPack> block_loads(std::size_t b,
+                                                             const TriangleMotion<RealPack>& motion,
+                                                             const RealPack& thickness,
+                                                             Real viscous_rate, Real dt) override {
+        if constexpr (BlockMaterial<Material>) {
+            BlockStep step;
+            step.motion = &motion;
+            step.constants = &block_constants();
+            step.thickness = thickness;
+            step.state = block_state(b);
+            step.n_points = n_points();
+            step.next_state = next_block_state(b);
+            step.viscous_rate = viscous_rate;
+            step.dt = dt;
+            return block_point_loads(material_, step);
+        } else {
+            throw std::logic_error("block step of a material without a block path");
+        }
+    }
+
+    [[nodiscard]] ShellTriangleLoads element_loads(GroupPlace place, const ReversedTriangle& rt,
+                                                   Real viscous_rate, Real dt, Real thickness,
+                                                   const Voigt3* smoothed_membrane,
+                                                   Real own_share) override {
+        std::array<MaterialPoint, k_max_block_points> points;  // the largest rule of quadrature.hpp
+        const std::span<MaterialPoint> pts(points.data(), n_points());
+        for (std::size_t p = 0; p < pts.size(); ++p) pts[p] = point_state(place, p);
+        const ShellTriangleLoads loads = shell_triangle_loads(
+            rt, rule_, material_, pts, viscous_rate, dt, thickness, smoothed_membrane, own_share);
+        for (std::size_t p = 0; p < pts.size(); ++p) set_point_state(place, p, pts[p]);
+        return loads;
+    }
+
+    [[nodiscard]] MaterialPoint point_state(GroupPlace place, std::size_t p) const override {
+        return material_.read_point([&](std::size_t k) { return field(place, p, k); });
+    }
+    void set_point_state(GroupPlace place, std::size_t p, const MaterialPoint& mp) override {
+        material_.write_point(mp, [&](std::size_t k, Real v) { set_field(place, p, k, v); });
+    }
+
+private:
+    [[nodiscard]] Real initial_field(std::size_t k) const override {
+        return material_.initial_field(k);
+    }
+
+    Material material_;
+};
+
+/// Makes the group of a section of the model (one per section).
+using ElementGroupFactory =
+    std::function<std::unique_ptr<ElementGroup>(const Model& model, std::size_t section)>;
+
+/// The groups of the model's materials (materials/section_material.hpp).
+[[nodiscard]] std::unique_ptr<ElementGroup> make_element_group(const Model& model,
+                                                               std::size_t section);
+
+}  // namespace fpmshell

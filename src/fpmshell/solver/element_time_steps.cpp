@@ -1,0 +1,148 @@
+#include "fpmshell/solver/element_time_steps.hpp"
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <cstdint>
+#include <utility>
+
+#include "fpmshell/elements/bending_time_step.hpp"
+#include "fpmshell/elements/triangle_shape.hpp"
+
+namespace fpmshell {
+namespace {
+
+/// Models below this many elements (or shape classes) are set up serially.
+constexpr Index k_parallel_min_elements = 2000;
+// The bending step ratio depends on the element shape and h / L_c only; it is re-evaluated (a
+// 9x9 eigenproblem) when L_c has changed by more than this fraction since the last evaluation,
+// which bounds the ratio's staleness to a few per cent of the step.
+constexpr Real k_bending_ratio_drift = 0.05;
+
+/// Local flat shape of the triangle (p0, p1, p2): node 1 at the origin, edge 1-2 along x.
+TriangleShape local_shape(const Vec3& p0, const Vec3& p1, const Vec3& p2) {
+    const Vec3 e1 = p1 - p0;
+    const Real x2 = e1.norm();
+    const Vec3 ex = e1 / x2;
+    const Vec3 d = p2 - p0;
+    return TriangleShape(x2, d.dot(ex), ex.cross(d).norm());
+}
+
+/// The class of a local coordinate for sharing the bending step ratio between elements of one
+/// shape: its bits with the mantissa rounded to 32 bits (2^-32 relative).
+std::int64_t shape_class(Real v) {
+    return static_cast<std::int64_t>((std::bit_cast<std::uint64_t>(v) + (std::uint64_t{1} << 19)) >>
+                                     20);
+}
+
+std::array<Vec3, 3> corners_of(const std::array<Index, 3>& t, const std::vector<Vec3>& x) {
+    return {x[static_cast<std::size_t>(t[0])], x[static_cast<std::size_t>(t[1])],
+            x[static_cast<std::size_t>(t[2])]};
+}
+
+}  // namespace
+
+Real characteristic_length(const Vec3& p0, const Vec3& p1, const Vec3& p2) {
+    const Real two_area = (p1 - p0).cross(p2 - p0).norm();
+    const Real lmax = std::sqrt(
+        std::max({(p1 - p0).squaredNorm(), (p2 - p1).squaredNorm(), (p0 - p2).squaredNorm()}));
+    return two_area / lmax;  // §6.4, L_c = 2A / l_max
+}
+
+ElementTimeSteps::ElementTimeSteps(const Model& model, const MeshTopology& topology,
+                                   std::vector<Real> wave_speed, std::vector<Mat3> bending_rigidity)
+    : section_(model.element_section),
+      wave_speed_(std::move(wave_speed)),
+      bending_rigidity_(std::move(bending_rigidity)),
+      node_mass_(topology.element_node_mass),
+      node_inertia_(topology.element_node_inertia),
+      bending_kernel_(model.control.bending),
+      stiffness_damping_(model.damping.stiffness) {
+    share_initial_ratios(model);
+}
+
+// The bending step ratio needs a 9 x 9 eigenproblem per element where h / L_c is near 1
+// (nearly all the set-up's time on a fine mesh). It depends on the section and the local
+// shape only, and the elements of a structured mesh come in a few shapes: it is computed
+// once per section and shape class (local coordinates equal to 2^-32 relative, far below
+// the 5 % drift the ratio is allowed before it is re-evaluated), for the lowest-numbered
+// element of the class, and shared by the others.
+void ElementTimeSteps::share_initial_ratios(const Model& model) {
+    const std::size_t ne = model.triangles.size();
+    bend_ratio_.assign(ne, 1.0);
+    bend_lc_.assign(ne, 0.0);
+    std::vector<std::array<std::int64_t, 4>> shape_key(ne);
+    std::vector<Real> initial_lc(ne);
+#pragma omp parallel for schedule(static) if (static_cast <Index>(ne) >= k_parallel_min_elements)
+    for (std::size_t e = 0; e < ne; ++e) {
+        const auto [p0, p1, p2] = corners_of(model.triangles[e], model.nodes);
+        initial_lc[e] = characteristic_length(p0, p1, p2);
+        const TriangleShape shape = local_shape(p0, p1, p2);
+        shape_key[e] = {section_[e], shape_class(shape.x[1]), shape_class(shape.x[2]),
+                        shape_class(shape.y[2])};
+    }
+    std::vector<Index> by_shape;  // the elements with a length, by key, each class in element order
+    for (std::size_t e = 0; e < ne; ++e)
+        if (initial_lc[e] > 0) by_shape.push_back(static_cast<Index>(e));
+    std::sort(by_shape.begin(), by_shape.end(), [&](Index a, Index b) {
+        const auto& ka = shape_key[static_cast<std::size_t>(a)];
+        const auto& kb = shape_key[static_cast<std::size_t>(b)];
+        return ka != kb ? ka < kb : a < b;
+    });
+    std::vector<std::size_t> class_begin;  // first entry of each class in by_shape
+    for (std::size_t i = 0; i < by_shape.size(); ++i)
+        if (i == 0 || shape_key[static_cast<std::size_t>(by_shape[i])] !=
+                          shape_key[static_cast<std::size_t>(by_shape[i - 1])])
+            class_begin.push_back(i);
+    class_begin.push_back(by_shape.size());
+    const auto n_classes = static_cast<Index>(class_begin.size()) - 1;
+#pragma omp parallel for schedule(dynamic, 64) if (n_classes >= k_parallel_min_elements)
+    for (Index c = 0; c < n_classes; ++c) {
+        const auto first = class_begin[static_cast<std::size_t>(c)],
+                   end = class_begin[static_cast<std::size_t>(c) + 1];
+        const Index lead = by_shape[first];
+        const Real ratio = bending_ratio(
+            lead, corners_of(model.triangles[static_cast<std::size_t>(lead)], model.nodes));
+        for (std::size_t i = first; i < end; ++i) {
+            const auto e = static_cast<std::size_t>(by_shape[i]);
+            bend_ratio_[e] = ratio;
+            bend_lc_[e] = initial_lc[e];
+        }
+    }
+}
+
+Real ElementTimeSteps::bending_ratio(Index e, const std::array<Vec3, 3>& corners) const {
+    const std::size_t ue = static_cast<std::size_t>(e);
+    const auto& [p0, p1, p2] = corners;
+    const std::size_t sec = static_cast<std::size_t>(section_[ue]);
+    const Real membrane_dt = characteristic_length(p0, p1, p2) / wave_speed_[sec];
+    // only min(1, bending_dt / membrane_dt) is used (critical_dt): a bound suffices where the
+    // bending modes are surely slower than the membrane
+    const Real bending_dt =
+        bending_critical_dt(bending_kernel_, local_shape(p0, p1, p2), bending_rigidity_[sec],
+                            node_mass_[ue], node_inertia_[ue], membrane_dt);
+    return membrane_dt > 0 ? bending_dt / membrane_dt : 1.0;
+}
+
+void ElementTimeSteps::refresh(Index e, const std::array<Index, 3>& t, const std::vector<Vec3>& x,
+                               Real lc) {
+    const std::size_t ue = static_cast<std::size_t>(e);
+    if (!(lc > 0) || std::abs(lc - bend_lc_[ue]) <= k_bending_ratio_drift * bend_lc_[ue]) return;
+    bend_ratio_[ue] = bending_ratio(e, corners_of(t, x));
+    bend_lc_[ue] = lc;
+}
+
+Real ElementTimeSteps::critical_dt(Index e, Real lc) const {
+    const std::size_t ue = static_cast<std::size_t>(e);
+    const std::size_t sec = static_cast<std::size_t>(section_[ue]);
+    // §6.4 membrane step L_c / c; the bending modes of thick elements (h / L_c > ~0.5) are
+    // slower to integrate, bend_ratio_ < 1 (bending_time_step.hpp).
+    Real dt = lc / wave_speed_[sec] * std::min(Real{1}, bend_ratio_[ue]);
+    if (stiffness_damping_ > 0) {  // §6.4: dt <= (2/w)(sqrt(1+xi^2) - xi), w = 2/dt
+        const Real xi = stiffness_damping_ / dt;
+        dt *= std::sqrt(1.0 + xi * xi) - xi;
+    }
+    return dt;
+}
+
+}  // namespace fpmshell
