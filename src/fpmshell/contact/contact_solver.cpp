@@ -47,7 +47,7 @@ private:
 
 }  // namespace
 
-ContactSolver::ContactSolver(const Model& model, const std::vector<Vec3>& inv_mass,
+ContactSolver::ContactSolver(const Model& model, const MeshTopology& topology, const std::vector<Vec3>& inv_mass,
                              const std::vector<Real>& element_thickness)
     : model_(model), inv_mass_(inv_mass), element_thickness_(element_thickness) {
     // h_s of a particle: the mean thickness of its elements.
@@ -71,16 +71,9 @@ ContactSolver::ContactSolver(const Model& model, const std::vector<Vec3>& inv_ma
             d.slaves.erase(std::unique(d.slaves.begin(), d.slaves.end()), d.slaves.end());
             // Edge neighbours of every slave (over all the model's triangles): a triangle that
             // touches one of them is in the slave's 2-ring and never its contact partner (§8.1).
-            std::vector<std::vector<Index>> adjacent(np);
-            for (const auto& t : model.triangles)
-                for (std::size_t k = 0; k < 3; ++k)
-                    for (std::size_t j = 0; j < 3; ++j)
-                        if (j != k) adjacent[static_cast<std::size_t>(t[k])].push_back(t[j]);
             d.neighbour_start.push_back(0);
             for (Index s : d.slaves) {
-                auto& a = adjacent[static_cast<std::size_t>(s)];
-                std::sort(a.begin(), a.end());
-                a.erase(std::unique(a.begin(), a.end()), a.end());
+                const std::span<const Index> a = topology.neighbours_of(s);
                 d.neighbours.insert(d.neighbours.end(), a.begin(), a.end());
                 d.neighbour_start.push_back(static_cast<std::int64_t>(d.neighbours.size()));
             }

@@ -17,6 +17,7 @@
 #include "fpmshell/contact/bucket_grid.hpp"
 #include "fpmshell/contact/rigid_body_state.hpp"
 #include "fpmshell/core/types.hpp"
+#include "fpmshell/model/mesh_topology.hpp"
 #include "fpmshell/model/model.hpp"
 
 namespace fpmshell {
@@ -48,7 +49,8 @@ class ContactSolver {
 public:
     /// inv_mass: per particle and direction, 0 where the motion is fixed or prescribed.
     /// element_thickness: per element of the model.
-    ContactSolver(const Model& model, const std::vector<Vec3>& inv_mass,
+    /// topology: the model's, for the 2-ring of every slave (§8.1).
+    ContactSolver(const Model& model, const MeshTopology& topology, const std::vector<Vec3>& inv_mass,
                   const std::vector<Real>& element_thickness);
 
     [[nodiscard]] bool empty() const { return definitions_.empty(); }

@@ -8,7 +8,6 @@
 #include "fpmshell/core/chunked_loop.hpp"
 #include "fpmshell/core/errors.hpp"
 #include "fpmshell/core/rotation.hpp"
-#include "fpmshell/elements/lumped_inertia.hpp"
 #include "fpmshell/io/restart_archive.hpp"
 
 namespace fpmshell {
@@ -26,24 +25,18 @@ ExplicitSolver::ExplicitSolver(const Model& model) : model_(model), topology_(mo
     s_.x0 = model.nodes;
     s_.x = model.nodes;
     s_.x_prev = model.nodes;
-    // §6.1 lumped mass, §6.2 option B rotary inertia: (rho h A / 3)(A/8 + h^2/12).
+    // §6.1 lumped mass, §6.2 option B rotary inertia (summed by the topology).
+    s_.mass = topology_.particle_mass;
+    s_.inertia = topology_.particle_inertia;
+    // §1.3 the area-weighted normal; the mean edge length.
     std::vector<Vec3> normal_sum(np, Vec3::Zero());
     Real edge_sum = 0;
-    for (std::size_t e = 0; e < model.triangles.size(); ++e) {
-        const auto& t = model.triangles[e];
-        const Section& sec = model.sections[static_cast<std::size_t>(model.element_section[e])];
-        const Material& mat = model.materials[static_cast<std::size_t>(sec.material)];
+    for (const auto& t : model.triangles) {
         const Vec3& p0 = model.nodes[static_cast<std::size_t>(t[0])];
         const Vec3& p1 = model.nodes[static_cast<std::size_t>(t[1])];
         const Vec3& p2 = model.nodes[static_cast<std::size_t>(t[2])];
         const Vec3 cr = (p1 - p0).cross(p2 - p0);
-        const Real area = 0.5 * cr.norm();
-        const NodeInertiaShare share = lumped_node_share(mat.density, sec.thickness, area);
-        for (Index p : t) {
-            s_.mass[static_cast<std::size_t>(p)] += share.mass;
-            s_.inertia[static_cast<std::size_t>(p)] += share.inertia;
-            normal_sum[static_cast<std::size_t>(p)] += cr;
-        }
+        for (Index p : t) normal_sum[static_cast<std::size_t>(p)] += cr;
         edge_sum += (p1 - p0).norm() + (p2 - p1).norm() + (p0 - p2).norm();
     }
     if (!model.triangles.empty()) length_scale_ = edge_sum / (3.0 * static_cast<Real>(model.triangles.size()));
@@ -73,19 +66,7 @@ ExplicitSolver::ExplicitSolver(const Model& model) : model_(model), topology_(mo
         energy_.external_work += 0.5 * s_.mass[p] * s_.v[p].squaredNorm() +
                                  0.5 * s_.inertia[p] * s_.omega[p].squaredNorm();
     }
-    // Particle -> its triangles, in element order (normals and pressures).
-    particle_element_begin_.assign(np + 1, 0);
-    for (const auto& t : model.triangles)
-        for (Index p : t) ++particle_element_begin_[static_cast<std::size_t>(p) + 1];
-    for (std::size_t p = 0; p < np; ++p) particle_element_begin_[p + 1] += particle_element_begin_[p];
-    particle_element_.assign(static_cast<std::size_t>(particle_element_begin_[np]), 0);
-    {
-        std::vector<Index> fill(particle_element_begin_.begin(), particle_element_begin_.end() - 1);
-        for (std::size_t e = 0; e < model.triangles.size(); ++e)
-            for (Index p : model.triangles[e])
-                particle_element_[static_cast<std::size_t>(fill[static_cast<std::size_t>(p)]++)] = static_cast<Index>(e);
-    }
-    loads_ = std::make_unique<ExternalLoads>(model, particle_element_begin_, particle_element_);
+    loads_ = std::make_unique<ExternalLoads>(model, topology_);
     parallel_particles_ = static_cast<Index>(np) >= k_parallel_min_particles;
     // Rigid bodies and contact (theory.md §8).
     bodies_ = RigidBodyState::from_model(model);
@@ -93,7 +74,7 @@ ExplicitSolver::ExplicitSolver(const Model& model) : model_(model), topology_(mo
     if (!model.contacts.empty()) {
         std::vector<Real> thickness(model.triangles.size());
         for (std::size_t e = 0; e < thickness.size(); ++e) thickness[e] = elements_.thickness(static_cast<Index>(e));
-        contact_ = std::make_unique<ContactSolver>(model, bc_->free_inverse_mass(s_.mass), thickness);
+        contact_ = std::make_unique<ContactSolver>(model, topology_, bc_->free_inverse_mass(s_.mass), thickness);
     }
     energy_.kinetic = energy_.external_work;
     // Without prescribed motions and Lagrange contact, which change v^{n+1/2} between the two,

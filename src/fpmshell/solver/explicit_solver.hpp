@@ -150,7 +150,6 @@ private:
     ShellElements elements_;
     ParticleState s_;
     EnergyBalance energy_;
-    std::vector<Index> particle_element_begin_, particle_element_;  ///< CSR particle -> triangles
     std::unique_ptr<BoundaryConditions> bc_;  ///< built once the kink particles are known
     std::unique_ptr<ExternalLoads> loads_;
     std::vector<RigidBodyState> bodies_;

@@ -4,9 +4,7 @@
 
 namespace fpmshell {
 
-ExternalLoads::ExternalLoads(const Model& model, const std::vector<Index>& particle_element_begin,
-                             const std::vector<Index>& particle_element)
-    : model_(model), particle_element_begin_(particle_element_begin), particle_element_(particle_element) {
+ExternalLoads::ExternalLoads(const Model& model, const MeshTopology& topology) : model_(model), topology_(topology) {
     const std::size_t np = model.nodes.size();
     for (const Load& load : model.loads) has_moment_loads_ = has_moment_loads_ || load.type == LoadType::Moment;
     element_cross_.assign(model.triangles.size(), Vec3::Zero());
@@ -30,7 +28,7 @@ ExternalLoads::ExternalLoads(const Model& model, const std::vector<Index>& parti
     // pass of the normals, over the same triangles in the same order (the same bits).
     if (!model.loads.empty() && model.loads[0].type == LoadType::Pressure) {
         const PressureGather& g = pressure_gather_[0];
-        fused_pressure_ = g.particle.size() == np && g.begin == particle_element_begin_ && g.element == particle_element_;
+        fused_pressure_ = g.particle.size() == np && g.begin == topology_.element_begin && g.element == topology_.element;
     }
 }
 
@@ -58,8 +56,8 @@ void ExternalLoads::update_normals_and_loads(ParticleState& s, const BoundaryCon
     parallel_for_each(static_cast<Index>(s.size()), parallel, [&](Index ip) {
         const std::size_t p = static_cast<std::size_t>(ip);
         Vec3 sum = Vec3::Zero(), f = Vec3::Zero();
-        for (Index k = particle_element_begin_[p]; k < particle_element_begin_[p + 1]; ++k) {
-            const Vec3& cross = element_cross_[static_cast<std::size_t>(particle_element_[static_cast<std::size_t>(k)])];
+        for (const Index e : topology_.elements_of(ip)) {
+            const Vec3& cross = element_cross_[static_cast<std::size_t>(e)];
             sum += cross;
             if (fused_pressure_) f += fused_scale * cross;
         }

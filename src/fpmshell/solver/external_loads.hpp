@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "fpmshell/core/types.hpp"
+#include "fpmshell/model/mesh_topology.hpp"
 #include "fpmshell/model/model.hpp"
 #include "fpmshell/solver/boundary_conditions.hpp"
 #include "fpmshell/solver/particle_state.hpp"
@@ -16,10 +17,8 @@ namespace fpmshell {
 
 class ExternalLoads {
 public:
-    /// particle_element_begin, particle_element: each particle's triangles in element order
-    /// (CSR); kept by reference, they must outlive the loads.
-    ExternalLoads(const Model& model, const std::vector<Index>& particle_element_begin,
-                  const std::vector<Index>& particle_element);
+    /// The model and its topology (each particle's triangles) must outlive the loads.
+    ExternalLoads(const Model& model, const MeshTopology& topology);
 
     /// Whether a moment load exists (else s.m_ext stays zero and is neither written nor read).
     [[nodiscard]] bool has_moment_loads() const { return has_moment_loads_; }
@@ -36,8 +35,7 @@ private:
     };
 
     const Model& model_;
-    const std::vector<Index>& particle_element_begin_;
-    const std::vector<Index>& particle_element_;
+    const MeshTopology& topology_;
     bool has_moment_loads_ = false;
     std::vector<PressureGather> pressure_gather_;  ///< per load (empty unless a pressure)
     bool fused_pressure_ = false;  ///< load 0: a pressure on every triangle, summed with the normals

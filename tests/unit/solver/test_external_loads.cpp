@@ -15,10 +15,12 @@ namespace {
 
 struct Square {
     Model model;
-    std::vector<Index> begin{0, 2, 3, 4, 6}, element{0, 1, 0, 1, 0, 1};  // particle -> triangles
     Square() {
         model.nodes = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(1, 1, 0)};
         model.triangles = {{0, 1, 3}, {0, 3, 2}};
+        model.materials.push_back({"steel", MaterialType::Elastic, 7800, 2.1e11, 0.3});
+        model.sections.push_back({0, 0.01, 2, 3});
+        model.element_section.assign(2, 0);
         model.curves.push_back({"ramp", {{0.0, 0.0}, {2.0, 2.0}}});
     }
 };
@@ -48,7 +50,8 @@ TEST(ExternalLoads, FollowerPressureAndNodalLoads) {
     moment.nodes = {1};
     moment.vector = Vec3(0, 0, 5);
     sq.model.loads = {pressure, force, moment};
-    ExternalLoads loads(sq.model, sq.begin, sq.element);
+    const MeshTopology topology(sq.model);
+    ExternalLoads loads(sq.model, topology);
     EXPECT_TRUE(loads.has_moment_loads());
     const BoundaryConditions bc(sq.model, std::vector<std::uint8_t>(4, 0));
     ParticleState s = state_of(sq.model);
