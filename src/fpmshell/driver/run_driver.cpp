@@ -168,6 +168,22 @@ RunEnd relax_load_levels(Run& run, std::vector<Vec3>& last_good) {
     return run_end(0, "completed");
 }
 
+/// The result files of model-format.md and the run's report, in the order they are told: the
+/// progress line first, then the files, the options' observers, and the closing log lines.
+void add_result_files(ObserverList& out, const Model& model, const RunOptions& opt, LogFile& log,
+                      const OutputSchedule& schedule) {
+    out.add<ProgressReport>(log, model.control.end_time, opt.quiet);
+    const HistoryFile& history = out.add<HistoryFile>(model, opt.output_dir);
+    out.add<EnergyFile>(opt.output_dir);
+    out.add<FieldSeries>(model, opt.output_dir, standard_fields(),
+                         [&log](const std::string& line) { log.line(line); });
+    out.add<SummaryFile>(model, opt.output_dir, history);
+    if (model.control.mode == SolutionMode::Dynamic)
+        out.add<RestartFiles>(opt.output_dir / k_restart_file, opt.restart_every, schedule, out);
+    for (OutputObserver* o : opt.observers) out.attach(*o);
+    out.add<ClosingReport>(log, opt.output_dir);
+}
+
 bool all_finite(const std::vector<Vec3>& v) {
     return std::all_of(v.begin(), v.end(), [](const Vec3& a) { return a.allFinite(); });
 }
@@ -193,16 +209,8 @@ int run_model(const Model& model, const RunOptions& opt) {
     ExplicitSolver solver(model);
     OutputSchedule schedule(model);
     const std::filesystem::path restart_path = opt.output_dir / k_restart_file;
-    ObserverList out;  // the result files, in the order they are told
-    out.add<ProgressReport>(log, model.control.end_time, opt.quiet);
-    const HistoryFile& history = out.add<HistoryFile>(model, opt.output_dir);
-    out.add<EnergyFile>(opt.output_dir);
-    out.add<FieldSeries>(model, opt.output_dir, standard_fields(),
-                         [&log](const std::string& line) { log.line(line); });
-    out.add<SummaryFile>(model, opt.output_dir, history);
-    if (!relaxation) out.add<RestartFiles>(restart_path, opt.restart_every, schedule, out);
-    for (OutputObserver* o : opt.observers) out.attach(*o);
-    out.add<ClosingReport>(log, opt.output_dir);
+    ObserverList out;
+    add_result_files(out, model, opt, log, schedule);
 
     double wall_before = 0;  // wall seconds of the earlier segments of a resumed run
     if (opt.resume) {
