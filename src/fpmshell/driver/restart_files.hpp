@@ -1,10 +1,11 @@
 // restart.bin (model-format.md "Restart files"): the whole state of a dynamic run after a
 // completed step, so that --resume continues bitwise as if the run had never stopped. Written
 // every `every` wall seconds and at the end of the run (when `every` > 0), and always when the
-// run pauses (a signal, --stop-at-step). Observes after the result files it saves.
+// run pauses (a signal, --stop-at-step).
 //
 // Layout after the header: the solver's sections, section "driver" (next history row and
-// frame times, wall seconds so far), then the sections of the result observers in their order.
+// frame times, wall seconds so far), then the sections of the observers that keep a state
+// (history, energy, fields), in the order of the observer list.
 #pragma once
 
 #include <chrono>
