@@ -1,0 +1,49 @@
+// fields.pvd + fields/frame_NNNNN.vtu (model-format.md "Results in DIR"): a VTU frame of the
+// field list at every frame time, and the last good state of a failed run; the .pvd lists
+// them with their times. The frames listed so far travel in restart.bin; a resumed run deletes
+// the frames written after its restart file and numbers on from there.
+#pragma once
+
+#include <filesystem>
+#include <functional>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "fpmshell/driver/output_fields.hpp"
+#include "fpmshell/driver/output_observer.hpp"
+#include "fpmshell/io/vtu_writer.hpp"
+
+namespace fpmshell {
+
+class FieldSeries final : public OutputObserver {
+public:
+    /// Receives a line for the log when the last good frame of a failed run cannot be written.
+    using LogSink = std::function<void(const std::string&)>;
+
+    FieldSeries(const Model& model, std::filesystem::path dir, std::vector<OutputField> fields,
+                LogSink log);
+
+    void load(RestartReader& restart) override;
+    /// Writes fields.pvd (empty, or listing the frames of the restart file).
+    void start(const ExplicitSolver& solver) override;
+    void frame(const ExplicitSolver& solver, Real time,
+               const std::vector<Vec3>& positions) override;
+    /// Writes the frame of the last good positions at the solver's time.
+    void failure(const ExplicitSolver& solver, std::string_view error,
+                 const std::vector<Vec3>& last_good_positions) override;
+    void save(RestartWriter& restart) const override;
+
+private:
+    const Model& model_;
+    std::filesystem::path dir_;
+    std::vector<OutputField> fields_;
+    LogSink log_;
+    /// (time, path relative to dir_) of every frame so far.
+    std::vector<std::pair<Real, std::string>> frames_;
+    bool resumed_ = false;
+    std::optional<PvdSeries> pvd_;  ///< created at start, so that a refused resume writes nothing
+};
+
+}  // namespace fpmshell

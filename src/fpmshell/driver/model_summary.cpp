@@ -1,0 +1,57 @@
+// The summary of `fpmshell check`: the model as read, and its time step.
+#include "fpmshell/driver/model_summary.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <numeric>
+
+#include "fpmshell/solver/explicit_solver.hpp"
+
+namespace fpmshell {
+
+std::string model_summary(const Model& model) {
+    const ExplicitSolver solver(model);
+    std::string out;
+    out += fmt::format("model      {}\n", model.source_file);
+    out += fmt::format("title      {}\n", model.title);
+    out += fmt::format("particles  {}\nelements   {}\n", model.n_particles(), model.n_elements());
+    const auto& m = solver.state().mass;
+    out += fmt::format("total mass {:.6g}\n", std::accumulate(m.begin(), m.end(), 0.0));
+    out += "node sets ";
+    for (const auto& [name, nodes] : model.node_sets)
+        out += fmt::format(" {}({})", name, nodes.size());
+    out += "\nelement sets";
+    for (const auto& [name, elems] : model.element_sets)
+        out += fmt::format(" {}({})", name, elems.size());
+    for (const RigidBody& b : model.rigid_bodies)
+        out += fmt::format(
+            "\nrigid body {}: plane through ({:.6g}, {:.6g}, {:.6g}), normal ({:.4g}, {:.4g}, "
+            "{:.4g}), {}",
+            b.name, b.point.x(), b.point.y(), b.point.z(), b.normal.x(), b.normal.y(), b.normal.z(),
+            b.fixed ? std::string("fixed") : fmt::format("mass {:.6g}", b.mass));
+    for (const ContactDefinition& c : model.contacts)
+        out += c.type == ContactType::Self
+                   ? fmt::format(
+                         "\ncontact self over {} elements ({})", c.elements.size(),
+                         c.method == ContactMethod::Penalty ? "penalty" : "Lagrange multipliers")
+                   : fmt::format(
+                         "\ncontact of {} particles with rigid body {} ({})", c.nodes.size(),
+                         model.rigid_bodies[static_cast<std::size_t>(c.body)].name,
+                         c.method == ContactMethod::Penalty ? "penalty" : "Lagrange multipliers");
+    const Real dt = solver.stable_dt();
+    out += fmt::format("\nstable time step {:.6g} (time_step_scale {} x critical)\n", dt,
+                       model.control.time_step_scale);
+    if (model.control.mode == SolutionMode::Dynamic) {
+        out += fmt::format("steps      about {:.0f} to end_time {}\n",
+                           std::ceil(model.control.end_time / dt), model.control.end_time);
+    } else {
+        const Real every = model.output.every > 0 ? model.output.every : model.control.end_time;
+        out +=
+            fmt::format("relaxation {:.0f} load levels to load parameter {}\n",
+                        std::ceil(model.control.end_time / every - 1e-9), model.control.end_time);
+    }
+    return out;
+}
+
+}  // namespace fpmshell

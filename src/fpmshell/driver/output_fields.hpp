@@ -1,0 +1,60 @@
+// The fields of the VTU frames (model-format.md "Results in DIR", VTU point and cell data),
+// each declared once: its name, its number of components, whether it lives on the particles or
+// on the triangles, and how its values come from the model and the solver state. A frame holds
+// the fields of the list in list order; a new field is one more entry in standard_fields().
+#pragma once
+
+#include <functional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "fpmshell/core/types.hpp"
+#include "fpmshell/io/field_frame.hpp"
+
+namespace fpmshell {
+
+class ExplicitSolver;
+class ShellElements;
+struct Model;
+
+enum class FieldLocation { Point, Cell };
+
+/// What a field is computed from.
+struct FieldSource {
+    const Model& model;
+    const ExplicitSolver& solver;
+    /// The particle positions the frame shows: the solver's, or the last good ones of a run
+    /// that failed.
+    const std::vector<Vec3>& positions;
+};
+
+struct OutputField {
+    /// Writes the values of particle (Point) or triangle (Cell) `item` to `out`, which holds
+    /// `components` values.
+    using Value = std::function<void(const FieldSource& source, Index item, std::span<Real> out)>;
+
+    std::string name;  ///< the array name in the .vtu file
+    int components = 1;
+    FieldLocation location = FieldLocation::Point;
+    Value value;
+};
+
+/// The fields of every frame, in the order they appear in the .vtu files: point data
+/// displacement, velocity, rotation; cell data membrane_force, bending_moment, thickness,
+/// plastic_strain_top, plastic_strain_middle, plastic_strain_bottom.
+[[nodiscard]] std::vector<OutputField> standard_fields();
+
+/// The frame at `time`: the source's positions, the model's triangles and one array per field.
+[[nodiscard]] FieldFrame field_frame(const std::vector<OutputField>& fields,
+                                     const FieldSource& source, Real time);
+
+/// Surfaces of the shell at which the plastic strain is reported.
+enum class ShellSurface { Bottom, Middle, Top };
+
+/// Equivalent plastic strain of element e at a surface, averaged over its in-plane points; with
+/// an even number of thickness points the middle is the mean of the bottom and top points.
+[[nodiscard]] Real surface_plastic_strain(const ShellElements& elements, Index e,
+                                          ShellSurface surface);
+
+}  // namespace fpmshell

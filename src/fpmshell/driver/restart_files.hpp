@@ -1,0 +1,47 @@
+// restart.bin (model-format.md "Restart files"): the whole state of a dynamic run after a
+// completed step, so that --resume continues bitwise as if the run had never stopped. Written
+// every `every` wall seconds and at the end of the run (when `every` > 0), and always when the
+// run pauses (a signal, --stop-at-step).
+//
+// Layout after the header: the solver's sections, section "driver" (next history row and
+// frame times, wall seconds so far), then the sections of the observers that keep a state
+// (history, energy, fields), in the order of the observer list.
+#pragma once
+
+#include <chrono>
+#include <filesystem>
+
+#include "fpmshell/driver/output_observer.hpp"
+#include "fpmshell/driver/output_schedule.hpp"
+
+namespace fpmshell {
+
+class RestartFiles final : public OutputObserver {
+public:
+    /// `results`: the observers whose state the file holds (flushed before each write);
+    /// `every`: wall seconds between files, 0 for none but those of a pause.
+    RestartFiles(std::filesystem::path path, double every, const OutputSchedule& schedule,
+                 OutputObserver& results);
+
+    void start(const ExplicitSolver& solver) override;
+    void step_done(const ExplicitSolver& solver, const StepReport& report) override;
+
+    /// Restores a run from the restart file at `path`: the solver, the schedule and every
+    /// result observer (before their start). Returns the wall seconds of the earlier segments.
+    /// Throws InputError (naming the file) when it does not fit the model or is damaged.
+    static double resume(const std::filesystem::path& path, ExplicitSolver& solver,
+                         OutputSchedule& schedule, OutputObserver& results);
+
+private:
+    using Clock = std::chrono::steady_clock;
+
+    void write(const ExplicitSolver& solver, double wall_seconds);
+
+    std::filesystem::path path_;
+    double every_;
+    const OutputSchedule& schedule_;
+    OutputObserver& results_;
+    Clock::time_point last_write_ = Clock::now();
+};
+
+}  // namespace fpmshell

@@ -1,0 +1,120 @@
+// summary.json observer; the keys are listed in model-format.md.
+#include "fpmshell/driver/summary_file.hpp"
+
+#include <algorithm>
+#include <string>
+#include <utility>
+
+#include "fpmshell/driver/output_fields.hpp"
+#include "fpmshell/io/summary_json.hpp"
+#include "fpmshell/solver/explicit_solver.hpp"
+
+namespace fpmshell {
+
+namespace {
+
+JsonValue peaks_json(const Model& model, const HistoryFile& history) {
+    JsonValue peaks = JsonValue::object();
+    const std::vector<HistoryFile::Peak> all = history.peaks();
+    for (std::size_t i = 0; i < all.size(); ++i) {
+        JsonValue p = JsonValue::object();
+        p.set("value", all[i].value);
+        p.set("time", all[i].time);
+        peaks.set(model.output.histories[i].name, p);
+    }
+    return peaks;
+}
+
+/// Peak equivalent plastic strain per surface (it never decreases, so the last state holds
+/// it), averaged over the in-plane points of an element like the VTU fields.
+JsonValue plastic_strain_json(const Model& model, const ExplicitSolver& solver) {
+    JsonValue plastic = JsonValue::object();
+    const std::pair<ShellSurface, const char*> surfaces[] = {{ShellSurface::Bottom, "bottom"},
+                                                             {ShellSurface::Middle, "middle"},
+                                                             {ShellSurface::Top, "top"}};
+    Real best = 0;
+    Index best_element = -1;
+    std::string best_surface = "none";
+    for (const auto& [surface, name] : surfaces) {
+        Real peak = 0;
+        for (Index e = 0; e < model.n_elements(); ++e) {
+            const Real v = surface_plastic_strain(solver.elements(), e, surface);
+            peak = std::max(peak, v);
+            if (v > best) {
+                best = v;
+                best_element = e;
+                best_surface = name;
+            }
+        }
+        plastic.set(std::string("max_") + name, peak);
+    }
+    plastic.set("max", best);
+    plastic.set("element", best_element >= 0 ? best_element + 1 : 0);
+    plastic.set("surface", best_surface);
+    return plastic;
+}
+
+JsonValue contact_json(const ContactStatistics& c, double wall) {
+    JsonValue cj = JsonValue::object();
+    cj.set("max_penetration", c.max_penetration);
+    cj.set("max_penetration_ratio", c.max_penetration_ratio);  // / slave thickness
+    cj.set("max_penetration_step", c.max_penetration_step);
+    cj.set("max_penetration_particle", c.max_penetration_particle + 1);
+    cj.set("max_penetration_element", c.max_penetration_element + 1);  // 0: a rigid body
+    cj.set("max_active", c.max_active);
+    cj.set("max_sweeps", c.max_sweeps);
+    cj.set("unconverged_steps", c.unconverged_steps);
+    cj.set("searches", c.searches);
+    cj.set("held_penetrations", c.held_penetrations);
+    cj.set("seconds", c.seconds);
+    cj.set("share_of_time_loop", wall > 0 ? c.seconds / wall : 0.0);
+    return cj;
+}
+
+JsonValue rigid_bodies_json(const Model& model, const ExplicitSolver& solver) {
+    JsonValue bodies = JsonValue::object();
+    for (std::size_t b = 0; b < model.rigid_bodies.size(); ++b) {
+        const RigidBodyState& st = solver.bodies()[b];
+        JsonValue bj = JsonValue::object();
+        JsonValue u = JsonValue::array(), v = JsonValue::array();
+        for (int k = 0; k < 3; ++k) {
+            u.push_back(st.u[k]);
+            v.push_back(st.v[k]);
+        }
+        bj.set("displacement", u);
+        bj.set("velocity", v);
+        bodies.set(model.rigid_bodies[b].name, bj);
+    }
+    return bodies;
+}
+
+}  // namespace
+
+SummaryFile::SummaryFile(const Model& model, std::filesystem::path dir, const HistoryFile& history)
+    : model_(model), dir_(std::move(dir)), history_(history) {}
+
+void SummaryFile::finish(const ExplicitSolver& solver, const RunEnd& end) {
+    const double wall = end.wall_seconds;
+    JsonValue j = JsonValue::object();
+    j.set("title", model_.title);
+    j.set("particles", model_.n_particles());
+    j.set("elements", model_.n_elements());
+    j.set("steps", solver.steps());
+    j.set("end_time", solver.time());
+    j.set("wall_seconds", wall);
+    j.set("element_steps_per_second",
+          wall > 0 ? static_cast<double>(solver.element_steps()) / wall : 0.0);
+    j.set("threads", end.threads);
+    j.set("energy_error", solver.energy().error());
+    j.set("peaks", peaks_json(model_, history_));
+    j.set("plastic_strain", plastic_strain_json(model_, solver));
+    j.set("plastic_work", solver.energy().plastic);
+    if (const ContactStatistics* c = solver.contact_statistics())
+        j.set("contact", contact_json(*c, wall));
+    if (!model_.rigid_bodies.empty()) j.set("rigid_bodies", rigid_bodies_json(model_, solver));
+    j.set("version", FPMSHELL_VERSION);
+    j.set("exit_reason", end.reason);
+    write_json_file(dir_ / "summary.json", j);
+}
+
+}  // namespace fpmshell
