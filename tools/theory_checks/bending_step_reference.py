@@ -7,8 +7,8 @@ bending stiffness (theory.md sections 6.2, 6.4), found by power iteration (test_
 Prints one line per case of the test, dt to 8 digits.
 """
 import math
-from plate import geom
-from test_rot import B9_dkt, B9_bciz, K9, lam_max
+from plate import B9_dkt, B9_bciz
+from test_rot import K9, lam_max
 
 E, nu, rho = 1.0, 0.3, 1.0
 shapes = {'equilateral': [[0, 0], [1, 0], [0.5, math.sqrt(3) / 2]],

@@ -2,13 +2,6 @@ import math
 from la import *
 from plate import *
 gp3=[(2/3,1/6,1/6),(1/6,2/3,1/6),(1/6,1/6,2/3)]
-def B9_dkt(xy,L): return Bb_dkt(xy,L[1],L[2],full=True)
-def B9_bciz(xy,L):
-    Bt=Bb_bciz(xy,L); Bw=Bw_bciz(xy,L); B=mat(3,9)
-    for i in range(3):
-        for r in range(3):
-            B[r][3*i]=Bw[r][i]; B[r][3*i+1]=Bt[r][2*i]; B[r][3*i+2]=Bt[r][2*i+1]
-    return B
 def K9(xy,Bf,Db):
     b,c,A2=geom(xy); K=mat(9,9)
     for L in gp3:
