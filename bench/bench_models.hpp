@@ -139,8 +139,9 @@ inline Model steady_plastic_plate_model(Index n, int inplane_points, int steps_t
     return m;
 }
 
-/// bench/whole_run/plate_plastic.yaml, the plastic plate of the whole-run measure (issue 5:
-/// clamped, J2 5 x 3 points, a sudden pressure that makes it yield), with 2 n^2 triangles.
+/// bench/whole_run/plate_plastic.yaml, the plastic plate of the whole-run measure
+/// (docs/performance.md: clamped, J2 5 x 3 points, a sudden pressure that makes it yield),
+/// with 2 n^2 triangles.
 inline Model whole_run_plastic_plate_model(Index n) {
     const std::string path = std::string(FPMSHELL_SOURCE_DIR) + "/bench/whole_run/plate_plastic.yaml";
     return read_model(path, {"mesh.nx=" + std::to_string(n), "mesh.ny=" + std::to_string(n)});

@@ -1,4 +1,4 @@
-// Cost of contact on the square tube (examples/square_tube/model.yaml, issue 4): element-steps
+// Cost of contact on the square tube (examples/square_tube/model.yaml): element-steps
 // per second of the whole step with self-contact and the rigid striker, and the share of the
 // step spent in contact (search + Lagrange-multiplier sweeps), on the 15 x 64 mesh after 4000
 // steps (about 1.7 ms: the first fold is forming against the striker) and the paper's 30 x 128.

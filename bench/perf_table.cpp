@@ -1,4 +1,4 @@
-// The figure-of-merit table (issue 5, item 3); see perf_table.hpp.
+// The figure-of-merit table; see perf_table.hpp.
 //
 // Whole step: ExplicitSolver::step (elements + normals + loads + particle update + contact),
 // timed alone. Element loop: ShellElements::compute alone, on a twin of the solver's elements

@@ -1,4 +1,4 @@
-// The figure-of-merit table of the speed issue (issue 5): ns per element-step of the element
+// The figure-of-merit table (docs/performance.md): ns per element-step of the element
 // loop and of the whole step, elastic and plastic, 10^3 to 10^6 elements, 1 thread and all,
 // with the flops and bytes of each (kernel_costs.hpp) against the measured peaks of the machine
 // (machine_peak.hpp).

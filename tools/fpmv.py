@@ -12,7 +12,6 @@ import json
 import math
 import os
 import subprocess
-import sys
 import time
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
@@ -33,6 +32,16 @@ def parse_args(description, extra=None):
     return ap.parse_args()
 
 
+def start(problem, description, quick_cases, full_cases, extra=None):
+    """The opening of a problem script: (args, cases, plot, plot_name): its options
+    (parse_args), the cases (meshes) of the variant asked for, and the path and file name of its
+    plot. The quick variant (make test) draws its own file, <problem>-quick.png, so that it
+    keeps the full one."""
+    args = parse_args(description, extra)
+    plot = plot_path(problem + ("-quick" if args.quick else "") + ".png")
+    return args, quick_cases if args.quick else full_cases, plot, os.path.basename(plot)
+
+
 def run(fpmshell, model, out_dir, overrides=(), threads=None):
     """Runs fpmshell on model into out_dir with --set overrides; returns (results dict, wall s).
     Raises RuntimeError with the log tail when fpmshell fails."""
@@ -48,6 +57,53 @@ def run(fpmshell, model, out_dir, overrides=(), threads=None):
         raise RuntimeError("fpmshell failed (exit %d): %s\n%s" % (p.returncode, " ".join(cmd),
                                                                   (p.stdout + p.stderr)[-3000:]))
     return read_results(out_dir), wall
+
+
+def run_or_reuse(args, model, out_dir, overrides, end_time, particles):
+    """run() with one thread, unless --reuse was given and out_dir holds a completed run of
+    this model to end_time with these particles (reusable)."""
+    if args.reuse:
+        got = reusable(out_dir, end_time, particles=particles)
+        if got:
+            return got
+    return run(args.fpmshell, model, out_dir, overrides, threads=1)
+
+
+def run_or_failure_row(args, model, out_dir, overrides, problem, mesh, rows):
+    """run() with one thread; when fpmshell fails, prints why, appends a failed 'fpmshell run'
+    row to rows and returns None (the problem goes on with its other meshes)."""
+    try:
+        return run(args.fpmshell, model, out_dir, overrides, threads=1)
+    except RuntimeError as e:
+        print(e)
+        rows.append(row(problem, "fpmshell run", 0.0, 1.0, 0.0, mesh=mesh, relative=False,
+                        note="fpmshell failed: see %s/log.txt" % out_dir))
+        return None
+
+
+def load_levels_row(problem, history, mesh, wall, plot):
+    """The row of a relaxation run along a load path: every load level (the history's rows
+    after the first) must have converged."""
+    return row(problem, "converged load levels", len(history["time"]) - 1,
+               int(sum(history["converged"][1:])), 0.0, mesh=mesh, wall=wall, plot=plot,
+               relative=False, note="levels whose relaxation met control.tolerance")
+
+
+def load_level(history, t):
+    """(index, flag) of the load level at load parameter t in the history of a relaxation run,
+    flag ' (level NOT converged)' or ''; None when no level was computed at t."""
+    k = [i for i, tt in enumerate(history["time"]) if abs(tt - t) < 1e-9]
+    if not k:
+        return None
+    return k[0], "" if history["converged"][k[0]] else " (level NOT converged)"
+
+
+def read_reference_csv(path):
+    """A problem's reference table: CSV with '#' comment lines and one header line -> a list
+    of tuples of floats, one per data line."""
+    with open(path) as f:
+        rows = [r for r in csv.reader(line for line in f if not line.startswith("#"))][1:]
+    return [tuple(float(x) for x in r) for r in rows]
 
 
 def reusable(out_dir, end_time, particles=None, elements=None):
@@ -114,6 +170,67 @@ def finish(out_dir, rows):
     return 0 if n_fail == 0 else 1
 
 
+def mesh_study(problem, quantity, reference, meshes, solve, tolerance, plot="", unit="",
+               relative=True, tested=None):
+    """The mesh-convergence loop of a problem script: one row per mesh, in the order of meshes.
+
+    solve(mesh) runs fpmshell on one mesh and returns (value, wall, mesh_label, note, converged).
+    The row of the finest mesh (the last), or of every mesh for which tested(mesh) is true, is
+    tested with tolerance; the others are reported only. A relaxation that did not converge
+    adds '; relaxation NOT converged' to the note and fails its row.
+    Returns (rows, values) with values[mesh] = value."""
+    rows, values = [], {}
+    for mesh in meshes:
+        value, wall, label, note, converged = solve(mesh)
+        values[mesh] = value
+        is_tested = tested(mesh) if tested else mesh == meshes[-1]
+        r = row(problem, quantity, reference, value, tolerance if is_tested else None, mesh=label,
+                wall=wall, plot=plot, relative=relative, unit=unit,
+                note=note + ("" if converged else "; relaxation NOT converged"))
+        if not converged:
+            r["pass"] = False
+        rows.append(r)
+    return rows, values
+
+
+def add_observed_order(rows, problem, quantity, meshes, values, plot, note,
+                       not_monotone="; meshes not monotone, no observed order",
+                       order=None):
+    """Appends to rows the observed order of convergence of the three finest meshes (reported,
+    not tested, against 2); values[mesh] as mesh_study returns them. When the three are not
+    monotone there is no order: not_monotone (if any) is added to the note of the last row
+    instead, so that rows.json holds no NaN. Nothing with fewer than three meshes.
+    order(v1, v2, v3): the estimate, observed_order (element size halved) by default."""
+    if len(meshes) < 3:
+        return
+    finest = meshes[-3:]
+    p = (order or observed_order)(*[values[m] for m in finest])
+    if math.isnan(p):
+        if not_monotone:
+            rows[-1]["note"] += not_monotone
+    else:
+        rows.append(row(problem, quantity, 2.0, p, None, mesh="%d/%d/%d" % tuple(finest),
+                        plot=plot, note=note))
+
+
+def kernel_studies(problem, quantity, reference, kernels, meshes, solve, tolerance, plot,
+                   order_note, unit="", **order_options):
+    """The mesh study of each bending kernel in turn: mesh_study with solve(kernel, mesh) and
+    the row quantity '<quantity> <kernel>', then that kernel's observed order
+    (add_observed_order, 'observed order <kernel>', note order_note; order_options:
+    not_monotone, order). Returns (rows, results) with results[(kernel, mesh)] = value."""
+    rows, results = [], {}
+    for kernel in kernels:
+        study, values = mesh_study(problem, "%s %s" % (quantity, kernel), reference, meshes,
+                                   lambda mesh: solve(kernel, mesh), tolerance, plot=plot,
+                                   unit=unit)
+        rows += study
+        results.update({(kernel, mesh): v for mesh, v in values.items()})
+        add_observed_order(rows, problem, "observed order %s" % kernel, meshes, values, plot,
+                           order_note, **order_options)
+    return rows, results
+
+
 def observed_order(w1, w2, w3):
     """Convergence order from three meshes, each halving the element size:
     log2((w1 - w2) / (w2 - w3)); nan when the sequence is not monotone."""
@@ -121,6 +238,49 @@ def observed_order(w1, w2, w3):
     if d2 == 0 or d1 / d2 <= 0:
         return float("nan")
     return math.log(d1 / d2, 2)
+
+
+def parabola_vertex(tm, w, i):
+    """Extremum of the parabola through the samples i-1, i, i+1 of w(tm): (value, time), the
+    peak independent of the output interval; the sample itself at either end of the record."""
+    if i <= 0 or i >= len(w) - 1:
+        return w[i], tm[i]
+    t0, t1, t2 = tm[i - 1], tm[i], tm[i + 1]
+    w0, w1, w2 = w[i - 1], w[i], w[i + 1]
+    d01, d12 = (w1 - w0) / (t1 - t0), (w2 - w1) / (t2 - t1)
+    a = (d12 - d01) / (t2 - t0)
+    if a == 0:
+        return w1, t1
+    tv = min(max(0.5 * (t0 + t1) - d01 / (2 * a), t0), t2)
+    # Newton form: w(t) = w0 + d01 (t - t0) + a (t - t0)(t - t1)
+    return w0 + d01 * (tv - t0) + a * (tv - t0) * (tv - t1), tv
+
+
+def fit_period(t, w, guess):
+    """Period of the dominant harmonic of w(t): least-squares fit of C + a cos(wt) + b sin(wt),
+    golden-section search of omega within +-30 % of 2 pi / guess."""
+    import numpy as np
+    t = np.asarray(t)
+    w = np.asarray(w)
+
+    def residual(om):
+        m = np.column_stack([np.ones_like(t), np.cos(om * t), np.sin(om * t)])
+        c, *_ = np.linalg.lstsq(m, w, rcond=None)
+        return float(np.sum((m @ c - w) ** 2))
+
+    om0 = 2 * math.pi / guess
+    grid = np.linspace(0.7 * om0, 1.3 * om0, 241)
+    res = [residual(o) for o in grid]
+    k = int(np.argmin(res))
+    lo, hi = grid[max(k - 1, 0)], grid[min(k + 1, len(grid) - 1)]
+    g = (math.sqrt(5) - 1) / 2
+    for _ in range(80):
+        x1, x2 = hi - g * (hi - lo), lo + g * (hi - lo)
+        if residual(x1) < residual(x2):
+            hi = x2
+        else:
+            lo = x1
+    return float(2 * math.pi / (0.5 * (lo + hi)))
 
 
 def plot_path(name):
@@ -146,14 +306,42 @@ def mesh_study_axis(ax, ns, labels, xlabel, ylabel):
     ax.legend(fontsize=8)
 
 
-def save_figure(fig, path, title):
-    """Titles, lays out, writes (110 dpi) and closes a figure."""
+def draw_plate_deflection_study(path, sizes, deflections, reference, reference_label, band,
+                                 title):
+    """The figure of a plate's centre deflection against the element size h / a: the values
+    (in micrometres) beside the reference and its band (a relative tolerance), and their
+    relative error on log axes with a slope-2 guide from the first series' coarsest error.
+    deflections: list of (label, marker, values), one value per size."""
+    plt = pyplot()
+    fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(10, 4))
+    for label, mark, ws in deflections:
+        ax1.plot(sizes, [w * 1e6 for w in ws], mark, label=label)
+        ax2.loglog(sizes, [abs(w - reference) / reference for w in ws], mark, label=label)
+    ax1.axhline(reference * 1e6, color="k", lw=1, label=reference_label)
+    ax1.axhspan(reference * 1e6 * (1 - band), reference * 1e6 * (1 + band), color="0.85",
+                label="$\\pm$%g %%" % (100 * band))
+    ax1.set_xlabel("element size h / a")
+    ax1.set_ylabel("centre deflection w [$\\mu$m]")
+    ax1.set_xscale("log")
+    ax1.legend(fontsize=8)
+    if len(sizes) > 1:
+        e0 = abs(deflections[0][2][0] - reference) / reference
+        ax2.loglog(sizes, [e0 * (h / sizes[0])**2 for h in sizes], "k:", label="slope 2")
+    ax2.set_xlabel("element size h / a")
+    ax2.set_ylabel("relative error")
+    ax2.legend(fontsize=8)
+    save_figure(fig, path, title)
+
+
+def save_figure(fig, path, title, dpi=110):
+    """Titles (the axes of a one-axes figure, else the figure), lays out, writes and closes a
+    figure."""
     if len(fig.axes) == 1:
         fig.axes[0].set_title(title)
     else:
         fig.suptitle(title)
     fig.tight_layout()
-    fig.savefig(path, dpi=110)
+    fig.savefig(path, dpi=dpi)
     pyplot().close(fig)
 
 

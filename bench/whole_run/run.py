@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Whole-run cost of `fpmshell run` per element-step (issue 5, "Done when").
+"""Whole-run cost of `fpmshell run` per element-step (docs/performance.md, "Whole run").
 
 Runs the clamped plate under a sudden pressure (plate_elastic.yaml: 2 Gauss x 3 points;
 plate_plastic.yaml: 5 Lobatto x 3 points, every point yielding) on about 10^4, 10^5 and 10^6

@@ -5,7 +5,6 @@ Runs fpmshell in relaxation mode along the load path P/Pmax = 0..1, compares the
 -u_tip and lift w_tip with Sze's table at every computed level, plots the whole path and writes
 rows.json. Protocol: validation/README.md.
 """
-import csv
 import os
 import sys
 
@@ -26,12 +25,6 @@ QUICK = [(20, 1, "dkt", 0.05), (20, 1, "bciz", 0.25)]
 FULL = [(20, 1, "dkt", 0.05), (40, 2, "dkt", 0.05), (20, 1, "bciz", 0.05), (40, 2, "bciz", 0.05)]
 
 
-def reference():
-    with open(os.path.join(HERE, "reference.csv")) as f:
-        rows = [r for r in csv.reader(line for line in f if not line.startswith("#"))][1:]
-    return [(float(a), float(b), float(c)) for a, b, c in rows]
-
-
 def overrides(nx, ny, bending, every):
     per_node = P_MAX / ny  # P/ny on every tip node, minus half of it on the two corners
     return ["mesh.nx=%d" % nx, "mesh.ny=%d" % ny, "control.bending=%s" % bending,
@@ -42,37 +35,27 @@ def overrides(nx, ny, bending, every):
 
 
 def main():
-    args = fpmv.parse_args(__doc__)
-    cases = QUICK if args.quick else FULL
-    ref = reference()
-    plot = fpmv.plot_path(PROBLEM + ("-quick" if args.quick else "") + ".png")
+    args, cases, plot, _ = fpmv.start(PROBLEM, __doc__, QUICK, FULL)
+    ref = fpmv.read_reference_csv(os.path.join(HERE, "reference.csv"))
     rows, runs = [], []
     for nx, ny, bending, every in cases:
         mesh = "%dx%d right, %s" % (nx, ny, bending)
         out = os.path.join(args.out, "%s_%dx%d" % (bending, nx, ny))
-        try:
-            res, wall = fpmv.run(args.fpmshell, os.path.join(HERE, "model.yaml"), out,
-                                 overrides(nx, ny, bending, every), threads=1)
-        except RuntimeError as e:
-            print(e)
-            rows.append(fpmv.row(PROBLEM, "fpmshell run", 0.0, 1.0, 0.0, mesh=mesh, relative=False,
-                                 note="fpmshell failed: see %s/log.txt" % out))
+        got = fpmv.run_or_failure_row(args, os.path.join(HERE, "model.yaml"), out,
+                                      overrides(nx, ny, bending, every), PROBLEM, mesh, rows)
+        if got is None:
             continue
+        res, wall = got
         h = res["history"]
         runs.append((mesh, h))
-        n_levels = len(h["time"]) - 1
-        n_conv = int(sum(h["converged"][1:]))
-        rows.append(fpmv.row(PROBLEM, "converged load levels", n_levels, n_conv, 0.0, mesh=mesh,
-                             wall=wall, plot=plot, relative=False,
-                             note="levels whose relaxation met control.tolerance"))
+        rows.append(fpmv.load_levels_row(PROBLEM, h, mesh, wall, plot))
         for t, mu_ref, w_ref in ref:
             if t == 0:
                 continue
-            k = [i for i, tt in enumerate(h["time"]) if abs(tt - t) < 1e-9]
-            if not k:
+            level = fpmv.load_level(h, t)
+            if level is None:
                 continue
-            i = k[0]
-            flag = "" if h["converged"][i] else " (level NOT converged)"
+            i, flag = level
             for name, val, r in (("-u_tip", -h["tip_u"][i], mu_ref), ("w_tip", h["tip_w"][i], w_ref)):
                 rows.append(fpmv.row(
                     PROBLEM, "%s at P/Pmax = %.2f" % (name, t), r, val, TOL + TABLE_HALF_UNIT / r,
@@ -94,12 +77,9 @@ def draw(path, ref, runs):
         ax.plot(h["tip_w"], lev, "--", color=c, marker=".")
     ax.set_xlabel("tip displacement: -u_tip (solid), w_tip (dashed)")
     ax.set_ylabel("P / P_max  (P_max = 4)")
-    ax.set_title("Cantilever under end shear (L = 10, h = 0.1)")
     ax.grid(True, alpha=0.3)
     ax.legend(fontsize=8, loc="lower right")
-    fig.tight_layout()
-    fig.savefig(path, dpi=120)
-    plt.close(fig)
+    fpmv.save_figure(fig, path, "Cantilever under end shear (L = 10, h = 0.1)", dpi=120)
 
 
 if __name__ == "__main__":

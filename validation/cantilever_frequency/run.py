@@ -9,7 +9,6 @@ import math
 import os
 import sys
 
-import numpy as np
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "..", "tools"))
@@ -34,56 +33,27 @@ MESHES_QUICK = [(20, 1)]
 TOL = 0.02
 
 
-def fit_period(t, w, guess):
-    """Period of the dominant harmonic of w(t): least-squares fit of C + a cos(wt) + b sin(wt),
-    golden-section search of omega within +-30 % of 2 pi / guess."""
-    t = np.asarray(t)
-    w = np.asarray(w)
-
-    def residual(om):
-        m = np.column_stack([np.ones_like(t), np.cos(om * t), np.sin(om * t)])
-        c, *_ = np.linalg.lstsq(m, w, rcond=None)
-        return float(np.sum((m @ c - w) ** 2))
-
-    om0 = 2 * math.pi / guess
-    grid = np.linspace(0.7 * om0, 1.3 * om0, 241)
-    res = [residual(o) for o in grid]
-    k = int(np.argmin(res))
-    lo, hi = grid[max(k - 1, 0)], grid[min(k + 1, len(grid) - 1)]
-    g = (math.sqrt(5) - 1) / 2
-    for _ in range(80):
-        x1, x2 = hi - g * (hi - lo), lo + g * (hi - lo)
-        if residual(x1) < residual(x2):
-            hi = x2
-        else:
-            lo = x1
-    return float(2 * math.pi / (0.5 * (lo + hi)))
-
-
 def main():
-    args = fpmv.parse_args(__doc__)
-    meshes = MESHES_QUICK if args.quick else MESHES_FULL
+    args, meshes, plot, plot_name = fpmv.start(PROBLEM, __doc__, MESHES_QUICK, MESHES_FULL)
     model = os.path.join(HERE, "model.yaml")
-    # the quick variant (make test) draws its own file so that it keeps the full one
-    plot = fpmv.plot_path(PROBLEM + ("-quick" if args.quick else "") + ".png")
-    plot_name = os.path.basename(plot)
     rows, curves, periods = [], {}, {}
     for kernel in KERNELS:
-        for nx, ny in meshes:
+        def solve(m):
+            nx, ny = m
             out = os.path.join(args.out, "%s-%dx%d" % (kernel, nx, ny))
             res, wall = fpmv.run(args.fpmshell, model, out,
                                  ["mesh.nx=%d" % nx, "mesh.ny=%d" % ny,
                                   "loads.0.value=[0,0,%.12g]" % (-1.0 / (ny + 1)),
                                   "control.bending=" + kernel], threads=1)
             t, w = res["history"]["time"], res["history"]["w_tip"]
-            period = fit_period(t, w, T_REF)
+            period = fpmv.fit_period(t, w, T_REF)
             curves[(kernel, nx, ny)] = (t, w)
             periods[(kernel, nx, ny)] = period
-            tol = TOL if (nx, ny) == meshes[-1] else None
-            rows.append(fpmv.row(PROBLEM, "first period %s" % kernel, T_REF * 1e3, period * 1e3,
-                                 tol, mesh="%dx%d (element L/%d)" % (nx, ny, nx), wall=wall,
-                                 plot=plot_name, unit="ms",
-                                 note="omega_1 = (1.8751/L)^2 sqrt(EI/rho A), nu = 0"))
+            return (period * 1e3, wall, "%dx%d (element L/%d)" % (nx, ny, nx),
+                    "omega_1 = (1.8751/L)^2 sqrt(EI/rho A), nu = 0", True)
+
+        rows += fpmv.mesh_study(PROBLEM, "first period %s" % kernel, T_REF * 1e3, meshes, solve,
+                                TOL, plot=plot_name, unit="ms")[0]
     draw(plot, curves, periods)
     return fpmv.finish(args.out, rows)
 
@@ -100,11 +70,8 @@ def draw(path, curves, periods):
                    label="reference period %.3f ms" % (T_REF * 1e3) if k == 1 else None)
     ax.set_xlabel("time [ms]")
     ax.set_ylabel("tip deflection [$\\mu$m]")
-    ax.set_title("Cantilever strip, step tip force: first bending period")
     ax.legend(fontsize=7, loc="upper center", bbox_to_anchor=(0.5, -0.14), ncol=2)
-    fig.tight_layout()
-    fig.savefig(path, dpi=110)
-    plt.close(fig)
+    fpmv.save_figure(fig, path, "Cantilever strip, step tip force: first bending period")
 
 
 if __name__ == "__main__":

@@ -6,7 +6,6 @@ solution u_tip = L - sin(kL)/k, w_tip = (1 - cos kL)/k, k = M/EI: at every compu
 distance between the computed and exact tip positions, in units of L, and at M_max the closure
 of the circle (tip back at the root). Protocol: validation/README.md.
 """
-import csv
 import math
 import os
 import sys
@@ -34,12 +33,6 @@ def exact(t):
     return -(L - math.sin(k * L) / k), (1.0 - math.cos(k * L)) / k
 
 
-def reference():
-    with open(os.path.join(HERE, "reference.csv")) as f:
-        rows = [r for r in csv.reader(line for line in f if not line.startswith("#"))][1:]
-    return [[float(x) for x in r] for r in rows]
-
-
 def overrides(nx, ny, bending, every):
     per_node = M_MAX / ny  # M/ny on every tip node, minus half of it on the two corners
     return ["mesh.nx=%d" % nx, "mesh.ny=%d" % ny, "control.bending=%s" % bending,
@@ -50,30 +43,22 @@ def overrides(nx, ny, bending, every):
 
 
 def main():
-    args = fpmv.parse_args(__doc__)
-    cases = QUICK if args.quick else FULL
-    plot = fpmv.plot_path(PROBLEM + ("-quick" if args.quick else "") + ".png")
+    args, cases, plot, _ = fpmv.start(PROBLEM, __doc__, QUICK, FULL)
     rows, runs = [], []
     for nx, ny, bending, every in cases:
         mesh = "%dx%d right, %s" % (nx, ny, bending)
         out = os.path.join(args.out, "%s_%dx%d" % (bending, nx, ny))
-        try:
-            res, wall = fpmv.run(args.fpmshell, os.path.join(HERE, "model.yaml"), out,
-                                 overrides(nx, ny, bending, every), threads=1)
-        except RuntimeError as e:
-            print(e)
-            rows.append(fpmv.row(PROBLEM, "fpmshell run", 0.0, 1.0, 0.0, mesh=mesh, relative=False,
-                                 note="fpmshell failed: see %s/log.txt" % out))
+        got = fpmv.run_or_failure_row(args, os.path.join(HERE, "model.yaml"), out,
+                                      overrides(nx, ny, bending, every), PROBLEM, mesh, rows)
+        if got is None:
             continue
+        res, wall = got
         h = res["history"]
         runs.append((mesh, h))
         # Both kernels carry the 1 % criterion (README).
         tol = TOL
         bciz_note = ""
-        n_levels = len(h["time"]) - 1
-        rows.append(fpmv.row(PROBLEM, "converged load levels", n_levels, int(sum(h["converged"][1:])),
-                             0.0, mesh=mesh, wall=wall, plot=plot, relative=False,
-                             note="levels whose relaxation met control.tolerance"))
+        rows.append(fpmv.load_levels_row(PROBLEM, h, mesh, wall, plot))
         for i, t in enumerate(h["time"]):
             if i == 0:
                 continue
@@ -103,7 +88,7 @@ def draw(path, runs):
     ex = [exact(t) for t in ts]
     ax.plot([-e[0] for e in ex], ts, "k-", lw=0.8, label="exact -u_tip")
     ax.plot([e[1] for e in ex], ts, "k:", lw=0.8, label="exact w_tip")
-    ref = reference()
+    ref = fpmv.read_reference_csv(os.path.join(HERE, "reference.csv"))
     ax.plot([r[1] for r in ref], [r[0] for r in ref], "ko", mfc="none", ms=5,
             label="Sze et al. 2004 (S4R 16x1)")
     ax.plot([r[3] for r in ref], [r[0] for r in ref], "ko", mfc="none", ms=5)

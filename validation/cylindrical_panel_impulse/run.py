@@ -44,30 +44,16 @@ COARSE_W = (1.03, 1.30)  # in; tolerance: coarse 8x32 S4R value of benchmarks.md
 # finest lies within about a third of the band's half width (6 %) of its limit: the band test
 # tests the converged answer, not a mesh crossing the band on its way elsewhere.
 TOL_CONVERGED = 0.02
-TOL_ENERGY = 0.01        # energy balance error < 1 % (issue 3), as every dynamic problem
+TOL_ENERGY = 0.01        # energy balance error < 1 %, as every dynamic problem (benchmarks.md)
 
 EXPERIMENT = (0.4, 1.25)  # (ms, in): maximum crown deflection at y = 6.28 in, "about 0.4 ms"
 CONVERGED_SHELLS = (1.18, 1.24)   # published converged shell computations (drawn)
 
 
-def vertex(tm, w, i):
-    """Extremum through the samples i-1, i, i+1 (parabola vertex), as in ../spherical_cap_*."""
-    if i <= 0 or i >= len(w) - 1:
-        return w[i], tm[i]
-    t0, t1, t2 = tm[i - 1], tm[i], tm[i + 1]
-    w0, w1, w2 = w[i - 1], w[i], w[i + 1]
-    d01, d12 = (w1 - w0) / (t1 - t0), (w2 - w1) / (t2 - t1)
-    a = (d12 - d01) / (t2 - t0)
-    if a == 0:
-        return w1, t1
-    tv = min(max(0.5 * (t0 + t1) - d01 / (2 * a), t0), t2)
-    return w0 + d01 * (tv - t0) + a * (tv - t0) * (tv - t1), tv
-
-
 def peak(tm, w):
     """Largest inward deflection over the whole run: (value, time ms, on the last sample)."""
     i = max(range(len(w)), key=lambda k: w[k])
-    v, t = vertex(tm, w, i)
+    v, t = fpmv.parabola_vertex(tm, w, i)
     return v, t, i == len(w) - 1
 
 
@@ -97,14 +83,6 @@ def band_row(quantity, band, value, mesh, wall, plot, tested, unit, note):
     return r
 
 
-def run_one(args, model, out, overrides, particles):
-    if args.reuse:
-        got = fpmv.reusable(out, END_TIME, particles=particles)
-        if got:
-            return got
-    return fpmv.run(args.fpmshell, model, out, overrides, threads=1)
-
-
 def main():
     args = fpmv.parse_args(__doc__)
     meshes = MESHES_QUICK if args.quick else MESHES_FULL
@@ -118,9 +96,10 @@ def main():
     for na, nl in meshes:
         out = os.path.join(args.out, "half-%dx%d" % (na, nl))
         particles = (na + 1) * (nl + 1)
-        res, wall = run_one(args, model, out, ["mesh.divisions_arc=%d" % na,
-                                               "mesh.divisions_length=%d" % nl,
-                                               "control.end_time=%g" % END_TIME], particles)
+        res, wall = fpmv.run_or_reuse(args, model, out, ["mesh.divisions_arc=%d" % na,
+                                                         "mesh.divisions_length=%d" % nl,
+                                                         "control.end_time=%g" % END_TIME],
+                                      END_TIME, particles)
         h, s, e = res["history"], res["summary"], res["energy"]
         tm = [x * 1e3 for x in h["time"]]
         w628 = [-x for x in h["w_628"]]
@@ -248,12 +227,10 @@ def draw(path, runs):
     ax.set_ylim(bottom=0)
     ax.set_xlabel("time [ms]")
     ax.set_ylabel("inward crown deflection $-u_z$ [in]")
-    ax.set_title("Impulsively loaded cylindrical panel (Balmer & Witmer), crown histories")
     ax.legend(fontsize=7, loc="lower right", ncol=2)
     ax.grid(alpha=0.3)
-    fig.tight_layout()
-    fig.savefig(path, dpi=110)
-    plt.close(fig)
+    fpmv.save_figure(fig, path,
+                     "Impulsively loaded cylindrical panel (Balmer & Witmer), crown histories")
 
 
 def draw_profile(path, runs):
@@ -268,12 +245,10 @@ def draw_profile(path, runs):
     ax.set_ylim(bottom=0)
     ax.set_xlabel("y along the crown [in]")
     ax.set_ylabel("inward crown deflection at 1 ms [in]")
-    ax.set_title("Cylindrical panel: crown profile at 1 ms (no published values to compare)")
     ax.legend(fontsize=8, loc="upper right")
     ax.grid(alpha=0.3)
-    fig.tight_layout()
-    fig.savefig(path, dpi=110)
-    plt.close(fig)
+    fpmv.save_figure(fig, path,
+                     "Cylindrical panel: crown profile at 1 ms (no published values to compare)")
 
 
 if __name__ == "__main__":

@@ -4,7 +4,6 @@
 1/8 model (model.yaml) on 8x8 ... 32x32 meshes with the BCIZ and DKT bending kernels, observed
 order of convergence. See README.md. Protocol: validation/README.md.
 """
-import math
 import os
 import sys
 
@@ -50,40 +49,25 @@ def observed_order(w1, w2, w3, r1, r2):
 
 
 def main():
-    args = fpmv.parse_args(__doc__)
-    meshes = MESHES_QUICK if args.quick else MESHES_FULL
+    args, meshes, plot, plot_name = fpmv.start(PROBLEM, __doc__, MESHES_QUICK, MESHES_FULL)
     model = os.path.join(HERE, "model.yaml")
-    # the quick variant (make test) draws its own file so that it keeps the full one
-    plot = fpmv.plot_path(PROBLEM + ("-quick" if args.quick else "") + ".png")
-    plot_name = os.path.basename(plot)
-    rows, results = [], {}
-    for kernel in KERNELS:
-        for n in meshes:
-            out = os.path.join(args.out, "%s-%d" % (kernel, n))
-            res, wall = fpmv.run(args.fpmshell, model, out,
-                                 ["mesh.divisions_arc=%d" % n, "mesh.divisions_length=%d" % n,
-                                  "control.bending=" + kernel], threads=1)
-            h = res["history"]
-            w = -h["w_load"][-1]
-            conv = bool(h["converged"][-1])
-            results[(kernel, n)] = w
-            tol = (TOL_QUICK if args.quick else TOL_FINE) if n == meshes[-1] else None
-            r = fpmv.row(PROBLEM, "w under the load %s" % kernel, W_REF, w, tol,
-                         mesh="1/8 %dx%d" % (n, n), wall=wall, plot=plot_name,
-                         note="Belytschko et al. 1985: 1.8248e-5"
-                              + ("" if conv else "; relaxation NOT converged"))
-            if not conv:
-                r["pass"] = False
-            rows.append(r)
-        if len(meshes) >= 3:
-            m = meshes[-3:]
-            p = observed_order(*[results[(kernel, n)] for n in m], m[1] / m[0], m[2] / m[1])
-            if math.isnan(p):     # not monotone: no order (and no NaN in rows.json)
-                rows[-1]["note"] += "; %d/%d/%d not monotone, no observed order" % tuple(m)
-            else:
-                rows.append(fpmv.row(PROBLEM, "observed order %s" % kernel, 2.0, p, None,
-                                     mesh="%d/%d/%d" % tuple(m), plot=plot_name,
-                                     note="from the three finest meshes; report only"))
+
+    def solve(kernel, n):
+        out = os.path.join(args.out, "%s-%d" % (kernel, n))
+        res, wall = fpmv.run(args.fpmshell, model, out,
+                             ["mesh.divisions_arc=%d" % n, "mesh.divisions_length=%d" % n,
+                              "control.bending=" + kernel], threads=1)
+        h = res["history"]
+        return (-h["w_load"][-1], wall, "1/8 %dx%d" % (n, n),
+                "Belytschko et al. 1985: 1.8248e-5", bool(h["converged"][-1]))
+
+    m = meshes[-3:]  # the observed order: refinement ratios of the three finest meshes
+    rows, results = fpmv.kernel_studies(
+        PROBLEM, "w under the load", W_REF, KERNELS, meshes, solve,
+        TOL_QUICK if args.quick else TOL_FINE, plot_name,
+        "from the three finest meshes; report only",
+        not_monotone="; %d/%d/%d not monotone, no observed order" % tuple(m) if len(m) == 3 else "",
+        order=lambda w1, w2, w3: observed_order(w1, w2, w3, m[1] / m[0], m[2] / m[1]))
     draw(plot, meshes, results)
     return fpmv.finish(args.out, rows)
 
@@ -99,10 +83,7 @@ def draw(path, meshes, results):
     ax.set_xlabel("divisions per side of the 1/8 model")
     ax.set_ylabel("w under the load / reference")
     ax.legend(fontsize=8)
-    ax.set_title("Pinched cylinder with rigid diaphragms (1/8 model)")
-    fig.tight_layout()
-    fig.savefig(path, dpi=110)
-    plt.close(fig)
+    fpmv.save_figure(fig, path, "Pinched cylinder with rigid diaphragms (1/8 model)")
 
 
 if __name__ == "__main__":

@@ -66,15 +66,12 @@ def write_inp(path, n):
 
 
 def main():
-    args = fpmv.parse_args(__doc__)
-    meshes = MESHES_QUICK if args.quick else MESHES_FULL
+    args, meshes, plot, plot_name = fpmv.start(PROBLEM, __doc__, MESHES_QUICK, MESHES_FULL)
     model = os.path.join(HERE, "model.yaml")
-    plot = fpmv.plot_path(PROBLEM + ("-quick" if args.quick else "") + ".png")
-    plot_name = os.path.basename(plot)
     os.makedirs(args.out, exist_ok=True)
     rows, results = [], {}
     for kernel in KERNELS:
-        for n in meshes:
+        def solve(n):
             out = os.path.join(args.out, "%s-%d" % (kernel, n))
             mesh = os.path.abspath(os.path.join(args.out, "mesh_%dx%d.inp" % (n, n)))
             write_inp(mesh, n)
@@ -83,29 +80,21 @@ def main():
             h = res["history"]
             scale = P / h["fx"][-1]                    # linear: scale to the full load
             u_a, u_b = h["u_a"][-1] * scale, -h["u_b"][-1] * scale
-            u = 0.5 * (u_a + u_b)
-            conv = bool(h["converged"][-1])
-            results[(kernel, n)] = u
-            tol = TOL_BAND if n == 16 else None
-            r = fpmv.row(PROBLEM, "radial u under the load %s" % kernel, U_REF, u, tol,
-                         mesh="quarter %dx%d" % (n, n), wall=wall, plot=plot_name,
-                         relative=False,
-                         note="MacNeal-Harder 0.093 (0.094 originally); band 0.091-0.095 on "
-                              "16x16; u_A %.5g, u_B %.5g; load x%.3g, scaled"
-                              % (u_a, u_b, h["fx"][-1] / P)
-                              + ("" if conv else "; relaxation NOT converged"))
-            if not conv:
-                r["pass"] = False
-            rows.append(r)
-        if len(meshes) >= 3:
-            p = fpmv.observed_order(*[results[(kernel, n)] for n in meshes[-3:]])
-            if math.isnan(p):     # not monotone: no order (and no NaN in rows.json)
-                rows[-1]["note"] += "; %d/%d/%d not monotone, no observed order" % tuple(
-                    meshes[-3:])
-            else:
-                rows.append(fpmv.row(PROBLEM, "observed order %s" % kernel, 2.0, p, None,
-                                     mesh="%d/%d/%d" % tuple(meshes[-3:]), plot=plot_name,
-                                     note="log2((u1-u2)/(u2-u3)); report only"))
+            return (0.5 * (u_a + u_b), wall, "quarter %dx%d" % (n, n),
+                    "MacNeal-Harder 0.093 (0.094 originally); band 0.091-0.095 on "
+                    "16x16; u_A %.5g, u_B %.5g; load x%.3g, scaled" % (u_a, u_b, h["fx"][-1] / P),
+                    bool(h["converged"][-1]))
+
+        study, values = fpmv.mesh_study(PROBLEM, "radial u under the load %s" % kernel, U_REF,
+                                        meshes, solve, TOL_BAND, plot=plot_name, relative=False,
+                                        tested=lambda n: n == 16)
+        rows += study
+        results.update({(kernel, n): u for n, u in values.items()})
+        fpmv.add_observed_order(
+            rows, PROBLEM, "observed order %s" % kernel, meshes, values, plot_name,
+            "log2((u1-u2)/(u2-u3)); report only",
+            not_monotone="; %d/%d/%d not monotone, no observed order" % tuple(meshes[-3:])
+            if len(meshes) >= 3 else "")
         if 16 in meshes and 32 in meshes:
             u16, u32 = results[(kernel, 16)], results[(kernel, 32)]
             rows.append(fpmv.row(PROBLEM, "16x16 against 32x32 %s" % kernel, u32, u16, TOL_CONV,

@@ -9,7 +9,6 @@ import math
 import os
 import sys
 
-import numpy as np
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "..", "tools"))
@@ -34,63 +33,30 @@ MESHES_QUICK = [10]
 TOL = 0.02
 
 
-def fit_period(t, w, guess):
-    """Period of the dominant harmonic of w(t): least-squares fit of C + a cos(wt) + b sin(wt),
-    golden-section search of omega within +-30 % of 2 pi / guess."""
-    t = np.asarray(t)
-    w = np.asarray(w)
-
-    def residual(om):
-        m = np.column_stack([np.ones_like(t), np.cos(om * t), np.sin(om * t)])
-        c, *_ = np.linalg.lstsq(m, w, rcond=None)
-        return float(np.sum((m @ c - w) ** 2))
-
-    om0 = 2 * math.pi / guess
-    grid = np.linspace(0.7 * om0, 1.3 * om0, 241)
-    res = [residual(o) for o in grid]
-    k = int(np.argmin(res))
-    lo, hi = grid[max(k - 1, 0)], grid[min(k + 1, len(grid) - 1)]
-    g = (math.sqrt(5) - 1) / 2
-    for _ in range(80):
-        x1, x2 = hi - g * (hi - lo), lo + g * (hi - lo)
-        if residual(x1) < residual(x2):
-            hi = x2
-        else:
-            lo = x1
-    return float(2 * math.pi / (0.5 * (lo + hi)))
-
-
 def main():
-    args = fpmv.parse_args(__doc__)
-    meshes = MESHES_QUICK if args.quick else MESHES_FULL
+    args, meshes, plot, plot_name = fpmv.start(PROBLEM, __doc__, MESHES_QUICK, MESHES_FULL)
     model = os.path.join(HERE, "model.yaml")
-    # the quick variant (make test) draws its own file so that it keeps the full one
-    plot = fpmv.plot_path(PROBLEM + ("-quick" if args.quick else "") + ".png")
-    plot_name = os.path.basename(plot)
     rows, curves, periods = [], {}, {}
     for kernel in KERNELS:
-        for n in meshes:
+        def solve(n):
             ny = n * 6 // 10
             out = os.path.join(args.out, "%s-%d" % (kernel, n))
             res, wall = fpmv.run(args.fpmshell, model, out,
                                  ["mesh.nx=%d" % n, "mesh.ny=%d" % ny, "control.bending=" + kernel],
                                  threads=1)
             t, w = res["history"]["time"], res["history"]["w_centre"]
-            period = fit_period(t, w, T_REF)
+            period = fpmv.fit_period(t, w, T_REF)
             curves[(kernel, n)] = (t, w)
             periods[(kernel, n)] = period
-            tol = TOL if n == meshes[-1] else None
-            rows.append(fpmv.row(PROBLEM, "first-mode period %s" % kernel, T_REF * 1e3,
-                                 period * 1e3, tol, mesh="quarter %dx%d (h=a/%d)" % (n, ny, 2 * n),
-                                 wall=wall, plot=plot_name, unit="ms",
-                                 note="2 pi / omega_11, omega_11 = pi^2 (1/a^2 + 1/b^2) sqrt(D/rho h)"))
-        if len(meshes) == 3:
-            t1, t2, t3 = [periods[(kernel, n)] for n in meshes]
-            if (t1 - t2) * (t2 - t3) > 0:
-                rows.append(fpmv.row(PROBLEM, "observed order %s" % kernel, 2.0,
-                                     math.log((t1 - t2) / (t2 - t3), 2), None,
-                                     mesh="%d/%d/%d" % tuple(meshes), plot=plot_name,
-                                     note="log2((T1-T2)/(T2-T3)); report only"))
+            return (period * 1e3, wall, "quarter %dx%d (h=a/%d)" % (n, ny, 2 * n),
+                    "2 pi / omega_11, omega_11 = pi^2 (1/a^2 + 1/b^2) sqrt(D/rho h)", True)
+
+        study, values = fpmv.mesh_study(PROBLEM, "first-mode period %s" % kernel, T_REF * 1e3,
+                                        meshes, solve, TOL, plot=plot_name, unit="ms")
+        rows += study
+        fpmv.add_observed_order(rows, PROBLEM, "observed order %s" % kernel, meshes,
+                                {n: periods[(kernel, n)] for n in meshes}, plot_name,
+                                "log2((T1-T2)/(T2-T3)); report only", not_monotone="")
     draw(plot, meshes, curves, periods)
     return fpmv.finish(args.out, rows)
 
@@ -107,11 +73,9 @@ def draw(path, meshes, curves, periods):
                    label="reference period %.4f ms" % (T_REF * 1e3) if k == 1 else None)
     ax.set_xlabel("time [ms]")
     ax.set_ylabel("centre deflection [$\\mu$m]")
-    ax.set_title("Simply supported 1 x 0.6 m plate, step pressure: first-mode period")
     ax.legend(fontsize=7, loc="upper center", bbox_to_anchor=(0.5, -0.14), ncol=2)
-    fig.tight_layout()
-    fig.savefig(path, dpi=110)
-    plt.close(fig)
+    fpmv.save_figure(fig, path,
+                     "Simply supported 1 x 0.6 m plate, step pressure: first-mode period")
 
 
 if __name__ == "__main__":

@@ -49,68 +49,32 @@ def centre_w(res):
 
 
 def main():
-    args = fpmv.parse_args(__doc__)
-    meshes = MESHES_QUICK if args.quick else MESHES_FULL
+    args, meshes, plot, plot_name = fpmv.start(PROBLEM, __doc__, MESHES_QUICK, MESHES_FULL)
     model = os.path.join(HERE, "model.yaml")
-    # the quick variant (make test) draws its own file so that it keeps the full one
-    plot = fpmv.plot_path(PROBLEM + ("-quick" if args.quick else "") + ".png")
-    plot_name = os.path.basename(plot)
-    rows, results = [], {}
-    for kernel in KERNELS:
-        for n in meshes:
-            out = os.path.join(args.out, "%s-%d" % (kernel, n))
-            res, wall = fpmv.run(args.fpmshell, model, out,
-                                 ["mesh.nx=%d" % n, "mesh.ny=%d" % n, "control.bending=" + kernel],
-                                 threads=1)
-            w, conv = centre_w(res)
-            results[(kernel, n)] = w
-            finest = n == meshes[-1]
-            tol = (TOL_QUICK if args.quick else TOL_FINE) if finest else None
-            r = fpmv.row(PROBLEM, "w_centre %s" % kernel, W_REF, w, tol,
-                         mesh="quarter %dx%d (h=a/%d)" % (n, n, 2 * n), wall=wall, plot=plot_name,
-                         note="%.8f q a^4/D (Navier)" % COEF + ("" if conv else "; relaxation NOT converged"),
-                         unit="m")
-            if not conv:
-                r["pass"] = False
-            rows.append(r)
-        if len(meshes) == 3:
-            p = fpmv.observed_order(*[results[(kernel, n)] for n in meshes])
-            if math.isnan(p):     # not monotone: no order (and no NaN in rows.json)
-                rows[-1]["note"] += "; meshes not monotone, no observed order"
-            else:
-                rows.append(fpmv.row(PROBLEM, "observed order %s" % kernel, 2.0, p, None,
-                                     mesh="%d/%d/%d" % tuple(meshes), plot=plot_name,
-                                     note="log2((w1-w2)/(w2-w3)); report only (expected 2)"))
 
+    def solve(kernel, n):
+        out = os.path.join(args.out, "%s-%d" % (kernel, n))
+        res, wall = fpmv.run(args.fpmshell, model, out,
+                             ["mesh.nx=%d" % n, "mesh.ny=%d" % n, "control.bending=" + kernel],
+                             threads=1)
+        w, conv = centre_w(res)
+        return (w, wall, "quarter %dx%d (h=a/%d)" % (n, n, 2 * n),
+                "%.8f q a^4/D (Navier)" % COEF, conv)
+
+    rows, results = fpmv.kernel_studies(
+        PROBLEM, "w_centre", W_REF, KERNELS, meshes, solve, TOL_QUICK if args.quick else TOL_FINE,
+        plot_name, "log2((w1-w2)/(w2-w3)); report only (expected 2)", unit="m")
     draw(plot, meshes, results)
     return fpmv.finish(args.out, rows)
 
 
 def draw(path, meshes, results):
-    plt = fpmv.pyplot()
-    fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(10, 4))
-    hs = [A / (2 * n) for n in meshes]
-    for kernel, mark in zip(KERNELS, ["o-", "s--"]):
-        ws = [results[(kernel, n)] for n in meshes]
-        ax1.plot(hs, [w * 1e6 for w in ws], mark, label="fpmshell " + kernel)
-        ax2.loglog(hs, [abs(w - W_REF) / W_REF for w in ws], mark, label="fpmshell " + kernel)
-    ax1.axhline(W_REF * 1e6, color="k", lw=1, label="Navier %.6f qa$^4$/D" % COEF)
-    ax1.axhspan(W_REF * 1e6 * (1 - TOL_FINE), W_REF * 1e6 * (1 + TOL_FINE), color="0.85",
-                label="$\\pm$2 %")
-    ax1.set_xlabel("element size h / a")
-    ax1.set_ylabel("centre deflection w [$\\mu$m]")
-    ax1.set_xscale("log")
-    ax1.legend(fontsize=8)
-    if len(hs) > 1:
-        e0 = abs(results[("bciz", meshes[0])] - W_REF) / W_REF
-        ax2.loglog(hs, [e0 * (h / hs[0])**2 for h in hs], "k:", label="slope 2")
-    ax2.set_xlabel("element size h / a")
-    ax2.set_ylabel("relative error")
-    ax2.legend(fontsize=8)
-    fig.suptitle("Simply supported square plate, uniform pressure (quarter model)")
-    fig.tight_layout()
-    fig.savefig(path, dpi=110)
-    plt.close(fig)
+    fpmv.draw_plate_deflection_study(
+        path, [A / (2 * n) for n in meshes],
+        [("fpmshell " + k, mark, [results[(k, n)] for n in meshes])
+         for k, mark in zip(KERNELS, ["o-", "s--"])],
+        W_REF, "Navier %.6f qa$^4$/D" % COEF, TOL_FINE,
+        "Simply supported square plate, uniform pressure (quarter model)")
 
 
 if __name__ == "__main__":

@@ -43,39 +43,23 @@ def force_overrides(n):
 
 
 def main():
-    args = fpmv.parse_args(__doc__)
-    meshes = MESHES_QUICK if args.quick else MESHES_FULL
+    args, meshes, plot, plot_name = fpmv.start(PROBLEM, __doc__, MESHES_QUICK, MESHES_FULL)
     model = os.path.join(HERE, "model.yaml")
-    # the quick variant (make test) draws its own file so that it keeps the full one
-    plot = fpmv.plot_path(PROBLEM + ("-quick" if args.quick else "") + ".png")
-    plot_name = os.path.basename(plot)
-    rows, results = [], {}
-    for kernel in KERNELS:
-        for n in meshes:
-            out = os.path.join(args.out, "%s-%d" % (kernel, n))
-            res, wall = fpmv.run(args.fpmshell, model, out,
-                                 force_overrides(n) + ["control.bending=" + kernel], threads=1)
-            h = res["history"]
-            applied = -h["fz"][-1]
-            w = -h["w_a"][-1] * TOTAL / applied        # linear: scale to the full self-weight
-            conv = bool(h["converged"][-1])
-            results[(kernel, n)] = w
-            tol = (TOL_QUICK if args.quick else TOL_FINE) if n == meshes[-1] else None
-            r = fpmv.row(PROBLEM, "w free edge mid-span %s" % kernel, W_REF, w, tol,
-                         mesh="quarter %dx%d" % (n, n), wall=wall, plot=plot_name,
-                         note="MacNeal-Harder 0.3024; load x%.3g, scaled" % (applied / TOTAL)
-                              + ("" if conv else "; relaxation NOT converged"))
-            if not conv:
-                r["pass"] = False
-            rows.append(r)
-        if len(meshes) >= 3:
-            p = fpmv.observed_order(*[results[(kernel, n)] for n in meshes[-3:]])
-            if math.isnan(p):     # not monotone: no order (and no NaN in rows.json)
-                rows[-1]["note"] += "; meshes not monotone, no observed order"
-            else:
-                rows.append(fpmv.row(PROBLEM, "observed order %s" % kernel, 2.0, p, None,
-                                     mesh="%d/%d/%d" % tuple(meshes[-3:]), plot=plot_name,
-                                     note="log2((w1-w2)/(w2-w3)); report only"))
+
+    def solve(kernel, n):
+        out = os.path.join(args.out, "%s-%d" % (kernel, n))
+        res, wall = fpmv.run(args.fpmshell, model, out,
+                             force_overrides(n) + ["control.bending=" + kernel], threads=1)
+        h = res["history"]
+        applied = -h["fz"][-1]
+        w = -h["w_a"][-1] * TOTAL / applied        # linear: scale to the full self-weight
+        return (w, wall, "quarter %dx%d" % (n, n),
+                "MacNeal-Harder 0.3024; load x%.3g, scaled" % (applied / TOTAL),
+                bool(h["converged"][-1]))
+
+    rows, results = fpmv.kernel_studies(
+        PROBLEM, "w free edge mid-span", W_REF, KERNELS, meshes, solve,
+        TOL_QUICK if args.quick else TOL_FINE, plot_name, "log2((w1-w2)/(w2-w3)); report only")
     draw(plot, meshes, results)
     return fpmv.finish(args.out, rows)
 
@@ -100,10 +84,7 @@ def draw(path, meshes, results):
     ax2.set_xlabel("divisions per side of the quarter")
     ax2.set_ylabel("relative error")
     ax2.legend(fontsize=8)
-    fig.suptitle("Scordelis-Lo roof (quarter model), linear response")
-    fig.tight_layout()
-    fig.savefig(path, dpi=110)
-    plt.close(fig)
+    fpmv.save_figure(fig, path, "Scordelis-Lo roof (quarter model), linear response")
 
 
 if __name__ == "__main__":

@@ -5,7 +5,6 @@ Runs fpmshell in relaxation mode along q/qmax = 0..1 and compares the lift of th
 and outer (B, r = 10) corner of the loaded slit edge with Sze's table at every computed level,
 plots the whole path and writes rows.json. Protocol: validation/README.md.
 """
-import csv
 import os
 import sys
 
@@ -35,12 +34,6 @@ FULL = [(4, 32, "dkt", "cst", 0.25, None, "CST, coarse mesh: reported, not teste
          "done-criterion of benchmarks.md: 2 % of Sze's table (smoothed membrane)")]
 
 
-def reference():
-    with open(os.path.join(HERE, "reference.csv")) as f:
-        rows = [r for r in csv.reader(line for line in f if not line.startswith("#"))][1:]
-    return [tuple(float(x) for x in r) for r in rows]
-
-
 def overrides(nr, na, bending, membrane, every):
     per_node = Q_MAX * WIDTH / nr  # q x tributary length; the corners get half
     return ["mesh.divisions_radial=%d" % nr, "mesh.divisions_angle=%d" % na,
@@ -52,36 +45,27 @@ def overrides(nr, na, bending, membrane, every):
 
 
 def main():
-    args = fpmv.parse_args(__doc__)
-    cases = QUICK if args.quick else FULL
-    ref = reference()
-    plot = fpmv.plot_path(PROBLEM + ("-quick" if args.quick else "") + ".png")
+    args, cases, plot, _ = fpmv.start(PROBLEM, __doc__, QUICK, FULL)
+    ref = fpmv.read_reference_csv(os.path.join(HERE, "reference.csv"))
     rows, runs = [], []
     for nr, na, bending, membrane, every, tol, why in cases:
         mesh = "%dx%d right, %s, %s membrane" % (nr, na, bending, membrane)
         out = os.path.join(args.out, "%s_%s_%dx%d" % (bending, membrane, nr, na))
-        try:
-            res, wall = fpmv.run(args.fpmshell, os.path.join(HERE, "model.yaml"), out,
-                                 overrides(nr, na, bending, membrane, every), threads=1)
-        except RuntimeError as e:
-            print(e)
-            rows.append(fpmv.row(PROBLEM, "fpmshell run", 0.0, 1.0, 0.0, mesh=mesh, relative=False,
-                                 note="fpmshell failed: see %s/log.txt" % out))
+        got = fpmv.run_or_failure_row(args, os.path.join(HERE, "model.yaml"), out,
+                                      overrides(nr, na, bending, membrane, every), PROBLEM, mesh, rows)
+        if got is None:
             continue
+        res, wall = got
         h = res["history"]
         runs.append((mesh, h))
-        n_levels = len(h["time"]) - 1
-        rows.append(fpmv.row(PROBLEM, "converged load levels", n_levels, int(sum(h["converged"][1:])),
-                             0.0, mesh=mesh, wall=wall, plot=plot,
-                             relative=False, note="levels whose relaxation met control.tolerance"))
+        rows.append(fpmv.load_levels_row(PROBLEM, h, mesh, wall, plot))
         for t, wa, wb in ref:
             if t == 0:
                 continue
-            k = [i for i, tt in enumerate(h["time"]) if abs(tt - t) < 1e-9]
-            if not k:
+            level = fpmv.load_level(h, t)
+            if level is None:
                 continue
-            i = k[0]
-            flag = "" if h["converged"][i] else " (level NOT converged)"
+            i, flag = level
             for name, val, r in (("w_A (r = 6)", h["w_a"][i], wa), ("w_B (r = 10)", h["w_b"][i], wb)):
                 rows.append(fpmv.row(PROBLEM, "%s at q/qmax = %.2f" % (name, t), r, val, tol,
                                      mesh=mesh, wall=wall, plot=plot, note=why + flag))
@@ -102,12 +86,9 @@ def draw(path, ref, runs):
         ax.plot(h["w_b"], q, "--", color=c, lw=0.7, marker="s", ms=5)
     ax.set_xlabel("lift of the loaded edge: w_A at r = 6 (solid), w_B at r = 10 (dashed)")
     ax.set_ylabel("line force q")
-    ax.set_title("Slit annular plate under a lifting line force")
     ax.grid(True, alpha=0.3)
     ax.legend(fontsize=8, loc="lower right")
-    fig.tight_layout()
-    fig.savefig(path, dpi=120)
-    plt.close(fig)
+    fpmv.save_figure(fig, path, "Slit annular plate under a lifting line force", dpi=120)
 
 
 if __name__ == "__main__":

@@ -58,24 +58,6 @@ def band_row(quantity, band, value, mesh, wall, plot, tested, allowance=0.0, uni
     return r
 
 
-def vertex(tm, w, i):
-    """Extremum through the samples i-1, i, i+1 (parabola vertex): the peak's value and time
-    independent of the output interval (2 us here, against a band edge 0.5 us away)."""
-    if i <= 0 or i >= len(w) - 1:
-        return w[i], tm[i]
-    t0, t1, t2 = tm[i - 1], tm[i], tm[i + 1]
-    w0, w1, w2 = w[i - 1], w[i], w[i + 1]
-    d01, d12 = (w1 - w0) / (t1 - t0), (w2 - w1) / (t2 - t1)
-    a = (d12 - d01) / (t2 - t0)
-    if a == 0:
-        return w1, t1
-    tv = 0.5 * (t0 + t1) - d01 / (2 * a)
-    tv = min(max(tv, t0), t2)
-    # Newton form: w(t) = w0 + d01 (t - t0) + a (t - t0)(t - t1)
-    wv = w0 + d01 * (tv - t0) + a * (tv - t0) * (tv - t1)
-    return wv, tv
-
-
 def features(t, w):
     """First large downward peak (minimum up to 0.5 ms), rebound (maximum after it, up to
     0.75 ms), next large trough (minimum after the rebound); times in ms, each extremum
@@ -83,24 +65,20 @@ def features(t, w):
     tm = [x * 1e3 for x in t]
     idx = [i for i, x in enumerate(tm) if x <= 0.5]
     i = min(idx, key=lambda k: w[k])
-    out = {"peak": vertex(tm, w, i)}
+    out = {"peak": fpmv.parabola_vertex(tm, w, i)}
     idx = [k for k, x in enumerate(tm) if tm[i] < x <= 0.75]
     if idx and tm[-1] >= 0.75:
         j = max(idx, key=lambda k: w[k])
-        out["rebound"] = vertex(tm, w, j)
+        out["rebound"] = fpmv.parabola_vertex(tm, w, j)
         idx = [k for k, x in enumerate(tm) if x > tm[j]]
         if idx and tm[-1] >= 0.95:
             k2 = min(idx, key=lambda k: w[k])
-            out["trough2"] = vertex(tm, w, k2)
+            out["trough2"] = fpmv.parabola_vertex(tm, w, k2)
     return out
 
 
 def main():
-    args = fpmv.parse_args(__doc__)
-    runs = RUNS_QUICK if args.quick else RUNS_FULL
-    # the quick variant (make test) draws its own file so that it keeps the full one
-    plot = fpmv.plot_path(PROBLEM + ("-quick" if args.quick else "") + ".png")
-    plot_name = os.path.basename(plot)
+    args, runs, plot, plot_name = fpmv.start(PROBLEM, __doc__, RUNS_QUICK, RUNS_FULL)
     rows, curves = [], {}
     for n, kernel, part in runs:
         model = os.path.join(HERE, MODEL_FILE[part])
@@ -150,12 +128,9 @@ def draw(path, curves):
     ax.axhline(0, color="k", lw=0.5)
     ax.set_xlabel("time [ms]")
     ax.set_ylabel("apex deflection $u_z$ [in]")
-    ax.set_title("Spherical cap, step pressure 600 psi, elastic")
     ax.legend(fontsize=8, loc="upper left")
     ax.grid(alpha=0.3)
-    fig.tight_layout()
-    fig.savefig(path, dpi=110)
-    plt.close(fig)
+    fpmv.save_figure(fig, path, "Spherical cap, step pressure 600 psi, elastic")
 
 
 if __name__ == "__main__":

@@ -29,7 +29,7 @@ PEAK_T = (0.43, 0.52)          # tolerance: band of benchmarks.md 5.1, Abaqus BG
 REBOUND_W = (-0.028, -0.010)   # tolerance: band of benchmarks.md 5.1, Abaqus BG 2.3.14 fig.
 REBOUND_T = (0.62, 0.70)       # tolerance: band of benchmarks.md 5.1, Abaqus BG 2.3.14 fig.
 NO_POSITIVE_UNTIL = 1.0        # ms; band of benchmarks.md 5.1 (Abaqus BG 2.3.14): max apex w < 0
-TOL_ENERGY = 0.01              # energy balance error < 1 % (issue 3), as every dynamic problem
+TOL_ENERGY = 0.01              # energy balance error < 1 %, as every dynamic problem (benchmarks.md)
 
 # ---- Reported: the reference POINTS read from the same figure (benchmarks.md 5.1).
 PLATEAU_W = (-0.061, -0.057)   # first plateau, in ...
@@ -58,23 +58,6 @@ REBOUND_END = 0.80       # rebound: the maximum from the first major peak to 0.8
 SET_MEAN_FROM = 0.6
 
 
-def vertex(tm, w, i):
-    """Extremum through the samples i-1, i, i+1 (parabola vertex): the peak's value and time
-    independent of the output interval (as in ../spherical_cap_elastic/run.py)."""
-    if i <= 0 or i >= len(w) - 1:
-        return w[i], tm[i]
-    t0, t1, t2 = tm[i - 1], tm[i], tm[i + 1]
-    w0, w1, w2 = w[i - 1], w[i], w[i + 1]
-    d01, d12 = (w1 - w0) / (t1 - t0), (w2 - w1) / (t2 - t1)
-    a = (d12 - d01) / (t2 - t0)
-    if a == 0:
-        return w1, t1
-    tv = 0.5 * (t0 + t1) - d01 / (2 * a)
-    tv = min(max(tv, t0), t2)
-    wv = w0 + d01 * (tv - t0) + a * (tv - t0) * (tv - t1)
-    return wv, tv
-
-
 def extremum(tm, w, idx, kind):
     """(value, time, on_edge) of the min or max of w over the sample indices idx (ascending);
     refined by the parabola unless it lies on the first or last sample of idx."""
@@ -82,7 +65,7 @@ def extremum(tm, w, idx, kind):
         return None
     i = (min if kind == "min" else max)(idx, key=lambda k: w[k])
     edge = i == idx[0] or i == idx[-1]
-    v, t = (w[i], tm[i]) if edge else vertex(tm, w, i)
+    v, t = (w[i], tm[i]) if edge else fpmv.parabola_vertex(tm, w, i)
     return v, t, edge
 
 
@@ -175,32 +158,20 @@ def point_row(quantity, ref, value, mesh, wall, plot, unit, rng=None, relative=F
     return r
 
 
-def run_one(args, model, out, overrides, particles):
-    if args.reuse:
-        got = fpmv.reusable(out, END_TIME, particles=particles)
-        if got:
-            return got
-    return fpmv.run(args.fpmshell, model, out, overrides, threads=1)
-
-
 def main():
-    args = fpmv.parse_args(__doc__)
-    rings = RINGS_QUICK if args.quick else RINGS_FULL
+    args, rings, plot, plot_name = fpmv.start(PROBLEM, __doc__, RINGS_QUICK, RINGS_FULL)
     model = os.path.join(HERE, "model.yaml")
     elastic_model = os.path.join(HERE, "..", "spherical_cap_elastic", "model.yaml")
-    # the quick variant (make test) draws its own file so that it keeps the full one
-    plot = fpmv.plot_path(PROBLEM + ("-quick" if args.quick else "") + ".png")
-    plot_name = os.path.basename(plot)
     rows, curves = [], []
     finest = rings[-1]
     ov_end = ["control.end_time=%g" % END_TIME]
-    el, _ = run_one(args, elastic_model, os.path.join(args.out, "elastic-%d" % finest),
-                    ["mesh.divisions=%d" % finest] + ov_end, PARTICLES[finest])
+    el, _ = fpmv.run_or_reuse(args, elastic_model, os.path.join(args.out, "elastic-%d" % finest),
+                              ["mesh.divisions=%d" % finest] + ov_end, END_TIME, PARTICLES[finest])
     elastic = ("elastic, %d rings (%d particles)" % (finest, PARTICLES[finest]),
                el["history"]["time"], el["history"]["apex_w"])
     for n in rings:
-        res, wall = run_one(args, model, os.path.join(args.out, "plastic-%d" % n),
-                            ["mesh.divisions=%d" % n] + ov_end, PARTICLES[n])
+        res, wall = fpmv.run_or_reuse(args, model, os.path.join(args.out, "plastic-%d" % n),
+                                      ["mesh.divisions=%d" % n] + ov_end, END_TIME, PARTICLES[n])
         t, w = res["history"]["time"], res["history"]["apex_w"]
         curves.append(("elastic-plastic, %d rings (%d particles)" % (n, PARTICLES[n]), t, w))
         f = features(t, w)
@@ -303,14 +274,11 @@ def draw(path, curves, elastic):
     ax.set_xlim(0, 1.0)
     ax.set_xlabel("time [ms]")
     ax.set_ylabel("apex deflection $u_z$ [in]")
-    ax.set_title("Spherical cap, step pressure 600 psi, elastic-plastic "
-                 "(σ_y 24 000 psi, E_t 0.21e6 psi)")
     ax.legend(fontsize=7, loc="upper center", bbox_to_anchor=(0.5, -0.1), ncol=2)
     ax.set_ylim(-0.1, 0.05)
     ax.grid(alpha=0.3)
-    fig.tight_layout()
-    fig.savefig(path, dpi=110)
-    plt.close(fig)
+    fpmv.save_figure(fig, path, "Spherical cap, step pressure 600 psi, elastic-plastic "
+                     "(σ_y 24 000 psi, E_t 0.21e6 psi)")
 
 
 if __name__ == "__main__":

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Thin-walled square tube struck axially by a heavy rigid mass (benchmarks.md 5.3, issue 4).
+"""Thin-walled square tube struck axially by a heavy rigid mass (benchmarks.md 5.3).
 
 Quarter model of examples/square_tube/model.yaml (steel 100 x 100 x 3 mm, 400 mm long,
 Johnson-Cook with mixed hardening, 800 kg at 9.5 m/s, self-contact and a rigid striker).
@@ -33,7 +33,7 @@ B, T, L = 0.1, 0.003, 0.4
 M_QUARTER, V0 = 200.0, 9.5
 JC_A, JC_B, JC_N, JC_C, EPS0 = 350e6, 275e6, 0.36, 0.022, 1.0
 
-# Tolerances (issue 4): the mean crushing force within 25 % of Abramowicz-Jones (the formula
+# Tolerances (docs/benchmarks.md §5.3): the mean crushing force within 25 % of Abramowicz-Jones (the formula
 # itself scatters by about that much against tests), the fold length within 25 % of 2H, the
 # energy balance within 2 %, and no particle inside a contact surface by 10 % of the wall.
 TOL_FORCE = 0.25

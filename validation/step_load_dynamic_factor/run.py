@@ -41,13 +41,9 @@ RELAX_SCALE = 0.8
 
 
 def main():
-    args = fpmv.parse_args(__doc__)
-    meshes = MESHES_QUICK if args.quick else MESHES_FULL
+    args, meshes, plot, plot_name = fpmv.start(PROBLEM, __doc__, MESHES_QUICK, MESHES_FULL)
     kernels = KERNELS_QUICK if args.quick else KERNELS_FULL
     model = os.path.join(HERE, "model.yaml")
-    # the quick variant (make test) draws its own file so that it keeps the full one
-    plot = fpmv.plot_path(PROBLEM + ("-quick" if args.quick else "") + ".png")
-    plot_name = os.path.basename(plot)
     rows, curves = [], {}
     for kernel in kernels:
         for nx, ny in meshes:
@@ -102,11 +98,8 @@ def draw(path, curves):
     ax.axhspan(2 * 0.9707, 2.0, color="0.85", label="first-peak range by modal superposition")
     ax.set_xlabel("time [ms]")
     ax.set_ylabel("tip deflection / static tip deflection")
-    ax.set_title("Cantilever strip, step tip force: dynamic load factor")
     ax.legend(fontsize=7, loc="upper center", bbox_to_anchor=(0.5, -0.14), ncol=2)
-    fig.tight_layout()
-    fig.savefig(path, dpi=110)
-    plt.close(fig)
+    fpmv.save_figure(fig, path, "Cantilever strip, step tip force: dynamic load factor")
 
 
 if __name__ == "__main__":

@@ -76,16 +76,14 @@ def load_overrides(direction, nw):
 
 
 def main():
-    args = fpmv.parse_args(__doc__)
-    meshes = MESHES_QUICK if args.quick else MESHES_FULL
+    args, meshes, plot, plot_name = fpmv.start(PROBLEM, __doc__, MESHES_QUICK, MESHES_FULL)
     model = os.path.join(HERE, "model.yaml")
-    plot = fpmv.plot_path(PROBLEM + ("-quick" if args.quick else "") + ".png")
-    plot_name = os.path.basename(plot)
     os.makedirs(args.out, exist_ok=True)
     rows, results = [], {}
     for case, (direction, u_name, f_name, ref) in CASES.items():
         for kernel in KERNELS:
-            for nw, nl in meshes:
+            def solve(m):
+                nw, nl = m
                 mesh = os.path.abspath(os.path.join(args.out, "mesh_%dx%d.inp" % (nw, nl)))
                 write_inp(mesh, nw, nl)
                 out = os.path.join(args.out, "%s-%s-%dx%d" % (case, kernel, nw, nl))
@@ -96,18 +94,16 @@ def main():
                 applied = h[f_name][-1]
                 u = h[u_name + "_centre"][-1] / applied       # linear: scale to the unit load
                 u_mean = h[u_name + "_mean"][-1] / applied
-                conv = bool(h["converged"][-1])
-                results[(case, kernel, nw)] = u
-                last = nw == meshes[-1][0]
-                tol = (TOL_QUICK if args.quick else TOL_FINE)[case] if last else None
-                r = fpmv.row(PROBLEM, "tip u %s %s" % (case, kernel), ref, u, tol,
-                             mesh="%dx%d" % (nw, nl), wall=wall, plot=plot_name,
-                             note="MacNeal-Harder %g; centre node (mean over the tip %.5g); "
-                                  "load x%.3g, scaled" % (ref, u_mean, applied)
-                                  + ("" if conv else "; relaxation NOT converged"))
-                if not conv:
-                    r["pass"] = False
-                rows.append(r)
+                return (u, wall, "%dx%d" % (nw, nl),
+                        "MacNeal-Harder %g; centre node (mean over the tip %.5g); "
+                        "load x%.3g, scaled" % (ref, u_mean, applied), bool(h["converged"][-1]))
+
+            study, values = fpmv.mesh_study(PROBLEM, "tip u %s %s" % (case, kernel), ref, meshes,
+                                            solve, (TOL_QUICK if args.quick else TOL_FINE)[case],
+                                            plot=plot_name,
+                                            tested=lambda m: m[0] == meshes[-1][0])
+            rows += study
+            results.update({(case, kernel, nw): u for (nw, nl), u in values.items()})
     draw(plot, meshes, results)
     return fpmv.finish(args.out, rows)
 

@@ -1,4 +1,4 @@
-// Deterministic parallel loops over particles (style.md §4): results bitwise the same for any
+// Deterministic parallel loops over particles: results bitwise the same for any
 // number of threads. The range is cut into chunks of a fixed size that does not
 // depend on the thread count; a sum is the ordered sum of the per-chunk partial sums, each
 // accumulated in index order, so it never depends on how OpenMP shares the chunks out.

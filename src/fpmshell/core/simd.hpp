@@ -1,5 +1,5 @@
 // Lane-generic arithmetic for the element kernels that run on k_lanes elements at once
-// (style.md §4: vectorise across elements, not within one). A kernel written against a
+// (vectorised across elements, not within one element). A kernel written against a
 // scalar type T compiles both for T = Real (one element, the reference and fallback) and for
 // T = RealPack, the widest SIMD pack of doubles of the build's instruction set (2 for plain
 // x86-64, 4 for x86-64-v3, 8 for x86-64-v4: cmake/simd.cmake), from the C++ Parallelism TS v2

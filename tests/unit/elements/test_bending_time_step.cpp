@@ -2,7 +2,7 @@
 // §6.4):
 // - the 9-DOF bending stiffness has exactly the 3 rigid modes of a plate (w = plane with the
 //   matching rotations) as its null space and is symmetric positive semi-definite;
-// - 2 / omega_max equals the independent Python of shared/docs/theory-checks/test_rot.py
+// - 2 / omega_max equals the independent Python of tools/theory_checks/test_rot.py
 //   (K9, lumped mass rho h A / 3, power iteration), for both kernels, two shapes, thin to thick
 //   elements and rotary inertia options A and B;
 // - with option B the bending step passes below the membrane step L_c / c for thick elements:
@@ -56,8 +56,8 @@ TEST(BendingStiffness9, RigidPlateModesGiveNoForce) {
 }
 
 TEST(BendingCriticalStep, MatchesIndependentPython) {
-    // E = 1, nu = 0.3, rho = 1; the reference dt of theory-checks (power iteration, 3000
-    // iterations, printed to 8 digits).
+    // E = 1, nu = 0.3, rho = 1; the reference dt of tools/theory_checks/bending_step_reference.py
+    // (power iteration, 3000 iterations, printed to 8 digits).
     struct Case {
         const TriangleShape* shape;
         BendingKernel kernel;

@@ -1,7 +1,7 @@
 // Shape-function matrices of the triangle (theory.md §3.1, §4.3, §4.7):
 // - CST: any linear displacement field gives its exact constant strain (membrane patch test);
 // - BCIZ and DKT rotation-only B matrices equal the reference numbers of
-//   shared/docs/theory-checks/plate.py (independent Python implementation);
+//   tools/theory_checks/bending_b_reference.py (independent Python implementation, plate.py);
 // - both reproduce any constant-curvature field exactly when w_i = 0 (theory.md §4.3 check).
 #include <gtest/gtest.h>
 
@@ -30,8 +30,8 @@ TEST(Membrane, LinearFieldGivesExactConstantStrain) {
 
 namespace {
 
-// Reference values from plate.py for the triangle (0,0), (1.3,0), (0.4,0.9)
-// (python3 -c "from plate import *; print(Bb_bciz(xy, L)); print(Bb_dkt(xy, L2, L3))").
+// Reference values from plate.py for the triangle (0,0), (1.3,0), (0.4,0.9), printed by
+// tools/theory_checks/bending_b_reference.py.
 const Real k_bciz_ref[3][6] = {
     {-0.088757396449704123, -1.8836291913214984, -0.088757396449704123, -0.47337278106508834,
      -0.17751479289940825, -0.049309664694280067},

@@ -4,7 +4,7 @@
 // - a run stopped part way and resumed writes the same bytes as the run that never stopped,
 //   on the square tube (plasticity, self-contact, a rigid body, variable step);
 // - a restart file does not resume another model;
-// - a file of format 1 (before the elastic stresses were stored apart) resumes a model without
+// - a file of format 1 (elastic stresses inside the material points) resumes a model without
 //   elastic sections, like the tube, to the same bytes;
 // - (the same byte comparison, for threads) the tube writes the same results on 1 and 2
 //   threads: elements, particles, rigid body and contact.

@@ -1,7 +1,7 @@
 // Plane-stress J2 plasticity (theory.md §7): return mapping against closed-form answers and
 // an independent 3-D algorithm.
 // - a random non-proportional path of 60 increments equals the 3-D radial return with the
-//   sigma_33 = 0 condition solved by bisection (shared/docs/theory-checks/test_j2.py);
+//   sigma_33 = 0 condition solved by bisection (tools/theory_checks/test_j2.py);
 // - after every plastic increment the stress lies on the yield surface;
 // - equibiaxial and pure-shear paths against their closed-form elastic-plastic answers, for any
 //   increment size (proportional paths: backward Euler is exact);
@@ -49,8 +49,9 @@ MaterialPoint apply(const J2Plastic& m, MaterialPoint p, const Voigt3& total, in
 }  // namespace
 
 TEST(J2Plastic, RandomPathMatchesThreeDimensionalReturnWithZeroSigma33) {
-    // theory-checks/test_j2.py: E 200e3, nu 0.3, sigma_y 250, H_iso 1000, H_kin 800, i.e.
-    // H = 1800 and beta = 1000/1800 here; the reference is an independent 3-D radial return.
+    // tools/theory_checks/j2_path_reference.py: E 200e3, nu 0.3, sigma_y 250, H_iso 1000, H_kin
+    // 800, i.e. H = 1800 and beta = 1000/1800 here; the reference is an independent 3-D radial
+    // return.
     const std::vector<std::array<Real, 3>> path{
         {0.0010755374812200385, 0.00020636352235224199, -9.5314103002985985e-05},
         {0.00060713340023437075, 9.0197770948868161e-06, -0.00011407903505950284},
