@@ -3,6 +3,7 @@
 #   make test      install missing Debian packages, build, run the tests (slow validation excluded)
 #   make validate  build, run the slow validation problems, write the validation report
 #   make bench     build with benchmarks and run them
+#   make format    lay out every C++ file as .clang-format says (make test checks it)
 #   make clean     remove the build folder
 
 BUILD   ?= build
@@ -15,7 +16,7 @@ RESULTS ?= results/spherical_cap_elastic
 
 # Prerequisites run in the order written (dependencies, then configure, then build).
 .NOTPARALLEL:
-.PHONY: run test validate bench clean deps configure build
+.PHONY: run test validate bench format clean deps configure build
 
 run: deps build
 	./$(BUILD)/fpmshell run $(EXAMPLE)/model.yaml -o $(RESULTS) --overwrite
@@ -38,6 +39,9 @@ bench: deps
 	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release -DFPMSHELL_BENCHMARKS=ON
 	cmake --build $(BUILD) -j$(JOBS)
 	./$(BUILD)/bench/fpmshell_bench
+
+format: deps
+	git ls-files '*.cpp' '*.hpp' | grep -E '^(src|app|tests|bench)/' | xargs clang-format -i
 
 deps:
 	@scripts/install-deps.sh

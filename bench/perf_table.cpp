@@ -185,7 +185,8 @@ void measure_plate(const Model& m, int loop_order, const std::string& loop_name,
     const Index ne = m.n_elements();
     const auto t_setup = Clock::now();
     ExplicitSolver solver(m);
-    ShellElements twin(m);
+    const MeshTopology topology(m);
+    ShellElements twin(m, topology);
     ParticleState ps = solver.state();
     const double setup_s = seconds(t_setup, Clock::now());
     const double ppe = static_cast<double>(ps.size()) / static_cast<double>(ne);

@@ -6,7 +6,7 @@
 set -euo pipefail
 
 PACKAGES=(
-    build-essential cmake
+    build-essential cmake clang-format
     libeigen3-dev libyaml-cpp-dev libcli11-dev libfmt-dev
     libgtest-dev libbenchmark-dev libgmsh-dev
     python3 python3-matplotlib python3-numpy
