@@ -1,7 +1,7 @@
 // The explicit FPM solver (theory.md §6.8): the cycle t_n -> t_{n+1} as a list of phases —
 // element loop, normals and external loads, stable step, contact, central difference for
 // translations and tangent-plane rotations, boundary conditions, energy balance — for dynamic
-// runs and for dynamic relaxation (control.mode: relaxation), which runs the same cycle.
+// runs and for dynamic relaxation (control.mode: relaxation, §6.9), which runs the same cycle.
 #pragma once
 
 #include <memory>
@@ -40,7 +40,7 @@ public:
         long iterations = 0;
         Real residual_ratio = 0;  ///< |out-of-balance| / |external + reactions|
     };
-    /// Dynamic relaxation to static equilibrium under the loads at load parameter load_time
+    /// Dynamic relaxation (§6.9) to static equilibrium under the loads at load parameter load_time
     /// (kinetic damping: velocities are zeroed at every peak of the kinetic energy).
     RelaxResult relax(Real load_time);
 

@@ -1,4 +1,5 @@
-// State of the particles, one contiguous array per field (structure of arrays, style.md §4).
+// State of the particles, one contiguous array per field (structure of arrays: each particle
+// loop streams only the fields it reads).
 // Time levels: x = x^n, x_prev = x^{n-1}, v = v^{n-1/2} (before the update) / v^{n+1/2} (after),
 // dtheta = rotation increment over the last step (input of the next path element, §6.6).
 #pragma once

@@ -17,13 +17,13 @@ inline void ExplicitSolver::update_particle_velocity(std::size_t p, const CycleP
     if (contact_) force += s_.f_contact[p];
     const Real m = s_.mass[p];
     const bool constrained = bc.constrained(p);
-    // v^{n+1/2} = c1 [c2 v^{n-1/2} + dt_n F / m] (eq. 6.6a); prescribed values come later.
+    // v^{n+1/2} = c1 [c2 v^{n-1/2} + dt_n F / m] (§6.6); prescribed values come later.
     const Vec3 v_free = dt.c1 * (dt.c2 * s_.v_prev[p] + (dt.dt_n / m) * force);
     const Vec3 v_new = bc.without_fixed_translation(p, v_free);
     s_.v[p] = v_new;
     if (constrained) s_.reaction[p] = (m / (dt.c1 * dt.dt_n)) * (v_new - v_free);
 
-    // Rotations in the tangent plane: w^{n+1/2} = c1 [c2 P w^{n-1/2} + dt_n P M / J] (eq. 6.6b),
+    // Rotations in the tangent plane: w^{n+1/2} = c1 [c2 P w^{n-1/2} + dt_n P M / J] (§6.6),
     // or about the free axis of a symmetry plane.
     const Vec3 moment = loads_->has_moment_loads() ? Vec3(s_.m_ext[p] - s_.m_int[p]) : Vec3(-s_.m_int[p]);
     const Vec3& normal = s_.normal[p];
@@ -70,7 +70,7 @@ inline void ExplicitSolver::advance_particle(std::size_t p, const StepLengths& d
         s_.reaction_prev[p] = s_.reaction[p];
         s_.reaction_moment_prev[p] = s_.reaction_moment[p];
     }
-    // x^{n+1} = x^n + dt v^{n+1/2} (eq. 6.6c), written over x^{n-1} (the arrays are exchanged
+    // x^{n+1} = x^n + dt v^{n+1/2} (§6.6), written over x^{n-1} (the arrays are exchanged
     // at the end of the cycle); the rotation increment of the next path element.
     s_.x_prev[p] = s_.x[p] + dt.dt_new * s_.v[p];
     s_.dtheta[p] = dt.dt_new * s_.omega[p];
