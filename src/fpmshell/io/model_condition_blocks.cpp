@@ -19,11 +19,7 @@ void read_curves(const YamlValue& v, Model& model) {
             def.fail("a curve needs at least one [time, factor] pair, e.g. [[0, 0], [1, 1]]");
         std::string previous_time;
         for (const YamlValue& p : points) {
-            const auto tf = p.list("two numbers [time, factor]");
-            if (tf.size() != 2)
-                p.fail("expected a pair [time, factor], got " +
-                       (p.is_list() ? "a list of " + std::to_string(tf.size()) + " items"
-                                    : p.describe()));
+            const auto tf = p.list_of(2, "two numbers [time, factor]", "a pair [time, factor]");
             const Real t = tf[0].real();
             const Real f = tf[1].real();
             if (!c.points.empty() && !(t > c.points.back().first))
