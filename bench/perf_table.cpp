@@ -367,7 +367,7 @@ std::string read_file_line(const std::string& path) {
 void print_usage() {
     std::printf(
         "fpmshell_bench --table [--max-elements N] [--threads N] [--tube WxL | --no-tube] [--quick]\n"
-        "  --table           the figure-of-merit table (issue 5): element loop and whole step, ns per\n"
+        "  --table           the figure-of-merit table of docs/performance.md: element loop and whole step, ns per\n"
         "                    element-step, flops and bytes per element-step, fraction of the measured peaks\n"
         "  --max-elements N  skip the plate meshes of nominal size above N (10^3, 10^4, 10^5, 10^6 elements:\n"
         "                    --max-elements 100000 skips the 10^6 rows)\n"

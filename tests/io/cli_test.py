@@ -8,6 +8,7 @@ usage: cli_test.py FPMSHELL WORKDIR
 import json
 import os
 import shutil
+import struct
 import subprocess
 import sys
 
@@ -230,7 +231,8 @@ if code == 0:
           and min(vz[:-1]) > 0 and "has stopped at t =" in open(os.path.join(sres, "log.txt")).read(),
           str(s.get("exit_reason")) + " " + str(s.get("end_time")) + " " + rows[-1])
 # Restart files: a run that wrote one continues to a later end time with --resume; a folder
-# without one, a relaxation run and a damaged file are refused with exit 2.
+# without one, a relaxation run, a file of an earlier format and a damaged file are refused
+# with exit 2.
 rres = os.path.join(WORK, "restart")
 code, out = fpm("run", good, "-o", rres, "--quiet", "--threads", "1", "--restart-every", "1000")
 check("--restart-every writes restart.bin at the end of the run",
@@ -248,6 +250,16 @@ else:
 code, out = fpm("run", good, "-o", os.path.join(WORK, "never_run"), "--resume")
 check("--resume without a restart file exits 2 with one sentence",
       code == 2 and "no result folder" in out and len(out.strip().splitlines()) == 1, out)
+with open(os.path.join(rres, "restart.bin"), "r+b") as f:
+    f.seek(8)  # the format version, after the magic word
+    version = struct.unpack("<I", f.read(4))[0]
+    f.seek(8)
+    f.write(struct.pack("<I", version - 1))
+code, out = fpm("run", good, "-o", rres, "--resume")
+errors = [line for line in out.splitlines() if line.startswith("error:")]
+check("a restart file of an earlier format exits 2 with one sentence: start the run again",
+      code == 2 and len(errors) == 1 and "restart.bin" in errors[0]
+      and "earlier version of fpmshell" in errors[0] and "restarted from the beginning" in errors[0], out)
 with open(os.path.join(rres, "restart.bin"), "wb") as f:
     f.write(b"garbage")
 code, out = fpm("run", good, "-o", rres, "--resume")

@@ -19,7 +19,7 @@ public:
 inline std::string input_error_text(const std::string& file, int line, const std::string& key,
                                     const std::string& message) {
     std::string where = file;
-    if (line > 0) where += ":" + std::to_string(line);
+    if (line > 0) where.append(":").append(std::to_string(line));
     if (!key.empty()) return where + ": key '" + key + "': " + message;
     return where + ": " + message;
 }

@@ -4,6 +4,7 @@
 #include <charconv>
 
 #include "fpmshell/core/errors.hpp"
+#include "fpmshell/core/text.hpp"
 
 namespace fpmshell {
 namespace {
@@ -12,12 +13,8 @@ namespace {
     throw InputError(input_error_text("--set", 0, path, message));
 }
 
-std::string trim(const std::string& s) {
-    const auto begin = s.find_first_not_of(" \t");
-    if (begin == std::string::npos) return "";
-    const auto end = s.find_last_not_of(" \t");
-    return s.substr(begin, end - begin + 1);
-}
+/// What trim removes around the parts of an override: spaces and tabs.
+constexpr std::string_view k_blanks = " \t";
 
 std::vector<std::string> split_path(const std::string& path) {
     std::vector<std::string> parts;
@@ -36,7 +33,7 @@ std::vector<std::string> split_path(const std::string& path) {
 bool find_child(const YAML::Node& node, const std::string& part, YAML::Node& child) {
     if (node.IsMap()) {
         for (const auto& kv : node) {
-            if (kv.first.IsScalar() && trim(kv.first.Scalar()) == part) {
+            if (kv.first.IsScalar() && trim(kv.first.Scalar(), k_blanks) == part) {
                 child.reset(kv.second);
                 return true;
             }
@@ -75,12 +72,12 @@ void apply_overrides(YAML::Node& root, const std::vector<std::string>& overrides
     for (const std::string& raw : overrides) {
         const auto eq = raw.find('=');
         if (eq == std::string::npos)
-            fail(trim(raw),
+            fail(trim(raw, k_blanks),
                  "an override must look like key.path=value (for example "
                  "control.end_time=2e-3), got '" +
                      raw + "'");
-        const std::string path = trim(raw.substr(0, eq));
-        const std::string text = trim(raw.substr(eq + 1));
+        const std::string path = trim(raw.substr(0, eq), k_blanks);
+        const std::string text = trim(raw.substr(eq + 1), k_blanks);
         if (path.empty()) fail("", "the override '" + raw + "' has no key path before '='");
         if (text.empty()) fail(path, "the override has no value after '='");
 

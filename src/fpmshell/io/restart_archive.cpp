@@ -10,11 +10,10 @@ namespace fpmshell {
 namespace {
 
 constexpr char k_magic[8] = {'F', 'P', 'M', 'S', 'H', 'R', 'S', 'T'};
-// Raised whenever the content of a restart file changes, so an older file is refused.
-constexpr std::uint32_t k_format_version = 3;  // 2: elastic stresses apart from the material points; 3: rotations as quaternions
-// Format 1 differs only by the elastic stresses; ShellElements::load reads it for models
-// without elastic sections (a long plastic run started before format 2 can go on).
-constexpr std::uint32_t k_oldest_format_read = 1;
+// Raised whenever the content of a restart file changes. A file of another format is refused:
+// the sections of the solver, the elements and the result files are read only in the layout
+// this build writes (format 4: one section per result file, "history", "energy" and "fields").
+constexpr std::uint32_t k_format_version = 4;
 
 }  // namespace
 
@@ -27,7 +26,9 @@ RestartWriter::RestartWriter() {
     put(static_cast<std::uint8_t>(sizeof(int)));
 }
 
-void RestartWriter::save(const std::filesystem::path& path) const { write_file_atomic(path, bytes_); }
+void RestartWriter::save(const std::filesystem::path& path) const {
+    write_file_atomic(path, bytes_);
+}
 
 RestartReader::RestartReader(const std::filesystem::path& path) : path_(path) {
     std::ifstream in(path, std::ios::binary);
@@ -36,14 +37,23 @@ RestartReader::RestartReader(const std::filesystem::path& path) : path_(path) {
     content << in.rdbuf();
     bytes_ = std::move(content).str();
     char magic[sizeof(k_magic)] = {};
-    if (bytes_.size() < sizeof(k_magic) + 7 || std::memcmp(bytes_.data(), k_magic, sizeof(k_magic)) != 0)
+    if (bytes_.size() < sizeof(k_magic) + 7 ||
+        std::memcmp(bytes_.data(), k_magic, sizeof(k_magic)) != 0)
         fail("not an fpmshell restart file");
     pos_ = sizeof(magic);
     std::uint32_t version = 0;
     get(version);
-    if (version < k_oldest_format_read || version > k_format_version)
-        fail("restart file of format " + std::to_string(version) + ", this fpmshell reads formats " +
-             std::to_string(k_oldest_format_read) + " to " + std::to_string(k_format_version));
+    if (version < k_format_version)
+        fail("restart file written by an earlier version of fpmshell (format " +
+             std::to_string(version) + ", this version reads format " +
+             std::to_string(k_format_version) +
+             "): the run cannot be resumed with this version and must be restarted from the "
+             "beginning "
+             "(without --resume)");
+    if (version > k_format_version)
+        fail("restart file written by a later version of fpmshell (format " +
+             std::to_string(version) + ", this version reads format " +
+             std::to_string(k_format_version) + ")");
     format_ = version;
     std::uint8_t size_double = 0, size_long = 0, size_int = 0;
     get(size_double);
@@ -62,7 +72,8 @@ void RestartReader::raw(void* data, std::size_t n) {
 std::size_t RestartReader::length() {
     std::uint64_t n = 0;
     get(n);
-    if (n > bytes_.size() - pos_) fail("restart file is truncated or corrupt (in section '" + section_ + "')");
+    if (n > bytes_.size() - pos_)
+        fail("restart file is truncated or corrupt (in section '" + section_ + "')");
     return static_cast<std::size_t>(n);
 }
 
@@ -70,13 +81,14 @@ void RestartReader::section(std::string_view name) {
     std::string found;
     get(found);
     if (found != name)
-        fail("restart file is corrupt or from another version: expected section '" + std::string(name) +
-             "', found '" + found + "'");
+        fail("restart file is corrupt or from another version: expected section '" +
+             std::string(name) + "', found '" + found + "'");
     section_ = std::string(name);
 }
 
 void RestartReader::finish() const {
-    if (pos_ != bytes_.size()) fail("restart file has unread bytes after section '" + section_ + "'");
+    if (pos_ != bytes_.size())
+        fail("restart file has unread bytes after section '" + section_ + "'");
 }
 
 void RestartReader::fail(const std::string& message) const {

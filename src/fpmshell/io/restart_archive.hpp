@@ -9,6 +9,7 @@
 //
 // One function lists the members of a type for both directions: `transfer(archive, object)`
 // calls `archive(member, member, ...)`; the writer reads the members, the reader fills them.
+// Likewise one function, transfer_value, lays out the values themselves for both directions.
 #pragma once
 
 #include <Eigen/Core>
@@ -41,7 +42,8 @@ struct is_pair<std::pair<A, B>> : std::true_type {};
 template <class T>
 struct fixed_eigen : std::false_type {};
 template <class S, int R, int C, int O, int MR, int MC>
-struct fixed_eigen<Eigen::Matrix<S, R, C, O, MR, MC>> : std::bool_constant<R != Eigen::Dynamic && C != Eigen::Dynamic> {};
+struct fixed_eigen<Eigen::Matrix<S, R, C, O, MR, MC>>
+    : std::bool_constant<R != Eigen::Dynamic && C != Eigen::Dynamic> {};
 template <class T>
 constexpr bool is_fixed_eigen = fixed_eigen<T>::value;
 template <class T>
@@ -51,6 +53,9 @@ struct is_quaternion : std::false_type {};
 template <class S, int O>
 struct is_quaternion<Eigen::Quaternion<S, O>> : std::true_type {};
 }  // namespace restart_detail
+
+template <class Archive, class T>
+void transfer_value(Archive& archive, T& v);
 
 /// Name of the restart file inside a result folder.
 inline constexpr const char* k_restart_file = "restart.bin";
@@ -73,33 +78,16 @@ public:
 private:
     void raw(const void* data, std::size_t n) { bytes_.append(static_cast<const char*>(data), n); }
 
+    template <class Archive, class T>
+    friend void transfer_value(Archive& archive, T& value);
     template <class T>
     void put(const T& v) {
-        using namespace restart_detail;
-        if constexpr (is_raw<T>) {
-            raw(&v, sizeof(T));
-        } else if constexpr (is_fixed_eigen<T>) {
-            raw(v.data(), sizeof(typename T::Scalar) * static_cast<std::size_t>(T::SizeAtCompileTime));
-        } else if constexpr (is_quaternion<T>::value) {
-            put(v.coeffs());
-        } else if constexpr (std::is_same_v<T, std::string>) {
-            put(static_cast<std::uint64_t>(v.size()));
-            raw(v.data(), v.size());
-        } else if constexpr (is_vector<T>::value) {
-            put(static_cast<std::uint64_t>(v.size()));
-            if constexpr (is_raw<typename T::value_type>) {
-                raw(v.data(), v.size() * sizeof(typename T::value_type));
-            } else {
-                for (const auto& item : v) put(item);
-            }
-        } else if constexpr (is_std_array<T>::value) {
-            for (const auto& item : v) put(item);
-        } else if constexpr (is_pair<T>::value) {
-            put(v.first);
-            put(v.second);
-        } else {
-            transfer(*this, const_cast<T&>(v));  // the writer only reads the members
-        }
+        transfer_value(*this, const_cast<T&>(v));  // the writer only reads the value
+    }
+    /// Stores the length of a string or vector before its items.
+    template <class Sequence>
+    void transfer_length(const Sequence& v) {
+        put(static_cast<std::uint64_t>(v.size()));
     }
 
     std::string bytes_;
@@ -123,39 +111,23 @@ public:
     void finish() const;
     /// Throws InputError "<file>: <message>" (for checks of the content by the caller).
     [[noreturn]] void fail(const std::string& message) const;
-    /// Format version of the file (io/restart_archive.cpp).
+    /// Format version of the file: the one this build writes (io/restart_archive.cpp), since
+    /// the constructor refuses any other.
     [[nodiscard]] std::uint32_t format() const { return format_; }
 
 private:
     void raw(void* data, std::size_t n);
 
+    template <class Archive, class T>
+    friend void transfer_value(Archive& archive, T& value);
     template <class T>
     void get(T& v) {
-        using namespace restart_detail;
-        if constexpr (is_raw<T>) {
-            raw(&v, sizeof(T));
-        } else if constexpr (is_fixed_eigen<T>) {
-            raw(v.data(), sizeof(typename T::Scalar) * static_cast<std::size_t>(T::SizeAtCompileTime));
-        } else if constexpr (is_quaternion<T>::value) {
-            get(v.coeffs());
-        } else if constexpr (std::is_same_v<T, std::string>) {
-            v.resize(length());
-            raw(v.data(), v.size());
-        } else if constexpr (is_vector<T>::value) {
-            v.resize(length());
-            if constexpr (is_raw<typename T::value_type>) {
-                raw(v.data(), v.size() * sizeof(typename T::value_type));
-            } else {
-                for (auto& item : v) get(item);
-            }
-        } else if constexpr (is_std_array<T>::value) {
-            for (auto& item : v) get(item);
-        } else if constexpr (is_pair<T>::value) {
-            get(v.first);
-            get(v.second);
-        } else {
-            transfer(*this, v);
-        }
+        transfer_value(*this, v);
+    }
+    /// Reads the length of a string or vector and gives it that many items.
+    template <class Sequence>
+    void transfer_length(Sequence& v) {
+        v.resize(length());
     }
     /// A stored length, checked against the bytes left (a corrupt length fails cleanly).
     std::size_t length();
@@ -166,5 +138,39 @@ private:
     std::string section_ = "header";
     std::uint32_t format_ = 0;
 };
+
+/// The bytes of one value, in the same order for both directions: a RestartWriter stores them,
+/// a RestartReader fills the value. Raw values and fixed-size Eigen matrices are copied as they
+/// are in memory; a string or a vector is its length and then its items; any other type is the
+/// list of its members that its `transfer(archive, object)` gives.
+template <class Archive, class T>
+void transfer_value(Archive& archive, T& v) {
+    using namespace restart_detail;
+    if constexpr (is_raw<T>) {
+        archive.raw(&v, sizeof(T));
+    } else if constexpr (is_fixed_eigen<T>) {
+        archive.raw(v.data(),
+                    sizeof(typename T::Scalar) * static_cast<std::size_t>(T::SizeAtCompileTime));
+    } else if constexpr (is_quaternion<T>::value) {
+        transfer_value(archive, v.coeffs());
+    } else if constexpr (std::is_same_v<T, std::string>) {
+        archive.transfer_length(v);
+        archive.raw(v.data(), v.size());
+    } else if constexpr (is_vector<T>::value) {
+        archive.transfer_length(v);
+        if constexpr (is_raw<typename T::value_type>) {
+            archive.raw(v.data(), v.size() * sizeof(typename T::value_type));
+        } else {
+            for (auto& item : v) transfer_value(archive, item);
+        }
+    } else if constexpr (is_std_array<T>::value) {
+        for (auto& item : v) transfer_value(archive, item);
+    } else if constexpr (is_pair<T>::value) {
+        transfer_value(archive, v.first);
+        transfer_value(archive, v.second);
+    } else {
+        transfer(archive, v);
+    }
+}
 
 }  // namespace fpmshell

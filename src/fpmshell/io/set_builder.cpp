@@ -140,11 +140,8 @@ void add_user_sets(const YamlValue& sets, MeshData& mesh) {
                 "increase `tolerance`";
         } else {
             const YamlValue box = *def.find("box");
-            const auto corners = box.list("two corners");
-            if (corners.size() != 2)
-                box.fail("expected two corners [[xmin, ymin, zmin], [xmax, ymax, zmax]], got " +
-                         (box.is_list() ? "a list of " + std::to_string(corners.size()) + " items"
-                                        : box.describe()));
+            const auto corners = box.list_of(
+                2, "two corners", "two corners [[xmin, ymin, zmin], [xmax, ymax, zmax]]");
             const Vec3 lo = corners[0].vec3();
             const Vec3 hi = corners[1].vec3();
             for (int k = 0; k < 3; ++k)

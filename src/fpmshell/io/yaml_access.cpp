@@ -8,16 +8,10 @@
 #include <system_error>
 
 #include "fpmshell/core/errors.hpp"
+#include "fpmshell/core/text.hpp"
 
 namespace fpmshell {
 namespace {
-
-std::string trim(const std::string& s) {
-    const auto begin = s.find_first_not_of(" \t\r\n");
-    if (begin == std::string::npos) return "";
-    const auto end = s.find_last_not_of(" \t\r\n");
-    return s.substr(begin, end - begin + 1);
-}
 
 std::string lower(std::string s) {
     std::transform(s.begin(), s.end(), s.begin(),
@@ -234,6 +228,15 @@ std::vector<YamlValue> YamlValue::list(const std::string& what) const {
         items.emplace_back(*ctx_, item, join_key(path_, std::to_string(i)));
         ++i;
     }
+    return items;
+}
+
+std::vector<YamlValue> YamlValue::list_of(std::size_t n, const std::string& what,
+                                           const std::string& expected) const {
+    auto items = list(what);
+    if (items.size() != n)
+        fail("expected " + expected + ", got " +
+             (is_list() ? "a list of " + std::to_string(items.size()) + " items" : describe()));
     return items;
 }
 

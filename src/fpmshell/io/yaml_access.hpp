@@ -100,6 +100,10 @@ public:
     [[nodiscard]] Vec3 vec3() const;
     /// The items of a list (paths "path.0", "path.1", ...). `what` describes one item.
     [[nodiscard]] std::vector<YamlValue> list(const std::string& what = "") const;
+    /// The items of a list of exactly n items; otherwise fails "expected `expected`, got a
+    /// list of k items" (or what the value is).
+    [[nodiscard]] std::vector<YamlValue> list_of(std::size_t n, const std::string& what,
+                                                 const std::string& expected) const;
     /// A map whose keys must all be in `allowed` (unknown keys are rejected with suggestions).
     [[nodiscard]] YamlMap map(const std::vector<std::string>& allowed) const;
     /// A map with free keys (names of sets, materials, curves).

@@ -6,6 +6,7 @@
 #include <set>
 
 #include "fpmshell/core/errors.hpp"
+#include "fpmshell/core/text.hpp"
 #include "fpmshell/mesh/raw_mesh.hpp"
 
 namespace fpmshell {

@@ -7,17 +7,11 @@
 #include <cmath>
 
 #include "fpmshell/core/errors.hpp"
+#include "fpmshell/core/text.hpp"
 
 namespace fpmshell {
 
 namespace text_mesh {
-
-std::string trim(const std::string& s) {
-    const auto begin = s.find_first_not_of(" \t\r\n");
-    if (begin == std::string::npos) return "";
-    const auto end = s.find_last_not_of(" \t\r\n");
-    return s.substr(begin, end - begin + 1);
-}
 
 std::string upper(std::string s) {
     std::transform(s.begin(), s.end(), s.begin(),

@@ -51,8 +51,6 @@ struct RawMesh {
 
 /// Helpers shared by the text readers.
 namespace text_mesh {
-/// Removes leading and trailing blanks (spaces, tabs, carriage returns).
-[[nodiscard]] std::string trim(const std::string& s);
 /// Upper-case copy.
 [[nodiscard]] std::string upper(std::string s);
 /// Splits at commas, trimming each field (an empty line gives no field).

@@ -4,8 +4,7 @@
 // - a run stopped part way and resumed writes the same bytes as the run that never stopped,
 //   on the square tube (plasticity, self-contact, a rigid body, variable step);
 // - a restart file does not resume another model;
-// - a file of format 1 (elastic stresses inside the material points) resumes a model without
-//   elastic sections, like the tube, to the same bytes;
+// - a file of an earlier or a later format is refused with one sentence that says what to do;
 // - (the same byte comparison, for threads) the tube writes the same results on 1 and 2
 //   threads: elements, particles, rigid body and contact.
 #include <gtest/gtest.h>
@@ -171,57 +170,44 @@ TEST(Restart, AStoppedAndResumedRunWritesTheSameBytesAsAnUninterruptedOne) {
     fs::remove_all(first.output_dir);
 }
 
-TEST(Restart, AFormatOneFileResumesAModelWithoutElasticSections) {
+TEST(Restart, AFileOfAnEarlierFormatIsRefusedWithOneSentence) {
+    // A file of an earlier format holds the sections of an earlier layout (format 3: one
+    // "results" section for every result file): the run must start again, and the message says so.
     const Model model = small_tube(4e-4);
-    RunOptions straight, first;
-    ASSERT_NO_FATAL_FAILURE(run_straight_and_stopped(model, "_format1", straight, first));
-    // Turn the format-3 file into the format-1 file of the same state: version 1, the particle
-    // rotations as matrices (formats 1 and 2), and no length of the (empty) elastic stresses
-    // after the material points of section "elements".
+    RunOptions first;
+    first.output_dir = fresh_dir("earlier");
+    first.echo = false;
+    first.quiet = true;
+    first.stop_at_step = 20;
+    ASSERT_EQ(run_model(model, first), 0);
     const fs::path file = first.output_dir / k_restart_file;
     std::string bytes = bytes_of(file);
-    const std::uint32_t one = 1;
-    bytes.replace(8, sizeof(one), reinterpret_cast<const char*>(&one), sizeof(one));  // after the magic word
-    {
-        // section "solver": 4 doubles, a long, a bool, a long, then the particle state: 8 arrays
-        // of Vec3 (each its length and 3 doubles an item), then the rotations
-        const std::size_t solver = bytes.find("solver");
-        ASSERT_NE(solver, std::string::npos);
-        std::size_t at = solver + 6 + 4 * sizeof(double) + 2 * sizeof(long) + sizeof(bool);
-        std::uint64_t n = 0;
-        for (int field = 0; field < 8; ++field) {
-            std::memcpy(&n, bytes.data() + at, sizeof(n));
-            at += sizeof(n) + n * 3 * sizeof(double);
-        }
-        std::memcpy(&n, bytes.data() + at, sizeof(n));
-        ASSERT_GT(n, 0u);
-        at += sizeof(n);
-        std::string matrices;
-        for (std::uint64_t p = 0; p < n; ++p) {
-            Quat q;
-            std::memcpy(q.coeffs().data(), bytes.data() + at + p * 4 * sizeof(double), 4 * sizeof(double));
-            const Mat3 r = q.toRotationMatrix();
-            matrices.append(reinterpret_cast<const char*>(r.data()), 9 * sizeof(double));
-        }
-        bytes.replace(at, n * 4 * sizeof(double), matrices);
-    }
-    const std::size_t elements = bytes.find("elements");
-    ASSERT_NE(elements, std::string::npos);
-    std::uint64_t n_points = 0;
-    std::memcpy(&n_points, bytes.data() + elements + 8, sizeof(n_points));
-    const std::size_t stresses = elements + 8 + sizeof(n_points) + n_points * 11 * sizeof(double);  // 11 doubles a point
-    std::uint64_t n_stresses = 1;
-    std::memcpy(&n_stresses, bytes.data() + stresses, sizeof(n_stresses));
-    ASSERT_EQ(n_stresses, 0u);  // the tube has no elastic section
-    bytes.erase(stresses, sizeof(n_stresses));
-    std::ofstream(file, std::ios::binary | std::ios::trunc) << bytes;
+    std::uint32_t written = 0;
+    std::memcpy(&written, bytes.data() + 8, sizeof(written));  // after the magic word
     RunOptions second = first;
     second.stop_at_step = 0;
     second.resume = true;
-    ASSERT_EQ(run_model(model, second), 0);
-    for (const char* name : {"history.csv", "energy.csv"})
-        EXPECT_EQ(bytes_of(first.output_dir / name), bytes_of(straight.output_dir / name)) << name;
-    fs::remove_all(straight.output_dir);
+    for (const std::uint32_t version : {written - 1, written + 1}) {
+        bytes.replace(8, sizeof(version), reinterpret_cast<const char*>(&version), sizeof(version));
+        std::ofstream(file, std::ios::binary | std::ios::trunc) << bytes;
+        const std::string expected = version < written
+                                         ? "restart file written by an earlier version of fpmshell (format " +
+                                               std::to_string(version) + ", this version reads format " +
+                                               std::to_string(written) +
+                                               "): the run cannot be resumed with this version and must be "
+                                               "restarted from the beginning (without --resume)"
+                                         : "restart file written by a later version of fpmshell (format " +
+                                               std::to_string(version) + ", this version reads format " +
+                                               std::to_string(written) + ")";
+        try {
+            (void)run_model(model, second);
+            ADD_FAILURE() << "resumed a restart file of format " << version;
+        } catch (const InputError& e) {
+            const std::string what = e.what();
+            EXPECT_NE(what.find(file.string()), std::string::npos) << what;
+            EXPECT_NE(what.find(expected), std::string::npos) << what;
+        }
+    }
     fs::remove_all(first.output_dir);
 }
 

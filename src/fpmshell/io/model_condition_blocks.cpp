@@ -1,0 +1,132 @@
+// The `curves`, `boundary`, `loads` and `initial_conditions` blocks of the model file (see
+// model_blocks.hpp).
+#include <algorithm>
+#include <string>
+#include <vector>
+
+#include "fpmshell/io/model_blocks.hpp"
+#include "fpmshell/io/model_names.hpp"
+
+namespace fpmshell {
+
+void read_curves(const YamlValue& v, Model& model) {
+    const YamlMap all = v.open_map("curve names to [[time, factor], ...] lists");
+    for (const auto& [name, def] : all.entries()) {
+        Curve c;
+        c.name = name;
+        const auto points = def.list("[time, factor] pairs");
+        if (points.empty())
+            def.fail("a curve needs at least one [time, factor] pair, e.g. [[0, 0], [1, 1]]");
+        std::string previous_time;
+        for (const YamlValue& p : points) {
+            const auto tf = p.list_of(2, "two numbers [time, factor]", "a pair [time, factor]");
+            const Real t = tf[0].real();
+            const Real f = tf[1].real();
+            if (!c.points.empty() && !(t > c.points.back().first))
+                tf[0].fail("the times of a curve must increase strictly, but time " +
+                           tf[0].describe() + " follows time " + previous_time);
+            previous_time = tf[0].describe();
+            c.points.emplace_back(t, f);
+        }
+        model.curves.push_back(c);
+    }
+}
+
+void read_boundary(const YamlValue& v, Model& model) {
+    static const std::vector<std::string> dofs = {"ux", "uy", "uz", "rx", "ry", "rz"};
+    for (const YamlValue& item : v.list("boundary conditions")) {
+        const YamlMap m = item.map({"nodes", "fix", "symmetry", "prescribe"});
+        BoundaryCondition bc;
+        bc.nodes = named_node_set(model, m.at("nodes", "a node set name"));
+        if (m.count({"fix", "symmetry", "prescribe"}) == 0)
+            item.fail(
+                "a boundary condition needs at least one of fix, symmetry or "
+                "prescribe");
+        if (const auto fix = m.find("fix")) {
+            if (fix->is_scalar()) {
+                if (fix->choice({"all"}) == "all") bc.fixed.fill(true);
+            } else {
+                const auto list = fix->list("degrees of freedom");
+                if (list.empty())
+                    fix->fail("expected `all` or a non-empty list of ux, uy, uz, rx, ry, rz");
+                for (const YamlValue& d : list) {
+                    const std::string name = d.choice(dofs);
+                    const auto k = std::find(dofs.begin(), dofs.end(), name) - dofs.begin();
+                    bc.fixed[static_cast<std::size_t>(k)] = true;
+                }
+            }
+        }
+        if (const auto sym = m.find("symmetry")) {
+            const std::string axis = sym->choice({"x", "y", "z"});
+            // Plane normal to `axis`: no normal displacement, no rotation about the two
+            // in-plane axes.
+            const std::size_t a = axis == "x" ? 0 : axis == "y" ? 1 : 2;
+            bc.fixed[a] = true;
+            for (std::size_t r = 0; r < 3; ++r)
+                if (r != a) bc.fixed[3 + r] = true;
+        }
+        if (const auto pre = m.find("prescribe")) {
+            const YamlMap p = pre->map({"displacement", "velocity", "angular_velocity", "curve"});
+            if (p.count({"displacement", "velocity", "angular_velocity"}) != 1)
+                pre->fail(
+                    "needs exactly one of displacement, velocity or angular_velocity "
+                    "(a list of 3 numbers), optionally with a curve");
+            if (const auto d = p.find("displacement")) {
+                bc.prescribed = PrescribedKind::Displacement;
+                bc.value = d->vec3();
+            } else if (const auto vel = p.find("velocity")) {
+                bc.prescribed = PrescribedKind::Velocity;
+                bc.value = vel->vec3();
+            } else {
+                bc.prescribed = PrescribedKind::AngularVelocity;
+                bc.value = p.at("angular_velocity").vec3();
+            }
+            bc.curve = optional_curve(model, p);
+        }
+        model.boundary.push_back(bc);
+    }
+}
+
+void read_loads(const YamlValue& v, Model& model) {
+    for (const YamlValue& item : v.list("loads")) {
+        const YamlMap m = item.map({"type", "nodes", "elements", "value", "curve"});
+        const std::string type =
+            m.at("type", "pressure, force or moment").choice({"pressure", "force", "moment"});
+        Load load;
+        if (type == "pressure") {
+            load.type = LoadType::Pressure;
+            if (const auto n = m.find("nodes"))
+                n->fail("a pressure acts on elements: use `elements: SET` instead of `nodes`");
+            load.elements = named_element_set(model, m.at("elements", "an element set name"));
+            load.pressure = m.at("value", "the pressure, a number").real();
+        } else {
+            load.type = type == "force" ? LoadType::Force : LoadType::Moment;
+            if (const auto e = m.find("elements"))
+                e->fail("a " + type +
+                        " acts on each node of a set: use `nodes: SET` instead "
+                        "of `elements`");
+            load.nodes = named_node_set(model, m.at("nodes", "a node set name"));
+            load.vector = m.at("value", "a list of 3 numbers [x, y, z]").vec3();
+        }
+        load.curve = optional_curve(model, m);
+        model.loads.push_back(load);
+    }
+}
+
+void read_initial_conditions(const YamlValue& v, Model& model) {
+    for (const YamlValue& item : v.list("initial conditions")) {
+        const YamlMap m = item.map({"nodes", "velocity", "angular_velocity", "normal_velocity"});
+        InitialVelocity ic;
+        ic.nodes = named_node_set(model, m.at("nodes", "a node set name"));
+        if (m.count({"velocity", "angular_velocity", "normal_velocity"}) == 0)
+            item.fail(
+                "an initial condition needs `velocity: [vx, vy, vz]`, `normal_velocity: v` "
+                "(along the surface normal) and/or `angular_velocity: [wx, wy, wz]`");
+        if (const auto vel = m.find("velocity")) ic.velocity = vel->vec3();
+        if (const auto vn = m.find("normal_velocity")) ic.normal_velocity = vn->real();
+        if (const auto w = m.find("angular_velocity")) ic.angular_velocity = w->vec3();
+        model.initial_conditions.push_back(ic);
+    }
+}
+
+}  // namespace fpmshell

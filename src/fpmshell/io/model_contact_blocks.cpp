@@ -1,0 +1,113 @@
+// The `rigid_bodies` and `contact` blocks of the model file (see model_blocks.hpp).
+#include <string>
+#include <vector>
+
+#include "fpmshell/io/model_blocks.hpp"
+#include "fpmshell/io/model_names.hpp"
+#include "fpmshell/model/node_thickness.hpp"
+
+namespace fpmshell {
+namespace {
+
+/// Mean section thickness of the elements around each particle (contact offsets).
+std::vector<Real> node_thickness(const Model& model) {
+    std::vector<Real> element_thickness(model.triangles.size());
+    for (std::size_t e = 0; e < element_thickness.size(); ++e)
+        element_thickness[e] =
+            model.sections[static_cast<std::size_t>(model.element_section[e])].thickness;
+    return mean_node_thickness(model.triangles, element_thickness, model.nodes.size());
+}
+
+/// The keys that self and rigid contact share: method, penalty_scale, max_iterations.
+void read_contact_method(const YamlMap& m, ContactDefinition& c) {
+    c.method = m.choice_or("method", {"lagrange", "penalty"}, "lagrange") == "penalty"
+                   ? ContactMethod::Penalty
+                   : ContactMethod::LagrangeMultiplier;
+    if (const auto s = m.find("penalty_scale")) {
+        c.penalty_scale = s->positive();
+        if (c.penalty_scale > 1)
+            s->fail(
+                "must be in (0, 1]: stiffness = scale x pair mass / dt^2, and above 1 the "
+                "explicit step is unstable; got " +
+                s->describe());
+    }
+    if (const auto it = m.find("max_iterations"))
+        c.max_iterations = static_cast<int>(it->integer(1, 100000));
+}
+
+}  // namespace
+
+void read_rigid_bodies(const YamlValue& v, Model& model) {
+    for (const YamlValue& item : v.list("rigid bodies")) {
+        const YamlMap m =
+            item.map({"name", "mass", "shape", "point", "normal", "velocity", "fixed"});
+        RigidBody b;
+        const YamlValue name = m.at("name", "a name for the body, used in contact and histories");
+        b.name = name.name();
+        if (b.name.empty() || b.name.find_first_of(",\"\n\r ") != std::string::npos)
+            name.fail("a body name must be a single word without commas or quotes, got " +
+                      name.describe());
+        for (const RigidBody& other : model.rigid_bodies)
+            if (other.name == b.name) name.fail("the rigid body '" + b.name + "' is defined twice");
+        (void)m.choice_or("shape", {"plane"}, "plane");
+        b.fixed = m.choice_or("fixed", {"true", "false"}, "false") == "true";
+        if (b.fixed) {
+            if (const auto mass = m.find("mass"))
+                mass->fail("a fixed body has infinite mass; remove `mass` or set `fixed: false`");
+        } else {
+            b.mass =
+                m.at("mass", "the mass of the body, a number > 0 (or `fixed: true`)").positive();
+        }
+        b.point = m.at("point", "a point [x, y, z] of the plane face").vec3();
+        const YamlValue normal =
+            m.at("normal", "the face normal [nx, ny, nz], pointing towards the shell");
+        b.normal = normal.vec3();
+        if (!(b.normal.norm() > 0)) normal.fail("the normal must not be the zero vector");
+        b.normal.normalize();
+        if (const auto vel = m.find("velocity")) b.velocity = vel->vec3();
+        model.rigid_bodies.push_back(b);
+    }
+}
+
+void read_contact(const YamlValue& v, Model& model) {
+    for (const YamlValue& item : v.list("contact definitions")) {
+        const YamlMap any = item.open_map("contact settings");
+        const std::string type = any.at("type", "self or rigid").choice({"self", "rigid"});
+        ContactDefinition c;
+        if (type == "self") {
+            const YamlMap m = item.map({"type", "elements", "method", "exclusion_radius",
+                                        "penalty_scale", "max_iterations"});
+            c.type = ContactType::Self;
+            c.elements = m.find("elements") ? named_element_set(model, *m.find("elements"))
+                                            : model.element_sets.at("all");
+            c.exclusion_radius = m.non_negative_or("exclusion_radius", 0.0);
+            read_contact_method(m, c);
+        } else {
+            const YamlMap m =
+                item.map({"type", "body", "nodes", "method", "penalty_scale", "max_iterations"});
+            c.type = ContactType::Rigid;
+            c.body = named_rigid_body(model, m.at("body", "the name of a rigid body"));
+            c.nodes = m.find("nodes") ? named_node_set(model, *m.find("nodes"))
+                                      : model.node_sets.at("all");
+            read_contact_method(m, c);
+            // A particle that starts inside the face (its half thickness included) would be
+            // thrown out of it in one step.
+            const RigidBody& rb = model.rigid_bodies[static_cast<std::size_t>(c.body)];
+            const std::vector<Real> h = node_thickness(model);
+            for (const Index p : c.nodes) {
+                const auto up = static_cast<std::size_t>(p);
+                const Real behind = 0.5 * h[up] - rb.normal.dot(model.nodes[up] - rb.point);
+                if (behind > 1e-9 * (1.0 + rb.point.norm()))
+                    item.fail(
+                        "particle " + std::to_string(p + 1) + " starts " + std::to_string(behind) +
+                        " inside the face of rigid body '" + rb.name +
+                        "' (a particle touches it with a ball of half its thickness; the face "
+                        "normal points towards the shell); move the body by that much or "
+                        "check the sign of its normal");
+            }
+        }
+        model.contacts.push_back(c);
+    }
+}
+
+}  // namespace fpmshell

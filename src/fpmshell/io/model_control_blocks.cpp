@@ -1,0 +1,177 @@
+// The `control`, `damping` and `output` blocks of the model file (see model_blocks.hpp).
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "fpmshell/io/model_blocks.hpp"
+#include "fpmshell/io/model_names.hpp"
+
+namespace fpmshell {
+namespace {
+
+/// `rigid_<body>_<ux|uy|uz|vx|vy|vz|ax|ay|az|force_x|force_y|force_z>`.
+void rigid_quantity(const Model& model, const YamlValue& q, HistoryRequest& req) {
+    static const std::vector<std::pair<std::string, Quantity>> parts = {
+        {"ux", Quantity::RigidUx},          {"uy", Quantity::RigidUy},
+        {"uz", Quantity::RigidUz},          {"vx", Quantity::RigidVx},
+        {"vy", Quantity::RigidVy},          {"vz", Quantity::RigidVz},
+        {"ax", Quantity::RigidAx},          {"ay", Quantity::RigidAy},
+        {"az", Quantity::RigidAz},          {"force_x", Quantity::RigidForceX},
+        {"force_y", Quantity::RigidForceY}, {"force_z", Quantity::RigidForceZ}};
+    const std::string qn = q.name();
+    std::vector<std::string> bodies;
+    for (std::size_t b = 0; b < model.rigid_bodies.size(); ++b) {
+        const std::string prefix = "rigid_" + model.rigid_bodies[b].name + "_";
+        bodies.push_back(model.rigid_bodies[b].name);
+        if (qn.rfind(prefix, 0) != 0) continue;
+        const std::string rest = qn.substr(prefix.size());
+        for (const auto& [name, quantity] : parts)
+            if (name == rest) {
+                req.quantity = quantity;
+                req.body = static_cast<Index>(b);
+                return;
+            }
+        q.fail("unknown rigid-body quantity '" + rest + "' of body '" + model.rigid_bodies[b].name +
+               "'; expected rigid_" + model.rigid_bodies[b].name +
+               "_ followed by ux, uy, uz, vx, vy, vz, ax, ay, az, force_x, force_y or force_z");
+    }
+    q.fail(bodies.empty() ? "'" + qn + "' names a rigid body, but the model has no rigid_bodies"
+                          : "'" + qn + "' names no rigid body of the model; the bodies are " +
+                                join_names(bodies) + " (e.g. rigid_" + bodies.front() + "_uz)");
+}
+
+}  // namespace
+
+void read_control(const YamlValue& v, Model& model) {
+    const YamlMap m =
+        v.map({"end_time", "time_step_scale", "mode", "tolerance", "bending", "energy_error_limit",
+               "max_relaxation_iterations", "thickness_update", "membrane", "end_when_body_stops"});
+    Control& c = model.control;
+    c.end_time = m.at("end_time", "the duration of the run, a number > 0").positive();
+    if (const auto s = m.find("time_step_scale")) {
+        c.time_step_scale = s->positive();
+        if (c.time_step_scale > 1)
+            s->fail("must be in (0, 1] (a fraction of the critical time step), got " +
+                    s->describe());
+    }
+    c.mode = m.choice_or("mode", {"dynamic", "relaxation"}, "dynamic") == "relaxation"
+                 ? SolutionMode::Relaxation
+                 : SolutionMode::Dynamic;
+    c.tolerance = m.positive_or("tolerance", c.tolerance);
+    c.bending = m.choice_or("bending", {"bciz", "dkt"}, "dkt") == "dkt" ? BendingKernel::Dkt
+                                                                        : BendingKernel::Bciz;
+    c.energy_error_limit = m.positive_or("energy_error_limit", c.energy_error_limit);
+    c.thickness_update = m.choice_or("thickness_update", {"true", "false"}, "false") == "true";
+    c.membrane = m.choice_or("membrane", {"cst", "smoothed"}, "cst") == "smoothed"
+                     ? MembraneKernel::Smoothed
+                     : MembraneKernel::Cst;
+    if (const auto s = m.find("max_relaxation_iterations"))
+        c.max_relaxation_iterations = static_cast<long>(s->integer(1, 1'000'000'000'000LL));
+}
+
+void read_end_when_body_stops(const YamlValue& v, Model& model) {
+    const auto key = v.open_map("control settings").find("end_when_body_stops");
+    if (!key) return;
+    model.control.end_body = named_rigid_body(model, *key);
+    const RigidBody& b = model.rigid_bodies[static_cast<std::size_t>(model.control.end_body)];
+    if (b.fixed)
+        key->fail("the rigid body '" + b.name +
+                  "' is fixed: it keeps its velocity and never stops");
+    if (b.velocity.squaredNorm() == 0)
+        key->fail("the rigid body '" + b.name +
+                  "' has no initial velocity, so it has stopped already; "
+                  "give it a `velocity` or remove end_when_body_stops");
+    if (model.control.mode == SolutionMode::Relaxation)
+        key->fail("end_when_body_stops needs mode: dynamic");
+}
+
+void read_damping(const YamlValue& v, Model& model) {
+    const YamlMap m = v.map({"mass", "stiffness"});
+    model.damping.mass = m.non_negative_or("mass", 0);
+    model.damping.stiffness = m.non_negative_or("stiffness", 0);
+}
+
+void read_output(const std::optional<YamlValue>& v, Model& model) {
+    OutputControl& o = model.output;
+    o.every = model.control.end_time / 200;
+    o.fields_every = model.control.end_time / 20;
+    if (!v) return;
+    const YamlMap m = v->map({"every", "fields_every", "histories"});
+    o.every = m.non_negative_or("every", o.every);
+    o.fields_every = m.non_negative_or("fields_every", o.fields_every);
+    const auto h = m.find("histories");
+    if (!h) return;
+    static const std::vector<std::pair<std::string, Quantity>> quantities = {
+        {"ux", Quantity::Ux},
+        {"uy", Quantity::Uy},
+        {"uz", Quantity::Uz},
+        {"umag", Quantity::Umag},
+        {"vx", Quantity::Vx},
+        {"vy", Quantity::Vy},
+        {"vz", Quantity::Vz},
+        {"ax", Quantity::Ax},
+        {"ay", Quantity::Ay},
+        {"az", Quantity::Az},
+        {"rx", Quantity::Rx},
+        {"ry", Quantity::Ry},
+        {"rz", Quantity::Rz},
+        {"reaction_x", Quantity::ReactionX},
+        {"reaction_y", Quantity::ReactionY},
+        {"reaction_z", Quantity::ReactionZ},
+        {"reaction_mx", Quantity::ReactionMx},  // constraint moments (the particle's own,
+        {"reaction_my", Quantity::ReactionMy},  // not about an origin)
+        {"reaction_mz", Quantity::ReactionMz},
+        {"force_x", Quantity::ForceX},
+        {"force_y", Quantity::ForceY},
+        {"force_z", Quantity::ForceZ}};
+    std::vector<std::string> quantity_names;
+    for (const auto& [name, q] : quantities) quantity_names.push_back(name);
+    static const std::vector<std::pair<std::string, Reduce>> reductions = {
+        {"sum", Reduce::Sum}, {"max", Reduce::Max}, {"min", Reduce::Min}, {"mean", Reduce::Mean}};
+
+    for (const YamlValue& item : h->list("history requests")) {
+        const YamlMap r = item.map({"name", "nodes", "quantity", "reduce"});
+        HistoryRequest req;
+        const YamlValue name = r.at("name", "a column name for history.csv");
+        req.name = name.name();
+        if (req.name.find_first_of(",\"\n\r") != std::string::npos)
+            name.fail(
+                "a history name must not contain commas, quotes or line breaks (it "
+                "becomes a column of history.csv), got " +
+                name.describe());
+        if (req.name == "time")
+            name.fail("'time' is the first column of history.csv already; choose another name");
+        for (const auto& other : o.histories)
+            if (other.name == req.name)
+                name.fail("the history name '" + req.name +
+                          "' is used twice; names must be "
+                          "unique");
+        const YamlValue q = r.at("quantity", "one of " + join_names(quantity_names));
+        const std::string qn = q.name();
+        if (qn.rfind("rigid_", 0) == 0) {
+            rigid_quantity(model, q, req);
+            if (const auto n = r.find("nodes"))
+                n->fail("a rigid-body quantity belongs to the body, not to nodes; remove `nodes`");
+            if (const auto red = r.find("reduce"))
+                red->fail("a rigid-body quantity is one value; remove `reduce`");
+            o.histories.push_back(req);
+            continue;
+        }
+        const YamlValue nodes = r.at("nodes", "a node set name");
+        req.nodes = named_node_set(model, nodes);
+        const std::string chosen = q.choice(quantity_names);
+        for (const auto& [n, quantity] : quantities)
+            if (n == chosen) req.quantity = quantity;
+        if (const auto red = r.find("reduce")) {
+            const std::string rn = red->choice({"sum", "max", "min", "mean"});
+            for (const auto& [n, reduce] : reductions)
+                if (n == rn) req.reduce = reduce;
+        } else if (req.nodes.size() > 1) {
+            nodes.fail("the set '" + nodes.name() + "' has " + std::to_string(req.nodes.size()) +
+                       " nodes, so the history needs `reduce: sum`, max, min or mean");
+        }
+        o.histories.push_back(req);
+    }
+}
+
+}  // namespace fpmshell

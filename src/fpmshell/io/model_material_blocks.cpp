@@ -1,0 +1,155 @@
+// The `materials` and `sections` blocks of the model file (see model_blocks.hpp).
+#include <algorithm>
+#include <string>
+#include <vector>
+
+#include "fpmshell/io/model_blocks.hpp"
+#include "fpmshell/io/model_names.hpp"
+
+namespace fpmshell {
+namespace {
+
+std::string not_supported(const std::string& what) {
+    return what + " is not supported yet in this version of fpmshell";
+}
+
+}  // namespace
+
+void read_materials(const YamlValue& v, Model& model) {
+    const YamlMap all = v.open_map("material names to material definitions");
+    if (all.entries().empty())
+        v.fail(
+            "at least one material is required, e.g. steel: {type: elastic, density: "
+            "7.8e-9, youngs_modulus: 210000, poisson_ratio: 0.3}");
+    for (const auto& [name, def] : all.entries()) {
+        if (!def.is_map() && !def.is_null())
+            def.fail(
+                "expected a map of material constants such as {type: elastic, density: "
+                "..., youngs_modulus: ..., poisson_ratio: ...}, got " +
+                def.describe());
+        const YamlMap any = def.open_map("material constants");
+        const YamlValue type = any.at("type", "elastic");
+        const std::string t = type.choice({"elastic", "j2_plastic", "johnson_cook"});
+        std::vector<std::string> keys{"type", "density", "youngs_modulus", "poisson_ratio"};
+        if (t == "elastic") {
+            for (const auto& [key, value] : any.entries())
+                for (const char* plastic :
+                     {"yield_stress", "tangent_modulus", "hardening_mix", "cowper_symonds", "A",
+                      "B", "n", "C", "reference_strain_rate", "m", "room_temperature",
+                      "melt_temperature"})
+                    if (key == plastic)
+                        value.fail(
+                            "belongs to plastic materials (type: j2_plastic or johnson_cook); "
+                            "remove it or change the type");
+        } else if (t == "j2_plastic") {
+            keys.insert(keys.end(),
+                        {"yield_stress", "tangent_modulus", "hardening_mix", "cowper_symonds"});
+        } else {
+            for (const char* thermal : {"m", "room_temperature", "melt_temperature"})
+                if (const auto th = any.find(thermal))
+                    th->fail(not_supported("the thermal softening term of Johnson-Cook") +
+                             "; remove m, room_temperature and melt_temperature");
+            if (const auto cs = any.find("cowper_symonds"))
+                cs->fail("is a rate factor for j2_plastic; johnson_cook has its own rate term C");
+            keys.insert(keys.end(), {"A", "B", "n", "C", "reference_strain_rate", "hardening_mix"});
+        }
+        const YamlMap m = def.map(keys);
+        Material mat;
+        mat.name = name;
+        mat.type = t == "elastic"      ? MaterialType::Elastic
+                   : t == "j2_plastic" ? MaterialType::J2Plastic
+                                       : MaterialType::JohnsonCook;
+        mat.density = m.at("density", "a number > 0").positive();
+        mat.youngs_modulus = m.at("youngs_modulus", "a number > 0").positive();
+        const YamlValue nu = m.at("poisson_ratio", "a number in (-1, 0.5)");
+        mat.poisson_ratio = nu.real();
+        if (!(mat.poisson_ratio > -1 && mat.poisson_ratio < 0.5))
+            nu.fail("must be greater than -1 and less than 0.5, got " + nu.describe());
+        if (mat.plastic()) {
+            if (const auto mix = m.find("hardening_mix")) {
+                mat.hardening_mix = mix->real();
+                if (!(mat.hardening_mix >= 0 && mat.hardening_mix <= 1))
+                    mix->fail("must be in [0, 1] (1 isotropic, 0 kinematic hardening), got " +
+                              mix->describe());
+            }
+        }
+        if (mat.type == MaterialType::J2Plastic) {
+            mat.yield_stress =
+                m.at("yield_stress", "the initial yield stress, a number > 0").positive();
+            if (const auto et = m.find("tangent_modulus")) {
+                mat.tangent_modulus = et->non_negative();
+                if (!(mat.tangent_modulus < mat.youngs_modulus))
+                    et->fail(
+                        "must be below youngs_modulus (the slope of the bilinear curve past "
+                        "yield; 0 = perfectly plastic), got " +
+                        et->describe());
+            }
+            if (const auto cs = m.find("cowper_symonds")) {
+                const YamlMap c = cs->map({"D", "q"});
+                mat.cowper_symonds = true;
+                mat.cs_d = c.at("D", "the Cowper-Symonds rate constant D [1/time], a number > 0")
+                               .positive();
+                mat.cs_q = c.at("q", "the Cowper-Symonds exponent q, a number > 0").positive();
+            }
+        }
+        if (mat.type == MaterialType::JohnsonCook) {
+            mat.jc_a = m.at("A", "the Johnson-Cook yield stress A, a number > 0").positive();
+            mat.jc_b =
+                m.at("B", "the Johnson-Cook hardening modulus B, a number >= 0").non_negative();
+            mat.jc_n = m.at("n", "the Johnson-Cook hardening exponent n, a number > 0").positive();
+            mat.jc_c = m.non_negative_or("C", 0.0);
+            mat.reference_strain_rate = m.positive_or("reference_strain_rate", 1.0);
+        }
+        model.materials.push_back(mat);
+    }
+}
+
+void read_sections(const YamlValue& v, Model& model) {
+    const auto items = v.list("sections");
+    if (items.empty())
+        v.fail(
+            "at least one section is required, e.g. - {elements: all, material: steel, "
+            "thickness: 1.0}");
+    model.element_section.assign(model.triangles.size(), -1);
+    for (const YamlValue& item : items) {
+        const YamlMap m =
+            item.map({"elements", "material", "thickness", "thickness_points", "inplane_points"});
+        const auto& elements =
+            named_element_set(model, m.at("elements", "an element set name such as all"));
+        Section s;
+        s.material = named_material(model, m.at("material", "a material name"));
+        if (model.materials[static_cast<std::size_t>(s.material)].plastic()) {
+            s.thickness_points = 5;  // Lobatto: the surfaces yield first (theory.md §7.5)
+            s.inplane_points = 7;
+        }
+        s.thickness = m.at("thickness", "a number > 0").positive();
+        if (const auto tp = m.find("thickness_points")) {
+            const long long n = tp->integer(2, 5);
+            if (n == 4)
+                tp->fail(
+                    "expected 2 (Gauss), 3 or 5 (Lobatto) points through the "
+                    "thickness, got 4");
+            s.thickness_points = static_cast<int>(n);
+        }
+        if (const auto ip = m.find("inplane_points")) {
+            const long long n = ip->integer(3, 7);
+            if (n != 3 && n != 7)
+                ip->fail("expected 3 or 7 in-plane integration points, got " + ip->describe());
+            s.inplane_points = static_cast<int>(n);
+        }
+        const auto index = static_cast<Index>(model.sections.size());
+        model.sections.push_back(s);
+        for (const Index e : elements) model.element_section[static_cast<std::size_t>(e)] = index;
+    }
+    const auto missing =
+        std::find(model.element_section.begin(), model.element_section.end(), Index{-1});
+    if (missing != model.element_section.end()) {
+        const auto e = missing - model.element_section.begin();
+        const auto n_missing = std::count(missing, model.element_section.end(), Index{-1});
+        v.fail("element " + std::to_string(e + 1) + " (and " + std::to_string(n_missing - 1) +
+               " more) has no section; every element needs one, e.g. start with an entry "
+               "for `elements: all`");
+    }
+}
+
+}  // namespace fpmshell
