@@ -156,7 +156,7 @@ def main():
         rows.append(r)
         rows.append(fpmv.row(PROBLEM, "energy balance error", 0.0, s["energy_error"],
                              TOL_ENERGY if (finest or args.quick) else None, relative=False,
-                             note="issue 3: < 1 %" if (finest or args.quick) else "report only",
+                             note="< 1 %" if (finest or args.quick) else "report only",
                              **kw))
         rows.append(fpmv.row(PROBLEM, "initial kinetic energy (half model)", KE_CONTINUUM,
                              e["kinetic"][0], None, unit="in lbf",

@@ -208,7 +208,7 @@ def main():
         rows.append(r)
         rows.append(fpmv.row(PROBLEM, "energy balance error", 0.0, res["summary"]["energy_error"],
                              TOL_ENERGY if tested else None, relative=False,
-                             note="issue 3: < 1 %" if tested else "report only", **kw))
+                             note="< 1 %" if tested else "report only", **kw))
         # reported against the reference points of the figure
         rows.append(point_row("plateau: mean apex w over %g-%g ms" % PLATEAU_T,
                               0.5 * (PLATEAU_W[0] + PLATEAU_W[1]), f["plateau_mean"], mesh, wall,

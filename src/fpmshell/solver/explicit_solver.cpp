@@ -380,10 +380,6 @@ void ExplicitSolver::load(RestartReader& in) {
     if (s_.x0 != model_.nodes) in.fail("restart file of another model: its particles are not those of this mesh");
     if (bodies_.size() != n_bodies) in.fail("restart file of a model with other rigid bodies");
     for (std::size_t p = 0; p < s_.size(); ++p) s_.drill_axis[p] = bc_->drill_axis(p, s_.normal[p]);
-    // a free particle's reactions are zero (earlier versions stored rounding noise there)
-    for (std::size_t p = 0; p < s_.size(); ++p)
-        if (!bc_->constrained(p))
-            s_.reaction[p] = s_.reaction_prev[p] = s_.reaction_moment[p] = s_.reaction_moment_prev[p] = Vec3::Zero();
     in.section("elements");
     elements_.load(in);
     in.section("contact");

@@ -44,18 +44,7 @@ struct ParticleState {
 template <class Archive>
 void transfer(Archive& ar, ParticleState& s) {
     ar(s.x0, s.x, s.x_prev, s.v, s.v_prev, s.omega, s.omega_prev, s.dtheta);
-    if constexpr (requires { ar.format(); }) {  // reading
-        if (ar.format() < 3) {  // formats 1 and 2 kept the rotations as matrices
-            std::vector<Mat3> matrices;
-            ar(matrices);
-            s.rotation.resize(matrices.size());
-            for (std::size_t p = 0; p < matrices.size(); ++p) s.rotation[p] = Quat(matrices[p]);
-        } else {
-            ar(s.rotation);
-        }
-    } else {
-        ar(s.rotation);
-    }
+    ar(s.rotation);
     ar(s.normal);
     ar(s.f_int, s.m_int, s.f_ext, s.m_ext, s.f_ext_prev, s.m_ext_prev, s.reaction, s.reaction_moment);
     ar(s.reaction_prev, s.reaction_moment_prev, s.f_contact, s.f_contact_prev, s.mass, s.inertia, s.full_rotation);
