@@ -22,7 +22,8 @@ Results: history.csv, energy.csv, fields.pvd (open in ParaView), summary.json, l
 }  // namespace
 
 int main(int argc, char** argv) {
-    CLI::App app{"fpmshell — explicit finite particle method for the nonlinear dynamics of thin shells"};
+    CLI::App app{
+        "fpmshell — explicit finite particle method for the nonlinear dynamics of thin shells"};
     app.footer(k_footer);
     app.set_version_flag("--version", std::string("fpmshell ") + FPMSHELL_VERSION);
     app.require_subcommand(1);
@@ -36,15 +37,19 @@ int main(int argc, char** argv) {
     CLI::App* run = app.add_subcommand("run", "run a model and write its results");
     run->add_option("model", model_path, "model file (YAML)")->required();
     run->add_option("-o,--output", out_dir, "result folder (default results/<model file stem>)");
-    run->add_option("--threads", threads, "number of threads (default: all)")->check(CLI::Range(1, 4096));
+    run->add_option("--threads", threads, "number of threads (default: all)")
+        ->check(CLI::Range(1, 4096));
     run->add_flag("--quiet", quiet, "a progress line every ~5 % instead of a live line");
     run->add_flag("--overwrite", overwrite, "replace results of another model in the folder");
-    run->add_option("--set", overrides, "override a scalar of the model, e.g. control.end_time=2e-3");
+    run->add_option("--set", overrides,
+                    "override a scalar of the model, e.g. control.end_time=2e-3");
     run->add_option("--restart-every", restart_every,
-                    "write the restart file DIR/restart.bin every this many wall-clock seconds and at the end")
+                    "write the restart file DIR/restart.bin every this many wall-clock seconds and "
+                    "at the end")
         ->check(CLI::PositiveNumber);
     run->add_flag("--resume", resume,
-                  "continue the run in the result folder from its restart file (a later end_time may be --set)");
+                  "continue the run in the result folder from its restart file (a later end_time "
+                  "may be --set)");
 
     CLI::App* check = app.add_subcommand("check", "parse and validate a model, print a summary");
     check->add_option("model", model_path, "model file (YAML)")->required();
@@ -66,9 +71,9 @@ int main(int argc, char** argv) {
             return 0;
         }
         fpmshell::RunOptions opt;
-        opt.output_dir = out_dir.empty()
-                             ? std::filesystem::path("results") / std::filesystem::path(model_path).stem()
-                             : std::filesystem::path(out_dir);
+        opt.output_dir = out_dir.empty() ? std::filesystem::path("results") /
+                                               std::filesystem::path(model_path).stem()
+                                         : std::filesystem::path(out_dir);
         opt.threads = threads;
         opt.quiet = quiet;
         opt.overwrite = overwrite;

@@ -1,12 +1,11 @@
 #include "fpmshell/contact/contact_solver.hpp"
 
-#include "fpmshell/io/restart_archive.hpp"
-
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 
 #include "fpmshell/contact/closest_point.hpp"
+#include "fpmshell/io/restart_archive.hpp"
 #include "fpmshell/model/node_thickness.hpp"
 
 namespace fpmshell {
@@ -47,7 +46,8 @@ private:
 
 }  // namespace
 
-ContactSolver::ContactSolver(const Model& model, const MeshTopology& topology, const std::vector<Vec3>& inv_mass,
+ContactSolver::ContactSolver(const Model& model, const MeshTopology& topology,
+                             const std::vector<Vec3>& inv_mass,
                              const std::vector<Real>& element_thickness)
     : model_(model), inv_mass_(inv_mass), element_thickness_(element_thickness) {
     // h_s of a particle: the mean thickness of its elements.
@@ -177,7 +177,8 @@ void ContactSolver::collect_self(const Definition& d, const std::vector<Vec3>& x
         buf.closed.clear();
         buf.keys.clear();
         buf.keyed.clear();
-        for (std::size_t i = chunk * k_collect_chunk; i < std::min(n_slaves, (chunk + 1) * k_collect_chunk); ++i) {
+        for (std::size_t i = chunk * k_collect_chunk;
+             i < std::min(n_slaves, (chunk + 1) * k_collect_chunk); ++i) {
             const std::int64_t begin = d.candidate_start[i], end = d.candidate_start[i + 1];
             const Index s = d.slaves[i];
             const std::size_t us = static_cast<std::size_t>(s);
@@ -209,7 +210,8 @@ void ContactSolver::collect_self(const Definition& d, const std::vector<Vec3>& x
                 const Vec3& yc = y[static_cast<std::size_t>(t[2])];
                 const Vec3 n_y = lagrange ? unit_normal(ya, yb, yc) : n_x;
                 const TriangleClosestPoint cp_y =
-                    lagrange ? closest_point_on_triangle(y[us], ya, yb, yc, k_face_tolerance) : cp_x;
+                    lagrange ? closest_point_on_triangle(y[us], ya, yb, yc, k_face_tolerance)
+                             : cp_x;
                 const Vec3 rel_y = y[us] - cp_y.point;
                 if (lagrange &&
                     (cp_x.in_face ? std::abs(d_x) : rel_x.norm()) < k_open_fraction * offset) {
@@ -278,7 +280,8 @@ void ContactSolver::collect_self(const Definition& d, const std::vector<Vec3>& x
     // found) pairs, not the constraints themselves, moves 32 bytes per pair instead of ~190.
     std::sort(keyed_.begin(), keyed_.end());
     for (std::size_t k = 0; k < keyed_.size(); ++k)
-        if (k == 0 || keyed_[k].first != keyed_[k - 1].first) out.push_back(keyed_constraints_[keyed_[k].second]);
+        if (k == 0 || keyed_[k].first != keyed_[k - 1].first)
+            out.push_back(keyed_constraints_[keyed_[k].second]);
 }
 
 void ContactSolver::collect_rigid(const Definition& d, const std::vector<Vec3>& y,
@@ -428,10 +431,13 @@ void ContactSolver::enforce(const std::vector<Vec3>& x, std::vector<Vec3>& x_pre
     particle_moved_at_.resize(x_pred.size(), -1);
     body_moved_at_.resize(body_u_pred.size(), -1);
     auto unchanged_since_evaluated = [&](const Constraint& c) {
-        if (c.evaluated_at < 0 || particle_moved_at_[static_cast<std::size_t>(c.slave)] > c.evaluated_at) return false;
+        if (c.evaluated_at < 0 ||
+            particle_moved_at_[static_cast<std::size_t>(c.slave)] > c.evaluated_at)
+            return false;
         if (c.element >= 0)
             for (std::size_t k = 0; k < 3; ++k)
-                if (particle_moved_at_[static_cast<std::size_t>(c.master[k])] > c.evaluated_at) return false;
+                if (particle_moved_at_[static_cast<std::size_t>(c.master[k])] > c.evaluated_at)
+                    return false;
         return c.body < 0 || body_moved_at_[static_cast<std::size_t>(c.body)] <= c.evaluated_at;
     };
     int sweeps = 0;

@@ -50,8 +50,8 @@ public:
     /// inv_mass: per particle and direction, 0 where the motion is fixed or prescribed.
     /// element_thickness: per element of the model.
     /// topology: the model's, for the 2-ring of every slave (§8.1).
-    ContactSolver(const Model& model, const MeshTopology& topology, const std::vector<Vec3>& inv_mass,
-                  const std::vector<Real>& element_thickness);
+    ContactSolver(const Model& model, const MeshTopology& topology,
+                  const std::vector<Vec3>& inv_mass, const std::vector<Real>& element_thickness);
 
     [[nodiscard]] bool empty() const { return definitions_.empty(); }
     [[nodiscard]] bool has_penalty() const { return has_penalty_; }
@@ -155,7 +155,7 @@ private:
         std::vector<std::array<Index, 3>> keys;
     };
     static constexpr std::size_t k_collect_chunk = 256;  ///< slaves per chunk
-    std::vector<CollectBuffers> collect_chunks_;          ///< scratch, per chunk
+    std::vector<CollectBuffers> collect_chunks_;         ///< scratch, per chunk
     ContactStatistics stats_;
 };
 

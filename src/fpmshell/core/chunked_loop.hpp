@@ -21,7 +21,8 @@ inline constexpr Index k_chunk_size = 256;
 /// `sums` (a std::array<Real, N> it receives zeroed per chunk). The body must touch only
 /// index i's data besides `sums`. scratch: per-chunk partial sums, reused between calls.
 template <int N, class Body>
-std::array<Real, N> chunked_sum(Index n, [[maybe_unused]] bool parallel, std::vector<std::array<Real, N>>& scratch, Body&& body) {
+std::array<Real, N> chunked_sum(Index n, [[maybe_unused]] bool parallel,
+                                std::vector<std::array<Real, N>>& scratch, Body&& body) {
     const Index n_chunks = (n + k_chunk_size - 1) / k_chunk_size;
     scratch.resize(static_cast<std::size_t>(n_chunks));
 #pragma omp parallel for schedule(static) if (parallel)

@@ -27,9 +27,8 @@ namespace fpmshell {
     const Real d = 1.0 - b * t2;
     const Real bxy = b * x * y, bxz = b * x * z, byz = b * y * z;
     Mat3 r;
-    r << d + b * x * x, bxy - a * z, bxz + a * y,
-         bxy + a * z, d + b * y * y, byz - a * x,
-         bxz - a * y, byz + a * x, d + b * z * z;
+    r << d + b * x * x, bxy - a * z, bxz + a * y, bxy + a * z, d + b * y * y, byz - a * x,
+        bxz - a * y, byz + a * x, d + b * z * z;
     return r;
 }
 
@@ -41,7 +40,8 @@ namespace fpmshell {
     Real c, s;
     if (t2 < 1e-4) {  // t < 0.01 (every step of a stable run): series, next terms < 1e-22
         c = 1.0 - t2 * (1.0 / 8.0) * (1.0 - t2 * (1.0 / 48.0) * (1.0 - t2 * (1.0 / 120.0)));
-        s = 0.5 * (1.0 - t2 * (1.0 / 24.0) * (1.0 - t2 * (1.0 / 80.0) * (1.0 - t2 * (1.0 / 168.0))));
+        s = 0.5 *
+            (1.0 - t2 * (1.0 / 24.0) * (1.0 - t2 * (1.0 / 80.0) * (1.0 - t2 * (1.0 / 168.0))));
     } else {
         const Real t = std::sqrt(t2);
         c = std::cos(0.5 * t);
@@ -74,7 +74,9 @@ namespace fpmshell {
 
 /// Rotation vector of a quaternion (normalised first: the product of many steps' increments
 /// drifts from unit length by rounding).
-[[nodiscard]] inline Vec3 rotation_vector(const Quat& q) { return rotation_vector(q.normalized().toRotationMatrix()); }
+[[nodiscard]] inline Vec3 rotation_vector(const Quat& q) {
+    return rotation_vector(q.normalized().toRotationMatrix());
+}
 
 /// Minimal rotation taking unit vector a to unit vector b (a.b > -1): I + [v]x + [v]x^2/(1+c).
 [[nodiscard]] inline Mat3 minimal_rotation(const Vec3& a, const Vec3& b) {
@@ -86,9 +88,8 @@ namespace fpmshell {
     const Real d = 1.0 - f * v.squaredNorm();
     const Real fxy = f * x * y, fxz = f * x * z, fyz = f * y * z;
     Mat3 r;
-    r << d + f * x * x, fxy - z, fxz + y,
-         fxy + z, d + f * y * y, fyz - x,
-         fxz - y, fyz + x, d + f * z * z;
+    r << d + f * x * x, fxy - z, fxz + y, fxy + z, d + f * y * y, fyz - x, fxz - y, fyz + x,
+        d + f * z * z;
     return r;
 }
 

@@ -29,7 +29,8 @@ using MaskOf = decltype(std::declval<T>() < std::declval<T>());
 
 /// a where m, b elsewhere.
 [[nodiscard]] inline Real select(bool m, Real a, Real b) { return m ? a : b; }
-[[nodiscard]] inline RealPack select(const RealPack::mask_type& m, const RealPack& a, const RealPack& b) {
+[[nodiscard]] inline RealPack select(const RealPack::mask_type& m, const RealPack& a,
+                                     const RealPack& b) {
     RealPack r = b;
     stdx::where(m, r) = a;
     return r;
@@ -37,7 +38,9 @@ using MaskOf = decltype(std::declval<T>() < std::declval<T>());
 [[nodiscard]] inline bool all_lanes(bool m) { return m; }
 [[nodiscard]] inline bool all_lanes(const RealPack::mask_type& m) { return stdx::all_of(m); }
 [[nodiscard]] inline bool lane(bool m, int /*l*/) { return m; }
-[[nodiscard]] inline bool lane(const RealPack::mask_type& m, int l) { return m[static_cast<std::size_t>(l)]; }
+[[nodiscard]] inline bool lane(const RealPack::mask_type& m, int l) {
+    return m[static_cast<std::size_t>(l)];
+}
 [[nodiscard]] inline Real lane(Real v, int /*l*/) { return v; }
 [[nodiscard]] inline Real lane(const RealPack& v, int l) { return v[static_cast<std::size_t>(l)]; }
 inline void set_lane(Real& v, int /*l*/, Real x) { v = x; }
@@ -79,19 +82,29 @@ struct V3 {
     T x, y, z;
 };
 template <class T>
-[[nodiscard]] FPMSHELL_INLINE V3<T> operator+(const V3<T>& a, const V3<T>& b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
+[[nodiscard]] FPMSHELL_INLINE V3<T> operator+(const V3<T>& a, const V3<T>& b) {
+    return {a.x + b.x, a.y + b.y, a.z + b.z};
+}
 template <class T>
-[[nodiscard]] FPMSHELL_INLINE V3<T> operator-(const V3<T>& a, const V3<T>& b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
+[[nodiscard]] FPMSHELL_INLINE V3<T> operator-(const V3<T>& a, const V3<T>& b) {
+    return {a.x - b.x, a.y - b.y, a.z - b.z};
+}
 template <class T>
-[[nodiscard]] FPMSHELL_INLINE V3<T> operator*(const T& s, const V3<T>& a) { return {s * a.x, s * a.y, s * a.z}; }
+[[nodiscard]] FPMSHELL_INLINE V3<T> operator*(const T& s, const V3<T>& a) {
+    return {s * a.x, s * a.y, s * a.z};
+}
 template <class T>
-[[nodiscard]] FPMSHELL_INLINE T dot(const V3<T>& a, const V3<T>& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+[[nodiscard]] FPMSHELL_INLINE T dot(const V3<T>& a, const V3<T>& b) {
+    return a.x * b.x + a.y * b.y + a.z * b.z;
+}
 template <class T>
 [[nodiscard]] FPMSHELL_INLINE V3<T> cross(const V3<T>& a, const V3<T>& b) {
     return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
 }
 template <class T>
-[[nodiscard]] FPMSHELL_INLINE T squared_norm(const V3<T>& a) { return dot(a, a); }
+[[nodiscard]] FPMSHELL_INLINE T squared_norm(const V3<T>& a) {
+    return dot(a, a);
+}
 
 /// A 3x3 matrix of T, stored by rows.
 template <class T>

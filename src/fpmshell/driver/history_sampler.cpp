@@ -12,29 +12,52 @@ Real particle_quantity(const ExplicitSolver& solver, Quantity q, Index p) {
     const std::size_t up = static_cast<std::size_t>(p);
     const Vec3 u = s.x[up] - s.x0[up];
     switch (q) {
-        case Quantity::Ux: return u.x();
-        case Quantity::Uy: return u.y();
-        case Quantity::Uz: return u.z();
-        case Quantity::Umag: return u.norm();
-        case Quantity::Vx: return s.v[up].x();
-        case Quantity::Vy: return s.v[up].y();
-        case Quantity::Vz: return s.v[up].z();
-        case Quantity::Ax: return solver.acceleration(p).x();
-        case Quantity::Ay: return solver.acceleration(p).y();
-        case Quantity::Az: return solver.acceleration(p).z();
-        case Quantity::Rx: return rotation_vector(s.rotation[up]).x();
-        case Quantity::Ry: return rotation_vector(s.rotation[up]).y();
-        case Quantity::Rz: return rotation_vector(s.rotation[up]).z();
-        case Quantity::ReactionX: return s.reaction[up].x();
-        case Quantity::ReactionY: return s.reaction[up].y();
-        case Quantity::ReactionZ: return s.reaction[up].z();
-        case Quantity::ReactionMx: return s.reaction_moment[up].x();
-        case Quantity::ReactionMy: return s.reaction_moment[up].y();
-        case Quantity::ReactionMz: return s.reaction_moment[up].z();
-        case Quantity::ForceX: return s.f_ext[up].x();
-        case Quantity::ForceY: return s.f_ext[up].y();
-        case Quantity::ForceZ: return s.f_ext[up].z();
-        default: break;  // rigid-body quantities: body_quantity
+        case Quantity::Ux:
+            return u.x();
+        case Quantity::Uy:
+            return u.y();
+        case Quantity::Uz:
+            return u.z();
+        case Quantity::Umag:
+            return u.norm();
+        case Quantity::Vx:
+            return s.v[up].x();
+        case Quantity::Vy:
+            return s.v[up].y();
+        case Quantity::Vz:
+            return s.v[up].z();
+        case Quantity::Ax:
+            return solver.acceleration(p).x();
+        case Quantity::Ay:
+            return solver.acceleration(p).y();
+        case Quantity::Az:
+            return solver.acceleration(p).z();
+        case Quantity::Rx:
+            return rotation_vector(s.rotation[up]).x();
+        case Quantity::Ry:
+            return rotation_vector(s.rotation[up]).y();
+        case Quantity::Rz:
+            return rotation_vector(s.rotation[up]).z();
+        case Quantity::ReactionX:
+            return s.reaction[up].x();
+        case Quantity::ReactionY:
+            return s.reaction[up].y();
+        case Quantity::ReactionZ:
+            return s.reaction[up].z();
+        case Quantity::ReactionMx:
+            return s.reaction_moment[up].x();
+        case Quantity::ReactionMy:
+            return s.reaction_moment[up].y();
+        case Quantity::ReactionMz:
+            return s.reaction_moment[up].z();
+        case Quantity::ForceX:
+            return s.f_ext[up].x();
+        case Quantity::ForceY:
+            return s.f_ext[up].y();
+        case Quantity::ForceZ:
+            return s.f_ext[up].z();
+        default:
+            break;  // rigid-body quantities: body_quantity
     }
     return 0;
 }
@@ -42,19 +65,32 @@ Real particle_quantity(const ExplicitSolver& solver, Quantity q, Index p) {
 Real body_quantity(const ExplicitSolver& solver, Quantity q, Index b) {
     const RigidBodyState& body = solver.bodies()[static_cast<std::size_t>(b)];
     switch (q) {
-        case Quantity::RigidUx: return body.u.x();
-        case Quantity::RigidUy: return body.u.y();
-        case Quantity::RigidUz: return body.u.z();
-        case Quantity::RigidVx: return body.v.x();
-        case Quantity::RigidVy: return body.v.y();
-        case Quantity::RigidVz: return body.v.z();
-        case Quantity::RigidAx: return solver.body_acceleration(b).x();
-        case Quantity::RigidAy: return solver.body_acceleration(b).y();
-        case Quantity::RigidAz: return solver.body_acceleration(b).z();
-        case Quantity::RigidForceX: return body.force.x();
-        case Quantity::RigidForceY: return body.force.y();
-        case Quantity::RigidForceZ: return body.force.z();
-        default: break;
+        case Quantity::RigidUx:
+            return body.u.x();
+        case Quantity::RigidUy:
+            return body.u.y();
+        case Quantity::RigidUz:
+            return body.u.z();
+        case Quantity::RigidVx:
+            return body.v.x();
+        case Quantity::RigidVy:
+            return body.v.y();
+        case Quantity::RigidVz:
+            return body.v.z();
+        case Quantity::RigidAx:
+            return solver.body_acceleration(b).x();
+        case Quantity::RigidAy:
+            return solver.body_acceleration(b).y();
+        case Quantity::RigidAz:
+            return solver.body_acceleration(b).z();
+        case Quantity::RigidForceX:
+            return body.force.x();
+        case Quantity::RigidForceY:
+            return body.force.y();
+        case Quantity::RigidForceZ:
+            return body.force.z();
+        default:
+            break;
     }
     return 0;
 }
@@ -77,10 +113,18 @@ std::vector<Real> sample_histories(const Model& model, const ExplicitSolver& sol
         }
         switch (h.reduce) {
             case Reduce::Single:
-            case Reduce::Sum: out.push_back(acc); break;
-            case Reduce::Mean: out.push_back(h.nodes.empty() ? 0 : acc / static_cast<Real>(h.nodes.size())); break;
-            case Reduce::Max: out.push_back(hi); break;
-            case Reduce::Min: out.push_back(lo); break;
+            case Reduce::Sum:
+                out.push_back(acc);
+                break;
+            case Reduce::Mean:
+                out.push_back(h.nodes.empty() ? 0 : acc / static_cast<Real>(h.nodes.size()));
+                break;
+            case Reduce::Max:
+                out.push_back(hi);
+                break;
+            case Reduce::Min:
+                out.push_back(lo);
+                break;
         }
     }
     return out;

@@ -28,9 +28,12 @@ int InterruptGuard::received() { return static_cast<int>(g_received); }
 
 const char* signal_name(int signal_number) {
     switch (signal_number) {
-        case SIGINT: return "SIGINT";
-        case SIGTERM: return "SIGTERM";
-        default: return "a signal";
+        case SIGINT:
+            return "SIGINT";
+        case SIGTERM:
+            return "SIGTERM";
+        default:
+            return "a signal";
     }
 }
 

@@ -134,15 +134,18 @@ MeshData square_tube(const YamlValue& mesh) {
     if (const auto s = m.find("sector_deg")) {
         p.sector_deg = s->real();
         if (!(std::abs(p.sector_deg - 90) < 1e-9 || std::abs(p.sector_deg - 360) < 1e-9))
-            s->fail("expected 90 (the quarter x >= 0, y >= 0, for two symmetry planes) or 360 (the "
-                    "whole tube), got " + s->describe());
+            s->fail(
+                "expected 90 (the quarter x >= 0, y >= 0, for two symmetry planes) or 360 (the "
+                "whole tube), got " +
+                s->describe());
     }
     p.divisions_width = divisions(m, "divisions_width");
     p.divisions_length = divisions(m, "divisions_length");
     p.pattern = read_pattern(m);
     const double faces = std::abs(p.sector_deg - 90) < 1e-9 ? 2 : 4;
-    check_size(mesh, grid_mesh_size(faces * static_cast<double>(p.divisions_width),
-                                    static_cast<double>(p.divisions_length), p.pattern, faces == 4));
+    check_size(mesh,
+               grid_mesh_size(faces * static_cast<double>(p.divisions_width),
+                              static_cast<double>(p.divisions_length), p.pattern, faces == 4));
     return generate_square_tube(p);
 }
 

@@ -149,17 +149,24 @@ void prepare_run_directory(const fs::path& dir, const fs::path& model_file, bool
 void prepare_resume_directory(const fs::path& dir, const fs::path& model_file, bool overwrite) {
     const std::string model = absolute_model_path(model_file).string();
     std::error_code ec;
-    if (!fs::is_directory(dir, ec)) dir_error(dir, "there is no result folder to resume a run from; give it with -o.");
+    if (!fs::is_directory(dir, ec))
+        dir_error(dir, "there is no result folder to resume a run from; give it with -o.");
     if (!fs::exists(dir / "restart.bin", ec))
-        dir_error(dir, "the folder holds no restart file (restart.bin) to resume from; the run must be started "
-                       "with --restart-every.");
+        dir_error(dir,
+                  "the folder holds no restart file (restart.bin) to resume from; the run must be "
+                  "started "
+                  "with --restart-every.");
     const std::string recorded = recorded_model(dir);
     if (recorded != model && !overwrite) {
-        const std::string other = recorded.empty() ? "a model it cannot identify" : "'" + recorded + "'";
-        dir_error(dir, "the restart file belongs to " + other + "; use --overwrite to resume it with this model file.");
+        const std::string other =
+            recorded.empty() ? "a model it cannot identify" : "'" + recorded + "'";
+        dir_error(dir, "the restart file belongs to " + other +
+                           "; use --overwrite to resume it with this model file.");
     }
     fs::create_directories(dir / k_fields_folder, ec);
-    if (ec) dir_error(dir, "cannot create the folder '" + (dir / k_fields_folder).string() + "' (" + ec.message() + ").");
+    if (ec)
+        dir_error(dir, "cannot create the folder '" + (dir / k_fields_folder).string() + "' (" +
+                           ec.message() + ").");
 }
 
 void remove_frames_from(const fs::path& dir, int first) {

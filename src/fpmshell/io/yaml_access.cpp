@@ -232,7 +232,7 @@ std::vector<YamlValue> YamlValue::list(const std::string& what) const {
 }
 
 std::vector<YamlValue> YamlValue::list_of(std::size_t n, const std::string& what,
-                                           const std::string& expected) const {
+                                          const std::string& expected) const {
     auto items = list(what);
     if (items.size() != n)
         fail("expected " + expected + ", got " +

@@ -196,7 +196,8 @@ MeshData generate_annulus(const AnnulusParams& p) {
 MeshData generate_square_tube(const SquareTubeParams& p) {
     require(p.width > 0 && p.length > 0, "tube width and length must be positive");
     const bool quarter = std::abs(p.sector_deg - 90) < 1e-9;
-    require(quarter || std::abs(p.sector_deg - 360) < 1e-9, "tube sector must be 90 or 360 degrees");
+    require(quarter || std::abs(p.sector_deg - 360) < 1e-9,
+            "tube sector must be 90 or 360 degrees");
     require(p.divisions_width >= 1 && p.divisions_length >= 1, "tube divisions must be at least 1");
     const Index faces = quarter ? 2 : 4;
     const Index dw = p.divisions_width;
@@ -206,16 +207,21 @@ MeshData generate_square_tube(const SquareTubeParams& p) {
     // Position along the perimeter: face k = floor(u / dw), fraction t along it. Tangents
     // x_u x x_z point outwards on every face, so counter-clockwise in (u, z) is outwards.
     auto perimeter = [&](Real u) -> Vec2 {
-        const Index k = std::min<Index>(static_cast<Index>(std::floor(u / static_cast<Real>(dw))), faces - 1);
+        const Index k =
+            std::min<Index>(static_cast<Index>(std::floor(u / static_cast<Real>(dw))), faces - 1);
         const Real t = (u - static_cast<Real>(k * dw)) / static_cast<Real>(dw);
         if (quarter)  // face 0: x = half, y 0 -> half; face 1: y = half, x half -> 0
             return k == 0 ? Vec2(half, t * half) : Vec2(half - t * half, half);
         const Real a = -half + t * p.width;
         switch (k) {
-            case 0: return {half, a};
-            case 1: return {-a, half};
-            case 2: return {-half, -a};
-            default: return {a, -half};
+            case 0:
+                return {half, a};
+            case 1:
+                return {-a, half};
+            case 2:
+                return {-half, -a};
+            default:
+                return {a, -half};
         }
     };
     MeshData m = map_grid(g, [&](Real u, Real v) {
@@ -236,7 +242,8 @@ MeshData generate_square_tube(const SquareTubeParams& p) {
     if (quarter) {
         s["y0"] = column_nodes(g, 0);
         s["x0"] = column_nodes(g, 2 * dw);
-        for (Index n : s["x0"]) m.nodes[static_cast<std::size_t>(n)].x() = 0;  // exactly on the plane
+        for (Index n : s["x0"])
+            m.nodes[static_cast<std::size_t>(n)].x() = 0;  // exactly on the plane
     }
     return m;
 }

@@ -35,7 +35,8 @@ template <class F>
 void look_up(void* handle, const char* name, F& out) {
     void* symbol = ::dlsym(handle, name);
     if (!symbol)
-        throw GmshError(std::string("the Gmsh library " FPMSHELL_GMSH_LIBRARY " has no function ") + name);
+        throw GmshError(std::string("the Gmsh library " FPMSHELL_GMSH_LIBRARY " has no function ") +
+                        name);
     out = reinterpret_cast<F>(symbol);
 }
 
@@ -46,7 +47,8 @@ GmshLibrary::GmshLibrary() {
     void* handle = ::dlopen(FPMSHELL_GMSH_LIBRARY, RTLD_NOW | RTLD_LOCAL);
     if (!handle) {
         const char* why = ::dlerror();
-        throw GmshError(std::string("cannot load the Gmsh library (") + (why ? why : FPMSHELL_GMSH_LIBRARY) +
+        throw GmshError(std::string("cannot load the Gmsh library (") +
+                        (why ? why : FPMSHELL_GMSH_LIBRARY) +
                         "); install the Debian package libgmsh4.8 to read .msh files");
     }
     auto* f = new Functions;  // lives as long as the process, like the library
@@ -108,7 +110,8 @@ std::string last_error(const GmshLibrary::Functions& f, const char* what) {
     char* message = nullptr;
     int ierr = 0;
     f.last_error(&message, &ierr);
-    std::string text = (ierr == 0 && message && *message) ? std::string(message) : std::string(what) + " failed";
+    std::string text =
+        (ierr == 0 && message && *message) ? std::string(message) : std::string(what) + " failed";
     if (message) f.free(message);
     return text;
 }
@@ -131,14 +134,16 @@ void GmshLibrary::get_nodes(std::vector<std::size_t>& tags, std::vector<double>&
     GmshArray<std::size_t> t(f_->free);
     GmshArray<double> c(f_->free), parametric(f_->free);
     int ierr = 0;
-    f_->get_nodes(&t.data, &t.size, &c.data, &c.size, &parametric.data, &parametric.size, -1, -1, 0, 0, &ierr);
+    f_->get_nodes(&t.data, &t.size, &c.data, &c.size, &parametric.data, &parametric.size, -1, -1, 0,
+                  0, &ierr);
     if (ierr != 0) throw GmshError(last_error(*f_, "reading the nodes"));
     tags = t.vector();
     coords = c.vector();
 }
 
 void GmshLibrary::get_elements(std::vector<int>& types, std::vector<std::vector<std::size_t>>& tags,
-                               std::vector<std::vector<std::size_t>>& nodes, int dim, int tag) const {
+                               std::vector<std::vector<std::size_t>>& nodes, int dim,
+                               int tag) const {
     GmshArray<int> ty(f_->free);
     std::size_t** tag_lists = nullptr;
     std::size_t* tag_sizes = nullptr;
@@ -147,8 +152,8 @@ void GmshLibrary::get_elements(std::vector<int>& types, std::vector<std::vector<
     std::size_t* node_sizes = nullptr;
     std::size_t n_node_lists = 0;
     int ierr = 0;
-    f_->get_elements(&ty.data, &ty.size, &tag_lists, &tag_sizes, &n_tag_lists, &node_lists, &node_sizes, &n_node_lists,
-                     dim, tag, &ierr);
+    f_->get_elements(&ty.data, &ty.size, &tag_lists, &tag_sizes, &n_tag_lists, &node_lists,
+                     &node_sizes, &n_node_lists, dim, tag, &ierr);
     types = ty.vector();
     tags.assign(n_tag_lists, {});
     nodes.assign(n_node_lists, {});
@@ -160,8 +165,8 @@ void GmshLibrary::get_elements(std::vector<int>& types, std::vector<std::vector<
         if (ierr == 0) nodes[k].assign(node_lists[k], node_lists[k] + node_sizes[k]);
         f_->free(node_lists[k]);
     }
-    for (void* p : {static_cast<void*>(tag_lists), static_cast<void*>(tag_sizes), static_cast<void*>(node_lists),
-                    static_cast<void*>(node_sizes)})
+    for (void* p : {static_cast<void*>(tag_lists), static_cast<void*>(tag_sizes),
+                    static_cast<void*>(node_lists), static_cast<void*>(node_sizes)})
         if (p) f_->free(p);
     if (ierr != 0) throw GmshError(last_error(*f_, "reading the elements"));
 }
@@ -171,7 +176,8 @@ std::string GmshLibrary::element_type_name(int type) const {
     int dim = 0, order = 0, n_nodes = 0, n_primary = 0;
     GmshArray<double> local(f_->free);
     int ierr = 0;
-    f_->get_element_properties(type, &name, &dim, &order, &n_nodes, &local.data, &local.size, &n_primary, &ierr);
+    f_->get_element_properties(type, &name, &dim, &order, &n_nodes, &local.data, &local.size,
+                               &n_primary, &ierr);
     std::string out = (ierr == 0 && name) ? std::string(name) : std::string("unknown");
     if (name) f_->free(name);
     return out;
@@ -183,7 +189,8 @@ std::vector<std::pair<int, int>> GmshLibrary::physical_groups() const {
     f_->get_physical_groups(&dim_tags.data, &dim_tags.size, -1, &ierr);
     if (ierr != 0) throw GmshError(last_error(*f_, "reading the physical groups"));
     std::vector<std::pair<int, int>> out;
-    for (std::size_t k = 0; k + 1 < dim_tags.size; k += 2) out.emplace_back(dim_tags.data[k], dim_tags.data[k + 1]);
+    for (std::size_t k = 0; k + 1 < dim_tags.size; k += 2)
+        out.emplace_back(dim_tags.data[k], dim_tags.data[k + 1]);
     return out;
 }
 
@@ -209,7 +216,8 @@ std::vector<std::size_t> GmshLibrary::nodes_for_physical_group(int dim, int tag)
     GmshArray<std::size_t> tags(f_->free);
     GmshArray<double> coords(f_->free);
     int ierr = 0;
-    f_->get_nodes_for_physical_group(dim, tag, &tags.data, &tags.size, &coords.data, &coords.size, &ierr);
+    f_->get_nodes_for_physical_group(dim, tag, &tags.data, &tags.size, &coords.data, &coords.size,
+                                     &ierr);
     if (ierr != 0) throw GmshError(last_error(*f_, "reading the nodes of a physical group"));
     return tags.vector();
 }

@@ -123,7 +123,8 @@ MeshData read_in_process(const std::string& path) {
                     }
                 }
             } else {
-                fail(path, "surface elements of Gmsh type " + std::to_string(type) + " (" + gmsh.element_type_name(type) +
+                fail(path, "surface elements of Gmsh type " + std::to_string(type) + " (" +
+                               gmsh.element_type_name(type) +
                                ") are not supported; expected 3-node triangles or 4-node "
                                "quadrangles (set Mesh.ElementOrder = 1)");
             }
@@ -357,8 +358,8 @@ MeshData read_gmsh(const std::string& path, std::chrono::seconds time_limit) {
     while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
     }
     if (timed_out)
-        fail(path, "Gmsh did not finish reading the file within " + std::to_string(time_limit.count()) +
-                       " s; the file is probably corrupt");
+        fail(path, "Gmsh did not finish reading the file within " +
+                       std::to_string(time_limit.count()) + " s; the file is probably corrupt");
     if (WIFSIGNALED(status))
         fail(path, "Gmsh crashed while reading the file (signal " +
                        std::to_string(WTERMSIG(status)) +

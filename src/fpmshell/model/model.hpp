@@ -39,13 +39,14 @@ struct Material {
     Real youngs_modulus = 0;  ///< E
     Real poisson_ratio = 0;   ///< nu
     // Plastic materials (theory.md §7).
-    Real yield_stress = 0;     ///< j2_plastic: initial yield stress
-    Real tangent_modulus = 0;  ///< j2_plastic: slope E_t of the bilinear curve; 0 = perfectly plastic
-    Real hardening_mix = 1;    ///< beta: 1 isotropic, 0 kinematic
+    Real yield_stress = 0;  ///< j2_plastic: initial yield stress
+    Real tangent_modulus =
+        0;                   ///< j2_plastic: slope E_t of the bilinear curve; 0 = perfectly plastic
+    Real hardening_mix = 1;  ///< beta: 1 isotropic, 0 kinematic
     Real jc_a = 0, jc_b = 0, jc_n = 1, jc_c = 0;  ///< johnson_cook A, B, n, C
-    Real reference_strain_rate = 1;             ///< johnson_cook eps_dot_0
-    bool cowper_symonds = false;                ///< j2_plastic: Cowper-Symonds rate factor on
-    Real cs_d = 0, cs_q = 1;                    ///< its D and q
+    Real reference_strain_rate = 1;               ///< johnson_cook eps_dot_0
+    bool cowper_symonds = false;                  ///< j2_plastic: Cowper-Symonds rate factor on
+    Real cs_d = 0, cs_q = 1;                      ///< its D and q
 
     [[nodiscard]] bool plastic() const { return type != MaterialType::Elastic; }
 };
@@ -127,11 +128,11 @@ struct Control {
 /// by the contact forces it receives; a `fixed` body has infinite mass and keeps its velocity.
 struct RigidBody {
     std::string name;
-    Real mass = 0;                ///< 0 when fixed
-    bool fixed = false;           ///< infinite mass: moves at `velocity` whatever it meets
-    Vec3 point = Vec3::Zero();    ///< a point of the plane face at t = 0
-    Vec3 normal = Vec3::UnitZ();  ///< unit normal of the face, pointing towards the shell
-    Vec3 velocity = Vec3::Zero(); ///< initial velocity
+    Real mass = 0;                 ///< 0 when fixed
+    bool fixed = false;            ///< infinite mass: moves at `velocity` whatever it meets
+    Vec3 point = Vec3::Zero();     ///< a point of the plane face at t = 0
+    Vec3 normal = Vec3::UnitZ();   ///< unit normal of the face, pointing towards the shell
+    Vec3 velocity = Vec3::Zero();  ///< initial velocity
 };
 
 enum class ContactType { Self, Rigid };
@@ -153,11 +154,41 @@ struct ContactDefinition {
 };
 
 enum class Quantity {
-    Ux, Uy, Uz, Umag, Vx, Vy, Vz, Ax, Ay, Az, Rx, Ry, Rz,
-    ReactionX, ReactionY, ReactionZ, ReactionMx, ReactionMy, ReactionMz, ForceX, ForceY, ForceZ,
+    Ux,
+    Uy,
+    Uz,
+    Umag,
+    Vx,
+    Vy,
+    Vz,
+    Ax,
+    Ay,
+    Az,
+    Rx,
+    Ry,
+    Rz,
+    ReactionX,
+    ReactionY,
+    ReactionZ,
+    ReactionMx,
+    ReactionMy,
+    ReactionMz,
+    ForceX,
+    ForceY,
+    ForceZ,
     // rigid bodies (rigid_<name>_<quantity>): displacement, velocity, acceleration, contact force
-    RigidUx, RigidUy, RigidUz, RigidVx, RigidVy, RigidVz, RigidAx, RigidAy, RigidAz,
-    RigidForceX, RigidForceY, RigidForceZ
+    RigidUx,
+    RigidUy,
+    RigidUz,
+    RigidVx,
+    RigidVy,
+    RigidVz,
+    RigidAx,
+    RigidAy,
+    RigidAz,
+    RigidForceX,
+    RigidForceY,
+    RigidForceZ
 };
 enum class Reduce { Single, Sum, Max, Min, Mean };
 
@@ -180,8 +211,8 @@ struct Model {
     std::string title;
     std::string source_file;  ///< path of the YAML file, for messages
 
-    std::vector<Vec3> nodes;                         ///< initial particle positions
-    std::vector<std::array<Index, 3>> triangles;     ///< counter-clockwise about the normal
+    std::vector<Vec3> nodes;                                 ///< initial particle positions
+    std::vector<std::array<Index, 3>> triangles;             ///< counter-clockwise about the normal
     std::map<std::string, std::vector<Index>> node_sets;     ///< sorted, unique; has "all"
     std::map<std::string, std::vector<Index>> element_sets;  ///< sorted, unique; has "all"
 

@@ -10,9 +10,9 @@
 namespace fpmshell {
 
 /// element_thickness: one value per triangle. Particles on no triangle get 0.
-[[nodiscard]] inline std::vector<Real> mean_node_thickness(const std::vector<std::array<Index, 3>>& triangles,
-                                                           const std::vector<Real>& element_thickness,
-                                                           std::size_t n_nodes) {
+[[nodiscard]] inline std::vector<Real> mean_node_thickness(
+    const std::vector<std::array<Index, 3>>& triangles, const std::vector<Real>& element_thickness,
+    std::size_t n_nodes) {
     std::vector<Real> h(n_nodes, 0.0);
     std::vector<int> count(n_nodes, 0);
     for (std::size_t e = 0; e < triangles.size(); ++e)

@@ -4,7 +4,8 @@
 
 namespace fpmshell {
 
-BoundaryConditions::BoundaryConditions(const Model& model, const std::vector<std::uint8_t>& full_rotation) {
+BoundaryConditions::BoundaryConditions(const Model& model,
+                                       const std::vector<std::uint8_t>& full_rotation) {
     const std::size_t np = model.nodes.size();
     fixed_.assign(np, {});
     prescribed_translation_.assign(np, 0);
@@ -57,20 +58,24 @@ std::vector<Vec3> BoundaryConditions::free_inverse_mass(const std::vector<Real>&
     return inv_mass;
 }
 
-void BoundaryConditions::impose_prescribed_motions(ParticleState& s, const std::vector<Curve>& curves,
+void BoundaryConditions::impose_prescribed_motions(ParticleState& s,
+                                                   const std::vector<Curve>& curves,
                                                    const PrescribedMotionTimes& at) {
     for (const Prescribed& pr : prescribed_) {
         const std::size_t p = static_cast<std::size_t>(pr.particle);
-        if (pr.kind == PrescribedKind::AngularVelocity) {  // about a fixed axis, no tangent-plane projection
+        if (pr.kind ==
+            PrescribedKind::AngularVelocity) {  // about a fixed axis, no tangent-plane projection
             const Vec3 omega_before = s.omega[p];
             if (at.relaxation) {
-                const Vec3 target = curve_factor_integral(curves, pr.curve, at.load_time) * pr.value;
+                const Vec3 target =
+                    curve_factor_integral(curves, pr.curve, at.load_time) * pr.value;
                 s.omega[p] = (target - prescribed_rotation_applied_[p]) / at.dt_new;
             } else {
                 s.omega[p] = curve_factor(curves, pr.curve, at.t_half) * pr.value;
             }
             prescribed_rotation_applied_[p] += at.dt_new * s.omega[p];
-            s.reaction_moment[p] += (s.inertia[p] / (at.c1 * at.dt_n)) * (s.omega[p] - omega_before);
+            s.reaction_moment[p] +=
+                (s.inertia[p] / (at.c1 * at.dt_n)) * (s.omega[p] - omega_before);
             continue;
         }
         const Vec3 v_before = s.v[p];

@@ -30,7 +30,9 @@ public:
     BoundaryConditions(const Model& model, const std::vector<std::uint8_t>& full_rotation);
 
     [[nodiscard]] const std::array<bool, 6>& fixed(std::size_t p) const { return fixed_[p]; }
-    [[nodiscard]] bool prescribed_translation(std::size_t p) const { return prescribed_translation_[p]; }
+    [[nodiscard]] bool prescribed_translation(std::size_t p) const {
+        return prescribed_translation_[p];
+    }
     [[nodiscard]] bool prescribed_rotation(std::size_t p) const { return prescribed_rotation_[p]; }
     /// A fixed or prescribed component: the only particles with reactions.
     [[nodiscard]] bool constrained(std::size_t p) const { return constrained_[p]; }
@@ -54,7 +56,9 @@ public:
     }
     /// Whether the tangent plane is particle p's only rotation constraint: a tangent vector
     /// then needs no further projection (it would change by rounding only).
-    [[nodiscard]] bool tangent_plane_only(std::size_t p) const { return tangent_plane_[p] && n_fixed_rotations_[p] == 0; }
+    [[nodiscard]] bool tangent_plane_only(std::size_t p) const {
+        return tangent_plane_[p] && n_fixed_rotations_[p] == 0;
+    }
     /// w with the constrained rotation directions of particle p removed (Gram-Schmidt on the
     /// fly): the normal n where it rotates in its tangent plane, then the fixed rotation axes.
     [[nodiscard]] Vec3 without_constrained_rotation(std::size_t p, Vec3 w, const Vec3& n) const {
@@ -62,16 +66,19 @@ public:
         int n_dirs = 0;
         if (tangent_plane_[p]) dirs[static_cast<std::size_t>(n_dirs++)] = n;
         for (std::size_t d = 0; d < 3; ++d)
-            if (fixed_[p][3 + d]) dirs[static_cast<std::size_t>(n_dirs++)] = Vec3::Unit(static_cast<Eigen::Index>(d));
+            if (fixed_[p][3 + d])
+                dirs[static_cast<std::size_t>(n_dirs++)] = Vec3::Unit(static_cast<Eigen::Index>(d));
         std::array<Vec3, 3> basis;
         int nb = 0;
         for (int i = 0; i < n_dirs && nb < 3; ++i) {
             Vec3 d = dirs[static_cast<std::size_t>(i)];
-            for (int j = 0; j < nb; ++j) d -= d.dot(basis[static_cast<std::size_t>(j)]) * basis[static_cast<std::size_t>(j)];
+            for (int j = 0; j < nb; ++j)
+                d -= d.dot(basis[static_cast<std::size_t>(j)]) * basis[static_cast<std::size_t>(j)];
             const Real len = d.norm();
             if (len > 1e-8) basis[static_cast<std::size_t>(nb++)] = d / len;
         }
-        for (int j = 0; j < nb; ++j) w -= w.dot(basis[static_cast<std::size_t>(j)]) * basis[static_cast<std::size_t>(j)];
+        for (int j = 0; j < nb; ++j)
+            w -= w.dot(basis[static_cast<std::size_t>(j)]) * basis[static_cast<std::size_t>(j)];
         return w;
     }
     /// The drill axis of particle p for the tangent-plane normal n (§2.6, eq. 2.6c): the axis
@@ -104,7 +111,9 @@ public:
 
     /// The rotation imposed so far on every particle with a prescribed angular velocity (state
     /// of a relaxation; in restart files).
-    [[nodiscard]] std::vector<Vec3>& prescribed_rotation_applied() { return prescribed_rotation_applied_; }
+    [[nodiscard]] std::vector<Vec3>& prescribed_rotation_applied() {
+        return prescribed_rotation_applied_;
+    }
 
 private:
     struct Prescribed {
@@ -121,7 +130,7 @@ private:
 
     std::vector<std::array<bool, 6>> fixed_;  ///< per particle, ux uy uz rx ry rz
     std::vector<std::uint8_t> prescribed_translation_, prescribed_rotation_, constrained_;
-    std::vector<std::uint8_t> tangent_plane_;       ///< rotates in its tangent plane
+    std::vector<std::uint8_t> tangent_plane_;      ///< rotates in its tangent plane
     std::vector<std::uint8_t> n_fixed_rotations_;  ///< fixed rotation components
     std::vector<DrillKind> drill_kind_;
     std::vector<Eigen::Index> drill_free_axis_;  ///< InSymmetryPlane: the free rotation component

@@ -9,7 +9,7 @@
 namespace fpmshell {
 
 struct EnergyBalance {
-    Real kinetic = 0;        ///< at t_n: 1/2 v^{n-1/2}.M v^{n+1/2} (+ rotational), the leapfrog invariant
+    Real kinetic = 0;  ///< at t_n: 1/2 v^{n-1/2}.M v^{n+1/2} (+ rotational), the leapfrog invariant
     Real internal = 0;       ///< work of the stresses (strain energy for elastic material)
     Real plastic = 0;        ///< dissipated by plasticity (0 for elastic material)
     Real external_work = 0;  ///< work of loads and supports, plus the initial kinetic energy
@@ -18,7 +18,8 @@ struct EnergyBalance {
 
     /// (kinetic + internal - external work + damping + contact) / max(kinetic, internal, external).
     [[nodiscard]] Real error() const {
-        const Real scale = std::max({std::abs(kinetic), std::abs(internal), std::abs(external_work)});
+        const Real scale =
+            std::max({std::abs(kinetic), std::abs(internal), std::abs(external_work)});
         if (scale <= 0) return 0;
         return (kinetic + internal - external_work + damping + contact) / scale;
     }

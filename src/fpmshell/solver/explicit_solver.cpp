@@ -19,7 +19,8 @@ constexpr Index k_parallel_min_particles = 2000;
 
 }  // namespace
 
-ExplicitSolver::ExplicitSolver(const Model& model) : model_(model), topology_(model), elements_(model, topology_) {
+ExplicitSolver::ExplicitSolver(const Model& model)
+    : model_(model), topology_(model), elements_(model, topology_) {
     const std::size_t np = model.nodes.size();
     s_.resize(np);
     s_.x0 = model.nodes;
@@ -39,15 +40,19 @@ ExplicitSolver::ExplicitSolver(const Model& model) : model_(model), topology_(mo
         for (Index p : t) normal_sum[static_cast<std::size_t>(p)] += cr;
         edge_sum += (p1 - p0).norm() + (p2 - p1).norm() + (p0 - p2).norm();
     }
-    if (!model.triangles.empty()) length_scale_ = edge_sum / (3.0 * static_cast<Real>(model.triangles.size()));
+    if (!model.triangles.empty())
+        length_scale_ = edge_sum / (3.0 * static_cast<Real>(model.triangles.size()));
     // §1.3 kink particles: an attached element normal deviates by more than 20 degrees.
     for (std::size_t p = 0; p < np; ++p) s_.normal[p] = normal_sum[p].normalized();
     for (const auto& t : model.triangles) {
-        const Vec3 n = (model.nodes[static_cast<std::size_t>(t[1])] - model.nodes[static_cast<std::size_t>(t[0])])
-                           .cross(model.nodes[static_cast<std::size_t>(t[2])] - model.nodes[static_cast<std::size_t>(t[0])])
+        const Vec3 n = (model.nodes[static_cast<std::size_t>(t[1])] -
+                        model.nodes[static_cast<std::size_t>(t[0])])
+                           .cross(model.nodes[static_cast<std::size_t>(t[2])] -
+                                  model.nodes[static_cast<std::size_t>(t[0])])
                            .normalized();
         for (Index p : t)
-            if (n.dot(s_.normal[static_cast<std::size_t>(p)]) < k_kink_cosine) s_.full_rotation[static_cast<std::size_t>(p)] = 1;
+            if (n.dot(s_.normal[static_cast<std::size_t>(p)]) < k_kink_cosine)
+                s_.full_rotation[static_cast<std::size_t>(p)] = 1;
     }
     // Boundary conditions (§6.7) and the drill axes they leave (§2.6, eq. 2.6c).
     bc_ = std::make_unique<BoundaryConditions>(model, s_.full_rotation);
@@ -56,7 +61,8 @@ ExplicitSolver::ExplicitSolver(const Model& model) : model_(model), topology_(mo
     for (const InitialVelocity& ic : model.initial_conditions)
         for (Index p : ic.nodes) {
             // normal_velocity: along the initial surface normal of the particle (§1.3)
-            s_.v[static_cast<std::size_t>(p)] = ic.velocity + ic.normal_velocity * s_.normal[static_cast<std::size_t>(p)];
+            s_.v[static_cast<std::size_t>(p)] =
+                ic.velocity + ic.normal_velocity * s_.normal[static_cast<std::size_t>(p)];
             s_.omega[static_cast<std::size_t>(p)] = ic.angular_velocity;
         }
     for (std::size_t p = 0; p < np; ++p) {
@@ -70,17 +76,21 @@ ExplicitSolver::ExplicitSolver(const Model& model) : model_(model), topology_(mo
     parallel_particles_ = static_cast<Index>(np) >= k_parallel_min_particles;
     // Rigid bodies and contact (theory.md §8).
     bodies_ = RigidBodyState::from_model(model);
-    for (const RigidBodyState& b : bodies_) energy_.external_work += 0.5 * b.mass * b.v.squaredNorm();
+    for (const RigidBodyState& b : bodies_)
+        energy_.external_work += 0.5 * b.mass * b.v.squaredNorm();
     if (!model.contacts.empty()) {
         std::vector<Real> thickness(model.triangles.size());
-        for (std::size_t e = 0; e < thickness.size(); ++e) thickness[e] = elements_.thickness(static_cast<Index>(e));
-        contact_ = std::make_unique<ContactSolver>(model, topology_, bc_->free_inverse_mass(s_.mass), thickness);
+        for (std::size_t e = 0; e < thickness.size(); ++e)
+            thickness[e] = elements_.thickness(static_cast<Index>(e));
+        contact_ = std::make_unique<ContactSolver>(model, topology_,
+                                                   bc_->free_inverse_mass(s_.mass), thickness);
     }
     energy_.kinetic = energy_.external_work;
     // Without prescribed motions and Lagrange contact, which change v^{n+1/2} between the two,
     // the velocity update and the energy pass are one sweep over the particle arrays instead
     // of two (the same sums in the same order).
-    fused_particle_pass_ = !bc_->has_prescribed_motions() && !(contact_ && contact_->has_lagrange());
+    fused_particle_pass_ =
+        !bc_->has_prescribed_motions() && !(contact_ && contact_->has_lagrange());
 }
 
 Vec3 ExplicitSolver::body_acceleration(Index b) const {
@@ -107,20 +117,20 @@ void ExplicitSolver::step(Real max_dt) {
 
 // The cycle t_n -> t_{n+1} (§6.8).
 void ExplicitSolver::cycle(const CyclePolicy& policy, Real load_time, Real dt_cap) {
-    const ShellElements::StepTotals elements = compute_internal_loads(policy);  // 1 §2-§5
+    const ShellElements::StepTotals elements = compute_internal_loads(policy);   // 1 §2-§5
     loads_->update_normals_and_loads(s_, *bc_, load_time, parallel_particles_);  // 2 §1.3, §6.7
-    const StepLengths dt = next_step_lengths(policy, elements, dt_cap);         // 3 §6.4
-    penalty_contact(dt);                                                        // 4 §8.2
+    const StepLengths dt = next_step_lengths(policy, elements, dt_cap);          // 3 §6.4
+    penalty_contact(dt);                                                         // 4 §8.2
     ParticleSums particles;
     if (fused_particle_pass_) {
         particles = update_velocities_and_advance_particles(policy, dt);  // 5, 8-9 §6.6
         update_body_velocities(dt);
     } else {
-        particles = update_velocities(policy, dt);           // 5 §6.6
-        impose_prescribed_motions(policy, load_time, dt);    // 6 §6.7
+        particles = update_velocities(policy, dt);         // 5 §6.6
+        impose_prescribed_motions(policy, load_time, dt);  // 6 §6.7
         update_body_velocities(dt);
-        lagrange_contact(dt);                                // 7 §8.3
-        advance_particles(dt, particles);                    // 8-9
+        lagrange_contact(dt);              // 7 §8.3
+        advance_particles(dt, particles);  // 8-9
     }
     book_energies(particles);    // 8 §6.8
     finish_step(dt, particles);  // 9
@@ -129,7 +139,8 @@ void ExplicitSolver::cycle(const CyclePolicy& policy, Real load_time, Real dt_ca
 ShellElements::StepTotals ExplicitSolver::compute_internal_loads(const CyclePolicy& policy) {
     const Real a_s = model_.damping.stiffness;
     const Real viscous_rate = (a_s > 0 && dt_half_ > 0) ? a_s / dt_half_ : 0.0;
-    const ShellElements::StepTotals tot = elements_.compute(s_, viscous_rate, policy.rate_effects ? dt_half_ : 0.0);
+    const ShellElements::StepTotals tot =
+        elements_.compute(s_, viscous_rate, policy.rate_effects ? dt_half_ : 0.0);
     element_steps_ += elements_.size();
     if (tot.failed_element >= 0) report_failed_element(tot.failed_element);
     energy_.internal += tot.strain_work;  // includes the plastic dissipation, like LS-DYNA's
@@ -138,8 +149,8 @@ ShellElements::StepTotals ExplicitSolver::compute_internal_loads(const CyclePoli
     return tot;
 }
 
-ExplicitSolver::StepLengths ExplicitSolver::next_step_lengths(const CyclePolicy& policy,
-                                                              const ShellElements::StepTotals& elements, Real dt_cap) {
+ExplicitSolver::StepLengths ExplicitSolver::next_step_lengths(
+    const CyclePolicy& policy, const ShellElements::StepTotals& elements, Real dt_cap) {
     StepLengths dt;
     dt.dt_new = policy.step_scale * elements.min_dt;
     if (dt_half_ > 0 && policy.cap_step_growth) dt.dt_new = std::min(dt.dt_new, 1.2 * dt_half_);
@@ -171,14 +182,16 @@ void ExplicitSolver::penalty_contact(const StepLengths& dt) {
     for (Vec3& f : s_.f_contact) f.setZero();
     if (!contact_->has_penalty()) return;
     Real motion2 = 0;
-    for (std::size_t p = 0; p < s_.size(); ++p) motion2 = std::max(motion2, (s_.x[p] - s_.x_prev[p]).squaredNorm());
+    for (std::size_t p = 0; p < s_.size(); ++p)
+        motion2 = std::max(motion2, (s_.x[p] - s_.x_prev[p]).squaredNorm());
     body_u_pred_.resize(bodies_.size());  // here: the bodies at t_n
     for (std::size_t b = 0; b < bodies_.size(); ++b) body_u_pred_[b] = bodies_[b].u;
-    contact_->penalty_forces(s_.x, body_u_pred_, bodies_, dt.c1 * dt.dt_n * dt.dt_new, dt.dt_n * dt.dt_new,
-                             std::sqrt(motion2), steps_, s_.f_contact);
+    contact_->penalty_forces(s_.x, body_u_pred_, bodies_, dt.c1 * dt.dt_n * dt.dt_new,
+                             dt.dt_n * dt.dt_new, std::sqrt(motion2), steps_, s_.f_contact);
 }
 
-void ExplicitSolver::impose_prescribed_motions(const CyclePolicy& policy, Real load_time, const StepLengths& dt) {
+void ExplicitSolver::impose_prescribed_motions(const CyclePolicy& policy, Real load_time,
+                                               const StepLengths& dt) {
     PrescribedMotionTimes at;
     at.load_time = load_time;
     at.t_half = load_time + (policy.advance_time ? 0.5 * dt.dt_new : 0.0);
@@ -212,15 +225,17 @@ void ExplicitSolver::lagrange_contact(const StepLengths& dt) {
         motion2 = std::max(motion2, dx.squaredNorm());
     }
     body_u_pred_.resize(bodies_.size());
-    for (std::size_t b = 0; b < bodies_.size(); ++b) body_u_pred_[b] = bodies_[b].u + dt_new * bodies_[b].v;
+    for (std::size_t b = 0; b < bodies_.size(); ++b)
+        body_u_pred_[b] = bodies_[b].u + dt_new * bodies_[b].v;
     x_pred_before_ = x_pred_;  // scratch members: no allocation in the time loop
     body_u_before_ = body_u_pred_;
-    contact_->enforce(s_.x, x_pred_, body_u_pred_, bodies_, dt.c1 * dt.dt_n * dt_new, dt.dt_n * dt_new,
-                      std::sqrt(motion2), steps_, s_.f_contact);
+    contact_->enforce(s_.x, x_pred_, body_u_pred_, bodies_, dt.c1 * dt.dt_n * dt_new,
+                      dt.dt_n * dt_new, std::sqrt(motion2), steps_, s_.f_contact);
     for (std::size_t p = 0; p < np; ++p)
         if (x_pred_[p] != x_pred_before_[p]) s_.v[p] += (x_pred_[p] - x_pred_before_[p]) / dt_new;
     for (std::size_t b = 0; b < bodies_.size(); ++b)
-        if (body_u_pred_[b] != body_u_before_[b]) bodies_[b].v += (body_u_pred_[b] - body_u_before_[b]) / dt_new;
+        if (body_u_pred_[b] != body_u_before_[b])
+            bodies_[b].v += (body_u_pred_[b] - body_u_before_[b]) / dt_new;
 }
 
 void ExplicitSolver::book_energies(const ParticleSums& particles) {
@@ -232,7 +247,8 @@ void ExplicitSolver::book_energies(const ParticleSums& particles) {
         if (b.inv_mass == 0) external_work -= body_work;  // what drives a fixed body on
     }
     energy_.kinetic = kinetic + particles.kinetic;
-    energy_.contact -= contact_work + particles.contact_work;  // dissipated (multipliers) or stored (penalty)
+    energy_.contact -=
+        contact_work + particles.contact_work;  // dissipated (multipliers) or stored (penalty)
     energy_.external_work += external_work + particles.external_work;
     energy_.damping += particles.damping;
 }
@@ -257,7 +273,8 @@ void ExplicitSolver::report_failed_element(Index e) const {
     msg << "element " << e + 1 << " (particles";
     for (Index p : model_.triangles[static_cast<std::size_t>(e)]) msg << " " << p + 1;
     msg << ") was crushed, stretched or turned over within one step at step " << steps_
-        << " (t = " << time_ << "): the solution has diverged (load beyond what the model can carry, "
+        << " (t = " << time_
+        << "): the solution has diverged (load beyond what the model can carry, "
         << "or a time step too large)";
     throw RunFailure(msg.str());
 }
@@ -268,7 +285,8 @@ void ExplicitSolver::report_non_finite_state() const {
         if (!finite_state(p, s_.x[p])) {
             std::ostringstream msg;
             msg << "the solution became NaN or infinite at step " << steps_ << " (t = " << time_
-                << ") at particle " << p + 1 << " (internal force " << s_.f_int[p].transpose() << ")";
+                << ") at particle " << p + 1 << " (internal force " << s_.f_int[p].transpose()
+                << ")";
             throw RunFailure(msg.str());
         }
     }
@@ -282,7 +300,8 @@ void ExplicitSolver::check_energy_balance() const {
     std::size_t hot = 0;
     Real hot_ke = -1;
     for (std::size_t p = 0; p < s_.size(); ++p) {
-        const Real ke = s_.mass[p] * s_.v[p].squaredNorm() + s_.inertia[p] * s_.omega[p].squaredNorm();
+        const Real ke =
+            s_.mass[p] * s_.v[p].squaredNorm() + s_.inertia[p] * s_.omega[p].squaredNorm();
         if (ke > hot_ke) {
             hot_ke = ke;
             hot = p;
@@ -291,9 +310,10 @@ void ExplicitSolver::check_energy_balance() const {
     Index critical = -1;
     (void)elements_.min_critical_dt(s_.x, &critical);
     std::ostringstream msg;
-    msg << "the energy balance error reached " << err * 100 << " % at step " << steps_ << " (t = " << time_
-        << "), beyond the limit of " << model_.control.energy_error_limit * 100
-        << " % (control.energy_error_limit): the run is unstable; the largest kinetic energy is at particle "
+    msg << "the energy balance error reached " << err * 100 << " % at step " << steps_
+        << " (t = " << time_ << "), beyond the limit of " << model_.control.energy_error_limit * 100
+        << " % (control.energy_error_limit): the run is unstable; the largest kinetic energy is at "
+           "particle "
         << hot + 1 << ", the smallest stable step at element " << critical + 1;
     throw RunFailure(msg.str());
 }
@@ -307,7 +327,8 @@ void ExplicitSolver::move_to_kinetic_energy_peak(Real ke_before, Real ke_peak, R
     // relaxation stalls with a reset every 4 steps). Motion over [t_{n-1}, t_n] is v_{n-1/2}:
     // x(t_{n-1/2} + tau dt) = x_n + (tau - 1/2) dt_{n-1/2} v_{n-1/2}.
     const Real curvature = 2.0 * ke_peak - ke_before - ke_after;
-    const Real tau = curvature > 0 ? std::clamp(0.5 * (ke_after - ke_before) / curvature, -0.5, 0.5) : 0.5;
+    const Real tau =
+        curvature > 0 ? std::clamp(0.5 * (ke_after - ke_before) / curvature, -0.5, 0.5) : 0.5;
     const Real back = (tau - 0.5) * dt_half_prev_;
     for (std::size_t p = 0; p < s_.size(); ++p) {
         if (!bc_->prescribed_translation(p)) s_.x[p] = s_.x_prev[p] + back * s_.v_prev[p];
@@ -315,7 +336,8 @@ void ExplicitSolver::move_to_kinetic_energy_peak(Real ke_before, Real ke_peak, R
             // undo the last increment, apply the one to the peak; the next path element goes
             // from x_n to the peak state
             const Vec3 dtheta_peak = back * s_.omega_prev[p];
-            s_.rotation[p] = rotation_quaternion(dtheta_peak) * rotation_quaternion(s_.dtheta[p]).conjugate() * s_.rotation[p];
+            s_.rotation[p] = rotation_quaternion(dtheta_peak) *
+                             rotation_quaternion(s_.dtheta[p]).conjugate() * s_.rotation[p];
             s_.dtheta[p] = dtheta_peak;
         }
     }
@@ -377,7 +399,8 @@ void ExplicitSolver::load(RestartReader& in) {
     const std::size_t n_bodies = bodies_.size();
     transfer_state(in);
     // The model's initial positions must be those the run started from, bit for bit.
-    if (s_.x0 != model_.nodes) in.fail("restart file of another model: its particles are not those of this mesh");
+    if (s_.x0 != model_.nodes)
+        in.fail("restart file of another model: its particles are not those of this mesh");
     if (bodies_.size() != n_bodies) in.fail("restart file of a model with other rigid bodies");
     for (std::size_t p = 0; p < s_.size(); ++p) s_.drill_axis[p] = bc_->drill_axis(p, s_.normal[p]);
     in.section("elements");
@@ -385,7 +408,8 @@ void ExplicitSolver::load(RestartReader& in) {
     in.section("contact");
     bool has_contact = false;
     in(has_contact);
-    if (has_contact != static_cast<bool>(contact_)) in.fail("restart file of a model with other contact definitions");
+    if (has_contact != static_cast<bool>(contact_))
+        in.fail("restart file of a model with other contact definitions");
     if (contact_) contact_->load(in);
 }
 

@@ -57,7 +57,8 @@ public:
     [[nodiscard]] const Model& model() const { return model_; }
     /// a^n = (v^{n+1/2} - v^{n-1/2}) / dt_n of the last cycle.
     [[nodiscard]] Vec3 acceleration(Index p) const;
-    /// Rigid bodies (model order): displacement at t_{n+1}, velocity v^{n+1/2}, contact force at t_n.
+    /// Rigid bodies (model order): displacement at t_{n+1}, velocity v^{n+1/2}, contact force at
+    /// t_n.
     [[nodiscard]] const std::vector<RigidBodyState>& bodies() const { return bodies_; }
     /// a^n of rigid body b.
     [[nodiscard]] Vec3 body_acceleration(Index b) const;
@@ -96,7 +97,8 @@ private:
     /// (§2-§5); books the strain, plastic and damping work.
     [[nodiscard]] ShellElements::StepTotals compute_internal_loads(const CyclePolicy& policy);
     /// 3 dt_{n+1/2} = scale min dt_e, growth capped at 1.2 dt_{n-1/2} (§6.4), and dt_n.
-    [[nodiscard]] StepLengths next_step_lengths(const CyclePolicy& policy, const ShellElements::StepTotals& elements,
+    [[nodiscard]] StepLengths next_step_lengths(const CyclePolicy& policy,
+                                                const ShellElements::StepTotals& elements,
                                                 Real dt_cap);
     /// 4 contact forces at t_n: the penalty forces from x^n (the multipliers come after the
     /// velocity update).
@@ -104,13 +106,16 @@ private:
     /// 5 central difference (§6.6) with the fixed components removed and their reactions, fused
     /// with 8-9 (energies at t_n and x^{n+1}) in one sweep over the particle arrays: taken when
     /// nothing changes v^{n+1/2} in between (no prescribed motion, no Lagrange contact).
-    [[nodiscard]] ParticleSums update_velocities_and_advance_particles(const CyclePolicy& policy, const StepLengths& dt);
+    [[nodiscard]] ParticleSums update_velocities_and_advance_particles(const CyclePolicy& policy,
+                                                                       const StepLengths& dt);
     /// 5 central difference alone (the sweep above without 8-9).
     [[nodiscard]] ParticleSums update_velocities(const CyclePolicy& policy, const StepLengths& dt);
     /// 6 prescribed motions (§6.7) and the rigid bodies' velocities.
-    void impose_prescribed_motions(const CyclePolicy& policy, Real load_time, const StepLengths& dt);
+    void impose_prescribed_motions(const CyclePolicy& policy, Real load_time,
+                                   const StepLengths& dt);
     void update_body_velocities(const StepLengths& dt);
-    /// 7 Lagrange-multiplier contact (§8.3): corrects v^{n+1/2} so that x^{n+1} satisfies every gap.
+    /// 7 Lagrange-multiplier contact (§8.3): corrects v^{n+1/2} so that x^{n+1} satisfies every
+    /// gap.
     void lagrange_contact(const StepLengths& dt);
     /// 8-9 energies at t_n (into sums) and x^{n+1}, dtheta^{n+1/2} of every particle (the
     /// second sweep).
@@ -123,7 +128,8 @@ private:
     // Per particle (inlined in the sweeps above).
     /// v^{n+1/2}, w^{n+1/2} and the reactions of particle p; with policy.residual, its
     /// out-of-balance and applied loads squared added to residual[0], residual[1].
-    void update_particle_velocity(std::size_t p, const CyclePolicy& policy, const StepLengths& dt, Real* residual);
+    void update_particle_velocity(std::size_t p, const CyclePolicy& policy, const StepLengths& dt,
+                                  Real* residual);
     /// The energies of particle p at t_n added to energy[0..3] (kinetic, work of loads and
     /// reactions, contact work, damping), energy[4] += 1 if its new state is not finite; then
     /// its x^{n+1} and rotation increment.

@@ -4,9 +4,11 @@
 
 namespace fpmshell {
 
-ExternalLoads::ExternalLoads(const Model& model, const MeshTopology& topology) : model_(model), topology_(topology) {
+ExternalLoads::ExternalLoads(const Model& model, const MeshTopology& topology)
+    : model_(model), topology_(topology) {
     const std::size_t np = model.nodes.size();
-    for (const Load& load : model.loads) has_moment_loads_ = has_moment_loads_ || load.type == LoadType::Moment;
+    for (const Load& load : model.loads)
+        has_moment_loads_ = has_moment_loads_ || load.type == LoadType::Moment;
     element_cross_.assign(model.triangles.size(), Vec3::Zero());
     pressure_gather_.resize(model.loads.size());
     for (std::size_t l = 0; l < model.loads.size(); ++l) {
@@ -14,7 +16,8 @@ ExternalLoads::ExternalLoads(const Model& model, const MeshTopology& topology) :
         if (load.type != LoadType::Pressure) continue;
         std::vector<std::vector<Index>> of_particle(np);
         for (Index e : load.elements)
-            for (Index p : model.triangles[static_cast<std::size_t>(e)]) of_particle[static_cast<std::size_t>(p)].push_back(e);
+            for (Index p : model.triangles[static_cast<std::size_t>(e)])
+                of_particle[static_cast<std::size_t>(p)].push_back(e);
         PressureGather& g = pressure_gather_[l];
         g.begin.push_back(0);
         for (std::size_t p = 0; p < np; ++p) {
@@ -28,11 +31,13 @@ ExternalLoads::ExternalLoads(const Model& model, const MeshTopology& topology) :
     // pass of the normals, over the same triangles in the same order (the same bits).
     if (!model.loads.empty() && model.loads[0].type == LoadType::Pressure) {
         const PressureGather& g = pressure_gather_[0];
-        fused_pressure_ = g.particle.size() == np && g.begin == topology_.element_begin && g.element == topology_.element;
+        fused_pressure_ = g.particle.size() == np && g.begin == topology_.element_begin &&
+                          g.element == topology_.element;
     }
 }
 
-void ExternalLoads::update_normals_and_loads(ParticleState& s, const BoundaryConditions& bc, Real t, bool parallel) {
+void ExternalLoads::update_normals_and_loads(ParticleState& s, const BoundaryConditions& bc, Real t,
+                                             bool parallel) {
     // §1.3 area-weighted normal, recomputed from the current positions: the cross product of
     // every triangle, then each particle sums those of its triangles in element order (the
     // order of a serial scatter, without its write conflicts).
@@ -41,7 +46,8 @@ void ExternalLoads::update_normals_and_loads(ParticleState& s, const BoundaryCon
         const auto& tri = model_.triangles[static_cast<std::size_t>(e)];
         element_cross_[static_cast<std::size_t>(e)] =
             (s.x[static_cast<std::size_t>(tri[1])] - s.x[static_cast<std::size_t>(tri[0])])
-                .cross(s.x[static_cast<std::size_t>(tri[2])] - s.x[static_cast<std::size_t>(tri[0])]);
+                .cross(s.x[static_cast<std::size_t>(tri[2])] -
+                       s.x[static_cast<std::size_t>(tri[0])]);
     });
     // §6.7 follower pressure: f_i = -p A_t n_t / 3 (positive pushes against n), A n = cr / 2.
     auto pressure_scale = [&](const Load& load) {
@@ -80,15 +86,18 @@ void ExternalLoads::update_normals_and_loads(ParticleState& s, const BoundaryCon
                     const std::size_t ui = static_cast<std::size_t>(i);
                     Vec3& f = s.f_ext[static_cast<std::size_t>(g.particle[ui])];
                     for (Index k = g.begin[ui]; k < g.begin[ui + 1]; ++k)
-                        f += scale * element_cross_[static_cast<std::size_t>(g.element[static_cast<std::size_t>(k)])];
+                        f += scale * element_cross_[static_cast<std::size_t>(
+                                         g.element[static_cast<std::size_t>(k)])];
                 });
                 break;
             }
             case LoadType::Force:
-                for (Index p : load.nodes) s.f_ext[static_cast<std::size_t>(p)] += factor * load.vector;
+                for (Index p : load.nodes)
+                    s.f_ext[static_cast<std::size_t>(p)] += factor * load.vector;
                 break;
             case LoadType::Moment:
-                for (Index p : load.nodes) s.m_ext[static_cast<std::size_t>(p)] += factor * load.vector;
+                for (Index p : load.nodes)
+                    s.m_ext[static_cast<std::size_t>(p)] += factor * load.vector;
                 break;
         }
     }

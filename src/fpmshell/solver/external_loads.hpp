@@ -27,7 +27,8 @@ public:
     /// and the external loads at time t into s.f_ext, s.m_ext; those of the previous call move
     /// to s.f_ext_prev, s.m_ext_prev (for the work of the step). parallel: particle loops in
     /// parallel (bitwise the same either way).
-    void update_normals_and_loads(ParticleState& s, const BoundaryConditions& bc, Real t, bool parallel);
+    void update_normals_and_loads(ParticleState& s, const BoundaryConditions& bc, Real t,
+                                  bool parallel);
 
 private:
     struct PressureGather {  ///< loaded particle -> its loaded triangles (CSR), in the load's order
@@ -38,7 +39,8 @@ private:
     const MeshTopology& topology_;
     bool has_moment_loads_ = false;
     std::vector<PressureGather> pressure_gather_;  ///< per load (empty unless a pressure)
-    bool fused_pressure_ = false;  ///< load 0: a pressure on every triangle, summed with the normals
+    bool fused_pressure_ =
+        false;  ///< load 0: a pressure on every triangle, summed with the normals
     std::vector<Vec3> element_cross_;  ///< scratch: (x2 - x1) x (x3 - x1) per triangle
 };
 

@@ -10,8 +10,8 @@
 
 namespace fpmshell {
 
-inline void ExplicitSolver::update_particle_velocity(std::size_t p, const CyclePolicy& policy, const StepLengths& dt,
-                                                     Real* residual) {
+inline void ExplicitSolver::update_particle_velocity(std::size_t p, const CyclePolicy& policy,
+                                                     const StepLengths& dt, Real* residual) {
     const BoundaryConditions& bc = *bc_;
     Vec3 force = s_.f_ext[p] - s_.f_int[p];
     if (contact_) force += s_.f_contact[p];
@@ -25,23 +25,27 @@ inline void ExplicitSolver::update_particle_velocity(std::size_t p, const CycleP
 
     // Rotations in the tangent plane: w^{n+1/2} = c1 [c2 P w^{n-1/2} + dt_n P M / J] (§6.6),
     // or about the free axis of a symmetry plane.
-    const Vec3 moment = loads_->has_moment_loads() ? Vec3(s_.m_ext[p] - s_.m_int[p]) : Vec3(-s_.m_int[p]);
+    const Vec3 moment =
+        loads_->has_moment_loads() ? Vec3(s_.m_ext[p] - s_.m_int[p]) : Vec3(-s_.m_int[p]);
     const Vec3& normal = s_.normal[p];
     const Vec3 moment_tangent = bc.tangent_part(p, moment, normal);
     const Vec3 omega_tangent = bc.tangent_part(p, s_.omega_prev[p], normal);
     const Real j = s_.inertia[p];
     const Vec3 w_free = dt.c1 * (dt.c2 * omega_tangent + (dt.dt_n / j) * moment_tangent);
-    const Vec3 w_new = bc.tangent_plane_only(p) ? w_free : bc.without_constrained_rotation(p, w_free, normal);
+    const Vec3 w_new =
+        bc.tangent_plane_only(p) ? w_free : bc.without_constrained_rotation(p, w_free, normal);
     s_.omega[p] = w_new;
     if (constrained) s_.reaction_moment[p] = (j / (dt.c1 * dt.dt_n)) * (w_new - w_free);
     if (!policy.residual) return;
 
     // Out-of-balance force and moment on the free directions, against the applied ones.
-    const Vec3 force_free = bc.prescribed_translation(p) ? Vec3::Zero() : bc.without_fixed_translation(p, force);
+    const Vec3 force_free =
+        bc.prescribed_translation(p) ? Vec3::Zero() : bc.without_fixed_translation(p, force);
     residual[0] += force_free.squaredNorm();
     residual[1] += s_.f_ext[p].squaredNorm() + (force - force_free).squaredNorm();
-    const Vec3 moment_free =
-        bc.prescribed_rotation(p) ? Vec3::Zero() : bc.without_constrained_rotation(p, moment_tangent, normal);
+    const Vec3 moment_free = bc.prescribed_rotation(p)
+                                 ? Vec3::Zero()
+                                 : bc.without_constrained_rotation(p, moment_tangent, normal);
     const Real ls2 = length_scale_ * length_scale_;
     residual[0] += moment_free.squaredNorm() / ls2;
     residual[1] += (s_.m_ext[p].squaredNorm() + (moment_tangent - moment_free).squaredNorm()) / ls2;
@@ -51,20 +55,24 @@ inline void ExplicitSolver::advance_particle(std::size_t p, const StepLengths& d
     // Energies at t_n (§6.8): leapfrog kinetic energy, work of loads and reactions over
     // [t_{n-1}, t_n] (trapezoidal), mass-damping dissipation over dt_n. A free particle has
     // no reactions; without moment loads m_ext stays zero.
-    energy[0] += 0.5 * s_.mass[p] * s_.v_prev[p].dot(s_.v[p]) + 0.5 * s_.inertia[p] * s_.omega_prev[p].dot(s_.omega[p]);
+    energy[0] += 0.5 * s_.mass[p] * s_.v_prev[p].dot(s_.v[p]) +
+                 0.5 * s_.inertia[p] * s_.omega_prev[p].dot(s_.omega[p]);
     const bool constrained = bc_->constrained(p);
     Vec3 force_sum = s_.f_ext_prev[p] + s_.f_ext[p];
-    Vec3 moment_sum = loads_->has_moment_loads() ? Vec3(s_.m_ext_prev[p] + s_.m_ext[p]) : Vec3::Zero();
+    Vec3 moment_sum =
+        loads_->has_moment_loads() ? Vec3(s_.m_ext_prev[p] + s_.m_ext[p]) : Vec3::Zero();
     if (constrained) {
         force_sum = force_sum + s_.reaction_prev[p] + s_.reaction[p];
         moment_sum = moment_sum + s_.reaction_moment_prev[p] + s_.reaction_moment[p];
     }
     energy[1] += 0.5 * force_sum.dot(s_.x[p] - s_.x_prev[p]) + 0.5 * moment_sum.dot(s_.dtheta[p]);
-    if (contact_) energy[2] += 0.5 * (s_.f_contact_prev[p] + s_.f_contact[p]).dot(s_.x[p] - s_.x_prev[p]);
+    if (contact_)
+        energy[2] += 0.5 * (s_.f_contact_prev[p] + s_.f_contact[p]).dot(s_.x[p] - s_.x_prev[p]);
     if (dt.a_m > 0) {
         const Vec3 vbar = 0.5 * (s_.v_prev[p] + s_.v[p]);
         const Vec3 wbar = 0.5 * (s_.omega_prev[p] + s_.omega[p]);
-        energy[3] += dt.a_m * dt.dt_n * (s_.mass[p] * vbar.squaredNorm() + s_.inertia[p] * wbar.squaredNorm());
+        energy[3] += dt.a_m * dt.dt_n *
+                     (s_.mass[p] * vbar.squaredNorm() + s_.inertia[p] * wbar.squaredNorm());
     }
     if (constrained) {
         s_.reaction_prev[p] = s_.reaction[p];
@@ -78,26 +86,29 @@ inline void ExplicitSolver::advance_particle(std::size_t p, const StepLengths& d
     if (!finite_state(p, s_.x_prev[p])) energy[4] += 1;
 }
 
-ExplicitSolver::ParticleSums ExplicitSolver::update_velocities_and_advance_particles(const CyclePolicy& policy,
-                                                                                     const StepLengths& dt) {
+ExplicitSolver::ParticleSums ExplicitSolver::update_velocities_and_advance_particles(
+    const CyclePolicy& policy, const StepLengths& dt) {
     // v^{n-1/2} and w^{n-1/2} become the previous half-step values by exchanging the arrays
     // (every particle's new value is written below).
     std::swap(s_.v, s_.v_prev);
     std::swap(s_.omega, s_.omega_prev);
     const std::array<Real, 7> sums =
-        chunked_sum<7>(static_cast<Index>(s_.size()), parallel_particles_, sums7_, [&](Index ip, std::array<Real, 7>& acc) {
-            const std::size_t p = static_cast<std::size_t>(ip);
-            update_particle_velocity(p, policy, dt, acc.data() + 5);
-            advance_particle(p, dt, acc.data());
-        });
+        chunked_sum<7>(static_cast<Index>(s_.size()), parallel_particles_, sums7_,
+                       [&](Index ip, std::array<Real, 7>& acc) {
+                           const std::size_t p = static_cast<std::size_t>(ip);
+                           update_particle_velocity(p, policy, dt, acc.data() + 5);
+                           advance_particle(p, dt, acc.data());
+                       });
     return {sums[0], sums[1], sums[2], sums[3], sums[4], sums[5], sums[6]};
 }
 
-ExplicitSolver::ParticleSums ExplicitSolver::update_velocities(const CyclePolicy& policy, const StepLengths& dt) {
+ExplicitSolver::ParticleSums ExplicitSolver::update_velocities(const CyclePolicy& policy,
+                                                               const StepLengths& dt) {
     std::swap(s_.v, s_.v_prev);
     std::swap(s_.omega, s_.omega_prev);
-    const std::array<Real, 2> residual =
-        chunked_sum<2>(static_cast<Index>(s_.size()), parallel_particles_, sums2_, [&](Index ip, std::array<Real, 2>& acc) {
+    const std::array<Real, 2> residual = chunked_sum<2>(
+        static_cast<Index>(s_.size()), parallel_particles_, sums2_,
+        [&](Index ip, std::array<Real, 2>& acc) {
             update_particle_velocity(static_cast<std::size_t>(ip), policy, dt, acc.data());
         });
     ParticleSums sums;
@@ -108,9 +119,10 @@ ExplicitSolver::ParticleSums ExplicitSolver::update_velocities(const CyclePolicy
 
 void ExplicitSolver::advance_particles(const StepLengths& dt, ParticleSums& sums) {
     const std::array<Real, 5> energy =
-        chunked_sum<5>(static_cast<Index>(s_.size()), parallel_particles_, sums5_, [&](Index ip, std::array<Real, 5>& acc) {
-            advance_particle(static_cast<std::size_t>(ip), dt, acc.data());
-        });
+        chunked_sum<5>(static_cast<Index>(s_.size()), parallel_particles_, sums5_,
+                       [&](Index ip, std::array<Real, 5>& acc) {
+                           advance_particle(static_cast<std::size_t>(ip), dt, acc.data());
+                       });
     sums.kinetic = energy[0];
     sums.external_work = energy[1];
     sums.contact_work = energy[2];

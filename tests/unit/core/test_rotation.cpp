@@ -11,7 +11,8 @@ using namespace fpmshell;
 TEST(Rotation, ExpLogRoundTripAllAngles) {
     std::mt19937 rng(7);
     std::uniform_real_distribution<Real> u(-1, 1);
-    for (Real angle : {0.0, 1e-9, 1e-5, 1e-3, 5e-3, 0.0099, 0.0101, 0.3, 1.0, 2.5, 3.0, 3.14, 3.1415}) {
+    for (Real angle :
+         {0.0, 1e-9, 1e-5, 1e-3, 5e-3, 0.0099, 0.0101, 0.3, 1.0, 2.5, 3.0, 3.14, 3.1415}) {
         for (int trial = 0; trial < 20; ++trial) {
             const Vec3 axis = Vec3(u(rng), u(rng), u(rng)).normalized();
             const Vec3 phi = angle * axis;
@@ -45,9 +46,11 @@ TEST(Rotation, QuaternionMatchesTheRotationMatrix) {
             const Vec3 phi = angle * Vec3(u(rng), u(rng), u(rng)).normalized();
             const Quat q = rotation_quaternion(phi);
             EXPECT_NEAR(q.norm(), 1.0, 1e-15) << "angle " << angle;  // unit by construction
-            EXPECT_LT((q.toRotationMatrix() - rotation_matrix(phi)).norm(), 4e-15) << "angle " << angle;  // a few ulp of 1
+            EXPECT_LT((q.toRotationMatrix() - rotation_matrix(phi)).norm(), 4e-15)
+                << "angle " << angle;  // a few ulp of 1
             // the rotation vector comes back (1e-13 rad: the log's round-off, as above)
-            EXPECT_LT((rotation_vector(q) - phi).norm(), 1e-15 + 1e-13 * angle) << "angle " << angle;
+            EXPECT_LT((rotation_vector(q) - phi).norm(), 1e-15 + 1e-13 * angle)
+                << "angle " << angle;
         }
     }
     // 10^5 steps of increments like those of a run (|phi| < 0.01): the products agree to

@@ -271,13 +271,15 @@ TEST(ModelReader, AppliesDefaults) {
 // 5 Lobatto x 7 points (theory.md §7.5), explicit point counts win.
 TEST(ModelReader, ReadsPlasticMaterials) {
     const TempDir dir;
-    const std::string steel = "steel: {type: elastic, density: 7.8e-9, youngs_modulus: 210000, poisson_ratio: 0.3}";
+    const std::string steel =
+        "steel: {type: elastic, density: 7.8e-9, youngs_modulus: 210000, poisson_ratio: 0.3}";
     const Model j2 = read_model(dir.write(
-        "j2.yaml", replaced(replaced(k_base, steel,
-                                     "steel: {type: j2_plastic, density: 7.8e-9, youngs_modulus: 210000, "
-                                     "poisson_ratio: 0.3, yield_stress: 250, tangent_modulus: 2100, "
-                                     "hardening_mix: 0.5, cowper_symonds: {D: 40.4, q: 5}}"),
-                            "  end_time: 1.0e-3\n", "  end_time: 1.0e-3\n  thickness_update: true\n")));
+        "j2.yaml",
+        replaced(replaced(k_base, steel,
+                          "steel: {type: j2_plastic, density: 7.8e-9, youngs_modulus: 210000, "
+                          "poisson_ratio: 0.3, yield_stress: 250, tangent_modulus: 2100, "
+                          "hardening_mix: 0.5, cowper_symonds: {D: 40.4, q: 5}}"),
+                 "  end_time: 1.0e-3\n", "  end_time: 1.0e-3\n  thickness_update: true\n")));
     const Material& m = j2.materials[0];
     EXPECT_EQ(m.type, MaterialType::J2Plastic);
     EXPECT_EQ(m.yield_stress, 250);
@@ -291,11 +293,12 @@ TEST(ModelReader, ReadsPlasticMaterials) {
     EXPECT_EQ(j2.sections[0].inplane_points, 7);
 
     const Model jc = read_model(dir.write(
-        "jc.yaml", replaced(replaced(k_base, steel,
-                                     "steel: {type: johnson_cook, density: 7.8e-9, youngs_modulus: 210000, "
-                                     "poisson_ratio: 0.3, A: 350, B: 275, n: 0.36, C: 0.022, "
-                                     "reference_strain_rate: 1, hardening_mix: 0.5}"),
-                            "thickness: 0.1}", "thickness: 0.1, thickness_points: 3, inplane_points: 3}")));
+        "jc.yaml",
+        replaced(replaced(k_base, steel,
+                          "steel: {type: johnson_cook, density: 7.8e-9, youngs_modulus: 210000, "
+                          "poisson_ratio: 0.3, A: 350, B: 275, n: 0.36, C: 0.022, "
+                          "reference_strain_rate: 1, hardening_mix: 0.5}"),
+                 "thickness: 0.1}", "thickness: 0.1, thickness_points: 3, inplane_points: 3}")));
     const Material& c = jc.materials[0];
     EXPECT_EQ(c.type, MaterialType::JohnsonCook);
     EXPECT_EQ(c.jc_a, 350);
@@ -492,24 +495,31 @@ TEST(ModelReader, EveryErrorNamesFileLineAndKey) {
         // rigid bodies, contact and the square tube
         {k_base + "rigid_bodies:\n  - {name: striker, point: [0, 0, 1], normal: [0, 0, -1]}\n", 10,
          "rigid_bodies.0.mass", "is required but missing"},
-        {k_base + "rigid_bodies:\n  - {name: s, mass: 1, fixed: true, point: [0, 0, 1], normal: [0, 0, -1]}\n",
+        {k_base + "rigid_bodies:\n  - {name: s, mass: 1, fixed: true, point: [0, 0, 1], normal: "
+                  "[0, 0, -1]}\n",
          10, "rigid_bodies.0.mass", "a fixed body has infinite mass"},
-        {k_base + "rigid_bodies:\n  - {name: s, mass: 1, point: [0, 0, 1], normal: [0, 0, 0]}\n", 10,
-         "rigid_bodies.0.normal", "must not be the zero vector"},
-        {k_base + "rigid_bodies:\n  - {name: s, mass: 1, shape: sphere, point: [0, 0, 1], normal: [0, 0, 1]}\n",
+        {k_base + "rigid_bodies:\n  - {name: s, mass: 1, point: [0, 0, 1], normal: [0, 0, 0]}\n",
+         10, "rigid_bodies.0.normal", "must not be the zero vector"},
+        {k_base + "rigid_bodies:\n  - {name: s, mass: 1, shape: sphere, point: [0, 0, 1], normal: "
+                  "[0, 0, 1]}\n",
          10, "rigid_bodies.0.shape", "expected one of plane"},
         {k_base + "contact: [{type: rigid, body: ram}]\n", 9, "contact.0.body",
          "the model has no rigid_bodies"},
-        {replaced(k_base, "  end_time: 1.0e-3\n", "  end_time: 1.0e-3\n  end_when_body_stops: ram\n") +
+        {replaced(k_base, "  end_time: 1.0e-3\n",
+                  "  end_time: 1.0e-3\n  end_when_body_stops: ram\n") +
              "rigid_bodies:\n  - {name: striker, mass: 1, point: [0, 0, 1], normal: [0, 0, -1]}\n",
          9, "control.end_when_body_stops", "unknown rigid body 'ram'; the bodies are striker"},
-        {replaced(k_base, "  end_time: 1.0e-3\n", "  end_time: 1.0e-3\n  end_when_body_stops: w\n") +
-             "rigid_bodies:\n  - {name: w, fixed: true, point: [0, 0, 1], normal: [0, 0, -1], velocity: [0, 0, -1]}\n",
+        {replaced(k_base, "  end_time: 1.0e-3\n",
+                  "  end_time: 1.0e-3\n  end_when_body_stops: w\n") +
+             "rigid_bodies:\n  - {name: w, fixed: true, point: [0, 0, 1], normal: [0, 0, -1], "
+             "velocity: [0, 0, -1]}\n",
          9, "control.end_when_body_stops", "is fixed: it keeps its velocity and never stops"},
-        {replaced(k_base, "  end_time: 1.0e-3\n", "  end_time: 1.0e-3\n  end_when_body_stops: w\n") +
+        {replaced(k_base, "  end_time: 1.0e-3\n",
+                  "  end_time: 1.0e-3\n  end_when_body_stops: w\n") +
              "rigid_bodies:\n  - {name: w, mass: 1, point: [0, 0, 1], normal: [0, 0, -1]}\n",
          9, "control.end_when_body_stops", "has no initial velocity"},
-        {k_base + "contact: [{type: sliding}]\n", 9, "contact.0.type", "expected one of self, rigid"},
+        {k_base + "contact: [{type: sliding}]\n", 9, "contact.0.type",
+         "expected one of self, rigid"},
         {k_base + "contact: [{type: self, method: lagrangian}]\n", 9, "contact.0.method",
          "expected one of lagrange, penalty, got 'lagrangian'"},
         {k_base + "contact: [{type: self, method: penalty, penalty_scale: 2}]\n", 9,

@@ -29,7 +29,8 @@ namespace {
 namespace fs = std::filesystem;
 
 fs::path fresh_dir(const std::string& name) {
-    const fs::path p = fs::temp_directory_path() / ("fpmshell_restart_" + name + "_" + std::to_string(::getpid()));
+    const fs::path p =
+        fs::temp_directory_path() / ("fpmshell_restart_" + name + "_" + std::to_string(::getpid()));
     fs::remove_all(p);
     fs::create_directories(p);
     return p;
@@ -117,7 +118,8 @@ TEST(RestartArchive, RefusesTruncatedForeignAndReorderedFiles) {
         RestartReader r(dir / "good.bin");
         r.section("elements");
     });
-    EXPECT_NE(reordered.find("expected section 'elements', found 'solver'"), std::string::npos) << reordered;
+    EXPECT_NE(reordered.find("expected section 'elements', found 'solver'"), std::string::npos)
+        << reordered;
     const std::string missing = message([&] { RestartReader r(dir / "none.bin"); });
     EXPECT_NE(missing.find("none.bin"), std::string::npos) << missing;
     fs::remove_all(dir);
@@ -134,7 +136,8 @@ Model small_tube(Real end, int divisions_width = 6) {
 
 /// Runs the model straight through into one fresh folder (straight) and stopped at step 217,
 /// mid-way between two frames and two history rows, into another (first).
-void run_straight_and_stopped(const Model& model, const std::string& tag, RunOptions& straight, RunOptions& first) {
+void run_straight_and_stopped(const Model& model, const std::string& tag, RunOptions& straight,
+                              RunOptions& first) {
     straight = RunOptions{};
     straight.output_dir = fresh_dir("straight" + tag);
     straight.echo = false;
@@ -151,7 +154,8 @@ TEST(Restart, AStoppedAndResumedRunWritesTheSameBytesAsAnUninterruptedOne) {
     RunOptions straight, first;
     ASSERT_NO_FATAL_FAILURE(run_straight_and_stopped(model, "", straight, first));
     ASSERT_TRUE(fs::exists(first.output_dir / k_restart_file));
-    EXPECT_NE(bytes_of(first.output_dir / "history.csv"), bytes_of(straight.output_dir / "history.csv"));
+    EXPECT_NE(bytes_of(first.output_dir / "history.csv"),
+              bytes_of(straight.output_dir / "history.csv"));
     RunOptions second = first;
     second.stop_at_step = 0;
     second.resume = true;
@@ -190,15 +194,15 @@ TEST(Restart, AFileOfAnEarlierFormatIsRefusedWithOneSentence) {
     for (const std::uint32_t version : {written - 1, written + 1}) {
         bytes.replace(8, sizeof(version), reinterpret_cast<const char*>(&version), sizeof(version));
         std::ofstream(file, std::ios::binary | std::ios::trunc) << bytes;
-        const std::string expected = version < written
-                                         ? "restart file written by an earlier version of fpmshell (format " +
-                                               std::to_string(version) + ", this version reads format " +
-                                               std::to_string(written) +
-                                               "): the run cannot be resumed with this version and must be "
-                                               "restarted from the beginning (without --resume)"
-                                         : "restart file written by a later version of fpmshell (format " +
-                                               std::to_string(version) + ", this version reads format " +
-                                               std::to_string(written) + ")";
+        const std::string expected =
+            version < written ? "restart file written by an earlier version of fpmshell (format " +
+                                    std::to_string(version) + ", this version reads format " +
+                                    std::to_string(written) +
+                                    "): the run cannot be resumed with this version and must be "
+                                    "restarted from the beginning (without --resume)"
+                              : "restart file written by a later version of fpmshell (format " +
+                                    std::to_string(version) + ", this version reads format " +
+                                    std::to_string(written) + ")";
         try {
             (void)run_model(model, second);
             ADD_FAILURE() << "resumed a restart file of format " << version;

@@ -220,7 +220,8 @@ TEST(Generators, SquareTubeQuarterAndWhole) {
             EXPECT_NEAR(std::abs(n.x()) + std::abs(n.y()), 1.0, 1e-12);
             EXPECT_GT(n.dot(Vec3(c.x(), c.y(), 0)), 0.0);
         }
-        EXPECT_EQ(boundary_edge_count(m), static_cast<std::size_t>(quarter ? 2 * around + 16 : 2 * around));
+        EXPECT_EQ(boundary_edge_count(m),
+                  static_cast<std::size_t>(quarter ? 2 * around + 16 : 2 * around));
         const auto& s = m.node_sets;
         EXPECT_EQ(s.at("bottom").size(), static_cast<std::size_t>(quarter ? around + 1 : around));
         for (const Index i : s.at("top")) EXPECT_EQ(m.nodes[static_cast<std::size_t>(i)].z(), 0.4);
@@ -232,8 +233,10 @@ TEST(Generators, SquareTubeQuarterAndWhole) {
         EXPECT_EQ(s.at("corners").size(), static_cast<std::size_t>(quarter ? 9 : 36));
         EXPECT_EQ(s.count("x0"), quarter ? 1U : 0U);
         if (quarter) {
-            for (const Index i : s.at("x0")) EXPECT_EQ(m.nodes[static_cast<std::size_t>(i)].x(), 0.0);
-            for (const Index i : s.at("y0")) EXPECT_EQ(m.nodes[static_cast<std::size_t>(i)].y(), 0.0);
+            for (const Index i : s.at("x0"))
+                EXPECT_EQ(m.nodes[static_cast<std::size_t>(i)].x(), 0.0);
+            for (const Index i : s.at("y0"))
+                EXPECT_EQ(m.nodes[static_cast<std::size_t>(i)].y(), 0.0);
             EXPECT_EQ(s.at("x0").size(), 9U);
         }
         for (const auto& [name, set] : s) EXPECT_TRUE(is_sorted_unique(set)) << name;

@@ -139,42 +139,44 @@ TEST(ExplicitSolver, StableStepIsStableAndCriticalStepIsNear) {
 }
 
 TEST(ExplicitSolver, RigidRotationInManyStepsGivesNoForce) {
-  for (MembraneKernel membrane : {MembraneKernel::Cst, MembraneKernel::Smoothed}) {
-    SphericalCapParams cp;
-    cp.radius = 2.0;
-    cp.half_angle_deg = 40;
-    cp.sector_deg = 360;
-    cp.divisions = 3;
-    MeshData mesh = generate_spherical_cap(cp);
-    Model m;
-    m.nodes = mesh.nodes;
-    m.triangles = mesh.triangles;
-    m.materials.push_back({"steel", MaterialType::Elastic, 7800, 2.1e11, 0.3});
-    m.sections.push_back({0, 0.02, 2, 3});
-    m.element_section.assign(m.triangles.size(), 0);
-    m.control.membrane = membrane;  // smoothed: neighbours on the curved cap are not coplanar
-    const MeshTopology topology(m);
-    ShellElements el(m, topology);
-    ParticleState s;
-    s.resize(m.nodes.size());
-    s.x = s.x_prev = m.nodes;
-    // 180 deg about an oblique axis in 360 steps, plus a translation.
-    const Vec3 axis = Vec3(1, -2, 0.5).normalized();
-    const Real dphi = M_PI / 360;
-    Real worst = 0;
-    for (int step = 1; step <= 360; ++step) {
-        const Mat3 r = rotation_matrix(step * dphi * axis);
-        for (std::size_t p = 0; p < s.size(); ++p) {
-            s.x_prev[p] = s.x[p];
-            s.x[p] = r * m.nodes[p] + Vec3(0.01 * step, 0, 0);
-            s.dtheta[p] = dphi * axis;
+    for (MembraneKernel membrane : {MembraneKernel::Cst, MembraneKernel::Smoothed}) {
+        SphericalCapParams cp;
+        cp.radius = 2.0;
+        cp.half_angle_deg = 40;
+        cp.sector_deg = 360;
+        cp.divisions = 3;
+        MeshData mesh = generate_spherical_cap(cp);
+        Model m;
+        m.nodes = mesh.nodes;
+        m.triangles = mesh.triangles;
+        m.materials.push_back({"steel", MaterialType::Elastic, 7800, 2.1e11, 0.3});
+        m.sections.push_back({0, 0.02, 2, 3});
+        m.element_section.assign(m.triangles.size(), 0);
+        m.control.membrane = membrane;  // smoothed: neighbours on the curved cap are not coplanar
+        const MeshTopology topology(m);
+        ShellElements el(m, topology);
+        ParticleState s;
+        s.resize(m.nodes.size());
+        s.x = s.x_prev = m.nodes;
+        // 180 deg about an oblique axis in 360 steps, plus a translation.
+        const Vec3 axis = Vec3(1, -2, 0.5).normalized();
+        const Real dphi = M_PI / 360;
+        Real worst = 0;
+        for (int step = 1; step <= 360; ++step) {
+            const Mat3 r = rotation_matrix(step * dphi * axis);
+            for (std::size_t p = 0; p < s.size(); ++p) {
+                s.x_prev[p] = s.x[p];
+                s.x[p] = r * m.nodes[p] + Vec3(0.01 * step, 0, 0);
+                s.dtheta[p] = dphi * axis;
+            }
+            el.compute(s, 0.0, 0.0);
+            for (std::size_t p = 0; p < s.size(); ++p)
+                worst = std::max({worst, s.f_int[p].norm(), s.m_int[p].norm()});
         }
-        el.compute(s, 0.0, 0.0);
-        for (std::size_t p = 0; p < s.size(); ++p) worst = std::max({worst, s.f_int[p].norm(), s.m_int[p].norm()});
+        // E h = 4.2e9: a force of 1e-2 is a strain of ~1e-12 accumulated over 360 steps of
+        // round-off.
+        EXPECT_LT(worst, 1e-2) << "membrane " << static_cast<int>(membrane);
     }
-    // E h = 4.2e9: a force of 1e-2 is a strain of ~1e-12 accumulated over 360 steps of round-off.
-    EXPECT_LT(worst, 1e-2) << "membrane " << static_cast<int>(membrane);
-  }
 }
 
 TEST(ExplicitSolver, ThreadCountDoesNotChangeResults) {
@@ -233,7 +235,8 @@ TEST(ExplicitSolver, ReactionsBalanceTheLoadAtEquilibrium) {
     // clamped root is within ~3 % on this coarse mesh.
     const Real w_beam = total * 1.0 / (3 * 2.1e11 * 0.2 * 1e-6 / 12);
     Real w = 0;
-    for (Index p : tip.nodes) w += s.state().x[static_cast<std::size_t>(p)].z() / static_cast<Real>(tip.nodes.size());
+    for (Index p : tip.nodes)
+        w += s.state().x[static_cast<std::size_t>(p)].z() / static_cast<Real>(tip.nodes.size());
     EXPECT_NEAR(w, w_beam, 0.03 * w_beam);
 }
 
@@ -327,7 +330,8 @@ TEST(ExplicitSolver, NormalInitialVelocityFollowsTheSurfaceNormal) {
         const Vec3& v = s.state().v[static_cast<std::size_t>(p)];
         EXPECT_NEAR(v.norm(), 5.0, 1e-12);
         const Real phi = std::atan2(x.x(), x.z());
-        const bool edge = x.y() < 1e-9 || x.y() > 3 - 1e-9 || std::abs(std::abs(phi) - M_PI / 3) < 1e-6;
+        const bool edge =
+            x.y() < 1e-9 || x.y() > 3 - 1e-9 || std::abs(std::abs(phi) - M_PI / 3) < 1e-6;
         if (edge) continue;
         ++interior;
         const Vec3 inward = -Vec3(x.x(), 0, x.z()).normalized();
@@ -358,7 +362,8 @@ TEST(ExplicitSolver, NonFiniteStateStopsTheRunNamingStepAndParticle) {
     } catch (const RunFailure& e) {
         const std::string what = e.what();
         EXPECT_NE(what.find("NaN or infinite at step 1 "), std::string::npos) << what;
-        EXPECT_NE(what.find("at particle " + std::to_string(node + 1) + " "), std::string::npos) << what;
+        EXPECT_NE(what.find("at particle " + std::to_string(node + 1) + " "), std::string::npos)
+            << what;
     }
     // The positions before the failed step are kept as x_prev: the driver writes them as the
     // last good frame (run_driver.cpp) when the positions are no longer finite.
