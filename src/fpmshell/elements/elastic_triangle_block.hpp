@@ -1,19 +1,24 @@
-// The shell triangle (DKT or BCIZ bending) written once for a scalar type T (core/simd.hpp):
-// with T = RealPack it computes k_lanes elements at once, one per SIMD lane. It is the same
-// element as reverse_motion + shell_triangle_loads (theory.md §2-§5) for a linear elastic
-// section, or a J2 section (the trial check of §7.3 step 1 on every point at
-// once; the points that yield go, all together, to the caller's return mapping), restricted to the
-// path elements of a stable step:
-//   - every rotation of the step (nodal increments, in-plane and relative rotations) is below
-//     0.01 rad, so that the series branches of core/rotation.hpp apply,
-//   - the element is not degenerate, not tilted by more than 90 deg, and keeps its area
-//     within a factor of 2.
-// A lane outside these bounds is reported in `valid` and the caller computes that element
-// with the general scalar code, which also reports the failures of §2.8. A J2 point whose trial
-// state yields is handed to the caller's return mapping (the general material update on that
-// point alone), or, without one, also makes its lane invalid. Within them a lane
-// gives the scalar code's result up to rounding (the operation order of a few sums differs;
-// tests/unit/elements/test_elastic_triangle_block.cpp bounds the difference).
+// The shell triangle (DKT or BCIZ bending), theory.md §2-§5, written once for a scalar type T
+// (core/simd.hpp): with T = RealPack it computes k_lanes elements at once, one per SIMD lane;
+// with T = Real it is the general element (shell_triangle.hpp).
+//   - local_triangle_loads: the loads of a path element given in its local frame (§3.1 CST
+//     or the smoothed membrane strain, §4.3 / §4.7 curvatures, the points' stresses through
+//     the thickness, §3.3 / §4.5 / §4.6 nodal loads, §5 forward rotation). The points are a
+//     linear elastic section's, a J2 section's (the trial check of §7.3 step 1 on every point
+//     at once; the points that yield go, all together, to the caller's return mapping), or
+//     any material's through its own point update (the general element).
+//   - elastic_triangle_loads: the path element (§2) by the series branches of
+//     core/rotation.hpp, then local_triangle_loads: for the path elements of a stable step,
+//       - every rotation of the step (nodal increments, in-plane and relative rotations) is
+//         below 0.01 rad,
+//       - the element is not degenerate, not tilted by more than 90 deg, and keeps its area
+//         within a factor of 2.
+//     A lane outside these bounds is reported in `valid` and the caller computes that element
+//     with the general element (reverse_motion's path element, for any rotation), which also
+//     reports the failures of §2.8. A J2 point whose trial state yields is handed to the
+//     caller's return mapping, or, without one, also makes its lane invalid. Within the bounds
+//     a lane gives the general element's result up to the rounding of the two path elements
+//     (tests/unit/elements/test_elastic_triangle_block.cpp bounds the difference).
 #pragma once
 
 #include <array>
@@ -67,12 +72,37 @@ struct NoReturnMapping {};
 /// the thickness, the largest rule of quadrature.hpp).
 inline constexpr std::size_t k_max_block_points = 35;
 
+/// The stresses of the points follow from the elastic trial (and, in a J2 section, the
+/// yield check and return mapping) inside the kernel.
+struct ElasticPoints {};
+
+/// The path element in its local frame (§2.4-§2.7): node 1 at the origin, node 2 on x.
+template <class T>
+struct LocalTriangle {
+    T x2, x3, y3;              ///< base local coordinates (x1 = y1 = y2 = 0)
+    T inv_x2;                  ///< 1 / x2
+    T area;                    ///< A_a, base area
+    std::array<T, 3> ux, uy;   ///< deformation displacements (u_1 = 0), §2.4
+    std::array<T, 6> th;       ///< deformation rotations [thx1 thy1 thx2 thy2 thx3 thy3], §2.6
+    std::array<V3<T>, 3> drill_local;  ///< the drill axes in the local frame (eq. 4.6b)
+    M3<T> frame_current;       ///< T_t: local -> global is T_t^T, §2.7
+};
+
+/// The smoothed membrane (membrane_smoothing.hpp): the strain increment to use instead of the
+/// CST one, and the element's own share of its membrane nodal forces.
+template <class T>
+struct SmoothedMembrane {
+    std::array<T, 3> strain;
+    Real own_share = 1;
+};
+
 /// What one lane returns (the quantities of ShellTriangleLoads an elastic element has).
 template <class T>
 struct ElasticTriangleLoads {
     std::array<V3<T>, 3> force, moment;  ///< internal nodal loads, global frame, t_n
     T strain_work, damping_work, plastic_work, thickness_strain;
     std::array<T, 3> membrane_force, bending_moment;  ///< N, M averaged over the element
+    std::array<T, 3> membrane_resultant;  ///< smoothed membrane only: N plus its viscous part
     T characteristic_length;  ///< L_c = 2A / l_max of the current triangle (§6.4)
     MaskOf<T> valid;          ///< lanes inside the bounds above
 };
@@ -163,86 +193,33 @@ template <class T>
 
 }  // namespace block_detail
 
-/// Elastic step of the triangle on one path element per lane (theory.md §2-§5).
-/// stress: the section's points [g][k], 3 components each, old in, new out (only meaningful
-/// on valid lanes). thickness: h at the start of the step. viscous_rate as shell_triangle_loads.
-/// yield: for a J2 section, the yield surfaces of the trial check.
-/// return_mapping(n_points, yielding, d_eps, r, stress, d_plastic_work): called once, when
-/// some point's trial stress is outside its yield surface on some lanes with a valid path
-/// element; per point: the mask `yielding`, the strain increment and the rate factor R of
-/// every lane, and the trial stress in `stress`. It runs §7.3 steps 2-4 on the yielding
-/// (point, lane) pairs (materials/j2_return_mapping.hpp), keeps their history, and writes
-/// their new stress into `stress` and their plastic work per unit volume into d_plastic_work.
-/// Without one (NoReturnMapping) such a lane is reported invalid instead.
-template <class T, class ReturnMapping = NoReturnMapping>
-[[nodiscard]] ElasticTriangleLoads<T> elastic_triangle_loads(const TriangleMotion<T>& m,
-                                                             const ElasticSectionConstants& sec,
-                                                             const T& thickness, T* stress,
-                                                             Real viscous_rate,
-                                                             const YieldSurfaces<T>* yield = nullptr,
-                                                             const ReturnMapping& return_mapping = {}) {
+/// Loads of the path element `e` (§3-§5) with the section's points, lanes `valid`:
+/// arguments as elastic_triangle_loads. update: ElasticPoints, or the general point update
+/// update(point, d_eps, sigma) -> plastic work per unit volume, which turns the stress sigma
+/// (3 components, old in, new out) by the strain increment d_eps. smoothed: the smoothed
+/// membrane (nullptr: the CST).
+template <class T, class ReturnMapping = NoReturnMapping, class PointUpdate = ElasticPoints>
+[[nodiscard]] FPMSHELL_INLINE ElasticTriangleLoads<T> local_triangle_loads(
+    const LocalTriangle<T>& e, MaskOf<T> valid, const ElasticSectionConstants& sec, const T& thickness, T* stress,
+    Real viscous_rate, const YieldSurfaces<T>* yield = nullptr, const ReturnMapping& return_mapping = {},
+    const PointUpdate& update = {}, const SmoothedMembrane<T>* smoothed = nullptr) {
     using namespace block_detail;
+    constexpr bool elastic_points = std::is_same_v<PointUpdate, ElasticPoints>;
     ElasticTriangleLoads<T> out;
-    // ---- §2 reverse motion (reverse_motion.cpp, series branches) ----
-    const V3<T> a2 = m.base[1] - m.base[0], a3 = m.base[2] - m.base[0];
-    const V3<T> r2 = m.current[1] - m.current[0], r3 = m.current[2] - m.current[0];
-    const V3<T> na_raw = cross(a2, a3), n_raw = cross(r2, r3);
-    const T lmax2 = max(max(squared_norm(a2), squared_norm(a3)), squared_norm(a3 - a2));
-    const T na_norm = sqrt(squared_norm(na_raw)), n_norm = sqrt(squared_norm(n_raw));
-    const T inv_na_norm = 1.0 / na_norm;
-    const V3<T> na = inv_na_norm * na_raw, n = divide(n_raw, n_norm);
-    const T area = 0.5 * na_norm;
-    const T area_ratio = n_norm * inv_na_norm;
-    const T normal_cosine = dot(na, n);
-    MaskOf<T> valid = (na_norm > 1e-12 * lmax2) && (n_norm > 1e-12 * lmax2) && (normal_cosine > 0.0) &&
-                      (area_ratio > 0.5) && (area_ratio < 2.0);
-    const M3<T> r_op = minimal_rotation(na, n);                            // §2.2
-    const V3<T> r2p = transpose_times(r_op, r2), r3p = transpose_times(r_op, r3);
-    const T ip_y = dot(na, cross(a2, r2p)), ip_x = dot(a2, r2p);          // §2.3
-    valid = valid && (ip_x > 0.0) && (abs(ip_y) < 0.01 * ip_x);
-    const T t = ip_y / ip_x, tt = t * t;
-    const T theta_ip = t * (1.0 - tt * (1.0 / 3.0 - tt * (1.0 / 5.0 - tt * (1.0 / 7.0))));
-    const V3<T> phi_ip = theta_ip * na;
-    const T phi_ip2 = squared_norm(phi_ip);
-    valid = valid && (phi_ip2 < 1e-4);
-    const M3<T> r_ip = rotation_matrix_series(phi_ip, phi_ip2);
-    const V3<T> r2pp = transpose_times(r_ip, r2p), r3pp = transpose_times(r_ip, r3p);
-    const T x2 = sqrt(squared_norm(a2));                                   // §2.5
-    const T inv_x2 = 1.0 / x2;
-    const V3<T> ex = inv_x2 * a2, ez = na, ey = cross(ez, ex);
-    const T x3 = dot(ex, a3), y3 = dot(ey, a3);
-    const V3<T> d2 = r2pp - a2, d3 = r3pp - a3;                             // §2.4
-    const std::array<T, 3> ux{T(0.0), dot(ex, d2), dot(ex, d3)}, uy{T(0.0), dot(ey, d2), dot(ey, d3)};
-    const M3<T> r_r = r_op * r_ip;
-    // eq. 2.6c: each node's rotation about its drill axis d_i is the element's rigid one
-    const V3<T> omega_r = rotation_vector_series(r_r, valid);
-    std::array<T, 6> th;  // [thx1 thy1 thx2 thy2 thx3 thy3], §2.6
-    std::array<V3<T>, 3> drill_local;  // the drill axes in the local frame (eq. 4.6b)
-    for (std::size_t i = 0; i < 3; ++i) {
-        const V3<T>& d = m.drill_axis[i];
-        drill_local[i] = V3<T>{dot(ex, d), dot(ey, d), dot(ez, d)};
-        const V3<T> dtheta = m.dtheta[i] + dot(omega_r - m.dtheta[i], d) * d;
-        const T dth2 = squared_norm(dtheta);
-        valid = valid && (dth2 < 1e-4);
-        const M3<T> rel = transpose_times(r_r, rotation_matrix_series(dtheta, dth2));
-        const V3<T> phi = rotation_vector_series(rel, valid);  // eq. 2.6b
-        th[2 * i] = dot(ex, phi);
-        th[2 * i + 1] = dot(ey, phi);
-    }
-    const M3<T> t_a{{ex, ey, ez}};
-    const M3<T> frame_current = times_transpose(t_a, r_r);                // §2.7
-    // current L_c (§6.4), the same operations as characteristic_length in solver/element_time_steps.cpp
-    const T lmax2_current = max(max(squared_norm(r2), squared_norm(m.current[2] - m.current[1])),
-                                squared_norm(m.current[0] - m.current[2]));
-    out.characteristic_length = n_norm / sqrt(lmax2_current);
-
+    const T &x2 = e.x2, &x3 = e.x3, &y3 = e.y3, &inv_x2 = e.inv_x2, &area = e.area;
+    const std::array<T, 3>&ux = e.ux, &uy = e.uy;
+    const std::array<T, 6>& th = e.th;
+    const std::array<V3<T>, 3>& drill_local = e.drill_local;
+    const M3<T>& frame_current = e.frame_current;
     // ---- §3.1 CST ----
     const T inv_two_area = 1.0 / (x2 * y3);
     // b_i / 2A and c_i / 2A of triangle_shape.cpp with x = (0, x2, x3), y = (0, 0, y3)
     const std::array<T, 3> bx{-y3 * inv_two_area, y3 * inv_two_area, T(0.0)};
     const std::array<T, 3> cy{(x3 - x2) * inv_two_area, -x3 * inv_two_area, x2 * inv_two_area};
-    const std::array<T, 3> d_eps_m{bx[1] * ux[1] + bx[2] * ux[2], cy[1] * uy[1] + cy[2] * uy[2],
-                                   cy[1] * ux[1] + cy[2] * ux[2] + bx[1] * uy[1] + bx[2] * uy[2]};
+    const std::array<T, 3> d_eps_m =
+        smoothed ? smoothed->strain
+                 : std::array<T, 3>{bx[1] * ux[1] + bx[2] * ux[2], cy[1] * uy[1] + cy[2] * uy[2],
+                                    cy[1] * ux[1] + cy[2] * ux[2] + bx[1] * uy[1] + bx[2] * uy[2]};
 
     // ---- §4.7 DKT or §4.3 BCIZ at the three corners (the curvature matrix is linear in L) ----
     std::array<CornerCurvature<T>, 3> corner;
@@ -298,6 +275,7 @@ template <class T, class ReturnMapping = NoReturnMapping>
     std::array<std::array<T, 3>, k_max_block_points> d_eps, old;
     std::array<MaskOf<T>, k_max_block_points> yielding;
     std::array<T, k_max_block_points> rate_factor;  // R of §7.4 (1 where not evaluated)
+    std::array<T, k_max_block_points> d_plastic_work;  // per unit volume, per point
     MaskOf<T> any_yielding = !valid && valid;     // no lane
     for (std::size_t g = 0, point = 0; g < sec.inplane.size(); ++g) {
         const TrianglePoint& ip = sec.inplane[g];
@@ -308,6 +286,14 @@ template <class T, class ReturnMapping = NoReturnMapping>
             const T z = sec.through[k].zeta * half_h;
             const std::array<T, 3> de{d_eps_m[0] + z * d_kappa[0], d_eps_m[1] + z * d_kappa[1], d_eps_m[2] + z * d_kappa[2]};
             d_eps[point] = de;
+            if constexpr (!elastic_points) {  // the general update: every point may yield
+                T* sigma = stress + 3 * point;
+                old[point] = {sigma[0], sigma[1], sigma[2]};
+                d_plastic_work[point] = update(point, de, sigma);
+                yielding[point] = valid;
+                any_yielding = valid;
+                continue;
+            }
             const std::array<T, 3> d_sigma{sec.c11 * de[0] + sec.c12 * de[1], sec.c12 * de[0] + sec.c11 * de[1], sec.c33 * de[2]};
             T* sigma = stress + 3 * point;
             old[point] = {sigma[0], sigma[1], sigma[2]};
@@ -346,9 +332,9 @@ template <class T, class ReturnMapping = NoReturnMapping>
     }
     // pass 2: §7.3 steps 2-4 on every yielding point of every lane; without a return mapping
     // such a lane is left to the scalar element
-    std::array<T, k_max_block_points> d_plastic_work;  // per unit volume, per point
-    const bool plastic = yield && any_lane(any_yielding);
-    if constexpr (std::is_same_v<ReturnMapping, NoReturnMapping>) {
+    const bool plastic = (yield || !elastic_points) && any_lane(any_yielding);
+    if constexpr (!elastic_points) {
+    } else if constexpr (std::is_same_v<ReturnMapping, NoReturnMapping>) {
         if (plastic) valid = valid && !any_yielding;
     } else if (plastic) {
         d_plastic_work.fill(T(0.0));
@@ -356,6 +342,7 @@ template <class T, class ReturnMapping = NoReturnMapping>
     }
     // pass 3: through-thickness integration
     std::array<T, 3> n_weighted{T(0.0), T(0.0), T(0.0)};
+    if (smoothed) out.membrane_resultant = {T(0.0), T(0.0), T(0.0)};
     out.strain_work = out.damping_work = out.plastic_work = out.thickness_strain = T(0.0);
     for (std::size_t r = 0; r < 3; ++r) out.membrane_force[r] = out.bending_moment[r] = T(0.0);
     for (std::size_t g = 0, point = 0; g < sec.inplane.size(); ++g) {
@@ -400,6 +387,8 @@ template <class T, class ReturnMapping = NoReturnMapping>
                 m_g[r] += m_v[r];
             }
         }
+        if (smoothed)
+            for (std::size_t r = 0; r < 3; ++r) out.membrane_resultant[r] += ip.weight * n_g[r];
         const T wa = area * ip.weight;
         for (std::size_t r = 0; r < 3; ++r) {
             n_weighted[r] += wa * n_g[r];
@@ -415,6 +404,8 @@ template <class T, class ReturnMapping = NoReturnMapping>
         f_m[2 * i] = bx[i] * n_weighted[0] + cy[i] * n_weighted[2];
         f_m[2 * i + 1] = cy[i] * n_weighted[1] + bx[i] * n_weighted[2];
     }
+    if (smoothed)  // the rest goes to the neighbours (solver/shell_elements.cpp)
+        for (T& f : f_m) f *= smoothed->own_share;
     for (std::size_t q = 0; q < 6; ++q) {
         T sum = 0.0;
         for (std::size_t i = 0; i < 3; ++i)
@@ -443,6 +434,87 @@ template <class T, class ReturnMapping = NoReturnMapping>
         out.moment[i] = transpose_times(frame_current, m_node[i]);
     }
     out.valid = valid;
+    return out;
+}
+
+
+/// Elastic step of the triangle on one path element per lane (theory.md §2-§5).
+/// stress: the section's points [g][k], 3 components each, old in, new out (only meaningful
+/// on valid lanes). thickness: h at the start of the step. viscous_rate as shell_triangle_loads.
+/// yield: for a J2 section, the yield surfaces of the trial check.
+/// return_mapping(n_points, yielding, d_eps, r, stress, d_plastic_work): called once, when
+/// some point's trial stress is outside its yield surface on some lanes with a valid path
+/// element; per point: the mask `yielding`, the strain increment and the rate factor R of
+/// every lane, and the trial stress in `stress`. It runs §7.3 steps 2-4 on the yielding
+/// (point, lane) pairs (materials/j2_return_mapping.hpp), keeps their history, and writes
+/// their new stress into `stress` and their plastic work per unit volume into d_plastic_work.
+/// Without one (NoReturnMapping) such a lane is reported invalid instead.
+template <class T, class ReturnMapping = NoReturnMapping>
+[[nodiscard]] ElasticTriangleLoads<T> elastic_triangle_loads(const TriangleMotion<T>& m,
+                                                             const ElasticSectionConstants& sec,
+                                                             const T& thickness, T* stress,
+                                                             Real viscous_rate,
+                                                             const YieldSurfaces<T>* yield = nullptr,
+                                                             const ReturnMapping& return_mapping = {}) {
+    using namespace block_detail;
+    LocalTriangle<T> local;  // filled in place: a copy of its packs costs the kernel a few per cent
+    // ---- §2 reverse motion (reverse_motion.cpp, series branches) ----
+    const V3<T> a2 = m.base[1] - m.base[0], a3 = m.base[2] - m.base[0];
+    const V3<T> r2 = m.current[1] - m.current[0], r3 = m.current[2] - m.current[0];
+    const V3<T> na_raw = cross(a2, a3), n_raw = cross(r2, r3);
+    const T lmax2 = max(max(squared_norm(a2), squared_norm(a3)), squared_norm(a3 - a2));
+    const T na_norm = sqrt(squared_norm(na_raw)), n_norm = sqrt(squared_norm(n_raw));
+    const T inv_na_norm = 1.0 / na_norm;
+    const V3<T> na = inv_na_norm * na_raw, n = divide(n_raw, n_norm);
+    local.area = 0.5 * na_norm;
+    const T area_ratio = n_norm * inv_na_norm;
+    const T normal_cosine = dot(na, n);
+    MaskOf<T> valid = (na_norm > 1e-12 * lmax2) && (n_norm > 1e-12 * lmax2) && (normal_cosine > 0.0) &&
+                      (area_ratio > 0.5) && (area_ratio < 2.0);
+    const M3<T> r_op = minimal_rotation(na, n);                            // §2.2
+    const V3<T> r2p = transpose_times(r_op, r2), r3p = transpose_times(r_op, r3);
+    const T ip_y = dot(na, cross(a2, r2p)), ip_x = dot(a2, r2p);          // §2.3
+    valid = valid && (ip_x > 0.0) && (abs(ip_y) < 0.01 * ip_x);
+    const T t = ip_y / ip_x, tt = t * t;
+    const T theta_ip = t * (1.0 - tt * (1.0 / 3.0 - tt * (1.0 / 5.0 - tt * (1.0 / 7.0))));
+    const V3<T> phi_ip = theta_ip * na;
+    const T phi_ip2 = squared_norm(phi_ip);
+    valid = valid && (phi_ip2 < 1e-4);
+    const M3<T> r_ip = rotation_matrix_series(phi_ip, phi_ip2);
+    const V3<T> r2pp = transpose_times(r_ip, r2p), r3pp = transpose_times(r_ip, r3p);
+    const T x2 = local.x2 = sqrt(squared_norm(a2));                        // §2.5
+    const T inv_x2 = local.inv_x2 = 1.0 / x2;
+    const V3<T> ex = inv_x2 * a2, ez = na, ey = cross(ez, ex);
+    local.x3 = dot(ex, a3);
+    local.y3 = dot(ey, a3);
+    const V3<T> d2 = r2pp - a2, d3 = r3pp - a3;                             // §2.4
+    local.ux = {T(0.0), dot(ex, d2), dot(ex, d3)};
+    local.uy = {T(0.0), dot(ey, d2), dot(ey, d3)};
+    const M3<T> r_r = r_op * r_ip;
+    // eq. 2.6c: each node's rotation about its drill axis d_i is the element's rigid one
+    const V3<T> omega_r = rotation_vector_series(r_r, valid);
+    std::array<T, 6>& th = local.th;  // [thx1 thy1 thx2 thy2 thx3 thy3], §2.6
+    std::array<V3<T>, 3>& drill_local = local.drill_local;  // the drill axes in the local frame (eq. 4.6b)
+    for (std::size_t i = 0; i < 3; ++i) {
+        const V3<T>& d = m.drill_axis[i];
+        drill_local[i] = V3<T>{dot(ex, d), dot(ey, d), dot(ez, d)};
+        const V3<T> dtheta = m.dtheta[i] + dot(omega_r - m.dtheta[i], d) * d;
+        const T dth2 = squared_norm(dtheta);
+        valid = valid && (dth2 < 1e-4);
+        const M3<T> rel = transpose_times(r_r, rotation_matrix_series(dtheta, dth2));
+        const V3<T> phi = rotation_vector_series(rel, valid);  // eq. 2.6b
+        th[2 * i] = dot(ex, phi);
+        th[2 * i + 1] = dot(ey, phi);
+    }
+    const M3<T> t_a{{ex, ey, ez}};
+    local.frame_current = times_transpose(t_a, r_r);                      // §2.7
+    // current L_c (§6.4), the same operations as characteristic_length in solver/element_time_steps.cpp
+    const T lmax2_current = max(max(squared_norm(r2), squared_norm(m.current[2] - m.current[1])),
+                                squared_norm(m.current[0] - m.current[2]));
+    const T characteristic_length = n_norm / sqrt(lmax2_current);
+    ElasticTriangleLoads<T> out =
+        local_triangle_loads(local, valid, sec, thickness, stress, viscous_rate, yield, return_mapping);
+    out.characteristic_length = characteristic_length;
     return out;
 }
 

@@ -101,8 +101,10 @@ MeshTopology::MeshTopology(const Model& model) {
         element_node_inertia[e] = share.inertia;
         for (const Index p : t) {
             particle_mass[static_cast<std::size_t>(p)] += share.mass;
-            // a fused multiply-add, as the compiler contracts `inertia += share.inertia` of
-            // the inlined share where the particle sums are made next to it
+            // The inertia is summed by a fused multiply-add (share.mass * gyration2 + sum,
+            // rounded once): the compiler contracts `sum += share.inertia` so wherever the
+            // share is computed beside the sum (-ffp-contract=fast, GCC's default for C++), and
+            // the particle inertias must be the same bits wherever they are made.
             auto& inertia = particle_inertia[static_cast<std::size_t>(p)];
             inertia = std::fma(share.mass, share.gyration2, inertia);
         }

@@ -86,16 +86,4 @@ const SlotGatherPlan& CornerAssembly::plan(int ranges) {
     return plan_;
 }
 
-void CornerAssembly::gather_particle(std::size_t p, const Real* base, ParticleState& s) const {
-    constexpr auto w = static_cast<std::size_t>(k_lanes);
-    Vec3 f = Vec3::Zero(), m = Vec3::Zero();
-    for (Index k = csr_begin_[p]; k < csr_begin_[p + 1]; ++k) {
-        const Real* slot = base + plan_.offset[static_cast<std::size_t>(k)];
-        f += Vec3(slot[0], slot[w], slot[2 * w]);
-        m += Vec3(slot[3 * w], slot[4 * w], slot[5 * w]);
-    }
-    s.f_int[p] = f;
-    s.m_int[p] = m;
-}
-
 }  // namespace fpmshell

@@ -66,8 +66,18 @@ public:
     /// Ring storage of range r of the plan.
     [[nodiscard]] Real* ring(std::size_t r) { return plan_.rings[r].data(); }
     /// Sums the slots of particle p (in element order) into s.f_int, s.m_int; base: the ring
-    /// or slots(), which the plan's offsets point into.
-    void gather_particle(std::size_t p, const Real* base, ParticleState& s) const;
+    /// or slots(), which the plan's offsets point into. (Inline: once per particle and step.)
+    void gather_particle(std::size_t p, const Real* base, ParticleState& s) const {
+        constexpr auto w = static_cast<std::size_t>(k_lanes);
+        Vec3 f = Vec3::Zero(), m = Vec3::Zero();
+        for (Index k = csr_begin_[p]; k < csr_begin_[p + 1]; ++k) {
+            const Real* slot = base + plan_.offset[static_cast<std::size_t>(k)];
+            f += Vec3(slot[0], slot[w], slot[2 * w]);
+            m += Vec3(slot[3 * w], slot[4 * w], slot[5 * w]);
+        }
+        s.f_int[p] = f;
+        s.m_int[p] = m;
+    }
 
 private:
     ElementBlocks blocks_;

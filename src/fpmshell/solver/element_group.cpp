@@ -43,25 +43,6 @@ void ElementGroup::allocate(std::size_t n_blocks, std::size_t n_alone) {
     }
 }
 
-Real ElementGroup::field(GroupPlace place, std::size_t p, std::size_t k) const {
-    const std::size_t n = n_points();
-    if (!place.in_block) return alone_state_[(place.index * n + p) * point_fields_ + k];
-    const auto w = static_cast<std::size_t>(k_lanes);
-    return lane(block_state_[place.index / w * block_size() + k * n + p],
-                static_cast<int>(place.index % w));
-}
-
-void ElementGroup::set_field(GroupPlace place, std::size_t p, std::size_t k, Real v) {
-    const std::size_t n = n_points();
-    if (!place.in_block) {
-        alone_state_[(place.index * n + p) * point_fields_ + k] = v;
-        return;
-    }
-    const auto w = static_cast<std::size_t>(k_lanes);
-    set_lane(block_state_[place.index / w * block_size() + k * n + p],
-             static_cast<int>(place.index % w), v);
-}
-
 std::unique_ptr<ElementGroup> make_element_group(const Model& model, std::size_t section) {
     const Material& mat =
         model.materials[static_cast<std::size_t>(model.sections[section].material)];

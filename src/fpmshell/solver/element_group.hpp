@@ -76,6 +76,8 @@ public:
     /// The state of point p of the element at `place`, and its update.
     [[nodiscard]] virtual MaterialPoint point_state(GroupPlace place, std::size_t p) const = 0;
     virtual void set_point_state(GroupPlace place, std::size_t p, const MaterialPoint& mp) = 0;
+    /// The equivalent plastic strain of point p of the element at `place` (output).
+    [[nodiscard]] virtual Real plastic_strain(GroupPlace place, std::size_t p) const = 0;
 
 protected:
     ElementGroup(const Model& model, std::size_t section, const Mat3& stiffness,
@@ -83,8 +85,23 @@ protected:
     /// The initial value of field k of a point.
     [[nodiscard]] virtual Real initial_field(std::size_t k) const = 0;
     /// Field k of point p of the element at `place`.
-    [[nodiscard]] Real field(GroupPlace place, std::size_t p, std::size_t k) const;
-    void set_field(GroupPlace place, std::size_t p, std::size_t k, Real v);
+    [[nodiscard]] Real field(GroupPlace place, std::size_t p, std::size_t k) const {
+        const std::size_t n = n_points();
+        if (!place.in_block) return alone_state_[(place.index * n + p) * point_fields_ + k];
+        const auto w = static_cast<std::size_t>(k_lanes);
+        return lane(block_state_[place.index / w * block_size() + k * n + p],
+                    static_cast<int>(place.index % w));
+    }
+    void set_field(GroupPlace place, std::size_t p, std::size_t k, Real v) {
+        const std::size_t n = n_points();
+        if (!place.in_block) {
+            alone_state_[(place.index * n + p) * point_fields_ + k] = v;
+            return;
+        }
+        const auto w = static_cast<std::size_t>(k_lanes);
+        set_lane(block_state_[place.index / w * block_size() + k * n + p],
+                 static_cast<int>(place.index % w), v);
+    }
     /// The state of the group's block b and of the next one (nullptr: b is the last).
     [[nodiscard]] RealPack* block_state(std::size_t b) {
         return block_state_.data() + b * block_size();
@@ -164,6 +181,14 @@ public:
     }
     void set_point_state(GroupPlace place, std::size_t p, const MaterialPoint& mp) override {
         material_.write_point(mp, [&](std::size_t k, Real v) { set_field(place, p, k, v); });
+    }
+    [[nodiscard]] Real plastic_strain(GroupPlace place, std::size_t p) const override {
+        // a layout that names its plastic strain field: that field alone (the output reads it
+        // for every point of every frame)
+        if constexpr (requires { Material::k_plastic_strain; })
+            return field(place, p, Material::k_plastic_strain);
+        else
+            return point_state(place, p).plastic_strain;
     }
 
 private:

@@ -14,10 +14,6 @@ namespace {
 
 /// Models below this many elements (or shape classes) are set up serially.
 constexpr Index k_parallel_min_elements = 2000;
-// The bending step ratio depends on the element shape and h / L_c only; it is re-evaluated (a
-// 9x9 eigenproblem) when L_c has changed by more than this fraction since the last evaluation,
-// which bounds the ratio's staleness to a few per cent of the step.
-constexpr Real k_bending_ratio_drift = 0.05;
 
 /// Local flat shape of the triangle (p0, p1, p2): node 1 at the origin, edge 1-2 along x.
 TriangleShape local_shape(const Vec3& p0, const Vec3& p1, const Vec3& p2) {
@@ -124,25 +120,11 @@ Real ElementTimeSteps::bending_ratio(Index e, const std::array<Vec3, 3>& corners
     return membrane_dt > 0 ? bending_dt / membrane_dt : 1.0;
 }
 
-void ElementTimeSteps::refresh(Index e, const std::array<Index, 3>& t, const std::vector<Vec3>& x,
-                               Real lc) {
+void ElementTimeSteps::reevaluate(Index e, const std::array<Index, 3>& t,
+                                  const std::vector<Vec3>& x, Real lc) {
     const std::size_t ue = static_cast<std::size_t>(e);
-    if (!(lc > 0) || std::abs(lc - bend_lc_[ue]) <= k_bending_ratio_drift * bend_lc_[ue]) return;
     bend_ratio_[ue] = bending_ratio(e, corners_of(t, x));
     bend_lc_[ue] = lc;
-}
-
-Real ElementTimeSteps::critical_dt(Index e, Real lc) const {
-    const std::size_t ue = static_cast<std::size_t>(e);
-    const std::size_t sec = static_cast<std::size_t>(section_[ue]);
-    // §6.4 membrane step L_c / c; the bending modes of thick elements (h / L_c > ~0.5) are
-    // slower to integrate, bend_ratio_ < 1 (bending_time_step.hpp).
-    Real dt = lc / wave_speed_[sec] * std::min(Real{1}, bend_ratio_[ue]);
-    if (stiffness_damping_ > 0) {  // §6.4: dt <= (2/w)(sqrt(1+xi^2) - xi), w = 2/dt
-        const Real xi = stiffness_damping_ / dt;
-        dt *= std::sqrt(1.0 + xi * xi) - xi;
-    }
-    return dt;
 }
 
 }  // namespace fpmshell

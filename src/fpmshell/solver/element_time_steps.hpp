@@ -5,7 +5,9 @@
 // and shape class and shared, and re-evaluated for an element whose L_c drifts.
 #pragma once
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <vector>
 
 #include "fpmshell/core/types.hpp"
@@ -24,11 +26,33 @@ public:
     ElementTimeSteps(const Model& model, const MeshTopology& topology, std::vector<Real> wave_speed,
                      std::vector<Mat3> bending_rigidity);
 
-    /// Critical step of element e of current length lc (§6.4), unscaled.
-    [[nodiscard]] Real critical_dt(Index e, Real lc) const;
+    /// Critical step of element e of current length lc (§6.4), unscaled. (Inline, as
+    /// refresh: the element loop calls both for every element of every step.)
+    [[nodiscard]] Real critical_dt(Index e, Real lc) const {
+        const auto ue = static_cast<std::size_t>(e);
+        // §6.4 membrane step L_c / c; the bending modes of thick elements (h / L_c > ~0.5) are
+        // slower to integrate, bend_ratio_ < 1 (bending_time_step.hpp).
+        Real dt = lc / wave_speed_[static_cast<std::size_t>(section_[ue])] *
+                  std::min(Real{1}, bend_ratio_[ue]);
+        if (stiffness_damping_ > 0) {  // §6.4: dt <= (2/w)(sqrt(1+xi^2) - xi), w = 2/dt
+            const Real xi = stiffness_damping_ / dt;
+            dt *= std::sqrt(1.0 + xi * xi) - xi;
+        }
+        return dt;
+    }
     /// Re-evaluates the bending ratio of element e (corners t, positions x, current length lc)
-    /// when lc has drifted from the length the ratio was computed at.
-    void refresh(Index e, const std::array<Index, 3>& t, const std::vector<Vec3>& x, Real lc);
+    /// when lc has drifted by more than k_bending_ratio_drift from the length the ratio was
+    /// computed at.
+    void refresh(Index e, const std::array<Index, 3>& t, const std::vector<Vec3>& x, Real lc) {
+        const auto ue = static_cast<std::size_t>(e);
+        if (!(lc > 0) || std::abs(lc - bend_lc_[ue]) <= k_bending_ratio_drift * bend_lc_[ue])
+            return;
+        reevaluate(e, t, x, lc);
+    }
+    /// The bending step ratio depends on the element shape and h / L_c only; it is
+    /// re-evaluated (a 9x9 eigenproblem) when L_c has changed by more than this fraction since
+    /// the last evaluation, which bounds the ratio's staleness to a few per cent of the step.
+    static constexpr Real k_bending_ratio_drift = 0.05;
 
     /// The state carried from step to step (restart files): per element, the bending ratio and
     /// the L_c it was evaluated at.
@@ -36,6 +60,8 @@ public:
     std::vector<Real>& ratio_length() { return bend_lc_; }
 
 private:
+    /// Sets the bending ratio of element e from its current corners.
+    void reevaluate(Index e, const std::array<Index, 3>& t, const std::vector<Vec3>& x, Real lc);
     /// Bending critical step / (L_c / c) of element e at corners `corners`.
     [[nodiscard]] Real bending_ratio(Index e, const std::array<Vec3, 3>& corners) const;
     /// Sets every element's ratio at the initial geometry, shared within shape classes.

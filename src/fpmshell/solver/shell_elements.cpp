@@ -119,7 +119,7 @@ Real ShellElements::plastic_strain(Index e, int k) const {
     Real sum = 0;
     std::size_t n = 0;
     for (std::size_t p = static_cast<std::size_t>(k); p < group.n_points(); p += nk, ++n)
-        sum += group.point_state(place, p).plastic_strain;
+        sum += group.plastic_strain(place, p);
     return n > 0 ? sum / static_cast<Real>(n) : 0.0;
 }
 
