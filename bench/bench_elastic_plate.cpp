@@ -55,9 +55,20 @@ void plastic_plate(benchmark::State& state) {
 }  // namespace
 
 // 2 x 71^2 = 10 082 and 2 x 224^2 = 100 352 triangles; threads 1 and 0 (= all cores).
-BENCHMARK(elastic_plate)->Args({71, 1})->Args({71, 0})->Args({224, 1})->Args({224, 0})
-    ->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(elastic_plate)
+    ->Args({71, 1})
+    ->Args({71, 0})
+    ->Args({224, 1})
+    ->Args({224, 0})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
 // 10 082 triangles, 5 x 7 and 5 x 3 points, threads 1 and 0; the same 300 steps after the
 // warm-up for every variant (the plastic state evolves, so equal windows keep them comparable).
-BENCHMARK(plastic_plate)->Args({71, 7, 1})->Args({71, 3, 1})->Args({71, 7, 0})->Args({71, 3, 0})
-    ->Iterations(300)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(plastic_plate)
+    ->Args({71, 7, 1})
+    ->Args({71, 3, 1})
+    ->Args({71, 7, 0})
+    ->Args({71, 3, 0})
+    ->Iterations(300)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();

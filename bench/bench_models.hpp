@@ -73,10 +73,12 @@ inline Model plastic_plate_model(Index n, int inplane_points) {
 inline Real plate_stable_dt(const Model& m) {
     const Material& mat = m.materials[0];
     const Section& sec = m.sections[0];
-    const Real c = std::sqrt(mat.youngs_modulus / (mat.density * (1 - mat.poisson_ratio * mat.poisson_ratio)));
+    const Real c =
+        std::sqrt(mat.youngs_modulus / (mat.density * (1 - mat.poisson_ratio * mat.poisson_ratio)));
     const Real f = mat.youngs_modulus / (1 - mat.poisson_ratio * mat.poisson_ratio);
     Mat3 rigidity;
-    rigidity << f, f * mat.poisson_ratio, 0, f * mat.poisson_ratio, f, 0, 0, 0, f * (1 - mat.poisson_ratio) / 2;
+    rigidity << f, f * mat.poisson_ratio, 0, f * mat.poisson_ratio, f, 0, 0, 0,
+        f * (1 - mat.poisson_ratio) / 2;
     rigidity *= sec.thickness * sec.thickness * sec.thickness / 12;
     Real dt = 1e30;
     for (std::size_t e = 0; e < std::min<std::size_t>(2, m.triangles.size()); ++e) {
@@ -87,9 +89,12 @@ inline Real plate_stable_dt(const Model& m) {
         const Vec3 ex = (p1 - p0).normalized(), d = p2 - p0;
         const TriangleShape shape((p1 - p0).norm(), d.dot(ex), ex.cross(d).norm());
         const Real two_area = (p1 - p0).cross(d).norm();
-        const Real lmax = std::sqrt(std::max({(p1 - p0).squaredNorm(), (p2 - p1).squaredNorm(), d.squaredNorm()}));
-        const NodeInertiaShare share = lumped_node_share(mat.density, sec.thickness, 0.5 * two_area);
-        const Real bending = bending_critical_dt(m.control.bending, shape, rigidity, share.mass, share.inertia);
+        const Real lmax = std::sqrt(
+            std::max({(p1 - p0).squaredNorm(), (p2 - p1).squaredNorm(), d.squaredNorm()}));
+        const NodeInertiaShare share =
+            lumped_node_share(mat.density, sec.thickness, 0.5 * two_area);
+        const Real bending =
+            bending_critical_dt(m.control.bending, shape, rigidity, share.mass, share.inertia);
         dt = std::min({dt, two_area / lmax / c, bending});
     }
     return m.control.time_step_scale * dt;
@@ -114,7 +119,8 @@ inline Model steady_plastic_plate_model(Index n, int inplane_points, int steps_t
     m.sections[0].thickness_points = 5;
     m.sections[0].inplane_points = inplane_points;
     m.loads.clear();
-    const std::vector<Index> edge = m.boundary.at(0).nodes;  // the clamped edges of the elastic plate
+    const std::vector<Index> edge =
+        m.boundary.at(0).nodes;  // the clamped edges of the elastic plate
     m.boundary.clear();
     // strains e_x = 2 e, e_y = e: plane-stress von Mises stress 2.244 E e (nu = 0.3)
     const Real e_yield = steel.yield_stress / (2.244 * steel.youngs_modulus);
@@ -143,7 +149,8 @@ inline Model steady_plastic_plate_model(Index n, int inplane_points, int steps_t
 /// (docs/performance.md: clamped, J2 5 x 3 points, a sudden pressure that makes it yield),
 /// with 2 n^2 triangles.
 inline Model whole_run_plastic_plate_model(Index n) {
-    const std::string path = std::string(FPMSHELL_SOURCE_DIR) + "/bench/whole_run/plate_plastic.yaml";
+    const std::string path =
+        std::string(FPMSHELL_SOURCE_DIR) + "/bench/whole_run/plate_plastic.yaml";
     return read_model(path, {"mesh.nx=" + std::to_string(n), "mesh.ny=" + std::to_string(n)});
 }
 

@@ -26,7 +26,8 @@ void square_tube(benchmark::State& state) {
 #else
     const int used = 1;
 #endif
-    const Model m = bench::square_tube_model(static_cast<int>(state.range(0)), static_cast<int>(state.range(1)));
+    const Model m = bench::square_tube_model(static_cast<int>(state.range(0)),
+                                             static_cast<int>(state.range(1)));
     ExplicitSolver solver(m);
     for (int i = 0; i < 4000; ++i) solver.step(1e30);
     const double contact0 = solver.contact_statistics()->seconds;

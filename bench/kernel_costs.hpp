@@ -134,7 +134,9 @@ struct MaterialCost {
 };
 
 inline double j2_return_flops(const MaterialCost& m) {
-    return k_j2_return + m.newton_evaluations * (k_j2_newton_evaluation + (m.johnson_cook ? k_j2_johnson_cook_evaluation : 0.0));
+    return k_j2_return +
+           m.newton_evaluations *
+               (k_j2_newton_evaluation + (m.johnson_cook ? k_j2_johnson_cook_evaluation : 0.0));
 }
 
 inline double material_update_flops(const MaterialCost& m) {
@@ -143,8 +145,10 @@ inline double material_update_flops(const MaterialCost& m) {
 }
 
 /// Flops of ShellElements::compute per element: n_inplane x n_thickness points.
-inline double element_loop_flops(int n_inplane, int n_thickness, BendingKernel bending, const MaterialCost& m) {
-    const double b = bending == BendingKernel::Dkt ? k_dkt_shape + 3 * k_bending_dkt : 3 * k_bending_bciz;
+inline double element_loop_flops(int n_inplane, int n_thickness, BendingKernel bending,
+                                 const MaterialCost& m) {
+    const double b =
+        bending == BendingKernel::Dkt ? k_dkt_shape + 3 * k_bending_dkt : 3 * k_bending_bciz;
     return k_reverse_motion + k_element_rest + k_loads_element + b + n_inplane * k_inplane_point +
            n_inplane * n_thickness * (k_material_point + material_update_flops(m));
 }
@@ -162,7 +166,8 @@ inline constexpr double k_element_loop_bytes_per_particle = 96 + 4 + 48;
 inline constexpr double k_bytes_per_material_point = 2.0 * sizeof(MaterialPoint);
 
 inline double element_loop_bytes(int n_points, double particles_per_element) {
-    return k_element_loop_bytes_per_element + particles_per_element * k_element_loop_bytes_per_particle +
+    return k_element_loop_bytes_per_element +
+           particles_per_element * k_element_loop_bytes_per_particle +
            n_points * k_bytes_per_material_point;
 }
 
@@ -186,7 +191,8 @@ inline constexpr double k_step_contact_flops_per_particle = 15;
 // v_prev v reaction omega_prev omega reaction_moment (144); energies read 15 Vec3 + 2 Real (376)
 // and write the 4 *_prev vectors (96); positions read x v omega rotation (144) and write
 // x_prev x dtheta rotation (144); finiteness check reads x omega f_int (72).
-inline constexpr double k_step_bytes_per_particle = 28 + 48 + (192 + 16 + 9 + 144) + (376 + 96) + 288 + 72;
+inline constexpr double k_step_bytes_per_particle =
+    28 + 48 + (192 + 16 + 9 + 144) + (376 + 96) + 288 + 72;
 // Pressure: loaded-particle index and CSR 8, f_ext read and written 48. Contact: f_contact
 // copied to f_contact_prev and zeroed (72), both read for the contact work (48).
 inline constexpr double k_step_pressure_bytes_per_particle = 8 + 48;
@@ -203,12 +209,14 @@ struct StepExtras {
 
 inline double step_rest_flops(double particles_per_element, const StepExtras& x) {
     return k_step_flops_per_element + (x.pressure ? k_step_pressure_flops_per_element : 0.0) +
-           particles_per_element * (k_step_flops_per_particle + (x.contact ? k_step_contact_flops_per_particle : 0.0));
+           particles_per_element *
+               (k_step_flops_per_particle + (x.contact ? k_step_contact_flops_per_particle : 0.0));
 }
 
 inline double step_rest_bytes(double particles_per_element, const StepExtras& x) {
     return k_step_bytes_per_element + (x.pressure ? k_step_pressure_bytes_per_element : 0.0) +
-           particles_per_element * (k_step_bytes_per_particle + (x.pressure ? k_step_pressure_bytes_per_particle : 0.0) +
+           particles_per_element * (k_step_bytes_per_particle +
+                                    (x.pressure ? k_step_pressure_bytes_per_particle : 0.0) +
                                     (x.contact ? k_step_contact_bytes_per_particle : 0.0));
 }
 

@@ -85,7 +85,8 @@ bool has_avx2_fma() { return __builtin_cpu_supports("avx2") && __builtin_cpu_sup
 
 /// Every thread runs sweep(iterations); GFLOP/s of all threads together, best of the repeats.
 template <class Sweep>
-FlopPeak run_sweeps([[maybe_unused]] int threads, long iterations, int repeats, double flops_per_sweep, Sweep sweep) {
+FlopPeak run_sweeps([[maybe_unused]] int threads, long iterations, int repeats,
+                    double flops_per_sweep, Sweep sweep) {
     FlopPeak best;
     const double x = g_x, y = g_y;
     for (int r = 0; r < repeats; ++r) {
@@ -99,7 +100,8 @@ FlopPeak run_sweeps([[maybe_unused]] int threads, long iterations, int repeats, 
         }
         const double t = seconds_since(t0);
         g_sink = g_sink + sink;
-        best.gflops = std::max(best.gflops, ran * static_cast<double>(iterations) * flops_per_sweep / t * 1e-9);
+        best.gflops = std::max(best.gflops,
+                               ran * static_cast<double>(iterations) * flops_per_sweep / t * 1e-9);
     }
     return best;
 }
@@ -112,8 +114,10 @@ FlopPeak measure_flop_peak(int threads, long iterations, int repeats) {
 
 FlopPeak measure_isa_flop_peak(int threads, long iterations, int repeats) {
 #ifdef FPMSHELL_BENCH_X86
-    if (has_avx512()) return run_sweeps(threads, iterations, repeats, k_avx512_flops_per_sweep, avx512_sweep);
-    if (has_avx2_fma()) return run_sweeps(threads, iterations, repeats, k_avx2_flops_per_sweep, avx2_sweep);
+    if (has_avx512())
+        return run_sweeps(threads, iterations, repeats, k_avx512_flops_per_sweep, avx512_sweep);
+    if (has_avx2_fma())
+        return run_sweeps(threads, iterations, repeats, k_avx2_flops_per_sweep, avx2_sweep);
 #else
     (void)threads;
     (void)iterations;

@@ -17,17 +17,22 @@ namespace fpmshell {
 ///   u.H(B).v    = L3 (u1 v2 + u2 v1) + L2 (u1 v3 + u3 v1) + L1 (u2 v3 + u3 v2)
 /// and f,xx = b.H.b / (2A)^2, f,yy = c.H.c / (2A)^2, f,xy = b.H.c / (2A)^2.
 template <class T>
-[[nodiscard]] inline std::array<std::array<T, 6>, 3> bciz_curvature(const std::array<Real, 3>& L, const std::array<T, 3>& b,
-                                                                    const std::array<T, 3>& c, const T& f) {
-    auto q_g = [&L](std::size_t i, std::size_t j, const std::array<T, 3>& u, const std::array<T, 3>& v) {
+[[nodiscard]] inline std::array<std::array<T, 6>, 3> bciz_curvature(const std::array<Real, 3>& L,
+                                                                    const std::array<T, 3>& b,
+                                                                    const std::array<T, 3>& c,
+                                                                    const T& f) {
+    auto q_g = [&L](std::size_t i, std::size_t j, const std::array<T, 3>& u,
+                    const std::array<T, 3>& v) {
         return 2 * L[j] * u[i] * v[i] + 2 * L[i] * (u[i] * v[j] + u[j] * v[i]);
     };
     auto q_bubble = [&L](const std::array<T, 3>& u, const std::array<T, 3>& v) {
-        return L[2] * (u[0] * v[1] + u[1] * v[0]) + L[1] * (u[0] * v[2] + u[2] * v[0]) + L[0] * (u[1] * v[2] + u[2] * v[1]);
+        return L[2] * (u[0] * v[1] + u[1] * v[0]) + L[1] * (u[0] * v[2] + u[2] * v[0]) +
+               L[0] * (u[1] * v[2] + u[2] * v[1]);
     };
     const T bub_bb = q_bubble(b, b), bub_cc = q_bubble(c, c), bub_bc = q_bubble(b, c);
     std::array<std::array<T, 6>, 3> rows;
-    static constexpr std::array<std::array<std::size_t, 3>, 3> k_cyclic{{{0, 1, 2}, {1, 2, 0}, {2, 0, 1}}};
+    static constexpr std::array<std::array<std::size_t, 3>, 3> k_cyclic{
+        {{0, 1, 2}, {1, 2, 0}, {2, 0, 1}}};
     for (const auto& [i, j, k] : k_cyclic) {
         const T gik_bb = q_g(i, k, b, b), gik_cc = q_g(i, k, c, c), gik_bc = q_g(i, k, b, c);
         const T gij_bb = q_g(i, j, b, b), gij_cc = q_g(i, j, c, c), gij_bc = q_g(i, j, b, c);

@@ -1,9 +1,8 @@
 #include "fpmshell/elements/bending_time_step.hpp"
 
+#include <Eigen/Eigenvalues>
 #include <cmath>
 #include <limits>
-
-#include <Eigen/Eigenvalues>
 
 #include "fpmshell/elements/shell_triangle.hpp"
 
@@ -45,12 +44,14 @@ Real bending_critical_dt(BendingKernel kernel, const TriangleShape& s,
         inv_sqrt_mass(3 * i) = 1.0 / std::sqrt(node_mass);
         inv_sqrt_mass(3 * i + 1) = inv_sqrt_mass(3 * i + 2) = 1.0 / std::sqrt(node_inertia);
     }
-    const Mat99 scaled = inv_sqrt_mass.asDiagonal() * bending_stiffness_9dof(kernel, s, bending_rigidity) *
+    const Mat99 scaled = inv_sqrt_mass.asDiagonal() *
+                         bending_stiffness_9dof(kernel, s, bending_rigidity) *
                          inv_sqrt_mass.asDiagonal();
     // The matrix is symmetric positive semi-definite: omega_max^2 = lambda_max <= sqrt(sum of
     // lambda^2) = its Frobenius norm, within sqrt(6) of lambda_max (6 bending modes).
     const Real omega2_bound = scaled.norm();
-    if (omega2_bound > 0 && 2.0 / std::sqrt(omega2_bound) >= sufficient) return 2.0 / std::sqrt(omega2_bound);
+    if (omega2_bound > 0 && 2.0 / std::sqrt(omega2_bound) >= sufficient)
+        return 2.0 / std::sqrt(omega2_bound);
     const Eigen::SelfAdjointEigenSolver<Mat99> eig(scaled, Eigen::EigenvaluesOnly);
     const Real omega2 = eig.eigenvalues().maxCoeff();
     return omega2 > 0 ? 2.0 / std::sqrt(omega2) : std::numeric_limits<Real>::infinity();

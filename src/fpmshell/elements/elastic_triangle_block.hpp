@@ -41,8 +41,9 @@ struct TriangleMotion {
 
 /// The constants of a linear elastic section with its integration rule.
 struct ElasticSectionConstants {
-    Real c11 = 0, c12 = 0, c33 = 0;  ///< plane-stress C: [[c11, c12, 0], [c12, c11, 0], [0, 0, c33]]
-    Real thickness_factor = 0;       ///< (1 - 2 nu) / E, §3.4
+    Real c11 = 0, c12 = 0,
+         c33 = 0;               ///< plane-stress C: [[c11, c12, 0], [c12, c11, 0], [0, 0, c33]]
+    Real thickness_factor = 0;  ///< (1 - 2 nu) / E, §3.4
     std::span<const TrianglePoint> inplane;
     std::span<const ThicknessPoint> through;
     BendingKernel bending = BendingKernel::Dkt;  ///< the curvature matrix: §4.7 DKT or §4.3 BCIZ
@@ -55,14 +56,14 @@ struct ElasticSectionConstants {
 /// rate, part of the point's state, is updated.
 template <class T>
 struct YieldSurfaces {
-    const T* back_stress;  ///< b, 3 components per point (§7.2)
-    const T* third_k2;     ///< (kappa_n / R)^2 / 3 per point (§7.3)
-    Real tolerance;        ///< J2Plastic::k_yield_tolerance
+    const T* back_stress;              ///< b, 3 components per point (§7.2)
+    const T* third_k2;                 ///< (kappa_n / R)^2 / 3 per point (§7.3)
+    Real tolerance;                    ///< J2Plastic::k_yield_tolerance
     const RateFactor* rate = nullptr;  ///< rate-dependent sections: R(rate), §7.4
     const T* strain_rate = nullptr;    ///< the filtered rate per point, old
     T* new_strain_rate = nullptr;      ///< and new (§7.4 option a)
-    Real dt = 0;                     ///< duration of the path element (0: no rate)
-    Real rate_filter = 0;            ///< J2Plastic::k_rate_filter
+    Real dt = 0;                       ///< duration of the path element (0: no rate)
+    Real rate_filter = 0;              ///< J2Plastic::k_rate_filter
 };
 
 /// No return mapping: a lane with a yielding point is reported invalid instead.
@@ -79,13 +80,13 @@ struct ElasticPoints {};
 /// The path element in its local frame (§2.4-§2.7): node 1 at the origin, node 2 on x.
 template <class T>
 struct LocalTriangle {
-    T x2, x3, y3;              ///< base local coordinates (x1 = y1 = y2 = 0)
-    T inv_x2;                  ///< 1 / x2
-    T area;                    ///< A_a, base area
-    std::array<T, 3> ux, uy;   ///< deformation displacements (u_1 = 0), §2.4
-    std::array<T, 6> th;       ///< deformation rotations [thx1 thy1 thx2 thy2 thx3 thy3], §2.6
+    T x2, x3, y3;             ///< base local coordinates (x1 = y1 = y2 = 0)
+    T inv_x2;                 ///< 1 / x2
+    T area;                   ///< A_a, base area
+    std::array<T, 3> ux, uy;  ///< deformation displacements (u_1 = 0), §2.4
+    std::array<T, 6> th;      ///< deformation rotations [thx1 thy1 thx2 thy2 thx3 thy3], §2.6
     std::array<V3<T>, 3> drill_local;  ///< the drill axes in the local frame (eq. 4.6b)
-    M3<T> frame_current;       ///< T_t: local -> global is T_t^T, §2.7
+    M3<T> frame_current;               ///< T_t: local -> global is T_t^T, §2.7
 };
 
 /// The smoothed membrane (membrane_smoothing.hpp): the strain increment to use instead of the
@@ -103,8 +104,8 @@ struct ElasticTriangleLoads {
     T strain_work, damping_work, plastic_work, thickness_strain;
     std::array<T, 3> membrane_force, bending_moment;  ///< N, M averaged over the element
     std::array<T, 3> membrane_resultant;  ///< smoothed membrane only: N plus its viscous part
-    T characteristic_length;  ///< L_c = 2A / l_max of the current triangle (§6.4)
-    MaskOf<T> valid;          ///< lanes inside the bounds above
+    T characteristic_length;              ///< L_c = 2A / l_max of the current triangle (§6.4)
+    MaskOf<T> valid;                      ///< lanes inside the bounds above
 };
 
 namespace block_detail {
@@ -165,10 +166,10 @@ struct CornerCurvature {
 /// and the element's side coefficients (triangle_shape.cpp).
 
 template <class T>
-[[nodiscard]] FPMSHELL_INLINE CornerCurvature<T> dkt_corner(const std::array<Real, 6>& n_xi, const std::array<Real, 6>& n_eta,
-                                             const std::array<T, 3>& cb, const std::array<T, 3>& cc,
-                                             const std::array<T, 3>& ce, const T& x2, const T& x3, const T& y3,
-                                             const T& inv_two_area) {
+[[nodiscard]] FPMSHELL_INLINE CornerCurvature<T> dkt_corner(
+    const std::array<Real, 6>& n_xi, const std::array<Real, 6>& n_eta, const std::array<T, 3>& cb,
+    const std::array<T, 3>& cc, const std::array<T, 3>& ce, const T& x2, const T& x3, const T& y3,
+    const T& inv_two_area) {
     auto h_of = [&](const std::array<Real, 6>& n, std::array<T, 6>& hx, std::array<T, 6>& hy) {
         const Real n1 = n[0], n2 = n[1], n3 = n[2], n4 = n[3], n5 = n[4], n6 = n[5];
         hx = {cb[1] * n5 + cb[2] * n6, n1 - cc[1] * n5 - cc[2] * n6,
@@ -200,9 +201,10 @@ template <class T>
 /// membrane (nullptr: the CST).
 template <class T, class ReturnMapping = NoReturnMapping, class PointUpdate = ElasticPoints>
 [[nodiscard]] FPMSHELL_INLINE ElasticTriangleLoads<T> local_triangle_loads(
-    const LocalTriangle<T>& e, MaskOf<T> valid, const ElasticSectionConstants& sec, const T& thickness, T* stress,
-    Real viscous_rate, const YieldSurfaces<T>* yield = nullptr, const ReturnMapping& return_mapping = {},
-    const PointUpdate& update = {}, const SmoothedMembrane<T>* smoothed = nullptr) {
+    const LocalTriangle<T>& e, MaskOf<T> valid, const ElasticSectionConstants& sec,
+    const T& thickness, T* stress, Real viscous_rate, const YieldSurfaces<T>* yield = nullptr,
+    const ReturnMapping& return_mapping = {}, const PointUpdate& update = {},
+    const SmoothedMembrane<T>* smoothed = nullptr) {
     using namespace block_detail;
     constexpr bool elastic_points = std::is_same_v<PointUpdate, ElasticPoints>;
     ElasticTriangleLoads<T> out;
@@ -238,8 +240,11 @@ template <class T, class ReturnMapping = NoReturnMapping, class PointUpdate = El
             const std::array<T, 3> xij{x2 - x3, x3, -x2}, yij{-y3, y3, T(0.0)};
             std::array<T, 3> l2;
             for (std::size_t s = 0; s < 3; ++s) l2[s] = xij[s] * xij[s] + yij[s] * yij[s];
-            const T inv_product = 1.0 / (l2[0] * l2[1] * l2[2]);  // one division for the three sides
-            const std::array<T, 3> inv_side{l2[1] * l2[2] * inv_product, l2[0] * l2[2] * inv_product, l2[0] * l2[1] * inv_product};
+            const T inv_product =
+                1.0 / (l2[0] * l2[1] * l2[2]);  // one division for the three sides
+            const std::array<T, 3> inv_side{l2[1] * l2[2] * inv_product,
+                                            l2[0] * l2[2] * inv_product,
+                                            l2[0] * l2[1] * inv_product};
             for (std::size_t s = 0; s < 3; ++s) {
                 const T inv_l2 = inv_side[s];
                 cb[s] = 0.75 * xij[s] * yij[s] * inv_l2;
@@ -248,13 +253,12 @@ template <class T, class ReturnMapping = NoReturnMapping, class PointUpdate = El
             }
         }
         // n_xi, n_eta of bending_b_dkt at L = e_1, e_2, e_3 (xi = L_2, eta = L_3)
-        static constexpr std::array<std::array<Real, 6>, 3> k_n_xi{{{-3, -1, 0, 0, 0, 4},
-                                                                    {1, 3, 0, 0, 0, -4},
-                                                                    {1, -1, 0, 4, -4, 0}}};
-        static constexpr std::array<std::array<Real, 6>, 3> k_n_eta{{{-3, 0, -1, 0, 4, 0},
-                                                                     {1, 0, -1, 4, 0, -4},
-                                                                     {1, 0, 3, 0, -4, 0}}};
-        for (std::size_t i = 0; i < 3; ++i) corner[i] = dkt_corner(k_n_xi[i], k_n_eta[i], cb, cc, ce, x2, x3, y3, inv_two_area);
+        static constexpr std::array<std::array<Real, 6>, 3> k_n_xi{
+            {{-3, -1, 0, 0, 0, 4}, {1, 3, 0, 0, 0, -4}, {1, -1, 0, 4, -4, 0}}};
+        static constexpr std::array<std::array<Real, 6>, 3> k_n_eta{
+            {{-3, 0, -1, 0, 4, 0}, {1, 0, -1, 4, 0, -4}, {1, 0, 3, 0, -4, 0}}};
+        for (std::size_t i = 0; i < 3; ++i)
+            corner[i] = dkt_corner(k_n_xi[i], k_n_eta[i], cb, cc, ce, x2, x3, y3, inv_two_area);
     }
     std::array<std::array<T, 3>, 3> kappa_corner, m_corner;
     for (std::size_t i = 0; i < 3; ++i) {
@@ -274,17 +278,19 @@ template <class T, class ReturnMapping = NoReturnMapping, class PointUpdate = El
     // new stress) and, in a J2 section, the check of §7.3 step 1
     std::array<std::array<T, 3>, k_max_block_points> d_eps, old;
     std::array<MaskOf<T>, k_max_block_points> yielding;
-    std::array<T, k_max_block_points> rate_factor;  // R of §7.4 (1 where not evaluated)
+    std::array<T, k_max_block_points> rate_factor;     // R of §7.4 (1 where not evaluated)
     std::array<T, k_max_block_points> d_plastic_work;  // per unit volume, per point
-    MaskOf<T> any_yielding = !valid && valid;     // no lane
+    MaskOf<T> any_yielding = !valid && valid;          // no lane
     for (std::size_t g = 0, point = 0; g < sec.inplane.size(); ++g) {
         const TrianglePoint& ip = sec.inplane[g];
         std::array<T, 3> d_kappa;
         for (std::size_t r = 0; r < 3; ++r)
-            d_kappa[r] = ip.L[0] * kappa_corner[0][r] + ip.L[1] * kappa_corner[1][r] + ip.L[2] * kappa_corner[2][r];
+            d_kappa[r] = ip.L[0] * kappa_corner[0][r] + ip.L[1] * kappa_corner[1][r] +
+                         ip.L[2] * kappa_corner[2][r];
         for (std::size_t k = 0; k < nk; ++k, ++point) {
             const T z = sec.through[k].zeta * half_h;
-            const std::array<T, 3> de{d_eps_m[0] + z * d_kappa[0], d_eps_m[1] + z * d_kappa[1], d_eps_m[2] + z * d_kappa[2]};
+            const std::array<T, 3> de{d_eps_m[0] + z * d_kappa[0], d_eps_m[1] + z * d_kappa[1],
+                                      d_eps_m[2] + z * d_kappa[2]};
             d_eps[point] = de;
             if constexpr (!elastic_points) {  // the general update: every point may yield
                 T* sigma = stress + 3 * point;
@@ -294,7 +300,8 @@ template <class T, class ReturnMapping = NoReturnMapping, class PointUpdate = El
                 any_yielding = valid;
                 continue;
             }
-            const std::array<T, 3> d_sigma{sec.c11 * de[0] + sec.c12 * de[1], sec.c12 * de[0] + sec.c11 * de[1], sec.c33 * de[2]};
+            const std::array<T, 3> d_sigma{sec.c11 * de[0] + sec.c12 * de[1],
+                                           sec.c12 * de[0] + sec.c11 * de[1], sec.c33 * de[2]};
             T* sigma = stress + 3 * point;
             old[point] = {sigma[0], sigma[1], sigma[2]};
             for (std::size_t r = 0; r < 3; ++r) sigma[r] = old[point][r] + d_sigma[r];
@@ -302,7 +309,8 @@ template <class T, class ReturnMapping = NoReturnMapping, class PointUpdate = El
             if (!yield) continue;
             // §7.3 step 1: f_tr = xi^T P xi / 2 - kappa^2 / 3 <= tol kappa^2 / 3
             const T* b = yield->back_stress + 3 * point;
-            const T xs = (sigma[0] - b[0]) + (sigma[1] - b[1]), xd = (sigma[1] - b[1]) - (sigma[0] - b[0]);
+            const T xs = (sigma[0] - b[0]) + (sigma[1] - b[1]),
+                    xd = (sigma[1] - b[1]) - (sigma[0] - b[0]);
             const T x12 = sigma[2] - b[2];
             const T half_p2 = 0.5 * (xs * xs * (1.0 / 6.0) + 0.5 * xd * xd + 2.0 * x12 * x12);
             const T k2 = yield->third_k2[point];
@@ -312,16 +320,19 @@ template <class T, class ReturnMapping = NoReturnMapping, class PointUpdate = El
                 if (yield->dt > 0) {
                     const T e12 = 0.5 * de[2];
                     const T q = de[0] * de[0] + de[1] * de[1] + de[0] * de[1] + e12 * e12;
-                    rate = sqrt(max(T(0.0), q)) * ((2.0 / std::sqrt(3.0)) / yield->dt);  // a scalar division
+                    rate = sqrt(max(T(0.0), q)) *
+                           ((2.0 / std::sqrt(3.0)) / yield->dt);  // a scalar division
                 }
-                const T new_rate = yield->rate_filter * rate + (1.0 - yield->rate_filter) * yield->strain_rate[point];
+                const T new_rate = yield->rate_filter * rate +
+                                   (1.0 - yield->rate_filter) * yield->strain_rate[point];
                 yield->new_strain_rate[point] = new_rate;
                 // A lane outside the R = 1 surface is checked against its own R(rate) >= 1:
                 // one logarithm or power per such lane, none for the points well inside.
                 const MaskOf<T> outside = !inside && valid;
                 if (any_lane(outside)) {
                     for (int l = 0; l < lanes_of<T>; ++l)
-                        if (lane(outside, l)) set_lane(rate_factor[point], l, yield->rate->value(lane(new_rate, l)));
+                        if (lane(outside, l))
+                            set_lane(rate_factor[point], l, yield->rate->value(lane(new_rate, l)));
                     const T k2_rate = rate_factor[point] * rate_factor[point] * k2;
                     inside = inside || (half_p2 - k2_rate <= yield->tolerance * k2_rate);
                 }
@@ -338,7 +349,8 @@ template <class T, class ReturnMapping = NoReturnMapping, class PointUpdate = El
         if (plastic) valid = valid && !any_yielding;
     } else if (plastic) {
         d_plastic_work.fill(T(0.0));
-        return_mapping(n_points, yielding.data(), d_eps.data(), rate_factor.data(), stress, d_plastic_work.data());
+        return_mapping(n_points, yielding.data(), d_eps.data(), rate_factor.data(), stress,
+                       d_plastic_work.data());
     }
     // pass 3: through-thickness integration
     std::array<T, 3> n_weighted{T(0.0), T(0.0), T(0.0)};
@@ -349,7 +361,8 @@ template <class T, class ReturnMapping = NoReturnMapping, class PointUpdate = El
         const TrianglePoint& ip = sec.inplane[g];
         std::array<T, 3> d_kappa;
         for (std::size_t r = 0; r < 3; ++r)
-            d_kappa[r] = ip.L[0] * kappa_corner[0][r] + ip.L[1] * kappa_corner[1][r] + ip.L[2] * kappa_corner[2][r];
+            d_kappa[r] = ip.L[0] * kappa_corner[0][r] + ip.L[1] * kappa_corner[1][r] +
+                         ip.L[2] * kappa_corner[2][r];
         std::array<T, 3> n_g{T(0.0), T(0.0), T(0.0)}, m_g{T(0.0), T(0.0), T(0.0)};
         T work_g = 0.0, plastic_g = 0.0;
         for (std::size_t k = 0; k < nk; ++k, ++point) {
@@ -360,14 +373,17 @@ template <class T, class ReturnMapping = NoReturnMapping, class PointUpdate = El
             const std::array<T, 3>& o = old[point];
             const T wz = half_h * tp.weight;
             if (plastic) plastic_g += wz * select(yielding[point], d_plastic_work[point], T(0.0));
-            out.thickness_strain += (0.5 * ip.weight * tp.weight) *
-                                    (sec.thickness_factor * ((sigma[0] - o[0]) + (sigma[1] - o[1])) - de[0] - de[1]);
+            out.thickness_strain +=
+                (0.5 * ip.weight * tp.weight) *
+                (sec.thickness_factor * ((sigma[0] - o[0]) + (sigma[1] - o[1])) - de[0] - de[1]);
             const T wzz = wz * z;
             for (std::size_t r = 0; r < 3; ++r) {
                 n_g[r] += wz * sigma[r];
                 m_g[r] += wzz * sigma[r];
             }
-            work_g += wz * 0.5 * ((o[0] + sigma[0]) * de[0] + (o[1] + sigma[1]) * de[1] + (o[2] + sigma[2]) * de[2]);
+            work_g +=
+                wz * 0.5 *
+                ((o[0] + sigma[0]) * de[0] + (o[1] + sigma[1]) * de[1] + (o[2] + sigma[2]) * de[2]);
         }
         for (std::size_t r = 0; r < 3; ++r) {
             out.membrane_force[r] += ip.weight * n_g[r];
@@ -376,9 +392,11 @@ template <class T, class ReturnMapping = NoReturnMapping, class PointUpdate = El
         if (viscous_rate > 0) {  // §6.5 viscous resultants
             const T fn = viscous_rate * h, fm = viscous_rate * (h * h * h * (1.0 / 12.0));
             const std::array<T, 3> n_v{fn * (sec.c11 * d_eps_m[0] + sec.c12 * d_eps_m[1]),
-                                       fn * (sec.c12 * d_eps_m[0] + sec.c11 * d_eps_m[1]), fn * (sec.c33 * d_eps_m[2])};
+                                       fn * (sec.c12 * d_eps_m[0] + sec.c11 * d_eps_m[1]),
+                                       fn * (sec.c33 * d_eps_m[2])};
             const std::array<T, 3> m_v{fm * (sec.c11 * d_kappa[0] + sec.c12 * d_kappa[1]),
-                                       fm * (sec.c12 * d_kappa[0] + sec.c11 * d_kappa[1]), fm * (sec.c33 * d_kappa[2])};
+                                       fm * (sec.c12 * d_kappa[0] + sec.c11 * d_kappa[1]),
+                                       fm * (sec.c33 * d_kappa[2])};
             out.damping_work += area * ip.weight *
                                 (n_v[0] * d_eps_m[0] + n_v[1] * d_eps_m[1] + n_v[2] * d_eps_m[2] +
                                  m_v[0] * d_kappa[0] + m_v[1] * d_kappa[1] + m_v[2] * d_kappa[2]);
@@ -420,7 +438,8 @@ template <class T, class ReturnMapping = NoReturnMapping, class PointUpdate = El
         const T along = m_b[2 * i] * d.x + m_b[2 * i + 1] * d.y;
         m_node[i] = V3<T>{m_b[2 * i] - along * d.x, m_b[2 * i + 1] - along * d.y, -(along * d.z)};
     }
-    const T sum_mx = m_node[0].x + m_node[1].x + m_node[2].x, sum_my = m_node[0].y + m_node[1].y + m_node[2].y;
+    const T sum_mx = m_node[0].x + m_node[1].x + m_node[2].x,
+            sum_my = m_node[0].y + m_node[1].y + m_node[2].y;
     const T sum_mz = m_node[0].z + m_node[1].z + m_node[2].z;
     const T f3z = -sum_mx * (x2 * inv_two_area);  // 1 / y3 = x2 / (x2 y3); eq. 4.6a
     const T f2z = (sum_my - x3 * f3z) * inv_x2;
@@ -430,13 +449,13 @@ template <class T, class ReturnMapping = NoReturnMapping, class PointUpdate = El
     const std::array<T, 3> fy_couple{f_couple, -f_couple, T(0.0)};
     // §5 forward rotation: global = T_t^T local.
     for (std::size_t i = 0; i < 3; ++i) {
-        out.force[i] = transpose_times(frame_current, V3<T>{f_m[2 * i], f_m[2 * i + 1] + fy_couple[i], fz[i]});
+        out.force[i] =
+            transpose_times(frame_current, V3<T>{f_m[2 * i], f_m[2 * i + 1] + fy_couple[i], fz[i]});
         out.moment[i] = transpose_times(frame_current, m_node[i]);
     }
     out.valid = valid;
     return out;
 }
-
 
 /// Elastic step of the triangle on one path element per lane (theory.md §2-§5).
 /// stress: the section's points [g][k], 3 components each, old in, new out (only meaningful
@@ -450,12 +469,10 @@ template <class T, class ReturnMapping = NoReturnMapping, class PointUpdate = El
 /// their new stress into `stress` and their plastic work per unit volume into d_plastic_work.
 /// Without one (NoReturnMapping) such a lane is reported invalid instead.
 template <class T, class ReturnMapping = NoReturnMapping>
-[[nodiscard]] ElasticTriangleLoads<T> elastic_triangle_loads(const TriangleMotion<T>& m,
-                                                             const ElasticSectionConstants& sec,
-                                                             const T& thickness, T* stress,
-                                                             Real viscous_rate,
-                                                             const YieldSurfaces<T>* yield = nullptr,
-                                                             const ReturnMapping& return_mapping = {}) {
+[[nodiscard]] ElasticTriangleLoads<T> elastic_triangle_loads(
+    const TriangleMotion<T>& m, const ElasticSectionConstants& sec, const T& thickness, T* stress,
+    Real viscous_rate, const YieldSurfaces<T>* yield = nullptr,
+    const ReturnMapping& return_mapping = {}) {
     using namespace block_detail;
     LocalTriangle<T> local;  // filled in place: a copy of its packs costs the kernel a few per cent
     // ---- §2 reverse motion (reverse_motion.cpp, series branches) ----
@@ -469,11 +486,11 @@ template <class T, class ReturnMapping = NoReturnMapping>
     local.area = 0.5 * na_norm;
     const T area_ratio = n_norm * inv_na_norm;
     const T normal_cosine = dot(na, n);
-    MaskOf<T> valid = (na_norm > 1e-12 * lmax2) && (n_norm > 1e-12 * lmax2) && (normal_cosine > 0.0) &&
-                      (area_ratio > 0.5) && (area_ratio < 2.0);
-    const M3<T> r_op = minimal_rotation(na, n);                            // §2.2
+    MaskOf<T> valid = (na_norm > 1e-12 * lmax2) && (n_norm > 1e-12 * lmax2) &&
+                      (normal_cosine > 0.0) && (area_ratio > 0.5) && (area_ratio < 2.0);
+    const M3<T> r_op = minimal_rotation(na, n);  // §2.2
     const V3<T> r2p = transpose_times(r_op, r2), r3p = transpose_times(r_op, r3);
-    const T ip_y = dot(na, cross(a2, r2p)), ip_x = dot(a2, r2p);          // §2.3
+    const T ip_y = dot(na, cross(a2, r2p)), ip_x = dot(a2, r2p);  // §2.3
     valid = valid && (ip_x > 0.0) && (abs(ip_y) < 0.01 * ip_x);
     const T t = ip_y / ip_x, tt = t * t;
     const T theta_ip = t * (1.0 - tt * (1.0 / 3.0 - tt * (1.0 / 5.0 - tt * (1.0 / 7.0))));
@@ -482,19 +499,20 @@ template <class T, class ReturnMapping = NoReturnMapping>
     valid = valid && (phi_ip2 < 1e-4);
     const M3<T> r_ip = rotation_matrix_series(phi_ip, phi_ip2);
     const V3<T> r2pp = transpose_times(r_ip, r2p), r3pp = transpose_times(r_ip, r3p);
-    const T x2 = local.x2 = sqrt(squared_norm(a2));                        // §2.5
+    const T x2 = local.x2 = sqrt(squared_norm(a2));  // §2.5
     const T inv_x2 = local.inv_x2 = 1.0 / x2;
     const V3<T> ex = inv_x2 * a2, ez = na, ey = cross(ez, ex);
     local.x3 = dot(ex, a3);
     local.y3 = dot(ey, a3);
-    const V3<T> d2 = r2pp - a2, d3 = r3pp - a3;                             // §2.4
+    const V3<T> d2 = r2pp - a2, d3 = r3pp - a3;  // §2.4
     local.ux = {T(0.0), dot(ex, d2), dot(ex, d3)};
     local.uy = {T(0.0), dot(ey, d2), dot(ey, d3)};
     const M3<T> r_r = r_op * r_ip;
     // eq. 2.6c: each node's rotation about its drill axis d_i is the element's rigid one
     const V3<T> omega_r = rotation_vector_series(r_r, valid);
     std::array<T, 6>& th = local.th;  // [thx1 thy1 thx2 thy2 thx3 thy3], §2.6
-    std::array<V3<T>, 3>& drill_local = local.drill_local;  // the drill axes in the local frame (eq. 4.6b)
+    std::array<V3<T>, 3>& drill_local =
+        local.drill_local;  // the drill axes in the local frame (eq. 4.6b)
     for (std::size_t i = 0; i < 3; ++i) {
         const V3<T>& d = m.drill_axis[i];
         drill_local[i] = V3<T>{dot(ex, d), dot(ey, d), dot(ez, d)};
@@ -507,13 +525,14 @@ template <class T, class ReturnMapping = NoReturnMapping>
         th[2 * i + 1] = dot(ey, phi);
     }
     const M3<T> t_a{{ex, ey, ez}};
-    local.frame_current = times_transpose(t_a, r_r);                      // §2.7
-    // current L_c (§6.4), the same operations as characteristic_length in solver/element_time_steps.cpp
+    local.frame_current = times_transpose(t_a, r_r);  // §2.7
+    // current L_c (§6.4), the same operations as characteristic_length in
+    // solver/element_time_steps.cpp
     const T lmax2_current = max(max(squared_norm(r2), squared_norm(m.current[2] - m.current[1])),
                                 squared_norm(m.current[0] - m.current[2]));
     const T characteristic_length = n_norm / sqrt(lmax2_current);
-    ElasticTriangleLoads<T> out =
-        local_triangle_loads(local, valid, sec, thickness, stress, viscous_rate, yield, return_mapping);
+    ElasticTriangleLoads<T> out = local_triangle_loads(local, valid, sec, thickness, stress,
+                                                       viscous_rate, yield, return_mapping);
     out.characteristic_length = characteristic_length;
     return out;
 }

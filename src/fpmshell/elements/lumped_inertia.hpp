@@ -7,8 +7,9 @@
 namespace fpmshell {
 
 struct NodeInertiaShare {
-    Real mass;     ///< rho h A / 3                   (§6.1)
-    Real inertia;  ///< (rho h A / 3)(A/8 + h^2/12)   (§6.2 option B, Kennedy, Belytschko & Lin 1986)
+    Real mass;  ///< rho h A / 3                   (§6.1)
+    Real
+        inertia;  ///< (rho h A / 3)(A/8 + h^2/12)   (§6.2 option B, Kennedy, Belytschko & Lin 1986)
     Real gyration2;  ///< A/8 + h^2/12, inertia / mass
 };
 

@@ -22,9 +22,7 @@ namespace fpmshell {
 [[nodiscard]] inline Mat3 strain_rotation(Real beta) {
     const Real c = std::cos(beta), s = std::sin(beta);
     Mat3 t;
-    t << c * c, s * s, -c * s,
-         s * s, c * c, c * s,
-         2 * c * s, -2 * c * s, c * c - s * s;
+    t << c * c, s * s, -c * s, s * s, c * c, c * s, 2 * c * s, -2 * c * s, c * c - s * s;
     return t;
 }
 

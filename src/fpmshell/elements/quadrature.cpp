@@ -30,8 +30,10 @@ std::array<TrianglePoint, 7> make_tri7() {
 }
 const std::array<TrianglePoint, 7> k_tri7 = make_tri7();
 
-const std::array<ThicknessPoint, 2> k_gauss2{{{-1.0 / std::sqrt(3.0), 1.0}, {1.0 / std::sqrt(3.0), 1.0}}};
-const std::array<ThicknessPoint, 3> k_lobatto3{{{-1.0, 1.0 / 3.0}, {0.0, 4.0 / 3.0}, {1.0, 1.0 / 3.0}}};
+const std::array<ThicknessPoint, 2> k_gauss2{
+    {{-1.0 / std::sqrt(3.0), 1.0}, {1.0 / std::sqrt(3.0), 1.0}}};
+const std::array<ThicknessPoint, 3> k_lobatto3{
+    {{-1.0, 1.0 / 3.0}, {0.0, 4.0 / 3.0}, {1.0, 1.0 / 3.0}}};
 const std::array<ThicknessPoint, 5> k_lobatto5{{{-1.0, 0.1},
                                                 {-std::sqrt(3.0 / 7.0), 49.0 / 90.0},
                                                 {0.0, 32.0 / 45.0},

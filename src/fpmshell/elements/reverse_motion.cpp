@@ -6,8 +6,7 @@
 
 namespace fpmshell {
 
-ReversedTriangle reverse_motion(const std::array<Vec3, 3>& base,
-                                const std::array<Vec3, 3>& current,
+ReversedTriangle reverse_motion(const std::array<Vec3, 3>& base, const std::array<Vec3, 3>& current,
                                 const std::array<Vec3, 3>& dtheta,
                                 const std::array<Vec3, 3>& drill_axis) {
     ReversedTriangle out;
@@ -63,7 +62,8 @@ ReversedTriangle reverse_motion(const std::array<Vec3, 3>& base,
     const Mat3 r_r = r_op * r_ip;
     const Vec3 omega_r = rotation_vector(r_r);
     for (std::size_t i = 0; i < 3; ++i) {
-        const Vec3 dtheta_node = dtheta[i] + (omega_r - dtheta[i]).dot(drill_axis[i]) * drill_axis[i];
+        const Vec3 dtheta_node =
+            dtheta[i] + (omega_r - dtheta[i]).dot(drill_axis[i]) * drill_axis[i];
         const Vec3 phi = rotation_vector(r_r.transpose() * rotation_matrix(dtheta_node));
         out.theta[i] = (t_a * phi).head<2>();  // drilling component discarded
         out.drill_local[i] = t_a * drill_axis[i];

@@ -16,11 +16,14 @@ struct ReversedTriangle {
     Real area = 0;                ///< A_a, base area
     std::array<Vec2, 3> u;        ///< deformation displacements (u_1 = 0), §2.4
     std::array<Vec2, 3> theta;    ///< deformation rotations [theta_x, theta_y], §2.6
-    std::array<Vec3, 3> drill_local{Vec3::Zero(), Vec3::Zero(), Vec3::Zero()};  ///< the nodes' drill axes in the local frame (§4.6, eq. 4.6b)
-    Mat3 frame_current;           ///< T_t (rows x_t, y_t, z_t): local -> global is T_t^T, §2.7
-    Real normal_cosine = 1;       ///< n_a . n: the solver treats < 0 (a tilt over 90 deg in one step) as a failure
-    Real area_ratio = 1;          ///< current / base area: far from 1 within one step = divergence
-    bool degenerate = false;      ///< zero-area base or current triangle (§2.8)
+    std::array<Vec3, 3> drill_local{
+        Vec3::Zero(), Vec3::Zero(),
+        Vec3::Zero()};   ///< the nodes' drill axes in the local frame (§4.6, eq. 4.6b)
+    Mat3 frame_current;  ///< T_t (rows x_t, y_t, z_t): local -> global is T_t^T, §2.7
+    Real normal_cosine =
+        1;  ///< n_a . n: the solver treats < 0 (a tilt over 90 deg in one step) as a failure
+    Real area_ratio = 1;      ///< current / base area: far from 1 within one step = divergence
+    bool degenerate = false;  ///< zero-area base or current triangle (§2.8)
 };
 
 /// The drill axes of three nodes whose rotation increments are complete (kinks, prescribed

@@ -14,7 +14,7 @@ struct FlowStress {
     enum class Kind { Linear, JohnsonCook };
     Kind kind = Kind::Linear;
     Real yield_stress = 0;  ///< linear: sigma_y0
-    Real hardening = 0;     ///< linear: plastic modulus H = E E_t / (E - E_t); 0 = perfectly plastic
+    Real hardening = 0;  ///< linear: plastic modulus H = E E_t / (E - E_t); 0 = perfectly plastic
     Real a = 0, b = 0, n = 1;  ///< Johnson-Cook A + B alpha^n
 
     [[nodiscard]] Real value(Real alpha) const {
@@ -45,18 +45,18 @@ struct FlowStress {
 struct RateFactor {
     enum class Kind { None, CowperSymonds, JohnsonCook };
     Kind kind = Kind::None;
-    Real d = 0, q = 1;              ///< Cowper-Symonds: 1 + (rate / D)^(1/q)
+    Real d = 0, q = 1;               ///< Cowper-Symonds: 1 + (rate / D)^(1/q)
     Real c = 0, reference_rate = 1;  ///< Johnson-Cook: 1 + C ln(max(rate / rate_0, 1))
 
     [[nodiscard]] bool active() const { return kind != Kind::None; }
     [[nodiscard]] Real value(Real rate) const {
         switch (kind) {
-        case Kind::CowperSymonds:
-            return rate > 0 ? 1.0 + std::pow(rate / d, 1.0 / q) : 1.0;
-        case Kind::JohnsonCook:  // below the reference rate the factor is 1: no logarithm
-            return rate > reference_rate ? 1.0 + c * std::log(rate / reference_rate) : 1.0;
-        default:
-            return 1.0;
+            case Kind::CowperSymonds:
+                return rate > 0 ? 1.0 + std::pow(rate / d, 1.0 / q) : 1.0;
+            case Kind::JohnsonCook:  // below the reference rate the factor is 1: no logarithm
+                return rate > reference_rate ? 1.0 + c * std::log(rate / reference_rate) : 1.0;
+            default:
+                return 1.0;
         }
     }
 };

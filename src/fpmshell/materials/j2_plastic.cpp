@@ -8,7 +8,8 @@ namespace fpmshell {
 Real effective_strain_rate(const Voigt3& d_eps, Real dt) {
     if (!(dt > 0)) return 0;
     const Real e11 = d_eps(0), e22 = d_eps(1), e12 = 0.5 * d_eps(2);
-    return (2.0 / std::sqrt(3.0)) * std::sqrt(std::max(Real{0}, e11 * e11 + e22 * e22 + e11 * e22 + e12 * e12)) / dt;
+    return (2.0 / std::sqrt(3.0)) *
+           std::sqrt(std::max(Real{0}, e11 * e11 + e22 * e22 + e11 * e22 + e12 * e12)) / dt;
 }
 
 J2Plastic::J2Plastic(Real youngs_modulus, Real poisson_ratio, const FlowStress& flow,
@@ -28,7 +29,8 @@ J2Plastic::J2Plastic(Real youngs_modulus, Real poisson_ratio, const FlowStress& 
 }
 
 Real J2Plastic::yield_radius(Real alpha, Real r) const {
-    // §7.4 mixed hardening with a nonlinear curve: kappa = sigma_f(0) + beta (sigma_f(alpha) - sigma_f(0))
+    // §7.4 mixed hardening with a nonlinear curve: kappa = sigma_f(0) + beta (sigma_f(alpha) -
+    // sigma_f(0))
     const Real f0 = flow_.value(0);
     return r * (f0 + beta_ * (flow_.value(alpha) - f0));
 }
@@ -42,13 +44,15 @@ void J2Plastic::update(const MaterialPoint& old_state, const Voigt3& d_eps, Real
         rate = k_rate_filter * effective_strain_rate(d_eps, dt) + (1.0 - k_rate_filter) * rate;
         r = rate_.value(rate);  // frozen during the return (§7.4 option a)
     }
-    const J2PointState<Real> old{{old_state.stress(0), old_state.stress(1), old_state.stress(2)},
-                                 {old_state.back_stress(0), old_state.back_stress(1), old_state.back_stress(2)},
-                                 old_state.plastic_strain,
-                                 old_state.flow_radius,
-                                 old_state.flow_slope};
+    const J2PointState<Real> old{
+        {old_state.stress(0), old_state.stress(1), old_state.stress(2)},
+        {old_state.back_stress(0), old_state.back_stress(1), old_state.back_stress(2)},
+        old_state.plastic_strain,
+        old_state.flow_radius,
+        old_state.flow_slope};
     const Real plastic_work_n = old_state.plastic_work;
-    const J2Return<Real> ret = j2_return_mapping(constants_, old, {d_eps(0), d_eps(1), d_eps(2)}, r, true);
+    const J2Return<Real> ret =
+        j2_return_mapping(constants_, old, {d_eps(0), d_eps(1), d_eps(2)}, r, true);
     const J2PointState<Real>& next = ret.state;
     new_state.stress = Voigt3(next.stress[0], next.stress[1], next.stress[2]);
     new_state.back_stress = Voigt3(next.back_stress[0], next.back_stress[1], next.back_stress[2]);

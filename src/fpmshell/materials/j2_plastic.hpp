@@ -21,8 +21,8 @@ public:
     static constexpr Real k_rate_filter = 0.1;
 
     /// hardening_mix: beta of §7.2, 1 isotropic, 0 kinematic.
-    J2Plastic(Real youngs_modulus, Real poisson_ratio, const FlowStress& flow, const RateFactor& rate,
-              Real hardening_mix);
+    J2Plastic(Real youngs_modulus, Real poisson_ratio, const FlowStress& flow,
+              const RateFactor& rate, Real hardening_mix);
 
     /// Elastic plane-stress matrix C (engineering shear strain).
     [[nodiscard]] const Mat3& stiffness() const { return c_; }
@@ -31,20 +31,23 @@ public:
 
     /// New state of a point from its old state, the strain increment d_eps over the step dt
     /// (dt is used for the strain rate only). old_state and new_state may be the same object.
-    void update(const MaterialPoint& old_state, const Voigt3& d_eps, Real dt, MaterialPoint& new_state) const;
+    void update(const MaterialPoint& old_state, const Voigt3& d_eps, Real dt,
+                MaterialPoint& new_state) const;
 
     /// The state a point keeps between steps, as the element groups store it
     /// (solver/element_group.hpp): k_point_fields numbers, read and written through
     /// field(k) and set(k, value), one field per component.
-    static constexpr std::size_t k_stress = 0, k_back_stress = 3, k_plastic_strain = 6, k_plastic_work = 7,
-                                 k_strain_rate = 8, k_flow_radius = 9, k_flow_slope = 10;
+    static constexpr std::size_t k_stress = 0, k_back_stress = 3, k_plastic_strain = 6,
+                                 k_plastic_work = 7, k_strain_rate = 8, k_flow_radius = 9,
+                                 k_flow_slope = 10;
     static constexpr std::size_t k_point_fields = 11;
     static constexpr bool k_stress_only = false;
     template <class Field>
     [[nodiscard]] MaterialPoint read_point(const Field& field) const {
         MaterialPoint mp;
         mp.stress = Voigt3(field(k_stress), field(k_stress + 1), field(k_stress + 2));
-        mp.back_stress = Voigt3(field(k_back_stress), field(k_back_stress + 1), field(k_back_stress + 2));
+        mp.back_stress =
+            Voigt3(field(k_back_stress), field(k_back_stress + 1), field(k_back_stress + 2));
         mp.plastic_strain = field(k_plastic_strain);
         mp.plastic_work = field(k_plastic_work);
         mp.strain_rate = field(k_strain_rate);
@@ -58,8 +61,10 @@ public:
     /// radius alone, not the plastic strain too.
     template <class Set>
     void write_point(const MaterialPoint& mp, const Set& set) const {
-        for (std::size_t r = 0; r < 3; ++r) set(k_stress + r, mp.stress(static_cast<Eigen::Index>(r)));
-        for (std::size_t r = 0; r < 3; ++r) set(k_back_stress + r, mp.back_stress(static_cast<Eigen::Index>(r)));
+        for (std::size_t r = 0; r < 3; ++r)
+            set(k_stress + r, mp.stress(static_cast<Eigen::Index>(r)));
+        for (std::size_t r = 0; r < 3; ++r)
+            set(k_back_stress + r, mp.back_stress(static_cast<Eigen::Index>(r)));
         set(k_plastic_strain, mp.plastic_strain);
         set(k_plastic_work, mp.plastic_work);
         set(k_strain_rate, mp.strain_rate);
@@ -67,7 +72,9 @@ public:
         set(k_flow_slope, mp.flow_slope);
     }
     /// The value of field k before the first step.
-    [[nodiscard]] Real initial_field(std::size_t k) const { return k == k_flow_radius ? initial_flow_radius() : 0; }
+    [[nodiscard]] Real initial_field(std::size_t k) const {
+        return k == k_flow_radius ? initial_flow_radius() : 0;
+    }
 
     /// Radius kappa(alpha) of the yield surface (uniaxial yield stress) at the rate factor r.
     [[nodiscard]] Real yield_radius(Real alpha, Real r) const;

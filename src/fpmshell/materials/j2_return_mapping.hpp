@@ -20,11 +20,12 @@ inline constexpr int k_max_return_iterations = 100;
 
 /// What the return mapping needs of a J2 material (J2Plastic holds one).
 struct J2ReturnConstants {
-    Real c11 = 0, c12 = 0, c33 = 0;  ///< plane-stress C: [[c11, c12, 0], [c12, c11, 0], [0, 0, c33]]
-    Real bulk_term = 0;              ///< E / (3 (1 - nu)), the A1 coefficient of §7.3 without H_k
-    Real two_g = 0;                  ///< 2 G, the A2 coefficient without H_k
-    Real beta = 1;                   ///< hardening mix of §7.2: 1 isotropic, 0 kinematic
-    Real tolerance = 0;              ///< J2Plastic::k_yield_tolerance
+    Real c11 = 0, c12 = 0,
+         c33 = 0;        ///< plane-stress C: [[c11, c12, 0], [c12, c11, 0], [0, 0, c33]]
+    Real bulk_term = 0;  ///< E / (3 (1 - nu)), the A1 coefficient of §7.3 without H_k
+    Real two_g = 0;      ///< 2 G, the A2 coefficient without H_k
+    Real beta = 1;       ///< hardening mix of §7.2: 1 isotropic, 0 kinematic
+    Real tolerance = 0;  ///< J2Plastic::k_yield_tolerance
     FlowStress flow;
     Real flow_radius0 = 0;  ///< sigma_f(0)
 };
@@ -63,10 +64,12 @@ struct Radius {
 /// kappa / R and sigma_f' at alpha on the lanes of `lanes` (the others are left at 0). A linear
 /// curve is pack arithmetic; a Johnson-Cook one takes one power per lane.
 template <class T>
-[[nodiscard]] FPMSHELL_INLINE Radius<T> radius_and_slope(const J2ReturnConstants& c, const T& alpha, const MaskOf<T>& lanes) {
+[[nodiscard]] FPMSHELL_INLINE Radius<T> radius_and_slope(const J2ReturnConstants& c, const T& alpha,
+                                                         const MaskOf<T>& lanes) {
     const Real f0 = c.flow_radius0;
     if (c.flow.kind == FlowStress::Kind::Linear)
-        return {f0 + c.beta * ((c.flow.yield_stress + c.flow.hardening * alpha) - f0), T(c.flow.hardening)};
+        return {f0 + c.beta * ((c.flow.yield_stress + c.flow.hardening * alpha) - f0),
+                T(c.flow.hardening)};
     Radius<T> out{T(0.0), T(0.0)};
     for (int l = 0; l < lanes_of<T>; ++l) {
         if (!lane(lanes, l)) continue;
@@ -79,7 +82,8 @@ template <class T>
 
 /// sigma_f'(alpha) on the lanes of `lanes`.
 template <class T>
-[[nodiscard]] FPMSHELL_INLINE T flow_slope(const J2ReturnConstants& c, const T& alpha, const MaskOf<T>& lanes) {
+[[nodiscard]] FPMSHELL_INLINE T flow_slope(const J2ReturnConstants& c, const T& alpha,
+                                           const MaskOf<T>& lanes) {
     if (c.flow.kind == FlowStress::Kind::Linear) return T(c.flow.hardening);
     T out = 0.0;
     for (int l = 0; l < lanes_of<T>; ++l)
@@ -95,7 +99,8 @@ template <class T>
 /// `lanes` returns its trial state.
 template <class T>
 [[nodiscard]] J2Return<T> j2_return_mapping(const J2ReturnConstants& c, const J2PointState<T>& old,
-                                             const std::array<T, 3>& d_eps, const T& r, const MaskOf<T>& lanes) {
+                                            const std::array<T, 3>& d_eps, const T& r,
+                                            const MaskOf<T>& lanes) {
     using namespace j2_detail;
     const T alpha_n = old.plastic_strain;
     // kappa / R and sigma_f' at alpha_n, stored by the last plastic step (the flow curve at
@@ -105,20 +110,25 @@ template <class T>
     const T flow_slope_n = select(hardened, old.flow_slope, T(-1.0));
     // 1 trial state
     const std::array<T, 3> sigma_tr{old.stress[0] + (c.c11 * d_eps[0] + c.c12 * d_eps[1]),
-                                    old.stress[1] + (c.c12 * d_eps[0] + c.c11 * d_eps[1]), old.stress[2] + c.c33 * d_eps[2]};
+                                    old.stress[1] + (c.c12 * d_eps[0] + c.c11 * d_eps[1]),
+                                    old.stress[2] + c.c33 * d_eps[2]};
     const std::array<T, 3> xi_tr{sigma_tr[0] - old.back_stress[0], sigma_tr[1] - old.back_stress[1],
                                  sigma_tr[2] - old.back_stress[2]};
     const T kappa_n = r * flow_radius_n;
     const T third_k2 = kappa_n * kappa_n * (1.0 / 3.0);
     const T f_tr = 0.5 * p_norm2(xi_tr) - third_k2;
-    J2Return<T> out{{sigma_tr, old.back_stress, alpha_n, flow_radius_n, flow_slope_n}, T(0.0), lanes && (f_tr > c.tolerance * third_k2)};
+    J2Return<T> out{{sigma_tr, old.back_stress, alpha_n, flow_radius_n, flow_slope_n},
+                    T(0.0),
+                    lanes && (f_tr > c.tolerance * third_k2)};
     const MaskOf<T> yielding = out.yielded;
     if (!any_lane(yielding)) return out;
 
     // 2 constants; H_k frozen at alpha_n (§7.4)
     const MaskOf<T> slope_unknown = yielding && (flow_slope_n < 0.0);
-    const T slope_n = any_lane(slope_unknown) ? select(slope_unknown, flow_slope(c, alpha_n, slope_unknown), flow_slope_n)
-                                              : flow_slope_n;
+    const T slope_n =
+        any_lane(slope_unknown)
+            ? select(slope_unknown, flow_slope(c, alpha_n, slope_unknown), flow_slope_n)
+            : flow_slope_n;
     const T h_k = (1.0 - c.beta) * r * slope_n;
     const T s_tr = xi_tr[0] + xi_tr[1], d_tr = xi_tr[1] - xi_tr[0];
     const T a1_sq = s_tr * s_tr * (1.0 / 6.0);                      // A1
@@ -134,7 +144,8 @@ template <class T>
     // first iterate past the root closes the bracket.
     Radius<T> last{flow_radius_n, slope_n};  // the flow curve at the last dgamma evaluated
     T f = f_tr;                              // F and F' at dgamma = 0 from what is known already
-    T df = -(a1_sq * a1 + a2_sq * a2) - (2.0 / 3.0) * kappa_n * (r_beta * slope_n) * sqrt23 * sqrt(a1_sq + a2_sq);
+    T df = -(a1_sq * a1 + a2_sq * a2) -
+           (2.0 / 3.0) * kappa_n * (r_beta * slope_n) * sqrt23 * sqrt(a1_sq + a2_sq);
     const T first_guess = f_tr / (third_k2 * select(a1 < a2, a1, a2));
     const Real infinity = std::numeric_limits<Real>::infinity();
     T lo = 0.0, hi = infinity, dg = 0.0;
@@ -196,8 +207,10 @@ template <class T>
     // d_eps_p = dgamma P xi (engineering shear). Dissipation by the trapezoidal rule, like the
     // element's strain work: then strain work - plastic work = the exact change of the elastic
     // energy 1/2 sigma C^-1 sigma, never negative whatever the increment.
-    const std::array<T, 3> p_xi{(2.0 * xi[0] - xi[1]) * (1.0 / 3.0), (2.0 * xi[1] - xi[0]) * (1.0 / 3.0), 2.0 * xi[2]};
-    const T work = dg * (0.5 * (old.stress[0] + next.stress[0]) * p_xi[0] + 0.5 * (old.stress[1] + next.stress[1]) * p_xi[1] +
+    const std::array<T, 3> p_xi{(2.0 * xi[0] - xi[1]) * (1.0 / 3.0),
+                                (2.0 * xi[1] - xi[0]) * (1.0 / 3.0), 2.0 * xi[2]};
+    const T work = dg * (0.5 * (old.stress[0] + next.stress[0]) * p_xi[0] +
+                         0.5 * (old.stress[1] + next.stress[1]) * p_xi[1] +
                          0.5 * (old.stress[2] + next.stress[2]) * p_xi[2]);
     for (std::size_t k = 0; k < 3; ++k) {
         out.state.stress[k] = select(yielding, next.stress[k], out.state.stress[k]);

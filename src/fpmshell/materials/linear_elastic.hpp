@@ -40,7 +40,8 @@ public:
     [[nodiscard]] Real initial_field(std::size_t /*k*/) const { return 0; }
 
     /// New state of a point from its old state and the strain increment d_eps.
-    void update(const MaterialPoint& old_state, const Voigt3& d_eps, Real /*dt*/, MaterialPoint& new_state) const {
+    void update(const MaterialPoint& old_state, const Voigt3& d_eps, Real /*dt*/,
+                MaterialPoint& new_state) const {
         new_state.stress = old_state.stress + c_ * d_eps;
     }
 

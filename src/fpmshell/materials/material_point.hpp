@@ -21,7 +21,8 @@ struct MaterialPoint {
 /// Members of a material point for a restart file (io/restart_archive.hpp).
 template <class Archive>
 void transfer(Archive& ar, MaterialPoint& p) {
-    ar(p.stress, p.back_stress, p.plastic_strain, p.plastic_work, p.strain_rate, p.flow_radius, p.flow_slope);
+    ar(p.stress, p.back_stress, p.plastic_strain, p.plastic_work, p.strain_rate, p.flow_radius,
+       p.flow_slope);
 }
 
 }  // namespace fpmshell

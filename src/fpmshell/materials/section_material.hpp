@@ -30,9 +30,9 @@ using SectionMaterial = std::variant<LinearElastic, J2Plastic>;
         flow.yield_stress = m.yield_stress;
         // bilinear curve: sigma = sigma_y + E_t eps_total beyond yield <=> plastic modulus
         // H = E E_t / (E - E_t) against the plastic strain
-        flow.hardening = m.tangent_modulus > 0
-                             ? m.youngs_modulus * m.tangent_modulus / (m.youngs_modulus - m.tangent_modulus)
-                             : 0.0;
+        flow.hardening = m.tangent_modulus > 0 ? m.youngs_modulus * m.tangent_modulus /
+                                                     (m.youngs_modulus - m.tangent_modulus)
+                                               : 0.0;
     }
     if (m.cowper_symonds) {
         rate.kind = RateFactor::Kind::CowperSymonds;

@@ -5,7 +5,8 @@
 
 namespace fpmshell {
 
-SlotGatherPlan make_slot_gather_plan(Index n_blocks, int ranges, const std::vector<Index>& slot_begin,
+SlotGatherPlan make_slot_gather_plan(Index n_blocks, int ranges,
+                                     const std::vector<Index>& slot_begin,
                                      const std::vector<std::size_t>& slot_offset) {
     constexpr auto w = static_cast<std::size_t>(k_lanes);
     constexpr std::size_t group_reals = SlotGatherPlan::k_components * w;
@@ -24,12 +25,16 @@ SlotGatherPlan make_slot_gather_plan(Index n_blocks, int ranges, const std::vect
     const Index n_tiles = plan.range_first_tile[n_ranges];
     // The range of block b, its tile, and the block after the end of that tile.
     auto range_of = [&](Index b) {
-        return static_cast<std::size_t>(std::upper_bound(plan.range_begin.begin(), plan.range_begin.end(), b) -
-                                        plan.range_begin.begin() - 1);
+        return static_cast<std::size_t>(
+            std::upper_bound(plan.range_begin.begin(), plan.range_begin.end(), b) -
+            plan.range_begin.begin() - 1);
     };
-    auto tile_of = [&](Index b, std::size_t t) { return plan.range_first_tile[t] + (b - plan.range_begin[t]) / tile; };
+    auto tile_of = [&](Index b, std::size_t t) {
+        return plan.range_first_tile[t] + (b - plan.range_begin[t]) / tile;
+    };
     auto tile_end = [&](Index b, std::size_t t) {
-        return std::min(plan.range_begin[t + 1], plan.range_begin[t] + ((b - plan.range_begin[t]) / tile + 1) * tile);
+        return std::min(plan.range_begin[t + 1],
+                        plan.range_begin[t] + ((b - plan.range_begin[t]) / tile + 1) * tile);
     };
     // Slot group 3 b + c holds corner c of block b; groups past the blocks': elements alone.
     const std::size_t n_particles = slot_begin.size() - 1;
@@ -38,7 +43,8 @@ SlotGatherPlan make_slot_gather_plan(Index n_blocks, int ranges, const std::vect
         Index first = std::numeric_limits<Index>::max(), last = -1;
         bool alone = false;
         for (Index k = slot_begin[p]; k < slot_begin[p + 1]; ++k) {
-            const auto group = static_cast<Index>(slot_offset[static_cast<std::size_t>(k)] / group_reals);
+            const auto group =
+                static_cast<Index>(slot_offset[static_cast<std::size_t>(k)] / group_reals);
             if (group >= 3 * n_blocks) alone = true;
             first = std::min(first, group / 3);
             last = std::max(last, group / 3);
@@ -47,16 +53,19 @@ SlotGatherPlan make_slot_gather_plan(Index n_blocks, int ranges, const std::vect
         const std::size_t t = range_of(first);
         // its last block in the same range, and its first block's slots not yet overwritten
         // in the ring when the tile of its last block ends
-        if (last < plan.range_begin[t + 1] && tile_end(last, t) <= first + ring) ready_tile[p] = tile_of(last, t);
+        if (last < plan.range_begin[t + 1] && tile_end(last, t) <= first + ring)
+            ready_tile[p] = tile_of(last, t);
     }
-    const auto n_ready = static_cast<std::size_t>(std::count_if(ready_tile.begin(), ready_tile.end(), [](Index t) { return t >= 0; }));
+    const auto n_ready = static_cast<std::size_t>(
+        std::count_if(ready_tile.begin(), ready_tile.end(), [](Index t) { return t >= 0; }));
     const bool use_ring = n_particles > 0 && 2 * n_ready >= n_particles;
     if (!use_ring) std::fill(ready_tile.begin(), ready_tile.end(), -1);
     // The ready particles by tile (in particle order within a tile), the others in order.
     plan.ready_begin.assign(static_cast<std::size_t>(n_tiles) + 1, 0);
     for (Index t : ready_tile)
         if (t >= 0) ++plan.ready_begin[static_cast<std::size_t>(t) + 1];
-    for (std::size_t t = 0; t < static_cast<std::size_t>(n_tiles); ++t) plan.ready_begin[t + 1] += plan.ready_begin[t];
+    for (std::size_t t = 0; t < static_cast<std::size_t>(n_tiles); ++t)
+        plan.ready_begin[t + 1] += plan.ready_begin[t];
     plan.ready.resize(static_cast<std::size_t>(plan.ready_begin.back()));
     std::vector<Index> fill(plan.ready_begin.begin(), plan.ready_begin.end() - 1);
     plan.keep.assign(static_cast<std::size_t>(n_blocks), use_ring ? 0 : 1);
@@ -66,24 +75,28 @@ SlotGatherPlan make_slot_gather_plan(Index n_blocks, int ranges, const std::vect
         if (t < 0) {
             plan.after.push_back(static_cast<Index>(p));
             for (Index k = slot_begin[p]; k < slot_begin[p + 1]; ++k) {
-                const auto group = static_cast<Index>(slot_offset[static_cast<std::size_t>(k)] / group_reals);
+                const auto group =
+                    static_cast<Index>(slot_offset[static_cast<std::size_t>(k)] / group_reals);
                 if (group < 3 * n_blocks) plan.keep[static_cast<std::size_t>(group / 3)] = 1;
             }
             continue;
         }
-        plan.ready[static_cast<std::size_t>(fill[static_cast<std::size_t>(t)]++)] = static_cast<Index>(p);
+        plan.ready[static_cast<std::size_t>(fill[static_cast<std::size_t>(t)]++)] =
+            static_cast<Index>(p);
         // in the ring: block b of range r at position (b - first block of r) mod k_ring_blocks
         for (Index k = slot_begin[p]; k < slot_begin[p + 1]; ++k) {
             std::size_t& at = plan.offset[static_cast<std::size_t>(k)];
             const std::size_t group = at / group_reals, in_group = at % group_reals;
             const auto b = static_cast<Index>(group / 3);
-            const auto position = static_cast<std::size_t>((b - plan.range_begin[range_of(b)]) % ring);
+            const auto position =
+                static_cast<std::size_t>((b - plan.range_begin[range_of(b)]) % ring);
             at = (3 * position + group % 3) * group_reals + in_group;
         }
     }
     if (use_ring)
-        plan.rings.assign(n_ranges, std::vector<Real, Eigen::aligned_allocator<Real>>(
-                                        static_cast<std::size_t>(ring) * SlotGatherPlan::k_block_reals, 0.0));
+        plan.rings.assign(n_ranges,
+                          std::vector<Real, Eigen::aligned_allocator<Real>>(
+                              static_cast<std::size_t>(ring) * SlotGatherPlan::k_block_reals, 0.0));
     return plan;
 }
 

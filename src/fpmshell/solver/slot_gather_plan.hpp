@@ -32,24 +32,29 @@ namespace fpmshell {
 
 struct SlotGatherPlan {
     static constexpr Index k_tile_blocks = 16;
-    static constexpr Index k_ring_blocks = 256;  ///< a multiple of k_tile_blocks; 295 kB per ring with 8 lanes
+    static constexpr Index k_ring_blocks =
+        256;  ///< a multiple of k_tile_blocks; 295 kB per ring with 8 lanes
     static constexpr std::size_t k_components = 6;  ///< force x y z, moment x y z
     /// Reals of the slots of one block: 3 corners x 6 components x k_lanes.
-    static constexpr std::size_t k_block_reals = 3 * k_components * static_cast<std::size_t>(k_lanes);
+    static constexpr std::size_t k_block_reals =
+        3 * k_components * static_cast<std::size_t>(k_lanes);
 
-    std::vector<Index> range_begin;     ///< per range: its first block (ranges + 1 entries)
+    std::vector<Index> range_begin;       ///< per range: its first block (ranges + 1 entries)
     std::vector<Index> range_first_tile;  ///< per range: its first tile (ranges + 1 entries)
-    std::vector<Index> ready_begin;     ///< per tile: its first entry in ready (tiles + 1 entries)
-    std::vector<Index> ready;           ///< the particles summed from the ring, by tile
-    std::vector<Index> after;           ///< the particles summed after the element loop
-    std::vector<std::uint8_t> keep;     ///< per block: 1 if it also fills the full slot array
+    std::vector<Index> ready_begin;  ///< per tile: its first entry in ready (tiles + 1 entries)
+    std::vector<Index> ready;        ///< the particles summed from the ring, by tile
+    std::vector<Index> after;        ///< the particles summed after the element loop
+    std::vector<std::uint8_t> keep;  ///< per block: 1 if it also fills the full slot array
     /// per entry of the particle -> slot map: the slot's offset in its particle's ring (ready
     /// particles) or in the full slot array (the others)
     std::vector<std::size_t> offset;
-    std::vector<std::vector<Real, Eigen::aligned_allocator<Real>>> rings;  ///< per range; none without the ring
+    std::vector<std::vector<Real, Eigen::aligned_allocator<Real>>>
+        rings;  ///< per range; none without the ring
 
     /// The thread count it was made for (0: none yet).
-    [[nodiscard]] int ranges() const { return range_begin.empty() ? 0 : static_cast<int>(range_begin.size()) - 1; }
+    [[nodiscard]] int ranges() const {
+        return range_begin.empty() ? 0 : static_cast<int>(range_begin.size()) - 1;
+    }
     /// false: every particle is summed after the loop.
     [[nodiscard]] bool use_ring() const { return !rings.empty(); }
 };
@@ -59,7 +64,8 @@ struct SlotGatherPlan {
 /// corner c of block b as group 3 b + c, and slots of elements computed alone after them.
 /// The ring is left out (use_ring() false) when fewer than half of the particles would be
 /// summed from it: a mesh numbered without locality would pay for both arrays.
-[[nodiscard]] SlotGatherPlan make_slot_gather_plan(Index n_blocks, int ranges, const std::vector<Index>& slot_begin,
+[[nodiscard]] SlotGatherPlan make_slot_gather_plan(Index n_blocks, int ranges,
+                                                   const std::vector<Index>& slot_begin,
                                                    const std::vector<std::size_t>& slot_offset);
 
 }  // namespace fpmshell

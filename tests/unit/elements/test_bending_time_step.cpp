@@ -37,7 +37,8 @@ TEST(BendingStiffness9, RigidPlateModesGiveNoForce) {
         for (const auto& [a, b, c] : {std::array<Real, 3>{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}) {
             Eigen::Matrix<Real, 9, 1> v;
             for (int i = 0; i < 3; ++i) {
-                v(3 * i) = a + b * s.x[static_cast<std::size_t>(i)] + c * s.y[static_cast<std::size_t>(i)];
+                v(3 * i) =
+                    a + b * s.x[static_cast<std::size_t>(i)] + c * s.y[static_cast<std::size_t>(i)];
                 v(3 * i + 1) = c;
                 v(3 * i + 2) = -b;
             }
@@ -83,9 +84,11 @@ TEST(BendingCriticalStep, MatchesIndependentPython) {
         const Real area = 0.5 * c.shape->two_area;
         const Real m = c.h * area / 3.0;
         const Real j = m * ((c.option_b ? area / 8.0 : 0.0) + c.h * c.h / 12.0);
-        const Real dt = bending_critical_dt(c.kernel, *c.shape, plate_rigidity(1.0, 0.3, c.h), m, j);
+        const Real dt =
+            bending_critical_dt(c.kernel, *c.shape, plate_rigidity(1.0, 0.3, c.h), m, j);
         // 8 printed digits and a converged power iteration: 1e-6 relative
-        EXPECT_NEAR(dt / c.dt, 1.0, 1e-6) << "h " << c.h << " kernel " << static_cast<int>(c.kernel);
+        EXPECT_NEAR(dt / c.dt, 1.0, 1e-6)
+            << "h " << c.h << " kernel " << static_cast<int>(c.kernel);
     }
 }
 
@@ -96,13 +99,13 @@ TEST(BendingCriticalStep, GovernsOnlyThickElements) {
     auto ratio = [&](Real h) {
         const Real area = 0.5 * k_equilateral.two_area;
         const Real m = h * area / 3.0;
-        return bending_critical_dt(BendingKernel::Dkt, k_equilateral, plate_rigidity(1.0, 0.3, h), m,
-                                   m * (area / 8.0 + h * h / 12.0)) /
+        return bending_critical_dt(BendingKernel::Dkt, k_equilateral, plate_rigidity(1.0, 0.3, h),
+                                   m, m * (area / 8.0 + h * h / 12.0)) /
                membrane_dt;
     };
     EXPECT_GT(ratio(0.05), 2.0);  // thin: bending never governs (theory.md §6.2)
     EXPECT_GT(ratio(0.2), 2.0);
-    EXPECT_LT(ratio(1.0), 0.9);   // h ~ L_c: below the default time_step_scale
+    EXPECT_LT(ratio(1.0), 0.9);  // h ~ L_c: below the default time_step_scale
 }
 
 TEST(BendingCriticalStep, SufficientStepSkipsOnlyWhatCannotGovern) {
@@ -115,7 +118,8 @@ TEST(BendingCriticalStep, SufficientStepSkipsOnlyWhatCannotGovern) {
     for (const BendingKernel kernel : {BendingKernel::Dkt, BendingKernel::Bciz})
         for (const TriangleShape* shape : {&k_equilateral, &k_right})
             for (const Real h : {0.01, 0.05, 0.1, 0.2, 0.3, 0.5, 0.7, 1.0, 2.0}) {
-                SCOPED_TRACE(::testing::Message() << "h " << h << " kernel " << static_cast<int>(kernel));
+                SCOPED_TRACE(::testing::Message()
+                             << "h " << h << " kernel " << static_cast<int>(kernel));
                 const Real area = 0.5 * shape->two_area;
                 const Real m = h * area / 3.0, j = m * (area / 8.0 + h * h / 12.0);
                 const Mat3 db = plate_rigidity(1.0, 0.3, h);

@@ -69,8 +69,9 @@ PathElement random_path_element(std::mt19937& rng, int n_points, Real step_rotat
     const Mat3 r = rotation_matrix(phi);
     for (std::size_t i = 0; i < 3; ++i) {
         p.base[i] = origin + orientation * flat[i];
-        p.current[i] = r * (p.base[i] - origin) + origin + Vec3(0.002, -0.001, 0.003) + 1e-3 * rvec();
-        p.dtheta[i] = phi + 2e-4 * rvec();           // rigid rotation + bending
+        p.current[i] =
+            r * (p.base[i] - origin) + origin + Vec3(0.002, -0.001, 0.003) + 1e-3 * rvec();
+        p.dtheta[i] = phi + 2e-4 * rvec();  // rigid rotation + bending
     }
     const Vec3 normal = orientation.col(2);
     for (std::size_t i = 0; i < 2; ++i) {
@@ -96,7 +97,8 @@ TriangleMotion<T> motion_of(const std::array<const PathElement*, k_lanes>& lanes
     for (std::size_t i = 0; i < 3; ++i)
         for (int c = 0; c < 3; ++c) {
             const auto pick = [&](const std::array<Vec3, 3> PathElement::*field) {
-                return pack([&](int l) { return (lanes[static_cast<std::size_t>(l)]->*field)[i](c); });
+                return pack(
+                    [&](int l) { return (lanes[static_cast<std::size_t>(l)]->*field)[i](c); });
             };
             T* base[3] = {&m.base[i].x, &m.base[i].y, &m.base[i].z};
             T* cur[3] = {&m.current[i].x, &m.current[i].y, &m.current[i].z};
@@ -116,17 +118,21 @@ struct Reference {
     Real characteristic_length;
 };
 
-Reference scalar_reference(const PathElement& p, const ShellRule& rule, const LinearElastic& mat, Real viscous_rate) {
+Reference scalar_reference(const PathElement& p, const ShellRule& rule, const LinearElastic& mat,
+                           Real viscous_rate) {
     Reference ref;
     for (const Voigt3& s : p.stress) {
         MaterialPoint mp;
         mp.stress = s;
         ref.points.push_back(mp);
     }
-    ref.loads = shell_triangle_loads(reverse_motion(p.base, p.current, p.dtheta, p.drill_axis), rule, mat, ref.points, viscous_rate);
-    const Vec3 e1 = p.current[1] - p.current[0], e2 = p.current[2] - p.current[1], e3 = p.current[0] - p.current[2];
-    ref.characteristic_length = e1.cross(p.current[2] - p.current[0]).norm() /
-                                std::sqrt(std::max({e1.squaredNorm(), e2.squaredNorm(), e3.squaredNorm()}));
+    ref.loads = shell_triangle_loads(reverse_motion(p.base, p.current, p.dtheta, p.drill_axis),
+                                     rule, mat, ref.points, viscous_rate);
+    const Vec3 e1 = p.current[1] - p.current[0], e2 = p.current[2] - p.current[1],
+               e3 = p.current[0] - p.current[2];
+    ref.characteristic_length =
+        e1.cross(p.current[2] - p.current[0]).norm() /
+        std::sqrt(std::max({e1.squaredNorm(), e2.squaredNorm(), e3.squaredNorm()}));
     return ref;
 }
 
@@ -155,23 +161,27 @@ void check_against_scalar(std::uint32_t seed, int inplane, int through, Real vis
     std::vector<PathElement> elements;
     for (int l = 0; l < k_lanes; ++l) elements.push_back(random_path_element(rng, n_points, 0.004));
     std::array<const PathElement*, k_lanes> lanes;
-    for (int l = 0; l < k_lanes; ++l) lanes[static_cast<std::size_t>(l)] = &elements[static_cast<std::size_t>(l)];
+    for (int l = 0; l < k_lanes; ++l)
+        lanes[static_cast<std::size_t>(l)] = &elements[static_cast<std::size_t>(l)];
     const TriangleMotion<T> motion = motion_of<T>(lanes);
     std::vector<T> stress(static_cast<std::size_t>(3 * n_points));
     for (int p = 0; p < n_points; ++p)
         for (int r = 0; r < 3; ++r) {
             if constexpr (std::is_same_v<T, Real>) {
-                stress[static_cast<std::size_t>(3 * p + r)] = elements[0].stress[static_cast<std::size_t>(p)](r);
+                stress[static_cast<std::size_t>(3 * p + r)] =
+                    elements[0].stress[static_cast<std::size_t>(p)](r);
             } else {
                 stress[static_cast<std::size_t>(3 * p + r)] =
                     T([&](auto l) { return elements[l].stress[static_cast<std::size_t>(p)](r); });
             }
         }
     const T thickness(k_thickness);
-    const ElasticTriangleLoads<T> out = elastic_triangle_loads(motion, constants, thickness, stress.data(), viscous_rate);
+    const ElasticTriangleLoads<T> out =
+        elastic_triangle_loads(motion, constants, thickness, stress.data(), viscous_rate);
     for (int l = 0; l < n_lanes; ++l) {
         SCOPED_TRACE(::testing::Message() << "seed " << seed << " lane " << l);
-        const Reference ref = scalar_reference(elements[static_cast<std::size_t>(l)], rule, mat, viscous_rate);
+        const Reference ref =
+            scalar_reference(elements[static_cast<std::size_t>(l)], rule, mat, viscous_rate);
         ASSERT_TRUE(lane(out.valid, l));
         Real f_scale = 0, m_scale = 0;
         for (std::size_t i = 0; i < 3; ++i) {
@@ -181,36 +191,47 @@ void check_against_scalar(std::uint32_t seed, int inplane, int through, Real vis
         ASSERT_GT(f_scale, 1e3);  // the case is not trivially zero
         ASSERT_GT(m_scale, 1e1);
         for (std::size_t i = 0; i < 3; ++i) {
-            expect_close(Vec3(lane(out.force[i].x, l), lane(out.force[i].y, l), lane(out.force[i].z, l)),
-                         ref.loads.force[i], f_scale, k_rel_tol, "force");
-            expect_close(Vec3(lane(out.moment[i].x, l), lane(out.moment[i].y, l), lane(out.moment[i].z, l)),
-                         ref.loads.moment[i], m_scale, k_rel_tol, "moment");
+            expect_close(
+                Vec3(lane(out.force[i].x, l), lane(out.force[i].y, l), lane(out.force[i].z, l)),
+                ref.loads.force[i], f_scale, k_rel_tol, "force");
+            expect_close(
+                Vec3(lane(out.moment[i].x, l), lane(out.moment[i].y, l), lane(out.moment[i].z, l)),
+                ref.loads.moment[i], m_scale, k_rel_tol, "moment");
         }
         Real s_scale = 0;
-        for (const MaterialPoint& mp : ref.points) s_scale = std::max(s_scale, mp.stress.cwiseAbs().maxCoeff());
+        for (const MaterialPoint& mp : ref.points)
+            s_scale = std::max(s_scale, mp.stress.cwiseAbs().maxCoeff());
         for (int p = 0; p < n_points; ++p)
             for (int r = 0; r < 3; ++r)
-                EXPECT_NEAR(lane(stress[static_cast<std::size_t>(3 * p + r)], l), ref.points[static_cast<std::size_t>(p)].stress(r),
-                            k_rel_tol * s_scale);
+                EXPECT_NEAR(lane(stress[static_cast<std::size_t>(3 * p + r)], l),
+                            ref.points[static_cast<std::size_t>(p)].stress(r), k_rel_tol * s_scale);
         const Real n_scale = ref.loads.membrane_force.cwiseAbs().maxCoeff();
         const Real mb_scale = ref.loads.bending_moment.cwiseAbs().maxCoeff();
         for (std::size_t r = 0; r < 3; ++r) {
-            EXPECT_NEAR(lane(out.membrane_force[r], l), ref.loads.membrane_force(static_cast<Eigen::Index>(r)), k_rel_tol * n_scale);
-            EXPECT_NEAR(lane(out.bending_moment[r], l), ref.loads.bending_moment(static_cast<Eigen::Index>(r)), k_rel_tol * mb_scale);
+            EXPECT_NEAR(lane(out.membrane_force[r], l),
+                        ref.loads.membrane_force(static_cast<Eigen::Index>(r)),
+                        k_rel_tol * n_scale);
+            EXPECT_NEAR(lane(out.bending_moment[r], l),
+                        ref.loads.bending_moment(static_cast<Eigen::Index>(r)),
+                        k_rel_tol * mb_scale);
         }
         // work: a sum of terms of either sign, compared to the size of its largest term
         const Real work_scale = 0.5 * s_scale * 1e-3 * k_thickness;
         EXPECT_NEAR(lane(out.strain_work, l), ref.loads.strain_work, k_rel_tol * work_scale);
-        EXPECT_NEAR(lane(out.damping_work, l), ref.loads.damping_work, k_rel_tol * std::abs(ref.loads.damping_work) + 1e-300);
-        EXPECT_NEAR(lane(out.thickness_strain, l), ref.loads.thickness_strain, 1e-12);  // strains ~1e-3: 1e-9 relative, as above
-        EXPECT_NEAR(lane(out.characteristic_length, l), ref.characteristic_length, 1e-15 * ref.characteristic_length);
+        EXPECT_NEAR(lane(out.damping_work, l), ref.loads.damping_work,
+                    k_rel_tol * std::abs(ref.loads.damping_work) + 1e-300);
+        EXPECT_NEAR(lane(out.thickness_strain, l), ref.loads.thickness_strain,
+                    1e-12);  // strains ~1e-3: 1e-9 relative, as above
+        EXPECT_NEAR(lane(out.characteristic_length, l), ref.characteristic_length,
+                    1e-15 * ref.characteristic_length);
     }
 }
 
 }  // namespace
 
 TEST(ElasticTriangleBlock, PackLanesMatchTheScalarElement) {
-    for (std::uint32_t seed = 1; seed <= 20; ++seed) check_against_scalar<RealPack>(seed, 3, 2, 0.0);
+    for (std::uint32_t seed = 1; seed <= 20; ++seed)
+        check_against_scalar<RealPack>(seed, 3, 2, 0.0);
 }
 
 TEST(ElasticTriangleBlock, ScalarInstanceMatchesTheScalarElement) {
@@ -249,9 +270,11 @@ TEST(ElasticTriangleBlock, RigidMotionGivesZeroLoadsOnEveryLane) {
         }
     }
     std::array<const PathElement*, k_lanes> lanes;
-    for (int l = 0; l < k_lanes; ++l) lanes[static_cast<std::size_t>(l)] = &elements[static_cast<std::size_t>(l)];
+    for (int l = 0; l < k_lanes; ++l)
+        lanes[static_cast<std::size_t>(l)] = &elements[static_cast<std::size_t>(l)];
     std::vector<RealPack> stress(static_cast<std::size_t>(3 * rule.n_points()), RealPack(0.0));
-    const auto out = elastic_triangle_loads(motion_of<RealPack>(lanes), constants, RealPack(k_thickness), stress.data(), 0.0);
+    const auto out = elastic_triangle_loads(motion_of<RealPack>(lanes), constants,
+                                            RealPack(k_thickness), stress.data(), 0.0);
     for (int l = 0; l < k_lanes; ++l) {
         ASSERT_TRUE(lane(out.valid, l));
         // E h = 2e9: a force of 1e-3 N is a strain of 5e-13, round-off of positions ~1
@@ -272,19 +295,22 @@ TEST(ElasticTriangleBlock, LanesOutsideTheBoundsAreReportedInvalid) {
     const LinearElastic mat(k_young, k_poisson);
     const ElasticSectionConstants constants = constants_of(mat, rule);
     std::vector<PathElement> elements;
-    for (int l = 0; l < k_lanes; ++l) elements.push_back(random_path_element(rng, rule.n_points(), 0.004));
+    for (int l = 0; l < k_lanes; ++l)
+        elements.push_back(random_path_element(rng, rule.n_points(), 0.004));
     // lane 0: a nodal rotation increment of 0.05 rad (beyond the series branch)
     elements[0].dtheta[1] += Vec3(0.05, 0, 0);
     // lane 1: the current triangle flipped over (tilt of 180 deg)
     std::swap(elements[1].current[1], elements[1].current[2]);
     std::array<const PathElement*, k_lanes> lanes;
-    for (int l = 0; l < k_lanes; ++l) lanes[static_cast<std::size_t>(l)] = &elements[static_cast<std::size_t>(l)];
+    for (int l = 0; l < k_lanes; ++l)
+        lanes[static_cast<std::size_t>(l)] = &elements[static_cast<std::size_t>(l)];
     if constexpr (k_lanes > 2) {
         // lane 2: a collapsed current triangle (all nodes on a line)
         elements[2].current[2] = 0.5 * (elements[2].current[0] + elements[2].current[1]);
     }
     std::vector<RealPack> stress(static_cast<std::size_t>(3 * rule.n_points()), RealPack(0.0));
-    const auto out = elastic_triangle_loads(motion_of<RealPack>(lanes), constants, RealPack(k_thickness), stress.data(), 0.0);
+    const auto out = elastic_triangle_loads(motion_of<RealPack>(lanes), constants,
+                                            RealPack(k_thickness), stress.data(), 0.0);
     const int n_bad = k_lanes > 2 ? 3 : 2;
     for (int l = 0; l < k_lanes; ++l) EXPECT_EQ(lane(out.valid, l), l >= n_bad) << "lane " << l;
 }
@@ -310,8 +336,8 @@ void check_j2_lanes(const RateFactor& rate, Real dt, bool with_return_mapping) {
     // 1.2e9 (outside the yield surface of radius 1e9 / sqrt 3 in shear): it yields in this
     // step. The points of lane 0 have yielded before: their yield radius is the stored one.
     std::vector<std::vector<MaterialPoint>> old_points(k_lanes);
-    std::vector<RealPack> stress(static_cast<std::size_t>(3 * n_points)), back(static_cast<std::size_t>(3 * n_points)),
-        third_k2(static_cast<std::size_t>(n_points));
+    std::vector<RealPack> stress(static_cast<std::size_t>(3 * n_points)),
+        back(static_cast<std::size_t>(3 * n_points)), third_k2(static_cast<std::size_t>(n_points));
     for (int l = 0; l < k_lanes; ++l)
         for (int p = 0; p < n_points; ++p) {
             MaterialPoint mp;
@@ -327,19 +353,26 @@ void check_j2_lanes(const RateFactor& rate, Real dt, bool with_return_mapping) {
             old_points[static_cast<std::size_t>(l)].push_back(mp);
         }
     for (int p = 0; p < n_points; ++p) {
-        auto mp = [&](auto l) -> const MaterialPoint& { return old_points[l][static_cast<std::size_t>(p)]; };
+        auto mp = [&](auto l) -> const MaterialPoint& {
+            return old_points[l][static_cast<std::size_t>(p)];
+        };
         for (int r = 0; r < 3; ++r) {
-            stress[static_cast<std::size_t>(3 * p + r)] = RealPack([&](auto l) { return mp(l).stress(r); });
-            back[static_cast<std::size_t>(3 * p + r)] = RealPack([&](auto l) { return mp(l).back_stress(r); });
+            stress[static_cast<std::size_t>(3 * p + r)] =
+                RealPack([&](auto l) { return mp(l).stress(r); });
+            back[static_cast<std::size_t>(3 * p + r)] =
+                RealPack([&](auto l) { return mp(l).back_stress(r); });
         }
         third_k2[static_cast<std::size_t>(p)] = RealPack([&](auto l) {
-            const Real kappa = mp(l).plastic_strain > 0 ? mp(l).flow_radius : mat.initial_flow_radius();
+            const Real kappa =
+                mp(l).plastic_strain > 0 ? mp(l).flow_radius : mat.initial_flow_radius();
             return kappa * kappa / 3.0;
         });
     }
-    std::vector<RealPack> strain_rate(static_cast<std::size_t>(n_points)), new_strain_rate(static_cast<std::size_t>(n_points));
+    std::vector<RealPack> strain_rate(static_cast<std::size_t>(n_points)),
+        new_strain_rate(static_cast<std::size_t>(n_points));
     for (int p = 0; p < n_points; ++p)
-        strain_rate[static_cast<std::size_t>(p)] = RealPack([&](auto l) { return old_points[l][static_cast<std::size_t>(p)].strain_rate; });
+        strain_rate[static_cast<std::size_t>(p)] = RealPack(
+            [&](auto l) { return old_points[l][static_cast<std::size_t>(p)].strain_rate; });
     YieldSurfaces<RealPack> yield{back.data(), third_k2.data(), J2Plastic::k_yield_tolerance};
     if (mat.rate_dependent()) {
         yield.rate = &mat.rate_factor();
@@ -349,48 +382,59 @@ void check_j2_lanes(const RateFactor& rate, Real dt, bool with_return_mapping) {
         yield.rate_filter = J2Plastic::k_rate_filter;
     }
     std::array<const PathElement*, k_lanes> lanes;
-    for (int l = 0; l < k_lanes; ++l) lanes[static_cast<std::size_t>(l)] = &elements[static_cast<std::size_t>(l)];
-    std::vector<std::vector<MaterialPoint>> updated = old_points;  // what the return mapping changes
+    for (int l = 0; l < k_lanes; ++l)
+        lanes[static_cast<std::size_t>(l)] = &elements[static_cast<std::size_t>(l)];
+    std::vector<std::vector<MaterialPoint>> updated =
+        old_points;  // what the return mapping changes
     int n_returns = 0;
     // as ShellElements::compute_block, one point at a time: the return mapping of the yielding
     // lanes of a point, kept in the lanes' points
-    auto return_mapping = [&](std::size_t n_pts, const RealPack::mask_type* yielding, const std::array<RealPack, 3>* d_eps,
-                              const RealPack* rate_factor, RealPack* new_stress, RealPack* d_plastic_work) {
+    auto return_mapping = [&](std::size_t n_pts, const RealPack::mask_type* yielding,
+                              const std::array<RealPack, 3>* d_eps, const RealPack* rate_factor,
+                              RealPack* new_stress, RealPack* d_plastic_work) {
         for (std::size_t p = 0; p < n_pts; ++p) {
             if (!any_lane(yielding[p])) continue;
             J2PointState<RealPack> old;
-            auto point = [&](auto l) -> MaterialPoint& { return updated[static_cast<std::size_t>(l)][p]; };
+            auto point = [&](auto l) -> MaterialPoint& {
+                return updated[static_cast<std::size_t>(l)][p];
+            };
             for (int r = 0; r < 3; ++r) {
-                old.stress[static_cast<std::size_t>(r)] = RealPack([&](auto l) { return point(l).stress(r); });
-                old.back_stress[static_cast<std::size_t>(r)] = RealPack([&](auto l) { return point(l).back_stress(r); });
+                old.stress[static_cast<std::size_t>(r)] =
+                    RealPack([&](auto l) { return point(l).stress(r); });
+                old.back_stress[static_cast<std::size_t>(r)] =
+                    RealPack([&](auto l) { return point(l).back_stress(r); });
             }
             old.plastic_strain = RealPack([&](auto l) { return point(l).plastic_strain; });
             old.flow_radius = RealPack([&](auto l) { return point(l).flow_radius; });
             old.flow_slope = RealPack([&](auto l) { return point(l).flow_slope; });
-            const J2Return<RealPack> ret = j2_return_mapping(mat.return_constants(), old, d_eps[p], rate_factor[p], yielding[p]);
+            const J2Return<RealPack> ret = j2_return_mapping(mat.return_constants(), old, d_eps[p],
+                                                             rate_factor[p], yielding[p]);
             for (int l = 0; l < k_lanes; ++l) {
                 if (!lane(ret.yielded, l)) continue;
                 ++n_returns;
                 MaterialPoint& mp = point(l);
                 mp.plastic_strain = lane(ret.state.plastic_strain, l);
                 mp.plastic_work += lane(ret.plastic_work, l);
-                for (std::size_t r = 0; r < 3; ++r) set_lane(new_stress[3 * p + r], l, lane(ret.state.stress[r], l));
+                for (std::size_t r = 0; r < 3; ++r)
+                    set_lane(new_stress[3 * p + r], l, lane(ret.state.stress[r], l));
                 set_lane(d_plastic_work[p], l, lane(ret.plastic_work, l));
             }
         }
     };
-    const auto out = with_return_mapping
-                         ? elastic_triangle_loads(motion_of<RealPack>(lanes), constants, RealPack(k_thickness),
-                                                  stress.data(), 0.0, &yield, return_mapping)
-                         : elastic_triangle_loads(motion_of<RealPack>(lanes), constants, RealPack(k_thickness),
-                                                  stress.data(), 0.0, &yield);
+    const auto out =
+        with_return_mapping
+            ? elastic_triangle_loads(motion_of<RealPack>(lanes), constants, RealPack(k_thickness),
+                                     stress.data(), 0.0, &yield, return_mapping)
+            : elastic_triangle_loads(motion_of<RealPack>(lanes), constants, RealPack(k_thickness),
+                                     stress.data(), 0.0, &yield);
     EXPECT_EQ(n_returns, with_return_mapping ? 1 : 0);  // lane 1's point 4 only
     for (int l = 0; l < k_lanes; ++l) {
         SCOPED_TRACE(::testing::Message() << "lane " << l);
         const PathElement& pe = elements[static_cast<std::size_t>(l)];
         std::vector<MaterialPoint> points = old_points[static_cast<std::size_t>(l)];
         const ShellTriangleLoads ref =
-            shell_triangle_loads(reverse_motion(pe.base, pe.current, pe.dtheta, pe.drill_axis), rule, mat, points, 0.0, dt);
+            shell_triangle_loads(reverse_motion(pe.base, pe.current, pe.dtheta, pe.drill_axis),
+                                 rule, mat, points, 0.0, dt);
         if (l == 1) {
             EXPECT_GT(points[4].plastic_strain, 0.0);  // the scalar element did yield there
             EXPECT_GT(ref.plastic_work, 0.0);
@@ -399,7 +443,8 @@ void check_j2_lanes(const RateFactor& rate, Real dt, bool with_return_mapping) {
                 continue;
             }
             // the point's whole history as the scalar element left it (the same update)
-            EXPECT_NEAR(updated[1][4].plastic_strain, points[4].plastic_strain, k_rel_tol * points[4].plastic_strain);
+            EXPECT_NEAR(updated[1][4].plastic_strain, points[4].plastic_strain,
+                        k_rel_tol * points[4].plastic_strain);
             EXPECT_NEAR(lane(out.plastic_work, l), ref.plastic_work, k_rel_tol * ref.plastic_work);
         } else {
             EXPECT_EQ(ref.plastic_work, 0.0);
@@ -407,20 +452,23 @@ void check_j2_lanes(const RateFactor& rate, Real dt, bool with_return_mapping) {
         }
         ASSERT_TRUE(lane(out.valid, l));
         EXPECT_NEAR(lane(out.thickness_strain, l), ref.thickness_strain, 1e-12);
-        EXPECT_NEAR(lane(out.strain_work, l), ref.strain_work, k_rel_tol * std::abs(ref.strain_work) + 1e-6);
+        EXPECT_NEAR(lane(out.strain_work, l), ref.strain_work,
+                    k_rel_tol * std::abs(ref.strain_work) + 1e-6);
         Real f_scale = 0;
         for (std::size_t i = 0; i < 3; ++i) f_scale = std::max(f_scale, ref.force[i].norm());
         for (std::size_t i = 0; i < 3; ++i)
-            expect_close(Vec3(lane(out.force[i].x, l), lane(out.force[i].y, l), lane(out.force[i].z, l)), ref.force[i],
-                         f_scale, k_rel_tol, "force");
+            expect_close(
+                Vec3(lane(out.force[i].x, l), lane(out.force[i].y, l), lane(out.force[i].z, l)),
+                ref.force[i], f_scale, k_rel_tol, "force");
         for (int p = 0; p < n_points; ++p)
             for (int r = 0; r < 3; ++r)
-                EXPECT_NEAR(lane(stress[static_cast<std::size_t>(3 * p + r)], l), points[static_cast<std::size_t>(p)].stress(r),
-                            k_rel_tol * 1e9);
+                EXPECT_NEAR(lane(stress[static_cast<std::size_t>(3 * p + r)], l),
+                            points[static_cast<std::size_t>(p)].stress(r), k_rel_tol * 1e9);
         if (mat.rate_dependent()) {
             // the filtered rate: ~1e3 /s here, the same sum of squares in another order
             for (int p = 0; p < n_points; ++p)
-                EXPECT_NEAR(lane(new_strain_rate[static_cast<std::size_t>(p)], l), points[static_cast<std::size_t>(p)].strain_rate,
+                EXPECT_NEAR(lane(new_strain_rate[static_cast<std::size_t>(p)], l),
+                            points[static_cast<std::size_t>(p)].strain_rate,
                             1e-12 * points[static_cast<std::size_t>(p)].strain_rate);
         }
     }
@@ -428,7 +476,9 @@ void check_j2_lanes(const RateFactor& rate, Real dt, bool with_return_mapping) {
 
 }  // namespace
 
-TEST(ElasticTriangleBlock, J2LanesStayValidOnlyWhileEveryPointIsElastic) { check_j2_lanes(RateFactor{}, 0.0, false); }
+TEST(ElasticTriangleBlock, J2LanesStayValidOnlyWhileEveryPointIsElastic) {
+    check_j2_lanes(RateFactor{}, 0.0, false);
+}
 
 TEST(ElasticTriangleBlock, J2YieldingPointsGoToTheReturnMapping) {
     check_j2_lanes(RateFactor{}, 0.0, true);

@@ -74,7 +74,9 @@ Real interior_residual(const Patch& pt, bool bending) {
     for (int kind = 0; kind < (bending ? 2 : 1); ++kind) {
         Real worst_interior = 0, scale = 0;
         for (std::size_t p = 0; p < s.size(); ++p) {
-            const Real load = !bending ? s.f_int[p].norm() : kind == 0 ? s.m_int[p].norm() : std::abs(s.f_int[p].z());
+            const Real load = !bending    ? s.f_int[p].norm()
+                              : kind == 0 ? s.m_int[p].norm()
+                                          : std::abs(s.f_int[p].z());
             scale = std::max(scale, load);
             if (pt.interior[p]) worst_interior = std::max(worst_interior, load);
         }
@@ -86,7 +88,8 @@ Real interior_residual(const Patch& pt, bool bending) {
 }  // namespace
 
 TEST(PatchTest, MembraneCstPassesOnEveryMesh) {
-    for (auto pattern : {DiagonalPattern::Right, DiagonalPattern::Cross, DiagonalPattern::Alternate})
+    for (auto pattern :
+         {DiagonalPattern::Right, DiagonalPattern::Cross, DiagonalPattern::Alternate})
         for (Real perturb : {0.0, 0.04})
             // Exact in exact arithmetic; geometric terms of the reverse motion are O(eps) = 1e-7.
             EXPECT_LT(interior_residual(patch(pattern, perturb, BendingKernel::Bciz), false), 1e-6);
@@ -95,27 +98,35 @@ TEST(PatchTest, MembraneCstPassesOnEveryMesh) {
 TEST(PatchTest, MembraneSmoothedPassesOnEveryMesh) {
     // Area-weighted side strains and the transposed force operator keep the patch test on
     // irregular meshes (equal weights would not: the areas of neighbours differ).
-    for (auto pattern : {DiagonalPattern::Right, DiagonalPattern::Cross, DiagonalPattern::Alternate})
+    for (auto pattern :
+         {DiagonalPattern::Right, DiagonalPattern::Cross, DiagonalPattern::Alternate})
         for (Real perturb : {0.0, 0.04})
-            EXPECT_LT(interior_residual(patch(pattern, perturb, BendingKernel::Dkt, MembraneKernel::Smoothed), false),
-                      1e-6);  // O(eps) geometric terms only, as for the CST
+            EXPECT_LT(
+                interior_residual(
+                    patch(pattern, perturb, BendingKernel::Dkt, MembraneKernel::Smoothed), false),
+                1e-6);  // O(eps) geometric terms only, as for the CST
 }
 
 TEST(PatchTest, DktBendingPassesOnEveryMesh) {
-    for (auto pattern : {DiagonalPattern::Right, DiagonalPattern::Cross, DiagonalPattern::Alternate})
+    for (auto pattern :
+         {DiagonalPattern::Right, DiagonalPattern::Cross, DiagonalPattern::Alternate})
         for (Real perturb : {0.0, 0.04}) {
             const Real r = interior_residual(patch(pattern, perturb, BendingKernel::Dkt), true);
-            std::printf("DKT  pattern %d perturb %.2f: interior residual %.2e\n", static_cast<int>(pattern), perturb, r);
+            std::printf("DKT  pattern %d perturb %.2f: interior residual %.2e\n",
+                        static_cast<int>(pattern), perturb, r);
             EXPECT_LT(r, 1e-6);  // O(eps) geometric terms only
         }
 }
 
 TEST(PatchTest, BcizPassesOnlyOnThreeLineFamilyMeshes) {
-    const Real regular = interior_residual(patch(DiagonalPattern::Right, 0.0, BendingKernel::Bciz), true);
+    const Real regular =
+        interior_residual(patch(DiagonalPattern::Right, 0.0, BendingKernel::Bciz), true);
     std::printf("BCIZ three line families: interior residual %.2e\n", regular);
     EXPECT_LT(regular, 1e-6);
-    const Real crossed = interior_residual(patch(DiagonalPattern::Cross, 0.0, BendingKernel::Bciz), true);
-    const Real perturbed = interior_residual(patch(DiagonalPattern::Right, 0.04, BendingKernel::Bciz), true);
+    const Real crossed =
+        interior_residual(patch(DiagonalPattern::Cross, 0.0, BendingKernel::Bciz), true);
+    const Real perturbed =
+        interior_residual(patch(DiagonalPattern::Right, 0.04, BendingKernel::Bciz), true);
     std::printf("BCIZ crossed diagonals: %.2e, perturbed: %.2e (theory.md §4.8: 3e-3 ... 1.4e-1)\n",
                 crossed, perturbed);
     // The known miss (theory.md §4.8 table): well above round-off on both meshes.

@@ -94,7 +94,8 @@ TEST(ReverseMotion, RigidRotationOfTangentPlaneIncrementsGivesNoDeformation) {
     const Vec3 na = (base[1] - base[0]).cross(base[2] - base[0]).normalized();
     for (Real angle : {1e-4, 0.01, 0.5}) {
         for (int trial = 0; trial < 10; ++trial) {
-            const Vec3 axis = (na + 0.5 * Vec3(u(rng), u(rng), u(rng))).normalized();  // near the normals
+            const Vec3 axis =
+                (na + 0.5 * Vec3(u(rng), u(rng), u(rng))).normalized();  // near the normals
             const Mat3 r = rotation_matrix(angle * axis);
             std::array<Vec3, 3> cur, dth, drill;
             for (std::size_t i = 0; i < 3; ++i) {
@@ -103,10 +104,12 @@ TEST(ReverseMotion, RigidRotationOfTangentPlaneIncrementsGivesNoDeformation) {
                 dth[i] = angle * axis - (angle * axis).dot(drill[i]) * drill[i];
             }
             // Round-off of O(1) coordinates through ~5 rotations: 1e-12 is ~1e4 eps.
-            EXPECT_LT(max_deformation(reverse_motion(base, cur, dth, drill)), 1e-12) << "angle " << angle;
+            EXPECT_LT(max_deformation(reverse_motion(base, cur, dth, drill)), 1e-12)
+                << "angle " << angle;
             // The same increments without their drill axes: a spurious bending rotation of
             // order angle x tilt (> 1e-3 angle for these tilts), the inconsistency the axes remove.
-            EXPECT_GT(max_deformation(reverse_motion(base, cur, dth, k_no_drill_axes)), 1e-3 * angle);
+            EXPECT_GT(max_deformation(reverse_motion(base, cur, dth, k_no_drill_axes)),
+                      1e-3 * angle);
         }
     }
 }

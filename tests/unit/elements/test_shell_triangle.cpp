@@ -33,13 +33,14 @@ struct ElementRun {
 };
 
 ElementRun run(const std::array<Vec3, 3>& base, const std::array<Vec3, 3>& cur,
-        const std::array<Vec3, 3>& dth, BendingKernel kernel, int tp = 2, int ip = 3,
-        const std::array<Vec3, 3>& drill = k_no_drill_axes) {
+               const std::array<Vec3, 3>& dth, BendingKernel kernel, int tp = 2, int ip = 3,
+               const std::array<Vec3, 3>& drill = k_no_drill_axes) {
     const ShellRule r = rule(kernel, tp, ip);
     const LinearElastic mat(200e9, 0.3);
     ElementRun out;
     out.points.assign(static_cast<std::size_t>(r.n_points()), MaterialPoint{});
-    out.loads = shell_triangle_loads(reverse_motion(base, cur, dth, drill), r, mat, out.points, 0.0);
+    out.loads =
+        shell_triangle_loads(reverse_motion(base, cur, dth, drill), r, mat, out.points, 0.0);
     return out;
 }
 
@@ -67,9 +68,11 @@ TEST(ShellTriangle, RigidMotionGivesZeroLoads) {
 
 TEST(ShellTriangle, LoadsAreSelfEquilibrated) {
     for (BendingKernel kernel : {BendingKernel::Bciz, BendingKernel::Dkt}) {
-        std::array<Vec3, 3> cur{k_base[0] + Vec3(1e-4, -2e-4, 3e-4), k_base[1] + Vec3(-2e-4, 1e-4, 5e-4),
+        std::array<Vec3, 3> cur{k_base[0] + Vec3(1e-4, -2e-4, 3e-4),
+                                k_base[1] + Vec3(-2e-4, 1e-4, 5e-4),
                                 k_base[2] + Vec3(3e-4, 2e-4, -1e-4)};
-        const std::array<Vec3, 3> dth{Vec3(2e-4, -1e-4, 3e-4), Vec3(-1e-4, 4e-4, 0), Vec3(3e-4, 1e-4, -2e-4)};
+        const std::array<Vec3, 3> dth{Vec3(2e-4, -1e-4, 3e-4), Vec3(-1e-4, 4e-4, 0),
+                                      Vec3(3e-4, 1e-4, -2e-4)};
         const ElementRun res = run(k_base, cur, dth, kernel);
         Vec3 f_sum = Vec3::Zero(), m_sum = Vec3::Zero();
         Real scale = 0;
@@ -97,7 +100,8 @@ TEST(ShellTriangle, LoadsWithDrillAxesAreSelfEquilibratedAndTangent) {
     for (BendingKernel kernel : {BendingKernel::Bciz, BendingKernel::Dkt}) {
         // bending alone (the nodes do not move), so that the moments set the scale
         const std::array<Vec3, 3> cur = k_base;
-        std::array<Vec3, 3> dth{Vec3(2e-4, -1e-4, 3e-4), Vec3(-1e-4, 4e-4, 0), Vec3(3e-4, 1e-4, -2e-4)};
+        std::array<Vec3, 3> dth{Vec3(2e-4, -1e-4, 3e-4), Vec3(-1e-4, 4e-4, 0),
+                                Vec3(3e-4, 1e-4, -2e-4)};
         for (std::size_t i = 0; i < 3; ++i) dth[i] -= dth[i].dot(drill[i]) * drill[i];
         const ElementRun res = run(k_base, cur, dth, kernel, 2, 3, drill);
         Vec3 f_sum = Vec3::Zero(), m_sum = Vec3::Zero();
@@ -145,7 +149,8 @@ TEST(ShellTriangle, SectionResultantsMatchPlateTheory) {
 TEST(ShellTriangle, ObjectiveUnderLargeRigidRotation) {
     const std::array<Vec3, 3> def{k_base[0] + Vec3(1e-4, 0, 2e-4), k_base[1] + Vec3(-1e-4, 2e-4, 0),
                                   k_base[2] + Vec3(0, 1e-4, -3e-4)};
-    const std::array<Vec3, 3> bend{Vec3(1e-4, -2e-4, 1e-4), Vec3(-2e-4, 1e-4, 0), Vec3(3e-4, 0, -1e-4)};
+    const std::array<Vec3, 3> bend{Vec3(1e-4, -2e-4, 1e-4), Vec3(-2e-4, 1e-4, 0),
+                                   Vec3(3e-4, 0, -1e-4)};
     const ElementRun ref = run(k_base, def, bend, BendingKernel::Bciz);
     const Mat3 r = rotation_matrix(Vec3(0.7, -1.9, 1.2));
     std::array<Vec3, 3> cur, dth;
@@ -156,8 +161,10 @@ TEST(ShellTriangle, ObjectiveUnderLargeRigidRotation) {
     const ElementRun rot = run(k_base, cur, dth, BendingKernel::Bciz);
     for (int i = 0; i < 3; ++i) {
         // Rotated forces equal to round-off relative to their size.
-        EXPECT_LT((rot.loads.force[i] - r * ref.loads.force[i]).norm(), 1e-9 * ref.loads.force[i].norm() + 1e-6);
-        EXPECT_LT((rot.loads.moment[i] - r * ref.loads.moment[i]).norm(), 1e-9 * ref.loads.moment[i].norm() + 1e-6);
+        EXPECT_LT((rot.loads.force[i] - r * ref.loads.force[i]).norm(),
+                  1e-9 * ref.loads.force[i].norm() + 1e-6);
+        EXPECT_LT((rot.loads.moment[i] - r * ref.loads.moment[i]).norm(),
+                  1e-9 * ref.loads.moment[i].norm() + 1e-6);
     }
 }
 
@@ -166,8 +173,10 @@ TEST(ShellTriangle, ObjectiveUnderLargeRigidRotation) {
 // moment is that of the section with its outer points at the yield stress and the plastic work
 // is positive, while a rigid motion still gives nothing.
 TEST(ShellTriangle, PlasticElementReducesToElasticBelowYieldAndYieldsInBending) {
-    const std::array<Vec3, 3> cur{Vec3(0.1, 0.0, 0.2), Vec3(1.2003, 0.3, 0.1012), Vec3(0.2, 0.9002, 0.401)};
-    const std::array<Vec3, 3> dth{Vec3(0.001, -0.002, 0.0), Vec3(-0.0015, 0.001, 0.0), Vec3(0.0005, 0.002, 0.0)};
+    const std::array<Vec3, 3> cur{Vec3(0.1, 0.0, 0.2), Vec3(1.2003, 0.3, 0.1012),
+                                  Vec3(0.2, 0.9002, 0.401)};
+    const std::array<Vec3, 3> dth{Vec3(0.001, -0.002, 0.0), Vec3(-0.0015, 0.001, 0.0),
+                                  Vec3(0.0005, 0.002, 0.0)};
     const ShellRule r = rule(BendingKernel::Dkt, 5, 7);
     const ReversedTriangle rt = reverse_motion(k_base, cur, dth, k_no_drill_axes);
     const LinearElastic elastic(200e9, 0.3);

@@ -121,9 +121,18 @@ TEST(J2Plastic, RandomPathMatchesThreeDimensionalReturnWithZeroSigma33) {
         Real alpha;
     };
     const Check checks[] = {
-        {19, {326.652905378, 193.256296188, -7.57758024678}, {17.7078778253, 9.68714141271, 0.0481116629908}, 0.01945563751},
-        {39, {-309.971928121, -160.153586202, 7.38405816909}, {10.3994110576, 7.19445345796, 0.475475390574}, 0.0277999843741},
-        {59, {-341.531337848, -173.555763614, 14.1747532577}, {-3.80409577237, -0.393860428807, 0.0456980895026}, 0.0435338708895},
+        {19,
+         {326.652905378, 193.256296188, -7.57758024678},
+         {17.7078778253, 9.68714141271, 0.0481116629908},
+         0.01945563751},
+        {39,
+         {-309.971928121, -160.153586202, 7.38405816909},
+         {10.3994110576, 7.19445345796, 0.475475390574},
+         0.0277999843741},
+        {59,
+         {-341.531337848, -173.555763614, 14.1747532577},
+         {-3.80409577237, -0.393860428807, 0.0456980895026},
+         0.0435338708895},
     };
     MaterialPoint p;
     std::size_t c = 0;
@@ -161,7 +170,8 @@ TEST(J2Plastic, StressStaysOnYieldSurfaceForRandomIncrements) {
                 ++plastic_steps;
                 // Newton tolerance 1e-10 of kappa^2/3; kappa grows with alpha
                 const Real k = m.yield_radius(p.plastic_strain, 1.0);
-                EXPECT_NEAR(yield_function(m, p), 0.0, 1e-9 * k * k) << "beta " << beta << " step " << i;
+                EXPECT_NEAR(yield_function(m, p), 0.0, 1e-9 * k * k)
+                    << "beta " << beta << " step " << i;
             } else {
                 EXPECT_LE(yield_function(m, p), 1e-9 * k_sy * k_sy);
             }
@@ -226,7 +236,8 @@ TEST(J2Plastic, PureShearPathMatchesClosedForm) {
     const Real gamma = 0.02;
     for (Real h : {0.0, 3000.0}) {
         const J2Plastic m = bilinear(h, 1.0);
-        const Real alpha = (gamma - k_sy / (std::sqrt(3.0) * g)) / (h / (std::sqrt(3.0) * g) + std::sqrt(3.0));
+        const Real alpha =
+            (gamma - k_sy / (std::sqrt(3.0) * g)) / (h / (std::sqrt(3.0) * g) + std::sqrt(3.0));
         const Real tau = (k_sy + h * alpha) / std::sqrt(3.0);
         for (int n : {1, 50}) {
             const MaterialPoint p = apply(m, MaterialPoint{}, Voigt3(0, 0, gamma), n);
@@ -237,7 +248,8 @@ TEST(J2Plastic, PureShearPathMatchesClosedForm) {
             // trapezoidal rule is exact once yielded, the increment that crosses the yield
             // point is not (at most half of it: 1 % of the plastic strain with 50 increments)
             if (h == 0 && n == 50) {
-                EXPECT_NEAR(p.plastic_work, tau * std::sqrt(3.0) * alpha, 0.01 * tau * std::sqrt(3.0) * alpha);
+                EXPECT_NEAR(p.plastic_work, tau * std::sqrt(3.0) * alpha,
+                            0.01 * tau * std::sqrt(3.0) * alpha);
             }
         }
     }
@@ -277,7 +289,8 @@ TEST(J2Plastic, NonProportionalPathConvergesWithSmallerIncrements) {
         return apply(m, p, Voigt3(0, 0, 0.01), n);
     };
     const MaterialPoint coarse = run(2), medium = run(20), fine = run(2000);
-    const Real e_coarse = (coarse.stress - fine.stress).norm(), e_medium = (medium.stress - fine.stress).norm();
+    const Real e_coarse = (coarse.stress - fine.stress).norm(),
+               e_medium = (medium.stress - fine.stress).norm();
     EXPECT_GT(e_coarse, 1e-3 * fine.stress.norm());  // the path effect is real
     EXPECT_LT(e_medium, 0.2 * e_coarse);             // 10x smaller steps: about 10x smaller error
 }
@@ -318,7 +331,8 @@ TEST(J2Plastic, RateFactorsFollowTheirFormulas) {
                                           ? 1.0 + std::pow(rate / cs.d, 1.0 / cs.q)
                                           : 1.0 + jc.c * std::log(rate / jc.reference_rate));
         const int n = 400;  // 0.02 total strain; the filter (memory 10 steps) has settled
-        const MaterialPoint p = apply(m, MaterialPoint{}, Voigt3(eps_dot * dt * n, eps_dot * dt * n, 0), n, dt);
+        const MaterialPoint p =
+            apply(m, MaterialPoint{}, Voigt3(eps_dot * dt * n, eps_dot * dt * n, 0), n, dt);
         EXPECT_NEAR(p.strain_rate, rate, 1e-9 * rate);
         EXPECT_NEAR(p.stress(0), expected, 1e-7 * expected);
     }

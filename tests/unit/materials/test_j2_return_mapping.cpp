@@ -86,7 +86,9 @@ int check_lanes_against_scalar(const J2ReturnConstants& c, bool rate_factors, in
             d_eps[l] = random_increment(rng);
             r[l] = rate_factors ? 1.0 + 0.3 * v(rng) : 1.0;
         }
-        auto pack = [&](auto&& f) { return RealPack([&](auto l) { return f(static_cast<std::size_t>(l)); }); };
+        auto pack = [&](auto&& f) {
+            return RealPack([&](auto l) { return f(static_cast<std::size_t>(l)); });
+        };
         J2PointState<RealPack> old_pack;
         std::array<RealPack, 3> d_eps_pack;
         for (std::size_t k = 0; k < 3; ++k) {
@@ -97,8 +99,8 @@ int check_lanes_against_scalar(const J2ReturnConstants& c, bool rate_factors, in
         old_pack.plastic_strain = pack([&](std::size_t l) { return old[l].plastic_strain; });
         old_pack.flow_radius = pack([&](std::size_t l) { return old[l].flow_radius; });
         old_pack.flow_slope = pack([&](std::size_t l) { return old[l].flow_slope; });
-        const J2Return<RealPack> out =
-            j2_return_mapping(c, old_pack, d_eps_pack, pack([&](std::size_t l) { return r[l]; }), lanes);
+        const J2Return<RealPack> out = j2_return_mapping(
+            c, old_pack, d_eps_pack, pack([&](std::size_t l) { return r[l]; }), lanes);
         for (int l = 0; l < k_lanes; ++l) {
             SCOPED_TRACE(::testing::Message() << "trial " << trial << " lane " << l);
             const std::size_t ul = static_cast<std::size_t>(l);
@@ -115,10 +117,13 @@ int check_lanes_against_scalar(const J2ReturnConstants& c, bool rate_factors, in
                 EXPECT_NEAR(lane(out.state.back_stress[k], l), ref.state.back_stress[k], tol);
             }
             // alpha, kappa and the work follow from the stresses: the same relative 1e-9
-            EXPECT_NEAR(lane(out.state.plastic_strain, l), ref.state.plastic_strain, 1e-9 * (ref.state.plastic_strain + 1e-3));
+            EXPECT_NEAR(lane(out.state.plastic_strain, l), ref.state.plastic_strain,
+                        1e-9 * (ref.state.plastic_strain + 1e-3));
             EXPECT_NEAR(lane(out.state.flow_radius, l), ref.state.flow_radius, tol);
-            EXPECT_NEAR(lane(out.state.flow_slope, l), ref.state.flow_slope, 1e-9 * std::abs(ref.state.flow_slope) + 1e-6);
-            EXPECT_NEAR(lane(out.plastic_work, l), ref.plastic_work, 1e-9 * std::abs(ref.plastic_work) + 1e-3);
+            EXPECT_NEAR(lane(out.state.flow_slope, l), ref.state.flow_slope,
+                        1e-9 * std::abs(ref.state.flow_slope) + 1e-6);
+            EXPECT_NEAR(lane(out.plastic_work, l), ref.plastic_work,
+                        1e-9 * std::abs(ref.plastic_work) + 1e-3);
         }
     }
     return n_yielded;
@@ -127,7 +132,8 @@ int check_lanes_against_scalar(const J2ReturnConstants& c, bool rate_factors, in
 }  // namespace
 
 TEST(J2ReturnMapping, EveryLaneEqualsItsScalarReturnLinearMixedHardening) {
-    const int yielded = check_lanes_against_scalar(bilinear(2e9, 0.5).return_constants(), false, 200);
+    const int yielded =
+        check_lanes_against_scalar(bilinear(2e9, 0.5).return_constants(), false, 200);
     EXPECT_GT(yielded, 200 * k_lanes / 4);  // the random states do exercise the return
     EXPECT_LT(yielded, 200 * k_lanes);      // and the elastic lanes next to yielding ones
 }
@@ -181,16 +187,19 @@ TEST(J2ReturnMapping, UpdateIsTheScalarReturnAtTheFilteredRate) {
     const Real dt = 1e-6;
     MaterialPoint q;
     mat.update(p, d_eps, dt, q);
-    const Real rate = J2Plastic::k_rate_filter * effective_strain_rate(d_eps, dt) + (1 - J2Plastic::k_rate_filter) * 300.0;
+    const Real rate = J2Plastic::k_rate_filter * effective_strain_rate(d_eps, dt) +
+                      (1 - J2Plastic::k_rate_filter) * 300.0;
     const J2Return<Real> ref = j2_return_mapping(
         mat.return_constants(),
-        J2PointState<Real>{{200e6, -30e6, 40e6}, {10e6, -5e6, 2e6}, 0.02, p.flow_radius, p.flow_slope},
+        J2PointState<Real>{
+            {200e6, -30e6, 40e6}, {10e6, -5e6, 2e6}, 0.02, p.flow_radius, p.flow_slope},
         {2e-3, -1e-3, 5e-4}, mat.rate_factor().value(q.strain_rate), true);
     ASSERT_TRUE(ref.yielded);
     EXPECT_DOUBLE_EQ(q.strain_rate, rate);  // the filter of §7.4 option a (to rounding)
     // update and the return above may round an FMA differently (other translation units):
     // within the Newton tolerance, as in the lane comparisons above
-    for (int k = 0; k < 3; ++k) EXPECT_NEAR(q.stress(k), ref.state.stress[static_cast<std::size_t>(k)], 1e-9 * k_sy);
+    for (int k = 0; k < 3; ++k)
+        EXPECT_NEAR(q.stress(k), ref.state.stress[static_cast<std::size_t>(k)], 1e-9 * k_sy);
     EXPECT_NEAR(q.plastic_strain, ref.state.plastic_strain, 1e-9 * ref.state.plastic_strain);
     EXPECT_NEAR(q.plastic_work, 1e6 + ref.plastic_work, 1e-9 * ref.plastic_work);
     EXPECT_GT(q.plastic_strain, 0.02);

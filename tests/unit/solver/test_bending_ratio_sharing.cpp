@@ -47,7 +47,8 @@ ElementSteps own_critical_dt(const Model& m, std::size_t e) {
     const Real h = m.sections[0].thickness;
     const SectionMaterial sm = make_section_material(mat);
     const Mat3 rigidity = elastic_stiffness(sm) * (h * h * h / 12.0);
-    const Real c = std::sqrt(mat.youngs_modulus / (mat.density * (1.0 - mat.poisson_ratio * mat.poisson_ratio)));
+    const Real c = std::sqrt(mat.youngs_modulus /
+                             (mat.density * (1.0 - mat.poisson_ratio * mat.poisson_ratio)));
     const auto& t = m.triangles[e];
     const Vec3& p0 = m.nodes[static_cast<std::size_t>(t[0])];
     const Vec3& p1 = m.nodes[static_cast<std::size_t>(t[1])];
@@ -56,10 +57,13 @@ ElementSteps own_critical_dt(const Model& m, std::size_t e) {
     const Vec3 ex = e1.normalized();
     const TriangleShape shape(e1.norm(), d.dot(ex), ex.cross(d).norm());
     const Real two_area = e1.cross(d).norm();
-    const Real lc = two_area / std::sqrt(std::max({e1.squaredNorm(), (p2 - p1).squaredNorm(), d.squaredNorm()}));
+    const Real lc =
+        two_area /
+        std::sqrt(std::max({e1.squaredNorm(), (p2 - p1).squaredNorm(), d.squaredNorm()}));
     const NodeInertiaShare share = lumped_node_share(mat.density, h, 0.5 * two_area);
     const Real membrane = lc / c;
-    const Real bending = bending_critical_dt(BendingKernel::Dkt, shape, rigidity, share.mass, share.inertia, membrane);
+    const Real bending = bending_critical_dt(BendingKernel::Dkt, shape, rigidity, share.mass,
+                                             share.inertia, membrane);
     return {membrane, membrane * std::min(Real{1}, bending / membrane)};
 }
 

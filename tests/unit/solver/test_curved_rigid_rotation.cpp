@@ -51,9 +51,9 @@ Model spinning_cap(const Vec3& axis, Real rate, Index divisions, bool j2) {
 }
 
 struct SpinResult {
-    Real strain_to_kinetic = 0;   ///< strain energy / kinetic energy at the end
-    Real max_moment = 0;          ///< largest nodal moment |m_int| over the run
-    Real moment_scale = 0;        ///< D / R x total rotation: the moment of a spurious curvature
+    Real strain_to_kinetic = 0;  ///< strain energy / kinetic energy at the end
+    Real max_moment = 0;         ///< largest nodal moment |m_int| over the run
+    Real moment_scale = 0;       ///< D / R x total rotation: the moment of a spurious curvature
 };
 
 SpinResult spin(const Vec3& axis, Real rate, long steps, Index divisions, bool j2) {
@@ -66,7 +66,8 @@ SpinResult spin(const Vec3& axis, Real rate, long steps, Index divisions, bool j
     }
     r.strain_to_kinetic = s.energy().internal / s.energy().kinetic;
     const Real bending_stiffness = k_young * std::pow(k_thickness, 3) / (12.0 * (1 - 0.09));
-    const Real element_area = 0.5 * 4.0 * 4.0 * M_PI * (1 - std::cos(40.0 * M_PI / 180)) / static_cast<Real>(m.triangles.size());
+    const Real element_area = 0.5 * 4.0 * 4.0 * M_PI * (1 - std::cos(40.0 * M_PI / 180)) /
+                              static_cast<Real>(m.triangles.size());
     r.moment_scale = bending_stiffness / 2.0 * rate * s.time() * element_area;
     return r;
 }
@@ -77,19 +78,20 @@ TEST(CurvedRigidRotation, SpinAboutAxesNearTheNormalsBendsNothing) {
     // Axes through the centre: along the apex normal, and tilted 17 and 45 deg from it; the
     // particles' normals lie within 40 deg of the apex one, so the spin has a large component
     // about every particle's normal.
-  for (bool j2 : {false, true}) {
-    for (const Vec3& axis : {Vec3(0, 0, 1), Vec3(0.3, 0.1, 1), Vec3(1, -0.2, 1)}) {
-        SCOPED_TRACE(::testing::Message() << (j2 ? "J2" : "elastic") << ", axis " << axis.transpose());
-        // 0.05 rad/s for 3000 steps (~0.1 s: 0.005 rad in all). The centripetal stretch of a
-        // rigid spin is of order (rate t)^2, its energy of order (rate t)^4 against the
-        // kinetic's rate^2: ~1e-9 of it (measured 2e-10 .. 1.4e-9). Without eq. 2.6c the
-        // spurious curvature takes 0.3 to 100 times the kinetic energy.
-        const SpinResult r = spin(axis, 0.05, 3000, 6, j2);
-        EXPECT_LT(r.strain_to_kinetic, 1e-7);
-        // Nodal moments: at most 1 % of D / R x rotation x element area, the nodal moment of
-        // a curvature of (rotation about the normal) / R (measured 1.1e-4 of it; 1.3 to 1.9
-        // times it without eq. 2.6c).
-        EXPECT_LT(r.max_moment, 0.01 * r.moment_scale);
+    for (bool j2 : {false, true}) {
+        for (const Vec3& axis : {Vec3(0, 0, 1), Vec3(0.3, 0.1, 1), Vec3(1, -0.2, 1)}) {
+            SCOPED_TRACE(::testing::Message()
+                         << (j2 ? "J2" : "elastic") << ", axis " << axis.transpose());
+            // 0.05 rad/s for 3000 steps (~0.1 s: 0.005 rad in all). The centripetal stretch of a
+            // rigid spin is of order (rate t)^2, its energy of order (rate t)^4 against the
+            // kinetic's rate^2: ~1e-9 of it (measured 2e-10 .. 1.4e-9). Without eq. 2.6c the
+            // spurious curvature takes 0.3 to 100 times the kinetic energy.
+            const SpinResult r = spin(axis, 0.05, 3000, 6, j2);
+            EXPECT_LT(r.strain_to_kinetic, 1e-7);
+            // Nodal moments: at most 1 % of D / R x rotation x element area, the nodal moment of
+            // a curvature of (rotation about the normal) / R (measured 1.1e-4 of it; 1.3 to 1.9
+            // times it without eq. 2.6c).
+            EXPECT_LT(r.max_moment, 0.01 * r.moment_scale);
+        }
     }
-  }
 }

@@ -30,14 +30,16 @@ struct SlotMap {
     std::vector<std::size_t> offset;
 };
 
-SlotMap slot_map(const std::vector<std::array<Index, 3>>& tri, Index n_particles, std::size_t n_alone) {
+SlotMap slot_map(const std::vector<std::array<Index, 3>>& tri, Index n_particles,
+                 std::size_t n_alone) {
     SlotMap m;
     const std::size_t n_blocked = (tri.size() - n_alone) / w * w;
     m.n_blocks = static_cast<Index>(n_blocked / w);
     std::vector<std::vector<std::size_t>> of(static_cast<std::size_t>(n_particles));
     for (std::size_t e = 0; e < tri.size(); ++e)
         for (std::size_t k = 0; k < 3; ++k) {
-            const std::size_t slot = e < n_blocked ? (3 * (e / w) + k) * w + e % w : 3 * n_blocked + 3 * (e - n_blocked) + k;
+            const std::size_t slot = e < n_blocked ? (3 * (e / w) + k) * w + e % w
+                                                   : 3 * n_blocked + 3 * (e - n_blocked) + k;
             of[static_cast<std::size_t>(tri[e][k])].push_back(slot / w * group_reals + slot % w);
         }
     m.begin.push_back(0);
@@ -49,21 +51,29 @@ SlotMap slot_map(const std::vector<std::array<Index, 3>>& tri, Index n_particles
 }
 
 /// A distinct value for component c of full-array offset `at`.
-Real slot_value(std::size_t at, std::size_t c) { return static_cast<Real>(at) + 0.125 * static_cast<Real>(c); }
+Real slot_value(std::size_t at, std::size_t c) {
+    return static_cast<Real>(at) + 0.125 * static_cast<Real>(c);
+}
 
 /// Replays ShellElements::compute's schedule: range by range, tile by tile, each block writes
 /// its slots (ring, and the full array if kept), each tile ends with its ready particles'
 /// sums; then the particles after the loop. Returns every particle's 6 sums.
-std::vector<std::array<Real, 6>> replay(const SlotGatherPlan& plan, const SlotMap& m, std::size_t full_reals) {
-    constexpr Index tile = SlotGatherPlan::k_tile_blocks, ring_blocks = SlotGatherPlan::k_ring_blocks;
+std::vector<std::array<Real, 6>> replay(const SlotGatherPlan& plan, const SlotMap& m,
+                                        std::size_t full_reals) {
+    constexpr Index tile = SlotGatherPlan::k_tile_blocks,
+                    ring_blocks = SlotGatherPlan::k_ring_blocks;
     std::vector<Real> full(full_reals, -1.0);
-    for (std::size_t at = static_cast<std::size_t>(m.n_blocks) * SlotGatherPlan::k_block_reals; at < full_reals; ++at)
-        full[at] = slot_value(at / group_reals * group_reals + at % w, at % group_reals / w);  // elements alone
+    for (std::size_t at = static_cast<std::size_t>(m.n_blocks) * SlotGatherPlan::k_block_reals;
+         at < full_reals; ++at)
+        full[at] = slot_value(at / group_reals * group_reals + at % w,
+                              at % group_reals / w);  // elements alone
     std::vector<std::array<Real, 6>> sums(m.begin.size() - 1, {-7, -7, -7, -7, -7, -7});
     auto sum = [&](Index p, const Real* base) {
         std::array<Real, 6> s{};
-        for (Index k = m.begin[static_cast<std::size_t>(p)]; k < m.begin[static_cast<std::size_t>(p) + 1]; ++k)
-            for (std::size_t c = 0; c < 6; ++c) s[c] += base[plan.offset[static_cast<std::size_t>(k)] + c * w];
+        for (Index k = m.begin[static_cast<std::size_t>(p)];
+             k < m.begin[static_cast<std::size_t>(p) + 1]; ++k)
+            for (std::size_t c = 0; c < 6; ++c)
+                s[c] += base[plan.offset[static_cast<std::size_t>(k)] + c * w];
         sums[static_cast<std::size_t>(p)] = s;
     };
     for (std::size_t r = 0; r < static_cast<std::size_t>(plan.ranges()); ++r) {
@@ -73,12 +83,18 @@ std::vector<std::array<Real, 6>> replay(const SlotGatherPlan& plan, const SlotMa
             const Index from = first + (t - plan.range_first_tile[r]) * tile;
             for (Index b = from; b < std::min(end, from + tile); ++b)
                 for (std::size_t k = 0; k < SlotGatherPlan::k_block_reals; ++k) {
-                    const std::size_t at = static_cast<std::size_t>(b) * SlotGatherPlan::k_block_reals + k;
-                    const Real v = slot_value(at / group_reals * group_reals + at % w, at % group_reals / w);
+                    const std::size_t at =
+                        static_cast<std::size_t>(b) * SlotGatherPlan::k_block_reals + k;
+                    const Real v =
+                        slot_value(at / group_reals * group_reals + at % w, at % group_reals / w);
                     if (!plan.use_ring() || plan.keep[static_cast<std::size_t>(b)]) full[at] = v;
-                    if (plan.use_ring()) ring[static_cast<std::size_t>((b - first) % ring_blocks) * SlotGatherPlan::k_block_reals + k] = v;
+                    if (plan.use_ring())
+                        ring[static_cast<std::size_t>((b - first) % ring_blocks) *
+                                 SlotGatherPlan::k_block_reals +
+                             k] = v;
                 }
-            for (Index k = plan.ready_begin[static_cast<std::size_t>(t)]; k < plan.ready_begin[static_cast<std::size_t>(t) + 1]; ++k)
+            for (Index k = plan.ready_begin[static_cast<std::size_t>(t)];
+                 k < plan.ready_begin[static_cast<std::size_t>(t) + 1]; ++k)
                 sum(plan.ready[static_cast<std::size_t>(k)], ring.data());
         }
     }
@@ -92,7 +108,8 @@ std::vector<std::array<Real, 6>> expected_sums(const SlotMap& m) {
     for (std::size_t p = 0; p + 1 < m.begin.size(); ++p) {
         std::array<Real, 6> s{};
         for (Index k = m.begin[p]; k < m.begin[p + 1]; ++k)
-            for (std::size_t c = 0; c < 6; ++c) s[c] += slot_value(m.offset[static_cast<std::size_t>(k)], c);
+            for (std::size_t c = 0; c < 6; ++c)
+                s[c] += slot_value(m.offset[static_cast<std::size_t>(k)], c);
         sums[p] = s;
     }
     return sums;
@@ -123,7 +140,8 @@ TEST(SlotGatherPlan, EveryParticleSumsExactlyItsOwnSlotsFromTheRingForAnyRangeCo
     const MeshData mesh = plate(120);
     const auto np = static_cast<Index>(mesh.nodes.size());
     const SlotMap m = slot_map(mesh.triangles, np, 0);
-    const std::size_t full_reals = static_cast<std::size_t>(m.n_blocks) * SlotGatherPlan::k_block_reals;
+    const std::size_t full_reals =
+        static_cast<std::size_t>(m.n_blocks) * SlotGatherPlan::k_block_reals;
     for (int ranges : {1, 2, 3}) {
         SCOPED_TRACE(ranges);
         const SlotGatherPlan plan = make_slot_gather_plan(m.n_blocks, ranges, m.begin, m.offset);
@@ -148,7 +166,8 @@ TEST(SlotGatherPlan, AMeshWithoutLocalityGoesWithoutTheRing) {
     EXPECT_TRUE(plan.ready.empty());
     EXPECT_EQ(plan.after.size(), static_cast<std::size_t>(np));
     EXPECT_TRUE(std::all_of(plan.keep.begin(), plan.keep.end(), [](auto k) { return k == 1; }));
-    EXPECT_EQ(replay(plan, m, static_cast<std::size_t>(m.n_blocks) * SlotGatherPlan::k_block_reals), expected_sums(m));
+    EXPECT_EQ(replay(plan, m, static_cast<std::size_t>(m.n_blocks) * SlotGatherPlan::k_block_reals),
+              expected_sums(m));
 }
 
 TEST(SlotGatherPlan, ParticlesOfElementsComputedAloneAreSummedAfterTheLoop) {
@@ -162,7 +181,8 @@ TEST(SlotGatherPlan, ParticlesOfElementsComputedAloneAreSummedAfterTheLoop) {
     const std::size_t n_blocked = static_cast<std::size_t>(m.n_blocks) * w;
     for (std::size_t e = n_blocked; e < mesh.triangles.size(); ++e)
         for (Index p : mesh.triangles[e])
-            EXPECT_NE(std::find(plan.after.begin(), plan.after.end(), p), plan.after.end()) << "particle " << p;
+            EXPECT_NE(std::find(plan.after.begin(), plan.after.end(), p), plan.after.end())
+                << "particle " << p;
     const std::size_t full_reals =
         (3 * n_blocked + 3 * (mesh.triangles.size() - n_blocked) + w - 1) / w * group_reals;
     EXPECT_EQ(replay(plan, m, full_reals), expected_sums(m));
