@@ -15,6 +15,7 @@
 #include "fpmshell/io/vtu_writer.hpp"
 #include "fpmshell/mesh/generators.hpp"
 #include "fpmshell/solver/explicit_solver.hpp"
+#include "one_section_model.hpp"
 
 namespace fpmshell {
 namespace {
@@ -26,14 +27,8 @@ Model moving_plate() {
     pp.nx = pp.ny = 4;
     pp.pattern = DiagonalPattern::Alternate;
     const MeshData mesh = generate_plate(pp);
-    Model m;
+    Model m = test::one_section_model(mesh, 0.01);
     m.title = "moving plate";
-    m.nodes = mesh.nodes;
-    m.triangles = mesh.triangles;
-    m.node_sets = mesh.node_sets;
-    m.materials.push_back({"steel", MaterialType::Elastic, 7800, 2.1e11, 0.3});
-    m.sections.push_back({0, 0.01, 2, 3});
-    m.element_section.assign(m.triangles.size(), 0);
     m.control.end_time = 1;
     std::mt19937 rng(7);
     std::uniform_real_distribution<Real> u(-1, 1);

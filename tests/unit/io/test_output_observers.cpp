@@ -24,6 +24,7 @@
 #include "fpmshell/io/csv_table.hpp"
 #include "fpmshell/mesh/generators.hpp"
 #include "fpmshell/solver/explicit_solver.hpp"
+#include "one_section_model.hpp"
 
 namespace fpmshell {
 namespace {
@@ -79,15 +80,9 @@ Model vibrating_plate(const fs::path& dir) {
     pp.nx = pp.ny = 4;
     pp.pattern = DiagonalPattern::Alternate;
     const MeshData mesh = generate_plate(pp);
-    Model m;
+    Model m = test::one_section_model(mesh, 0.01);
     m.title = "vibrating plate";
     m.source_file = (dir / "plate.yaml").string();
-    m.nodes = mesh.nodes;
-    m.triangles = mesh.triangles;
-    m.node_sets = mesh.node_sets;
-    m.materials.push_back({"steel", MaterialType::Elastic, 7800, 2.1e11, 0.3});
-    m.sections.push_back({0, 0.01, 2, 3});
-    m.element_section.assign(m.triangles.size(), 0);
     BoundaryCondition bc;
     bc.nodes = m.node_sets.at("boundary");
     bc.fixed = {false, false, true, false, false, false};

@@ -21,6 +21,7 @@
 #include "fpmshell/core/rotation.hpp"
 #include "fpmshell/mesh/generators.hpp"
 #include "fpmshell/solver/explicit_solver.hpp"
+#include "one_section_model.hpp"
 
 using namespace fpmshell;
 
@@ -31,14 +32,8 @@ Model plate_model(Index n, Real h = 0.01) {
     pp.nx = pp.ny = n;
     pp.pattern = DiagonalPattern::Alternate;
     MeshData mesh = generate_plate(pp);
-    Model m;
+    Model m = test::one_section_model(mesh, h);
     m.title = "test plate";
-    m.nodes = mesh.nodes;
-    m.triangles = mesh.triangles;
-    m.node_sets = mesh.node_sets;
-    m.materials.push_back({"steel", MaterialType::Elastic, 7800, 2.1e11, 0.3});
-    m.sections.push_back({0, h, 2, 3});
-    m.element_section.assign(m.triangles.size(), 0);
     m.control.end_time = 1;
     return m;
 }
@@ -146,12 +141,7 @@ TEST(ExplicitSolver, RigidRotationInManyStepsGivesNoForce) {
         cp.sector_deg = 360;
         cp.divisions = 3;
         MeshData mesh = generate_spherical_cap(cp);
-        Model m;
-        m.nodes = mesh.nodes;
-        m.triangles = mesh.triangles;
-        m.materials.push_back({"steel", MaterialType::Elastic, 7800, 2.1e11, 0.3});
-        m.sections.push_back({0, 0.02, 2, 3});
-        m.element_section.assign(m.triangles.size(), 0);
+        Model m = test::one_section_model(mesh, 0.02);
         m.control.membrane = membrane;  // smoothed: neighbours on the curved cap are not coplanar
         const MeshTopology topology(m);
         ShellElements el(m, topology);
@@ -207,12 +197,7 @@ TEST(ExplicitSolver, ReactionsBalanceTheLoadAtEquilibrium) {
     pp.nx = 10;
     pp.ny = 2;
     MeshData mesh = generate_plate(pp);
-    Model m;
-    m.nodes = mesh.nodes;
-    m.triangles = mesh.triangles;
-    m.materials.push_back({"steel", MaterialType::Elastic, 7800, 2.1e11, 0.0});
-    m.sections.push_back({0, 0.01, 2, 3});
-    m.element_section.assign(m.triangles.size(), 0);
+    Model m = test::one_section_model(mesh, 0.01, 0.0);
     BoundaryCondition clamp;
     clamp.nodes = mesh.node_sets.at("xmin");
     clamp.fixed = {true, true, true, true, true, true};
@@ -249,12 +234,7 @@ TEST(ExplicitSolver, QuarterModelWithSymmetryPlanesMatchesFullModel) {
         pp.length_x = pp.length_y = len;
         pp.pattern = DiagonalPattern::Cross;
         MeshData mesh = generate_plate(pp);
-        Model m;
-        m.nodes = mesh.nodes;
-        m.triangles = mesh.triangles;
-        m.materials.push_back({"steel", MaterialType::Elastic, 7800, 2.1e11, 0.3});
-        m.sections.push_back({0, 0.01, 2, 3});
-        m.element_section.assign(m.triangles.size(), 0);
+        Model m = test::one_section_model(mesh, 0.01);
         auto fixed_set = [&](const std::string& set, std::array<bool, 6> dofs) {
             BoundaryCondition bc;
             bc.nodes = mesh.node_sets.at(set);

@@ -18,6 +18,7 @@
 #include "fpmshell/mesh/generators.hpp"
 #include "fpmshell/model/mesh_topology.hpp"
 #include "fpmshell/solver/shell_elements.hpp"
+#include "one_section_model.hpp"
 
 using namespace fpmshell;
 
@@ -86,12 +87,7 @@ Model plate(MembraneKernel membrane) {
     pp.ny = 4;
     pp.pattern = DiagonalPattern::Alternate;
     const MeshData mesh = generate_plate(pp);
-    Model m;
-    m.nodes = mesh.nodes;
-    m.triangles = mesh.triangles;
-    m.materials.push_back({"steel", MaterialType::Elastic, 7800, k_youngs, k_nu});
-    m.sections.push_back({0, k_h, 3, 3});
-    m.element_section.assign(m.triangles.size(), 0);
+    Model m = test::one_section_model(mesh, k_h, k_nu, k_youngs, 3, 3);
     m.control.bending = BendingKernel::Dkt;
     m.control.membrane = membrane;
     return m;

@@ -1,0 +1,24 @@
+// The model most unit tests start from: a generated mesh with every triangle in one elastic
+// steel section (rho = 7800 kg/m^3, E = 2.1e11 Pa unless given). Tests add their boundary
+// conditions, loads and initial velocities.
+#pragma once
+
+#include "fpmshell/mesh/mesh_data.hpp"
+#include "fpmshell/model/model.hpp"
+
+namespace fpmshell::test {
+
+inline Model one_section_model(const MeshData& mesh, Real thickness, Real poisson_ratio = 0.3,
+                               Real youngs_modulus = 2.1e11, int thickness_points = 2,
+                               int inplane_points = 3) {
+    Model m;
+    m.nodes = mesh.nodes;
+    m.triangles = mesh.triangles;
+    m.node_sets = mesh.node_sets;
+    m.materials.push_back({"steel", MaterialType::Elastic, 7800, youngs_modulus, poisson_ratio});
+    m.sections.push_back({0, thickness, thickness_points, inplane_points});
+    m.element_section.assign(m.triangles.size(), 0);
+    return m;
+}
+
+}  // namespace fpmshell::test
