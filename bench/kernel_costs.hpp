@@ -38,7 +38,8 @@ inline constexpr double k_transcendental = 20;  // log / pow: ~20 flop of polyno
 
 // ---- element loop (ShellElements::compute), per element -----------------------------------
 
-// reverse_motion (reverse_motion.cpp), small-angle branches (every step of a stable run):
+// The path element (elements/path_element.hpp) with the small-angle series of its rotations
+// (every step of a stable run):
 //   a2, a3, r2, r3                      4 Vec3 sub                                  12
 //   na_raw, n_raw                       2 cross                                      18
 //   lmax2                               3 squaredNorm + (a3 - a2)                    18
@@ -59,31 +60,31 @@ inline constexpr double k_transcendental = 20;  // log / pow: ~20 flop of polyno
 //   3 x phi_i                           rotation_matrix 50 + 3x3^T*3x3 45 +
 //                                       rotation_vector 23 + 2 rows of T_a phi 10   384
 //   frame_current                       3x3 * 3x3^T                                  45
-// rotation_matrix (series branch, closed form of commit e89e679): |phi|^2 5, a and b series
-// 2 x 8, d 2, b x y.. 6, diagonal 3 x 3, off-diagonal 6 x 2 = 50. rotation_vector (series
-// branch): trace 4, w 3, s2 6, series 7 + 3 = 23. small_angle_atan2: test 1, t 1, t^2 1,
-// series 7. (Counted on the working tree of 22 Nov 13:05: e89e679 plus minimal_rotation in closed
-// form and small_angle_atan2; before those two, 43 + 20 more.)
+// rotation_matrix_series (core/rotation.hpp): |phi|^2 5, a and b series 2 x 8, d 2, b x y.. 6,
+// diagonal 3 x 3, off-diagonal 6 x 2 = 50. rotation_vector_series: trace 4, w 3, s2 6,
+// series 7 + 3 = 23. atan_series with its bound test: test 1, t 1, t^2 1, series 7.
 inline constexpr double k_reverse_motion = 903;
 
-// The rest of compute() per element: current_length (2 Vec3 sub 6, cross 9, norm 6, 3 edge
-// squaredNorms with their subs 24, sqrt, div) = 47; element_dt + drift test 4; phase 2 gathers
-// the 3 corner slots into their particles (3 x (f 3 + m 3 adds)) = 18; the totals 3.
-inline constexpr double k_element_rest = 47 + 4 + 18 + 3;
+// The rest of compute() per element: characteristic_length from the path element's current
+// 2A (3 edge squaredNorms with their subs 24, 2 max, sqrt, div) = 28; element_dt + drift test
+// 4; phase 2 gathers the 3 corner slots into their particles (3 x (f 3 + m 3 adds)) = 18; the
+// totals 3.
+inline constexpr double k_element_rest = 28 + 4 + 18 + 3;
 
-// shell_triangle_loads (shell_triangle.hpp), per element outside the point loops:
-//   TriangleShape 7; membrane_b: 18 div (Eigen divides the whole 3x6); dkt_shape: 3 sides x
-//   (xij, yij 2, 1 / l2 4, cb 3, cc 6, ce 6) + x31..y12 4 + 1 / 2A 4 = 71; d_eps_m = B_m u 33;
+// local_triangle_loads (elastic_triangle_block.hpp), per element outside the point loops:
+//   1 / 2A 2; cst_gradients 7; dkt_sides: 3 sides x (xij, yij 1, l2 3, 1 / l2 2, cb 3,
+//   cc 5, ce 5) + the shared division 3 = 60; d_eps_m = cst_strain 11 (u_1 = 0, b_3 = 0);
 //   h, thickness factor 4; the curvature matrix at the 3 corners (below) and kappa_i = B_i theta
-//   3 x 33 = 99; f_m = s B_m^T N 36; m_b = sum_i B_i^T M_i 3 x 30 + 12 = 102; out-of-plane
-//   forces (4 adds, 2 div, 3) 9; forward rotation of 6 vectors 6 x 15 = 90.
-inline constexpr double k_loads_element = 7 + 18 + 33 + 4 + 99 + 36 + 102 + 9 + 90;
-inline constexpr double k_dkt_shape = 71;
+//   3 x 33 = 99; f_m = cst_nodal_forces 18; m_b = sum_i B_i^T M_i 3 x 30 + 12 = 102;
+//   out-of-plane forces and the drilling couple (eq. 4.6a-c) 20; forward rotation of 6 vectors
+//   6 x 15 = 90.
+inline constexpr double k_loads_element = 2 + 7 + 11 + 4 + 99 + 18 + 102 + 20 + 90;
+inline constexpr double k_dkt_shape = 60;
 
-// The curvature matrix at one corner (3 per element). bending_b_dkt(DktShape, L): N,xi and
-// N,eta 24; Hx, Hy on both, rotation columns only, 2 x 42 = 84; the 3x6 matrix: 6 columns x
-// (4 + 4 + 8) = 96.
-inline constexpr double k_bending_dkt = 24 + 84 + 96;
+// The curvature matrix at one corner (3 per element). dkt_curvature (dkt_curvature.hpp; N,xi
+// and N,eta are constants at a corner): Hx, Hy on both, rotation columns only, 2 x 42 = 84;
+// the 3x6 matrix: 6 columns x (2 + 4 + 6) = 72.
+inline constexpr double k_bending_dkt = 84 + 72;
 // bending_b_bciz: f 2; 3 bubble terms x 14 = 42; 3 corners x (6 q_g x 9 + 2 columns x (hb 2 +
 // 6 + 6 + 7)) = 3 x 96 = 288.
 inline constexpr double k_bending_bciz = 2 + 42 + 288;

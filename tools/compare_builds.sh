@@ -3,6 +3,8 @@
 # and short runs of the three examples, with each binary; prints "DIFF <file>" for every
 # history.csv, energy.csv and .vtu that differs and exits 1 if any does.
 #   tools/compare_builds.sh OLD_BIN NEW_BIN [WORKDIR=build/compare]
+# The old binary's outputs are kept in WORKDIR/old and reused while WORKDIR/old/done is newer
+# than OLD_BIN (delete it to force a rerun).
 # About 5 minutes per binary on the project's 2-core machine. The validation scripts rewrite
 # docs/validation/*-quick.png: restore them with `git checkout docs/validation`.
 set -u
@@ -26,7 +28,9 @@ run_set() {  # binary output-folder
         --set mesh.divisions_width=15 --set mesh.divisions_length=64 --set control.end_time=1e-3 \
         > /dev/null 2>&1 || echo "tube failed ($bin)"
 }
-run_set "$OLD" "$WORK/old"
+if [ ! "$WORK/old/done" -nt "$OLD" ]; then
+    run_set "$OLD" "$WORK/old" && touch "$WORK/old/done"
+fi
 run_set "$NEW" "$WORK/new"
 status=0; n=0
 while IFS= read -r f; do

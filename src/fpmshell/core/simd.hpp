@@ -145,4 +145,24 @@ template <class T>
     return r;
 }
 
+/// Component i (0, 1, 2) of v.
+template <class T>
+[[nodiscard]] FPMSHELL_INLINE const T& component(const V3<T>& v, std::size_t i) {
+    return i == 0 ? v.x : i == 1 ? v.y : v.z;
+}
+
+// Conversions from and to the Eigen types of core/types.hpp (one element, T = Real).
+[[nodiscard]] inline V3<Real> to_v3(const Vec3& v) { return {v.x(), v.y(), v.z()}; }
+[[nodiscard]] inline Vec3 to_vec3(const V3<Real>& v) { return {v.x, v.y, v.z}; }
+[[nodiscard]] inline M3<Real> to_m3(const Mat3& m) {
+    return {{V3<Real>{m(0, 0), m(0, 1), m(0, 2)}, V3<Real>{m(1, 0), m(1, 1), m(1, 2)},
+             V3<Real>{m(2, 0), m(2, 1), m(2, 2)}}};
+}
+[[nodiscard]] inline Mat3 to_mat3(const M3<Real>& m) {
+    Mat3 r;
+    r << m.row[0].x, m.row[0].y, m.row[0].z, m.row[1].x, m.row[1].y, m.row[1].z, m.row[2].x,
+        m.row[2].y, m.row[2].z;
+    return r;
+}
+
 }  // namespace fpmshell

@@ -7,18 +7,18 @@
 //     linear elastic section's, a J2 section's (the trial check of §7.3 step 1 on every point
 //     at once; the points that yield go, all together, to the caller's return mapping), or
 //     any material's through its own point update (the general element).
-//   - elastic_triangle_loads: the path element (§2) by the series branches of
-//     core/rotation.hpp, then local_triangle_loads: for the path elements of a stable step,
+//   - elastic_triangle_loads: the path element (path_element.hpp) with the small-angle series
+//     of its rotations, then local_triangle_loads: for the path elements of a stable step,
 //       - every rotation of the step (nodal increments, in-plane and relative rotations) is
 //         below 0.01 rad,
 //       - the element is not degenerate, not tilted by more than 90 deg, and keeps its area
 //         within a factor of 2.
 //     A lane outside these bounds is reported in `valid` and the caller computes that element
-//     with the general element (reverse_motion's path element, for any rotation), which also
-//     reports the failures of §2.8. A J2 point whose trial state yields is handed to the
-//     caller's return mapping, or, without one, also makes its lane invalid. Within the bounds
-//     a lane gives the general element's result up to the rounding of the two path elements
-//     (tests/unit/elements/test_elastic_triangle_block.cpp bounds the difference).
+//     with the general element: the same path element with the rotations for any angle
+//     (reverse_motion.hpp), which also reports the failures of §2.8. A J2 point whose trial
+//     state yields is handed to the caller's return mapping, or, without one, also makes its
+//     lane invalid. Within the bounds a lane gives the general element's result up to the
+//     rounding of the series against the trigonometric forms and of the FMA contractions.
 #pragma once
 
 #include <array>
@@ -26,18 +26,15 @@
 
 #include "fpmshell/core/simd.hpp"
 #include "fpmshell/elements/bciz_curvature.hpp"
+#include "fpmshell/elements/cst_membrane.hpp"
+#include "fpmshell/elements/dkt_curvature.hpp"
+#include "fpmshell/elements/path_element.hpp"
 #include "fpmshell/elements/quadrature.hpp"
 #include "fpmshell/materials/flow_stress.hpp"
+#include "fpmshell/materials/strain_rate.hpp"
 #include "fpmshell/model/model.hpp"
 
 namespace fpmshell {
-
-/// One path element per lane: node positions at t_{n-1} and t_n, nodal rotation increments
-/// and the nodes' drill axes (reverse_motion.hpp: zero where the increment is complete).
-template <class T>
-struct TriangleMotion {
-    std::array<V3<T>, 3> base, current, dtheta, drill_axis;
-};
 
 /// The constants of a linear elastic section with its integration rule.
 struct ElasticSectionConstants {
@@ -77,18 +74,6 @@ inline constexpr std::size_t k_max_block_points = 35;
 /// yield check and return mapping) inside the kernel.
 struct ElasticPoints {};
 
-/// The path element in its local frame (§2.4-§2.7): node 1 at the origin, node 2 on x.
-template <class T>
-struct LocalTriangle {
-    T x2, x3, y3;             ///< base local coordinates (x1 = y1 = y2 = 0)
-    T inv_x2;                 ///< 1 / x2
-    T area;                   ///< A_a, base area
-    std::array<T, 3> ux, uy;  ///< deformation displacements (u_1 = 0), §2.4
-    std::array<T, 6> th;      ///< deformation rotations [thx1 thy1 thx2 thy2 thx3 thy3], §2.6
-    std::array<V3<T>, 3> drill_local;  ///< the drill axes in the local frame (eq. 4.6b)
-    M3<T> frame_current;               ///< T_t: local -> global is T_t^T, §2.7
-};
-
 /// The smoothed membrane (membrane_smoothing.hpp): the strain increment to use instead of the
 /// CST one, and the element's own share of its membrane nodal forces.
 template <class T>
@@ -108,91 +93,16 @@ struct ElasticTriangleLoads {
     MaskOf<T> valid;                      ///< lanes inside the bounds above
 };
 
-namespace block_detail {
-
-/// R(phi) by the series of core/rotation.hpp (|phi|^2 < 1e-4, checked by the caller).
-/// Multiplications by the reciprocal constants, not divisions: a pack division occupies the
-/// divider for about 16 cycles, and the block kernel's divisions by constants were most of
-/// its divider time.
+/// The value at area coordinates L of a field linear in L with corner values corner[i] (the
+/// curvature increment: §4.3, §4.7).
 template <class T>
-[[nodiscard]] FPMSHELL_INLINE M3<T> rotation_matrix_series(const V3<T>& phi, const T& t2) {
-    const T a = 1.0 - t2 * (1.0 / 6.0) * (1.0 - t2 * (1.0 / 20.0) * (1.0 - t2 * (1.0 / 42.0)));
-    const T b = 0.5 - t2 * (1.0 / 24.0) * (1.0 - t2 * (1.0 / 30.0) * (1.0 - t2 * (1.0 / 56.0)));
-    const T d = 1.0 - b * t2;
-    const T bxy = b * phi.x * phi.y, bxz = b * phi.x * phi.z, byz = b * phi.y * phi.z;
-    return {{V3<T>{d + b * phi.x * phi.x, bxy - a * phi.z, bxz + a * phi.y},
-             V3<T>{bxy + a * phi.z, d + b * phi.y * phi.y, byz - a * phi.x},
-             V3<T>{bxz - a * phi.y, byz + a * phi.x, d + b * phi.z * phi.z}}};
+[[nodiscard]] FPMSHELL_INLINE std::array<T, 3> interpolate(
+    const std::array<Real, 3>& L, const std::array<std::array<T, 3>, 3>& corner) {
+    std::array<T, 3> v;
+    for (std::size_t r = 0; r < 3; ++r)
+        v[r] = L[0] * corner[0][r] + L[1] * corner[1][r] + L[2] * corner[2][r];
+    return v;
 }
-
-/// log(R) by the series of core/rotation.hpp's rotation_vector, with the lanes where it holds
-/// (cos > 0, sin^2 < 1e-4) in `valid`.
-template <class T>
-[[nodiscard]] FPMSHELL_INLINE V3<T> rotation_vector_series(const M3<T>& r, MaskOf<T>& valid) {
-    const T c = (r.row[0].x + r.row[1].y + r.row[2].z - 1.0) * 0.5;
-    const V3<T> w{r.row[2].y - r.row[1].z, r.row[0].z - r.row[2].x, r.row[1].x - r.row[0].y};
-    const T s2 = 0.25 * squared_norm(w);
-    valid = valid && (c > 0.0) && (s2 < 1e-4);
-    return (0.5 * (1.0 + s2 * (1.0 / 6.0 + s2 * (3.0 / 40.0 + s2 * (5.0 / 112.0))))) * w;
-}
-
-/// Minimal rotation taking unit a to unit b (a.b > 0 here), as core/rotation.hpp.
-template <class T>
-[[nodiscard]] FPMSHELL_INLINE M3<T> minimal_rotation(const V3<T>& a, const V3<T>& b) {
-    const V3<T> v = cross(a, b);
-    const T f = 1.0 / (1.0 + dot(a, b));
-    const T d = 1.0 - f * squared_norm(v);
-    const T fxy = f * v.x * v.y, fxz = f * v.x * v.z, fyz = f * v.y * v.z;
-    return {{V3<T>{d + f * v.x * v.x, fxy - v.z, fxz + v.y},
-             V3<T>{fxy + v.z, d + f * v.y * v.y, fyz - v.x},
-             V3<T>{fxz - v.y, fyz + v.x, d + f * v.z * v.z}}};
-}
-
-/// v / s by one division and three multiplications.
-template <class T>
-[[nodiscard]] FPMSHELL_INLINE V3<T> divide(const V3<T>& v, const T& s) {
-    const T inv = 1.0 / s;
-    return {v.x * inv, v.y * inv, v.z * inv};
-}
-
-/// The rotation-only curvature matrix at a corner e_i (§4.3: linear in L, so the three
-/// corners give it everywhere).
-template <class T>
-struct CornerCurvature {
-    std::array<std::array<T, 6>, 3> b;  ///< B(e_i), rows kxx, kyy, kxy
-};
-
-/// DKT at a corner: the corner's shape-function derivative arrays n_xi, n_eta (constants)
-/// and the element's side coefficients (triangle_shape.cpp).
-
-template <class T>
-[[nodiscard]] FPMSHELL_INLINE CornerCurvature<T> dkt_corner(
-    const std::array<Real, 6>& n_xi, const std::array<Real, 6>& n_eta, const std::array<T, 3>& cb,
-    const std::array<T, 3>& cc, const std::array<T, 3>& ce, const T& x2, const T& x3, const T& y3,
-    const T& inv_two_area) {
-    auto h_of = [&](const std::array<Real, 6>& n, std::array<T, 6>& hx, std::array<T, 6>& hy) {
-        const Real n1 = n[0], n2 = n[1], n3 = n[2], n4 = n[3], n5 = n[4], n6 = n[5];
-        hx = {cb[1] * n5 + cb[2] * n6, n1 - cc[1] * n5 - cc[2] * n6,
-              cb[2] * n6 + cb[0] * n4, n2 - cc[2] * n6 - cc[0] * n4,
-              cb[0] * n4 + cb[1] * n5, n3 - cc[0] * n4 - cc[1] * n5};
-        hy = {-n1 + ce[1] * n5 + ce[2] * n6, -(cb[1] * n5) - cb[2] * n6,
-              -n2 + ce[2] * n6 + ce[0] * n4, -(cb[2] * n6) - cb[0] * n4,
-              -n3 + ce[0] * n4 + ce[1] * n5, -(cb[0] * n4) - cb[1] * n5};
-    };
-    std::array<T, 6> hx_xi, hy_xi, hx_eta, hy_eta;
-    h_of(n_xi, hx_xi, hy_xi);
-    h_of(n_eta, hx_eta, hy_eta);
-    // Local frame: x31 = x3, y31 = y3, x12 = -x2, y12 = 0 (node 1 at the origin, §2.5).
-    CornerCurvature<T> out;
-    for (std::size_t q = 0; q < 6; ++q) {
-        out.b[0][q] = (y3 * hx_xi[q]) * inv_two_area;
-        out.b[1][q] = (-(x3 * hy_xi[q]) + x2 * hy_eta[q]) * inv_two_area;
-        out.b[2][q] = (-(x3 * hx_xi[q]) + x2 * hx_eta[q] + y3 * hy_xi[q]) * inv_two_area;
-    }
-    return out;
-}
-
-}  // namespace block_detail
 
 /// Loads of the path element `e` (§3-§5) with the section's points, lanes `valid`:
 /// arguments as elastic_triangle_loads. update: ElasticPoints, or the general point update
@@ -205,7 +115,6 @@ template <class T, class ReturnMapping = NoReturnMapping, class PointUpdate = El
     const T& thickness, T* stress, Real viscous_rate, const YieldSurfaces<T>* yield = nullptr,
     const ReturnMapping& return_mapping = {}, const PointUpdate& update = {},
     const SmoothedMembrane<T>* smoothed = nullptr) {
-    using namespace block_detail;
     constexpr bool elastic_points = std::is_same_v<PointUpdate, ElasticPoints>;
     ElasticTriangleLoads<T> out;
     const T &x2 = e.x2, &x3 = e.x3, &y3 = e.y3, &inv_x2 = e.inv_x2, &area = e.area;
@@ -215,55 +124,31 @@ template <class T, class ReturnMapping = NoReturnMapping, class PointUpdate = El
     const M3<T>& frame_current = e.frame_current;
     // ---- §3.1 CST ----
     const T inv_two_area = 1.0 / (x2 * y3);
-    // b_i / 2A and c_i / 2A of triangle_shape.cpp with x = (0, x2, x3), y = (0, 0, y3)
-    const std::array<T, 3> bx{-y3 * inv_two_area, y3 * inv_two_area, T(0.0)};
-    const std::array<T, 3> cy{(x3 - x2) * inv_two_area, -x3 * inv_two_area, x2 * inv_two_area};
-    const std::array<T, 3> d_eps_m =
-        smoothed ? smoothed->strain
-                 : std::array<T, 3>{bx[1] * ux[1] + bx[2] * ux[2], cy[1] * uy[1] + cy[2] * uy[2],
-                                    cy[1] * ux[1] + cy[2] * ux[2] + bx[1] * uy[1] + bx[2] * uy[2]};
+    const CstGradients<T> cst = cst_gradients(x2, x3, y3, inv_two_area);
+    const std::array<T, 3> d_eps_m = smoothed ? smoothed->strain : cst_strain(cst, ux, uy);
 
     // ---- §4.7 DKT or §4.3 BCIZ at the three corners (the curvature matrix is linear in L) ----
-    std::array<CornerCurvature<T>, 3> corner;
+    std::array<std::array<std::array<T, 6>, 3>, 3> corner;  // B(e_i), rows kxx, kyy, kxy
     if (sec.bending == BendingKernel::Bciz) {
         const std::array<T, 3> b{-y3, y3, T(0.0)}, c{x3 - x2, -x3, x2};  // TriangleShape's b, c
         const T f = -(inv_two_area * inv_two_area);
         for (std::size_t i = 0; i < 3; ++i) {
             std::array<Real, 3> L{0.0, 0.0, 0.0};
             L[i] = 1.0;
-            corner[i].b = bciz_curvature(L, b, c, f);
+            corner[i] = bciz_curvature(L, b, c, f);
         }
     } else {
-        std::array<T, 3> cb, cc, ce;
-        {
-            // sides 23, 31, 12: (x_i - x_j, y_i - y_j)
-            const std::array<T, 3> xij{x2 - x3, x3, -x2}, yij{-y3, y3, T(0.0)};
-            std::array<T, 3> l2;
-            for (std::size_t s = 0; s < 3; ++s) l2[s] = xij[s] * xij[s] + yij[s] * yij[s];
-            const T inv_product =
-                1.0 / (l2[0] * l2[1] * l2[2]);  // one division for the three sides
-            const std::array<T, 3> inv_side{l2[1] * l2[2] * inv_product,
-                                            l2[0] * l2[2] * inv_product,
-                                            l2[0] * l2[1] * inv_product};
-            for (std::size_t s = 0; s < 3; ++s) {
-                const T inv_l2 = inv_side[s];
-                cb[s] = 0.75 * xij[s] * yij[s] * inv_l2;
-                cc[s] = (0.25 * xij[s] * xij[s] - 0.5 * yij[s] * yij[s]) * inv_l2;
-                ce[s] = (0.25 * yij[s] * yij[s] - 0.5 * xij[s] * xij[s]) * inv_l2;
-            }
-        }
-        // n_xi, n_eta of bending_b_dkt at L = e_1, e_2, e_3 (xi = L_2, eta = L_3)
-        static constexpr std::array<std::array<Real, 6>, 3> k_n_xi{
-            {{-3, -1, 0, 0, 0, 4}, {1, 3, 0, 0, 0, -4}, {1, -1, 0, 4, -4, 0}}};
-        static constexpr std::array<std::array<Real, 6>, 3> k_n_eta{
-            {{-3, 0, -1, 0, 4, 0}, {1, 0, -1, 4, 0, -4}, {1, 0, 3, 0, -4, 0}}};
+        const DktSides<T> sides = dkt_sides(x2, x3, y3);
+        static constexpr std::array<DktDerivatives, 3> k_corner_derivatives{
+            dkt_derivatives({1.0, 0.0, 0.0}), dkt_derivatives({0.0, 1.0, 0.0}),
+            dkt_derivatives({0.0, 0.0, 1.0})};
         for (std::size_t i = 0; i < 3; ++i)
-            corner[i] = dkt_corner(k_n_xi[i], k_n_eta[i], cb, cc, ce, x2, x3, y3, inv_two_area);
+            corner[i] = dkt_curvature(k_corner_derivatives[i], sides, x2, x3, y3, inv_two_area);
     }
     std::array<std::array<T, 3>, 3> kappa_corner, m_corner;
     for (std::size_t i = 0; i < 3; ++i) {
         for (std::size_t r = 0; r < 3; ++r) {
-            const auto& row = corner[i].b[r];
+            const auto& row = corner[i][r];
             kappa_corner[i][r] = row[0] * th[0] + row[1] * th[1] + row[2] * th[2] + row[3] * th[3] +
                                  row[4] * th[4] + row[5] * th[5];
             m_corner[i][r] = T(0.0);
@@ -283,10 +168,7 @@ template <class T, class ReturnMapping = NoReturnMapping, class PointUpdate = El
     MaskOf<T> any_yielding = !valid && valid;          // no lane
     for (std::size_t g = 0, point = 0; g < sec.inplane.size(); ++g) {
         const TrianglePoint& ip = sec.inplane[g];
-        std::array<T, 3> d_kappa;
-        for (std::size_t r = 0; r < 3; ++r)
-            d_kappa[r] = ip.L[0] * kappa_corner[0][r] + ip.L[1] * kappa_corner[1][r] +
-                         ip.L[2] * kappa_corner[2][r];
+        const std::array<T, 3> d_kappa = interpolate(ip.L, kappa_corner);
         for (std::size_t k = 0; k < nk; ++k, ++point) {
             const T z = sec.through[k].zeta * half_h;
             const std::array<T, 3> de{d_eps_m[0] + z * d_kappa[0], d_eps_m[1] + z * d_kappa[1],
@@ -315,14 +197,8 @@ template <class T, class ReturnMapping = NoReturnMapping, class PointUpdate = El
             const T half_p2 = 0.5 * (xs * xs * (1.0 / 6.0) + 0.5 * xd * xd + 2.0 * x12 * x12);
             const T k2 = yield->third_k2[point];
             MaskOf<T> inside = (half_p2 - k2 <= yield->tolerance * k2);
-            if (yield->rate) {  // effective_strain_rate of j2_plastic.cpp, filtered (§7.4 a)
-                T rate = 0.0;
-                if (yield->dt > 0) {
-                    const T e12 = 0.5 * de[2];
-                    const T q = de[0] * de[0] + de[1] * de[1] + de[0] * de[1] + e12 * e12;
-                    rate = sqrt(max(T(0.0), q)) *
-                           ((2.0 / std::sqrt(3.0)) / yield->dt);  // a scalar division
-                }
+            if (yield->rate) {  // the filtered rate (§7.4 a)
+                const T rate = effective_strain_rate(de, yield->dt);
                 const T new_rate = yield->rate_filter * rate +
                                    (1.0 - yield->rate_filter) * yield->strain_rate[point];
                 yield->new_strain_rate[point] = new_rate;
@@ -359,10 +235,7 @@ template <class T, class ReturnMapping = NoReturnMapping, class PointUpdate = El
     for (std::size_t r = 0; r < 3; ++r) out.membrane_force[r] = out.bending_moment[r] = T(0.0);
     for (std::size_t g = 0, point = 0; g < sec.inplane.size(); ++g) {
         const TrianglePoint& ip = sec.inplane[g];
-        std::array<T, 3> d_kappa;
-        for (std::size_t r = 0; r < 3; ++r)
-            d_kappa[r] = ip.L[0] * kappa_corner[0][r] + ip.L[1] * kappa_corner[1][r] +
-                         ip.L[2] * kappa_corner[2][r];
+        const std::array<T, 3> d_kappa = interpolate(ip.L, kappa_corner);
         std::array<T, 3> n_g{T(0.0), T(0.0), T(0.0)}, m_g{T(0.0), T(0.0), T(0.0)};
         T work_g = 0.0, plastic_g = 0.0;
         for (std::size_t k = 0; k < nk; ++k, ++point) {
@@ -417,18 +290,14 @@ template <class T, class ReturnMapping = NoReturnMapping, class PointUpdate = El
     }
 
     // ---- §3.3 membrane, §4.5 bending and §4.6 out-of-plane nodal loads ----
-    std::array<T, 6> f_m, m_b;
-    for (std::size_t i = 0; i < 3; ++i) {
-        f_m[2 * i] = bx[i] * n_weighted[0] + cy[i] * n_weighted[2];
-        f_m[2 * i + 1] = cy[i] * n_weighted[1] + bx[i] * n_weighted[2];
-    }
+    std::array<T, 6> f_m = cst_nodal_forces(cst, n_weighted), m_b;
     if (smoothed)  // the rest goes to the neighbours (solver/shell_elements.cpp)
         for (T& f : f_m) f *= smoothed->own_share;
     for (std::size_t q = 0; q < 6; ++q) {
         T sum = 0.0;
         for (std::size_t i = 0; i < 3; ++i)
-            sum += corner[i].b[0][q] * m_corner[i][0] + corner[i].b[1][q] * m_corner[i][1] +
-                   corner[i].b[2][q] * m_corner[i][2];
+            sum += corner[i][0][q] * m_corner[i][0] + corner[i][1][q] * m_corner[i][1] +
+                   corner[i][2][q] * m_corner[i][2];
         m_b[q] = sum;
     }
     // eq. 4.6b: the moments the particles take, less their part about each drill axis
@@ -473,67 +342,12 @@ template <class T, class ReturnMapping = NoReturnMapping>
     const TriangleMotion<T>& m, const ElasticSectionConstants& sec, const T& thickness, T* stress,
     Real viscous_rate, const YieldSurfaces<T>* yield = nullptr,
     const ReturnMapping& return_mapping = {}) {
-    using namespace block_detail;
     LocalTriangle<T> local;  // filled in place: a copy of its packs costs the kernel a few per cent
-    // ---- §2 reverse motion (reverse_motion.cpp, series branches) ----
-    const V3<T> a2 = m.base[1] - m.base[0], a3 = m.base[2] - m.base[0];
-    const V3<T> r2 = m.current[1] - m.current[0], r3 = m.current[2] - m.current[0];
-    const V3<T> na_raw = cross(a2, a3), n_raw = cross(r2, r3);
-    const T lmax2 = max(max(squared_norm(a2), squared_norm(a3)), squared_norm(a3 - a2));
-    const T na_norm = sqrt(squared_norm(na_raw)), n_norm = sqrt(squared_norm(n_raw));
-    const T inv_na_norm = 1.0 / na_norm;
-    const V3<T> na = inv_na_norm * na_raw, n = divide(n_raw, n_norm);
-    local.area = 0.5 * na_norm;
-    const T area_ratio = n_norm * inv_na_norm;
-    const T normal_cosine = dot(na, n);
-    MaskOf<T> valid = (na_norm > 1e-12 * lmax2) && (n_norm > 1e-12 * lmax2) &&
-                      (normal_cosine > 0.0) && (area_ratio > 0.5) && (area_ratio < 2.0);
-    const M3<T> r_op = minimal_rotation(na, n);  // §2.2
-    const V3<T> r2p = transpose_times(r_op, r2), r3p = transpose_times(r_op, r3);
-    const T ip_y = dot(na, cross(a2, r2p)), ip_x = dot(a2, r2p);  // §2.3
-    valid = valid && (ip_x > 0.0) && (abs(ip_y) < 0.01 * ip_x);
-    const T t = ip_y / ip_x, tt = t * t;
-    const T theta_ip = t * (1.0 - tt * (1.0 / 3.0 - tt * (1.0 / 5.0 - tt * (1.0 / 7.0))));
-    const V3<T> phi_ip = theta_ip * na;
-    const T phi_ip2 = squared_norm(phi_ip);
-    valid = valid && (phi_ip2 < 1e-4);
-    const M3<T> r_ip = rotation_matrix_series(phi_ip, phi_ip2);
-    const V3<T> r2pp = transpose_times(r_ip, r2p), r3pp = transpose_times(r_ip, r3p);
-    const T x2 = local.x2 = sqrt(squared_norm(a2));  // §2.5
-    const T inv_x2 = local.inv_x2 = 1.0 / x2;
-    const V3<T> ex = inv_x2 * a2, ez = na, ey = cross(ez, ex);
-    local.x3 = dot(ex, a3);
-    local.y3 = dot(ey, a3);
-    const V3<T> d2 = r2pp - a2, d3 = r3pp - a3;  // §2.4
-    local.ux = {T(0.0), dot(ex, d2), dot(ex, d3)};
-    local.uy = {T(0.0), dot(ey, d2), dot(ey, d3)};
-    const M3<T> r_r = r_op * r_ip;
-    // eq. 2.6c: each node's rotation about its drill axis d_i is the element's rigid one
-    const V3<T> omega_r = rotation_vector_series(r_r, valid);
-    std::array<T, 6>& th = local.th;  // [thx1 thy1 thx2 thy2 thx3 thy3], §2.6
-    std::array<V3<T>, 3>& drill_local =
-        local.drill_local;  // the drill axes in the local frame (eq. 4.6b)
-    for (std::size_t i = 0; i < 3; ++i) {
-        const V3<T>& d = m.drill_axis[i];
-        drill_local[i] = V3<T>{dot(ex, d), dot(ey, d), dot(ez, d)};
-        const V3<T> dtheta = m.dtheta[i] + dot(omega_r - m.dtheta[i], d) * d;
-        const T dth2 = squared_norm(dtheta);
-        valid = valid && (dth2 < 1e-4);
-        const M3<T> rel = transpose_times(r_r, rotation_matrix_series(dtheta, dth2));
-        const V3<T> phi = rotation_vector_series(rel, valid);  // eq. 2.6b
-        th[2 * i] = dot(ex, phi);
-        th[2 * i + 1] = dot(ey, phi);
-    }
-    const M3<T> t_a{{ex, ey, ez}};
-    local.frame_current = times_transpose(t_a, r_r);  // §2.7
-    // current L_c (§6.4), the same operations as characteristic_length in
-    // solver/element_time_steps.cpp
-    const T lmax2_current = max(max(squared_norm(r2), squared_norm(m.current[2] - m.current[1])),
-                                squared_norm(m.current[0] - m.current[2]));
-    const T characteristic_length = n_norm / sqrt(lmax2_current);
+    PathElementChecks<T> checks;
+    const MaskOf<T> valid = path_element<SeriesRotations>(m, local, checks);  // §2
     ElasticTriangleLoads<T> out = local_triangle_loads(local, valid, sec, thickness, stress,
                                                        viscous_rate, yield, return_mapping);
-    out.characteristic_length = characteristic_length;
+    out.characteristic_length = checks.characteristic_length;
     return out;
 }
 

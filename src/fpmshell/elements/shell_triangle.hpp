@@ -76,21 +76,6 @@ ShellTriangleLoads shell_triangle_loads(const ReversedTriangle& rt, const ShellR
     sec.inplane = rule.inplane;
     sec.through = rule.through;
     sec.bending = rule.bending;
-    LocalTriangle<Real> e;
-    e.x2 = rt.x2;
-    e.x3 = rt.x3;
-    e.y3 = rt.y3;
-    e.inv_x2 = 1.0 / rt.x2;
-    e.area = rt.area;
-    for (std::size_t i = 0; i < 3; ++i) {
-        e.ux[i] = rt.u[i].x();
-        e.uy[i] = rt.u[i].y();
-        e.th[2 * i] = rt.theta[i].x();
-        e.th[2 * i + 1] = rt.theta[i].y();
-        e.drill_local[i] = {rt.drill_local[i].x(), rt.drill_local[i].y(), rt.drill_local[i].z()};
-        const auto row = rt.frame_current.row(static_cast<Eigen::Index>(i));
-        e.frame_current.row[i] = {row(0), row(1), row(2)};
-    }
     std::array<Real, 3 * k_max_block_points> stress;
     for (std::size_t p = 0; p < points.size(); ++p)
         for (std::size_t r = 0; r < 3; ++r)
@@ -109,8 +94,8 @@ ShellTriangleLoads shell_triangle_loads(const ReversedTriangle& rt, const ShellR
         smoothed.own_share = own_share;
     }
     const ElasticTriangleLoads<Real> loads = local_triangle_loads<Real>(
-        e, true, sec, thickness > 0 ? thickness : rule.thickness, stress.data(), viscous_rate,
-        nullptr, NoReturnMapping{}, update, smoothed_membrane ? &smoothed : nullptr);
+        rt.local, true, sec, thickness > 0 ? thickness : rule.thickness, stress.data(),
+        viscous_rate, nullptr, NoReturnMapping{}, update, smoothed_membrane ? &smoothed : nullptr);
     ShellTriangleLoads out;
     for (std::size_t i = 0; i < 3; ++i) {
         out.force[i] = Vec3(loads.force[i].x, loads.force[i].y, loads.force[i].z);

@@ -5,13 +5,6 @@
 
 namespace fpmshell {
 
-Real effective_strain_rate(const Voigt3& d_eps, Real dt) {
-    if (!(dt > 0)) return 0;
-    const Real e11 = d_eps(0), e22 = d_eps(1), e12 = 0.5 * d_eps(2);
-    return (2.0 / std::sqrt(3.0)) *
-           std::sqrt(std::max(Real{0}, e11 * e11 + e22 * e22 + e11 * e22 + e12 * e12)) / dt;
-}
-
 J2Plastic::J2Plastic(Real youngs_modulus, Real poisson_ratio, const FlowStress& flow,
                      const RateFactor& rate, Real hardening_mix)
     : e_(youngs_modulus), nu_(poisson_ratio), flow_(flow), rate_(rate), beta_(hardening_mix) {
@@ -41,7 +34,8 @@ void J2Plastic::update(const MaterialPoint& old_state, const Voigt3& d_eps, Real
     Real rate = old_state.strain_rate;
     Real r = 1;
     if (rate_.active()) {
-        rate = k_rate_filter * effective_strain_rate(d_eps, dt) + (1.0 - k_rate_filter) * rate;
+        rate = k_rate_filter * effective_strain_rate<Real>({d_eps(0), d_eps(1), d_eps(2)}, dt) +
+               (1.0 - k_rate_filter) * rate;
         r = rate_.value(rate);  // frozen during the return (§7.4 option a)
     }
     const J2PointState<Real> old{

@@ -7,6 +7,7 @@
 #include "fpmshell/materials/flow_stress.hpp"
 #include "fpmshell/materials/j2_return_mapping.hpp"
 #include "fpmshell/materials/material_point.hpp"
+#include "fpmshell/materials/strain_rate.hpp"
 
 namespace fpmshell {
 
@@ -95,9 +96,5 @@ private:
     Real beta_;
     J2ReturnConstants constants_;
 };
-
-/// Effective total strain rate of a plane-stress increment (§7.4 option a, incompressible
-/// estimate, engineering shear in, tensor shear inside).
-[[nodiscard]] Real effective_strain_rate(const Voigt3& d_eps, Real dt);
 
 }  // namespace fpmshell

@@ -7,6 +7,7 @@
 #include <utility>
 
 #include "fpmshell/elements/bending_time_step.hpp"
+#include "fpmshell/elements/path_element.hpp"
 #include "fpmshell/elements/triangle_shape.hpp"
 
 namespace fpmshell {
@@ -39,10 +40,7 @@ std::array<Vec3, 3> corners_of(const std::array<Index, 3>& t, const std::vector<
 }  // namespace
 
 Real characteristic_length(const Vec3& p0, const Vec3& p1, const Vec3& p2) {
-    const Real two_area = (p1 - p0).cross(p2 - p0).norm();
-    const Real lmax = std::sqrt(
-        std::max({(p1 - p0).squaredNorm(), (p2 - p1).squaredNorm(), (p0 - p2).squaredNorm()}));
-    return two_area / lmax;  // §6.4, L_c = 2A / l_max
+    return characteristic_length(to_v3(p0), to_v3(p1), to_v3(p2));  // path_element.hpp, §6.4
 }
 
 ElementTimeSteps::ElementTimeSteps(const Model& model, const MeshTopology& topology,

@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "fpmshell/core/chunked_loop.hpp"
+#include "fpmshell/elements/cst_membrane.hpp"
 #include "fpmshell/elements/membrane_smoothing.hpp"
 #include "fpmshell/io/restart_archive.hpp"
 
@@ -156,14 +157,14 @@ void ShellElements::reverse_all_elements(const ParticleState& s, [[maybe_unused]
     for (Index e = 0; e < ne; ++e) {
         const std::size_t ue = static_cast<std::size_t>(e);
         reversed_[ue] = reverse_element(ue, s);
-        const ReversedTriangle& rt = reversed_[ue];
-        if (rt.degenerate) {
+        const LocalTriangle<Real>& t = reversed_[ue].local;
+        if (!reversed_[ue].checks.within_step_bounds) {  // the run fails at this element
             cst_strain_[ue].setZero();
             continue;
         }
-        Eigen::Matrix<Real, 6, 1> u_vec;
-        for (int i = 0; i < 3; ++i) u_vec.segment<2>(2 * i) = rt.u[static_cast<std::size_t>(i)];
-        cst_strain_[ue] = membrane_b(TriangleShape(rt.x2, rt.x3, rt.y3)) * u_vec;  // §3.1
+        const std::array<Real, 3> strain =
+            cst_strain(cst_gradients(t.x2, t.x3, t.y3, 1.0 / (t.x2 * t.y3)), t.ux, t.uy);  // §3.1
+        cst_strain_[ue] = Voigt3(strain[0], strain[1], strain[2]);
     }
 }
 
@@ -172,15 +173,17 @@ void ShellElements::reverse_all_elements(const ParticleState& s, [[maybe_unused]
 // neighbour's unfolded into this frame), or this element's own on a side without a smooth
 // neighbour. Area weights keep the patch test.
 ShellElements::SmoothedStrain ShellElements::smoothed_strain(std::size_t ue,
-                                                             const ReversedTriangle& rt) const {
+                                                             const LocalTriangle<Real>& rt) const {
     SmoothedStrain sm;
     sm.own_share = 0;
     for (std::size_t i = 0; i < 3; ++i) {
         const std::size_t side = 3 * ue + i;
         const Index n = topology_->side_neighbour[side];
-        const ReversedTriangle* rn = n >= 0 ? &reversed_[static_cast<std::size_t>(n)] : nullptr;
-        if (rn && !rn->degenerate &&
-            rn->frame_current.row(2).dot(rt.frame_current.row(2)) >= k_smooth_cosine) {
+        const LocalTriangle<Real>* rn =
+            n >= 0 && reversed_[static_cast<std::size_t>(n)].checks.within_step_bounds
+                ? &reversed_[static_cast<std::size_t>(n)].local
+                : nullptr;
+        if (rn && dot(rn->frame_current.row[2], rt.frame_current.row[2]) >= k_smooth_cosine) {
             // the shared side runs from corner (i+1) to corner (i+2) here, from corner na to
             // corner nb in the neighbour (model/mesh_topology.hpp)
             const int na = topology_->side_neighbour_corner[2 * side];
@@ -203,7 +206,7 @@ ShellElements::SmoothedStrain ShellElements::smoothed_strain(std::size_t ue,
 
 // The neighbours' share of the membrane forces: A_e w_n B_n^T T^T N, in the neighbour's frame,
 // turned forward with it (§5).
-void ShellElements::add_neighbour_loads(std::size_t ue, const ReversedTriangle& rt,
+void ShellElements::add_neighbour_loads(std::size_t ue, const LocalTriangle<Real>& rt,
                                         const SmoothedStrain& sm,
                                         const Voigt3& membrane_resultant) {
     constexpr auto w = static_cast<std::size_t>(k_lanes);
@@ -211,21 +214,21 @@ void ShellElements::add_neighbour_loads(std::size_t ue, const ReversedTriangle& 
     for (std::size_t i = 0; i < 3; ++i) {
         if (sm.side_weight[i] == 0) continue;
         const std::size_t n = static_cast<std::size_t>(topology_->side_neighbour[3 * ue + i]);
-        const ReversedTriangle& rn = reversed_[n];
-        const Voigt3 n_there = sm.to_here[i].transpose() * membrane_resultant;
-        const Eigen::Matrix<Real, 6, 1> f_local =
-            (rt.area * sm.side_weight[i]) *
-            (membrane_b(TriangleShape(rn.x2, rn.x3, rn.y3)).transpose() * n_there);
-        const Mat3 to_global = rn.frame_current.transpose();
-        for (int k = 0; k < 3; ++k) {
-            const Vec3 f = to_global * Vec3(f_local(2 * k), f_local(2 * k + 1), 0.0);
+        const LocalTriangle<Real>& rn = reversed_[n].local;
+        const Voigt3 n_there =
+            (rt.area * sm.side_weight[i]) * (sm.to_here[i].transpose() * membrane_resultant);
+        const std::array<Real, 6> f_local =
+            cst_nodal_forces(cst_gradients(rn.x2, rn.x3, rn.y3, 1.0 / (rn.x2 * rn.y3)),
+                             {n_there(0), n_there(1), n_there(2)});  // §3.3
+        for (std::size_t k = 0; k < 3; ++k) {
+            const V3<Real> f = transpose_times(rn.frame_current,
+                                               V3<Real>{f_local[2 * k], f_local[2 * k + 1], 0.0});
             const Index p = tri_[n][static_cast<std::size_t>(k)];
             std::size_t slot = 3 + i;  // the node across side i
             for (std::size_t j = 0; j < 3; ++j)
                 if (tri_[ue][j] == p) slot = j;
             const std::size_t at = assembly_.slot_offset(ue, slot);
-            for (std::size_t c = 0; c < 3; ++c)
-                slots[at + c * w] += f(static_cast<Eigen::Index>(c));
+            for (std::size_t c = 0; c < 3; ++c) slots[at + c * w] += component(f, c);
         }
     }
 }
@@ -234,7 +237,7 @@ ShellElements::ElementTotals ShellElements::compute_element(Index e, ParticleSta
                                                             Real viscous_rate, Real dt) {
     const std::size_t ue = static_cast<std::size_t>(e);
     const ReversedTriangle rt = smoothed_membrane_ ? reversed_[ue] : reverse_element(ue, s);
-    const Real lc = current_length(e, s.x);  // once per element and step
+    const Real lc = rt.checks.characteristic_length;  // §6.4, once per element and step
     time_steps_.refresh(e, tri_[ue], s.x, lc);
     ElementTotals totals;
     totals.dt = time_steps_.critical_dt(e, lc);
@@ -249,11 +252,11 @@ ShellElements::ElementTotals ShellElements::compute_element(Index e, ParticleSta
             slots[at + c * w] = 0;
     // A tilt over 90 deg or an area change by a factor 2 within one step is no deformation a
     // stable step can produce: the run has diverged (theory.md §2.8).
-    if (rt.degenerate || rt.normal_cosine < 0 || !(rt.area_ratio > 0.5 && rt.area_ratio < 2.0)) {
+    if (!rt.checks.within_step_bounds) {
         totals.failed = e;
         return totals;
     }
-    const SmoothedStrain sm = smoothed_membrane_ ? smoothed_strain(ue, rt) : SmoothedStrain{};
+    const SmoothedStrain sm = smoothed_membrane_ ? smoothed_strain(ue, rt.local) : SmoothedStrain{};
     const ShellTriangleLoads loads = groups_[static_cast<std::size_t>(section_[ue])]->element_loads(
         place_of(ue), rt, viscous_rate, dt, thickness_[ue],
         smoothed_membrane_ ? &sm.strain : nullptr, sm.own_share);
@@ -265,7 +268,7 @@ ShellElements::ElementTotals ShellElements::compute_element(Index e, ParticleSta
             slots[at + (3 + c) * w] = loads.moment[i](static_cast<Eigen::Index>(c));
         }
     }
-    if (smoothed_membrane_) add_neighbour_loads(ue, rt, sm, loads.membrane_resultant);
+    if (smoothed_membrane_) add_neighbour_loads(ue, rt.local, sm, loads.membrane_resultant);
     totals.strain_work = loads.strain_work;
     totals.damping_work = loads.damping_work;
     totals.plastic_work = loads.plastic_work;

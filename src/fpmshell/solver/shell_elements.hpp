@@ -103,9 +103,10 @@ private:
     /// Smoothed membrane, first pass: every element's path element and CST strain increment.
     void reverse_all_elements(const ParticleState& s, bool parallel);
     /// The smoothed membrane strain of element e from its neighbours' CST strains.
-    [[nodiscard]] SmoothedStrain smoothed_strain(std::size_t e, const ReversedTriangle& rt) const;
+    [[nodiscard]] SmoothedStrain smoothed_strain(std::size_t e,
+                                                 const LocalTriangle<Real>& rt) const;
     /// Adds the neighbours' share of element e's membrane forces to its slots across the sides.
-    void add_neighbour_loads(std::size_t e, const ReversedTriangle& rt, const SmoothedStrain& sm,
+    void add_neighbour_loads(std::size_t e, const LocalTriangle<Real>& rt, const SmoothedStrain& sm,
                              const Voigt3& n);
     /// One element by the general (scalar) code; its totals: see ElementTotals.
     [[nodiscard]] ElementTotals compute_element(Index e, ParticleState& s, Real viscous_rate,

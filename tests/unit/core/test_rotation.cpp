@@ -28,7 +28,7 @@ TEST(Rotation, ExpLogRoundTripAllAngles) {
 
 TEST(Rotation, MinimalRotationMapsAToB) {
     const Vec3 a = Vec3(1, 2, 3).normalized(), b = Vec3(-2, 0.5, 1).normalized();
-    const Mat3 r = minimal_rotation(a, b);
+    const Mat3 r = to_mat3(minimal_rotation(to_v3(a), to_v3(b)));
     EXPECT_LT((r * a - b).norm(), 1e-14);
     // Its axis is a x b: a x b is left unchanged (round-off).
     const Vec3 axis = a.cross(b);

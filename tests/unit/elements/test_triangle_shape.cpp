@@ -8,24 +8,27 @@
 #include <Eigen/Dense>
 #include <random>
 
+#include "fpmshell/elements/cst_membrane.hpp"
 #include "fpmshell/elements/quadrature.hpp"
 #include "fpmshell/elements/triangle_shape.hpp"
 
 using namespace fpmshell;
 
 TEST(Membrane, LinearFieldGivesExactConstantStrain) {
-    const TriangleShape s(1.7, 0.4, 1.1);
-    // u = a + G x: strain [G00, G11, G01 + G10].
+    const Real x2 = 1.7, x3 = 0.4, y3 = 1.1;
+    const std::array<Real, 3> x{0.0, x2, x3}, y{0.0, 0.0, y3};
+    // u = a + G x: strain [G00, G11, G01 + G10]; the deformation displacements are taken
+    // relative to node 1 (u_1 = 0, theory.md §2.4).
     const Real g00 = 0.3, g01 = -0.2, g10 = 0.7, g11 = -0.4;
-    Eigen::Matrix<Real, 6, 1> u;
-    for (int i = 0; i < 3; ++i) {
-        u(2 * i) = 0.1 + g00 * s.x[i] + g01 * s.y[i];
-        u(2 * i + 1) = -0.3 + g10 * s.x[i] + g11 * s.y[i];
+    std::array<Real, 3> ux, uy;
+    for (std::size_t i = 0; i < 3; ++i) {
+        ux[i] = g00 * x[i] + g01 * y[i];
+        uy[i] = g10 * x[i] + g11 * y[i];
     }
-    const Voigt3 eps = membrane_b(s) * u;
-    EXPECT_NEAR(eps(0), g00, 1e-14);  // exact in exact arithmetic: round-off only
-    EXPECT_NEAR(eps(1), g11, 1e-14);
-    EXPECT_NEAR(eps(2), g01 + g10, 1e-14);
+    const std::array<Real, 3> eps = cst_strain(cst_gradients(x2, x3, y3, 1.0 / (x2 * y3)), ux, uy);
+    EXPECT_NEAR(eps[0], g00, 1e-14);  // exact in exact arithmetic: round-off only
+    EXPECT_NEAR(eps[1], g11, 1e-14);
+    EXPECT_NEAR(eps[2], g01 + g10, 1e-14);
 }
 
 namespace {

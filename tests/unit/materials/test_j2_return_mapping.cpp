@@ -187,8 +187,9 @@ TEST(J2ReturnMapping, UpdateIsTheScalarReturnAtTheFilteredRate) {
     const Real dt = 1e-6;
     MaterialPoint q;
     mat.update(p, d_eps, dt, q);
-    const Real rate = J2Plastic::k_rate_filter * effective_strain_rate(d_eps, dt) +
-                      (1 - J2Plastic::k_rate_filter) * 300.0;
+    const Real rate =
+        J2Plastic::k_rate_filter * effective_strain_rate<Real>({d_eps(0), d_eps(1), d_eps(2)}, dt) +
+        (1 - J2Plastic::k_rate_filter) * 300.0;
     const J2Return<Real> ref = j2_return_mapping(
         mat.return_constants(),
         J2PointState<Real>{
