@@ -1,11 +1,14 @@
 // The rotary inertia shares of control.rotary_inertia (elements/lumped_inertia.hpp, theory.md
 // §6.2) against the formulas written out here: option B (Kennedy, Belytschko & Lin), Abaqus's
 // factor R = [16 + (3 L^2 / 4 h^2)^4]^(1/4) (eq. 6.2a) and OpenRadioss's A/4.5 + h^2/12
-// (eq. 6.2b); the masses are the same for all.
+// (eq. 6.2b); the masses are the same for all; the bending step of thick elements stays below a
+// limit however large the inertia.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
+#include "fpmshell/elements/bending_time_step.hpp"
 #include "fpmshell/elements/lumped_inertia.hpp"
 
 using namespace fpmshell;
@@ -60,4 +63,36 @@ TEST(RotaryInertia, ThinRightTrianglesAbaqusMatchesOptionBAndRadiossIsLarger) {
     EXPECT_NEAR(a / b, 1.0, 4e-3);
     EXPECT_NEAR(r / b, (area / 4.5 + h * h / 12) / (area / 8 + h * h / 12), 1e-14);
     EXPECT_GT(r / b, 1.7);
+}
+
+TEST(RotaryInertia, TheBendingStepOfThickElementsIsBoundedWhateverTheInertia) {
+    // theory.md §6.2: the square tube's elements (steel, h = 3 mm, right triangles with legs
+    // 3.33 x 6.25 mm and 1.67 x 3.125 mm), bending step / membrane step L_c / c (§6.4) with
+    // option B, eq. 6.2a, eq. 6.2b and J -> infinity; within 0.005 of the figures quoted there
+    // (their last digit)
+    struct Case {
+        Real x, y, option_b, abaqus, radioss, limit;
+    };
+    const Real e = 210e9, nu = 0.3, rho = 7850, h = 3e-3;
+    for (const Case& c : {Case{3.333e-3, 6.25e-3, 0.86, 0.79, 0.95, 1.25},
+                          Case{1.667e-3, 3.125e-3, 0.51, 0.53, 0.52, 0.63}}) {
+        const TriangleShape shape(c.x, 0.0, c.y);
+        Mat3 d;
+        d << 1, nu, 0, nu, 1, 0, 0, 0, (1 - nu) / 2;
+        d *= e / (1 - nu * nu) * h * h * h / 12;
+        const Real area = 0.5 * c.x * c.y;
+        const Real membrane =
+            2 * area / std::hypot(c.x, c.y) / std::sqrt(e / (rho * (1 - nu * nu)));
+        auto ratio = [&](RotaryInertia kind, Real inertia_factor) {
+            const NodeInertiaShare s = node_inertia_share(kind, rho, h, area, std::min(c.x, c.y));
+            return bending_critical_dt(BendingKernel::Dkt, shape, d, s.mass,
+                                       inertia_factor * s.inertia) /
+                   membrane;
+        };
+        EXPECT_NEAR(ratio(RotaryInertia::Belytschko, 1), c.option_b, 0.005) << c.x;
+        EXPECT_NEAR(ratio(RotaryInertia::Abaqus, 1), c.abaqus, 0.005) << c.x;
+        EXPECT_NEAR(ratio(RotaryInertia::Radioss, 1), c.radioss, 0.005) << c.x;
+        EXPECT_NEAR(ratio(RotaryInertia::Belytschko, 1e6), c.limit, 0.005) << c.x;
+        EXPECT_LT(ratio(RotaryInertia::Belytschko, 1e12), c.limit + 0.005) << c.x;
+    }
 }
