@@ -185,6 +185,54 @@ ok = (code == 1 and "energy balance error" in out and "step" in out and "particl
 check("energy-balance stop exits 1 and names step, particle and element", ok,
       "exit %d: %s" % (code, out))
 
+# Rotary inertia and mass scaling (control.rotary_inertia, control.mass_scaling): bad values
+# name the file, the line and the key; a run with a target step above the stable one adds
+# mass, logs it, warns past added_mass_limit, reports it in summary.json and energy.csv, and
+# takes the target step.
+CONTROL = "control: {end_time: 1.0e-4}"
+expect_invalid("bad_rotary_inertia", BASE.replace(CONTROL, "control: {end_time: 1.0e-4, rotary_inertia: lsdyna}"),
+               ["bad_rotary_inertia.yaml:11", "control.rotary_inertia", "radioss"])
+expect_invalid("bad_mass_scaling_step", BASE.replace(
+    CONTROL, "control: {end_time: 1.0e-4, mass_scaling: {time_step: -1.0e-6}}"),
+    ["bad_mass_scaling_step.yaml:11", "control.mass_scaling.time_step"])
+expect_invalid("mass_scaling_without_step", BASE.replace(
+    CONTROL, "control: {end_time: 1.0e-4, mass_scaling: {added_mass_limit: 0.1}}"),
+    ["mass_scaling_without_step.yaml:11", "control.mass_scaling.time_step"])
+expect_invalid("bad_added_mass_limit", BASE.replace(
+    CONTROL, "control: {end_time: 1.0e-4, mass_scaling: {time_step: 1.0e-6, added_mass_limit: -1}}"),
+    ["bad_added_mass_limit.yaml:11", "control.mass_scaling.added_mass_limit"])
+expect_invalid("mass_scaling_in_relaxation", BASE.replace(
+    CONTROL, "control: {end_time: 1.0e-4, mode: relaxation, mass_scaling: {time_step: 1.0e-6}}"),
+    ["mass_scaling_in_relaxation.yaml:11", "control.mass_scaling", "dynamic"])
+scaled = write("scaled.yaml", BASE.replace(
+    CONTROL, "control: {end_time: 1.0e-3, rotary_inertia: radioss,\n"
+             "          mass_scaling: {time_step: 6.0e-5, added_mass_limit: 0.5}}"))
+code, out = fpm("check", scaled)
+check("check reports the added mass", code == 0 and "added mass" in out
+      and "stable time step 6e-05" in out, out)
+sres = os.path.join(WORK, "scaled")
+code, out = fpm("run", scaled, "-o", sres, "--quiet", "--threads", "1")
+check("a mass-scaled run exits 0", code == 0, out)
+if code == 0:
+    log = open(os.path.join(sres, "log.txt")).read()
+    check("the added mass is logged, with a warning past the limit",
+          "mass scaling to time step 6e-05: added mass" in log
+          and "warning: mass scaling adds" in log and "sections.0" in log, log)
+    s = json.load(open(os.path.join(sres, "summary.json")))
+    ms = s.get("mass_scaling", {})
+    ok = (ms.get("time_step") == 6e-5 and ms.get("added_mass", 0) > 0.5 * ms.get("physical_mass", 1)
+          and len(ms.get("sections", [])) == 1 and ms["sections"][0]["added_mass"] == ms["added_mass"])
+    check("summary.json reports the added mass per section", ok, str(s))
+    # the run's step is the target: end_time / steps, the last step shortened to end there
+    check("the run takes the target step", s["steps"] == 17, str(s["steps"]))
+    rows = open(os.path.join(sres, "energy.csv")).read().strip().splitlines()
+    check("energy.csv has the added_mass column", rows[0].endswith(",energy_error,added_mass")
+          and abs(float(rows[-1].split(",")[-1]) - ms.get("added_mass", 0)) <= 1e-9 * ms.get("added_mass", 1),
+          rows[0] + " / " + rows[-1])
+code, out = fpm("run", good, "-o", os.path.join(WORK, "unscaled"), "--quiet", "--threads", "1")
+log = open(os.path.join(WORK, "unscaled", "log.txt")).read() if code == 0 else out
+check("without mass scaling no added mass is logged", code == 0 and "mass scaling" not in log, log)
+
 # Rigid bodies and contact: a plate dropped on a heavy plane body; the body's histories, the
 # contact column of energy.csv and the contact block of summary.json; `check` lists them.
 drop = write("drop.yaml", BASE.replace("boundary:\n  - {nodes: boundary, fix: all}\n", "")

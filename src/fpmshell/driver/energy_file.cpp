@@ -1,21 +1,34 @@
 // energy.csv: the solver's energy balance per sample.
 #include "fpmshell/driver/energy_file.hpp"
 
+#include <string>
+
 #include "fpmshell/solver/explicit_solver.hpp"
 
 namespace fpmshell {
+namespace {
 
-EnergyFile::EnergyFile(const std::filesystem::path& dir)
-    : CsvResultFile(dir / "energy.csv",
-                    {"time", "kinetic", "internal", "plastic", "external_work", "damping",
-                     "contact", "energy_error"},
-                    "energy", "energy.csv columns") {}
+std::vector<std::string> energy_columns(bool mass_scaling) {
+    std::vector<std::string> columns = {"time",          "kinetic", "internal", "plastic",
+                                        "external_work", "damping", "contact",  "energy_error"};
+    if (mass_scaling) columns.emplace_back("added_mass");
+    return columns;
+}
+
+}  // namespace
+
+EnergyFile::EnergyFile(const Model& model, const std::filesystem::path& dir)
+    : CsvResultFile(dir / "energy.csv", energy_columns(model.control.mass_scaling.time_step > 0),
+                    "energy", "energy.csv columns"),
+      mass_scaling_(model.control.mass_scaling.time_step > 0) {}
 
 std::vector<Real> EnergyFile::row(const ExplicitSolver& solver, Real time,
                                   std::optional<bool> /*converged*/) const {
     const EnergyBalance& e = solver.energy();
-    return {time,      e.kinetic, e.internal, e.plastic, e.external_work,
-            e.damping, e.contact, e.error()};
+    std::vector<Real> values = {time,      e.kinetic, e.internal, e.plastic, e.external_work,
+                                e.damping, e.contact, e.error()};
+    if (mass_scaling_) values.push_back(solver.added_mass().total_added());
+    return values;
 }
 
 }  // namespace fpmshell

@@ -5,16 +5,19 @@
 #include <vector>
 
 #include "fpmshell/driver/csv_result_file.hpp"
+#include "fpmshell/model/model.hpp"
 
 namespace fpmshell {
 
 class EnergyFile final : public CsvResultFile {
 public:
-    explicit EnergyFile(const std::filesystem::path& dir);
+    /// With control.mass_scaling the file has the column added_mass after the energies.
+    EnergyFile(const Model& model, const std::filesystem::path& dir);
 
 private:
     [[nodiscard]] std::vector<Real> row(const ExplicitSolver& solver, Real time,
                                         std::optional<bool> converged) const override;
+    bool mass_scaling_;
 };
 
 }  // namespace fpmshell

@@ -18,6 +18,9 @@ std::string model_summary(const Model& model) {
     out += fmt::format("particles  {}\nelements   {}\n", model.n_particles(), model.n_elements());
     const auto& m = solver.state().mass;
     out += fmt::format("total mass {:.6g}\n", std::accumulate(m.begin(), m.end(), 0.0));
+    if (model.control.mass_scaling.time_step > 0)
+        out += fmt::format("added mass {:.6g} (mass scaling to time step {:.6g}; in the total)\n",
+                           solver.added_mass().total_added(), model.control.mass_scaling.time_step);
     out += "node sets ";
     for (const auto& [name, nodes] : model.node_sets)
         out += fmt::format(" {}({})", name, nodes.size());

@@ -174,7 +174,7 @@ void add_result_files(ObserverList& out, const Model& model, const RunOptions& o
                       const OutputSchedule& schedule) {
     out.add<ProgressReport>(log, model.control.end_time, opt.quiet);
     const HistoryFile& history = out.add<HistoryFile>(model, opt.output_dir);
-    out.add<EnergyFile>(opt.output_dir);
+    out.add<EnergyFile>(model, opt.output_dir);
     out.add<FieldSeries>(model, opt.output_dir, standard_fields(),
                          [&log](const std::string& line) { log.line(line); });
     out.add<SummaryFile>(model, opt.output_dir, history);
@@ -182,6 +182,25 @@ void add_result_files(ObserverList& out, const Model& model, const RunOptions& o
         out.add<RestartFiles>(opt.output_dir / k_restart_file, opt.restart_every, schedule, out);
     for (OutputObserver* o : opt.observers) out.attach(*o);
     out.add<ClosingReport>(log, opt.output_dir);
+}
+
+/// control.mass_scaling (§6.10): the mass added, and a warning for every section past
+/// added_mass_limit.
+void report_mass_scaling(const Model& model, const AddedMass& added, LogFile& log) {
+    const MassScaling& ms = model.control.mass_scaling;
+    if (!(ms.time_step > 0)) return;
+    const Real physical = added.total_physical();
+    log.print("mass scaling to time step {:.6g}: added mass {:.6g} ({:.3g} % of {:.6g})",
+              ms.time_step, added.total_added(),
+              physical > 0 ? 100.0 * added.total_added() / physical : 0.0, physical);
+    for (const Index s : added.over_limit(model)) {
+        const auto us = static_cast<std::size_t>(s);
+        log.print(
+            "warning: mass scaling adds {:.6g} to sections.{}, {:.3g} % of its mass {:.6g}, "
+            "more than control.mass_scaling.added_mass_limit ({:.3g} %)",
+            added.added[us], s, 100.0 * added.added[us] / added.physical[us], added.physical[us],
+            100.0 * ms.added_mass_limit);
+    }
 }
 
 bool all_finite(const std::vector<Vec3>& v) {
@@ -207,6 +226,7 @@ int run_model(const Model& model, const RunOptions& opt) {
               model.n_particles(), model.n_elements(), threads);
 
     ExplicitSolver solver(model);
+    report_mass_scaling(model, solver.added_mass(), log);
     OutputSchedule schedule(model);
     const std::filesystem::path restart_path = opt.output_dir / k_restart_file;
     ObserverList out;

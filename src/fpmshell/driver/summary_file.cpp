@@ -88,6 +88,25 @@ JsonValue rigid_bodies_json(const Model& model, const ExplicitSolver& solver) {
     return bodies;
 }
 
+/// control.mass_scaling (§6.10): the target step and the mass added, in all and per section.
+JsonValue mass_scaling_json(const Model& model, const AddedMass& added) {
+    JsonValue mj = JsonValue::object();
+    mj.set("time_step", model.control.mass_scaling.time_step);
+    mj.set("added_mass", added.total_added());
+    mj.set("physical_mass", added.total_physical());
+    mj.set("added_mass_limit", model.control.mass_scaling.added_mass_limit);
+    JsonValue sections = JsonValue::array();
+    for (std::size_t s = 0; s < added.added.size(); ++s) {
+        JsonValue sj = JsonValue::object();
+        sj.set("section", static_cast<Index>(s));
+        sj.set("added_mass", added.added[s]);
+        sj.set("physical_mass", added.physical[s]);
+        sections.push_back(sj);
+    }
+    mj.set("sections", sections);
+    return mj;
+}
+
 }  // namespace
 
 SummaryFile::SummaryFile(const Model& model, std::filesystem::path dir, const HistoryFile& history)
@@ -112,6 +131,8 @@ void SummaryFile::finish(const ExplicitSolver& solver, const RunEnd& end) {
     if (const ContactStatistics* c = solver.contact_statistics())
         j.set("contact", contact_json(*c, wall));
     if (!model_.rigid_bodies.empty()) j.set("rigid_bodies", rigid_bodies_json(model_, solver));
+    if (model_.control.mass_scaling.time_step > 0)
+        j.set("mass_scaling", mass_scaling_json(model_, solver.added_mass()));
     j.set("version", FPMSHELL_VERSION);
     j.set("exit_reason", end.reason);
     write_json_file(dir_ / "summary.json", j);

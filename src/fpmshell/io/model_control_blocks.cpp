@@ -40,12 +40,25 @@ void rigid_quantity(const Model& model, const YamlValue& q, HistoryRequest& req)
                                 join_names(bodies) + " (e.g. rigid_" + bodies.front() + "_uz)");
 }
 
+/// control.mass_scaling: {time_step: > 0, added_mass_limit: >= 0}, dynamic runs only.
+void read_mass_scaling(const YamlValue& v, Control& c) {
+    const YamlMap m = v.map({"time_step", "added_mass_limit"});
+    c.mass_scaling.time_step =
+        m.at("time_step", "the target time step of the run, a number > 0").positive();
+    c.mass_scaling.added_mass_limit =
+        m.non_negative_or("added_mass_limit", c.mass_scaling.added_mass_limit);
+    if (c.mode == SolutionMode::Relaxation)
+        v.fail(
+            "mass scaling is for dynamic runs; relaxation (control.mode) has no time to "
+            "scale");
+}
+
 }  // namespace
 
 void read_control(const YamlValue& v, Model& model) {
-    const YamlMap m =
-        v.map({"end_time", "time_step_scale", "mode", "tolerance", "bending", "energy_error_limit",
-               "max_relaxation_iterations", "thickness_update", "membrane", "end_when_body_stops"});
+    const YamlMap m = v.map({"end_time", "time_step_scale", "mode", "tolerance", "bending",
+                             "energy_error_limit", "max_relaxation_iterations", "thickness_update",
+                             "membrane", "end_when_body_stops", "rotary_inertia", "mass_scaling"});
     Control& c = model.control;
     c.end_time = m.at("end_time", "the duration of the run, a number > 0").positive();
     if (const auto s = m.find("time_step_scale")) {
@@ -67,6 +80,12 @@ void read_control(const YamlValue& v, Model& model) {
                      : MembraneKernel::Cst;
     if (const auto s = m.find("max_relaxation_iterations"))
         c.max_relaxation_iterations = static_cast<long>(s->integer(1, 1'000'000'000'000LL));
+    const std::string inertia =
+        m.choice_or("rotary_inertia", {"belytschko", "abaqus", "radioss"}, "belytschko");
+    c.rotary_inertia = inertia == "abaqus"    ? RotaryInertia::Abaqus
+                       : inertia == "radioss" ? RotaryInertia::Radioss
+                                              : RotaryInertia::Belytschko;
+    if (const auto s = m.find("mass_scaling")) read_mass_scaling(*s, c);
 }
 
 void read_end_when_body_stops(const YamlValue& v, Model& model) {

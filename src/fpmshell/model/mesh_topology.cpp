@@ -87,8 +87,11 @@ MeshTopology::MeshTopology(const Model& model) {
     particle_inertia.assign(np, 0.0);
     element_node_mass.resize(ne);
     element_node_inertia.resize(ne);
+    element_gyration2.resize(ne);
+    corner_particle.resize(3 * ne);
     for (std::size_t e = 0; e < ne; ++e) {
         const auto& t = tri[e];
+        for (std::size_t k = 0; k < 3; ++k) corner_particle[3 * e + k] = t[k];
         const Section& sec = model.sections[static_cast<std::size_t>(model.element_section[e])];
         const Material& mat = model.materials[static_cast<std::size_t>(sec.material)];
         const Vec3& p0 = model.nodes[static_cast<std::size_t>(t[0])];
@@ -96,19 +99,41 @@ MeshTopology::MeshTopology(const Model& model) {
         const Vec3& p2 = model.nodes[static_cast<std::size_t>(t[2])];
         const Vec3 cr = (p1 - p0).cross(p2 - p0);
         const Real area = 0.5 * cr.norm();
-        const NodeInertiaShare share = lumped_node_share(mat.density, sec.thickness, area);
+        const Real shortest_edge = std::sqrt(
+            std::min({(p1 - p0).squaredNorm(), (p2 - p1).squaredNorm(), (p0 - p2).squaredNorm()}));
+        const NodeInertiaShare share = node_inertia_share(model.control.rotary_inertia, mat.density,
+                                                          sec.thickness, area, shortest_edge);
         element_node_mass[e] = share.mass;
         element_node_inertia[e] = share.inertia;
-        for (const Index p : t) {
-            particle_mass[static_cast<std::size_t>(p)] += share.mass;
-            // The inertia is summed by a fused multiply-add (share.mass * gyration2 + sum,
-            // rounded once): the compiler contracts `sum += share.inertia` so wherever the
-            // share is computed beside the sum (-ffp-contract=fast, GCC's default for C++), and
-            // the particle inertias must be the same bits wherever they are made.
+        element_gyration2[e] = share.gyration2;
+    }
+    sum_particle_shares();
+}
+
+void MeshTopology::sum_particle_shares() {
+    particle_mass.assign(particle_mass.size(), 0.0);
+    particle_inertia.assign(particle_inertia.size(), 0.0);
+    for (std::size_t e = 0; e < element_node_mass.size(); ++e) {
+        const std::size_t first = static_cast<std::size_t>(3 * e);
+        for (std::size_t k = first; k < first + 3; ++k) {
+            const Index p = corner_particle[k];
+            particle_mass[static_cast<std::size_t>(p)] += element_node_mass[e];
+            // The inertia is summed by a fused multiply-add (mass * gyration2 + sum, rounded
+            // once): the compiler contracts `sum += share.inertia` so wherever the share is
+            // computed beside the sum (-ffp-contract=fast, GCC's default for C++), and the
+            // particle inertias must be the same bits wherever they are made.
             auto& inertia = particle_inertia[static_cast<std::size_t>(p)];
-            inertia = std::fma(share.mass, share.gyration2, inertia);
+            inertia = std::fma(element_node_mass[e], element_gyration2[e], inertia);
         }
     }
+}
+
+void MeshTopology::scale_element_masses(const std::vector<Real>& factor) {
+    for (std::size_t e = 0; e < element_node_mass.size(); ++e) {
+        element_node_mass[e] *= factor[e];
+        element_node_inertia[e] = element_node_mass[e] * element_gyration2[e];
+    }
+    sum_particle_shares();
 }
 
 }  // namespace fpmshell

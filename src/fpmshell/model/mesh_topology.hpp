@@ -47,11 +47,21 @@ struct MeshTopology {
     /// side's ends, corner (i + 1) % 3 and corner (i + 2) % 3 of e (-1: no neighbour).
     std::vector<int> side_neighbour_corner;
 
-    /// §6.1 lumped mass and §6.2 option B rotary inertia of every particle: the shares of its
-    /// elements (lumped_node_share) summed in element order.
+    /// Multiplies each element's mass and inertia shares by factor[e] (>= 1, §6.10 mass
+    /// scaling) and sums the particles' masses and inertias again.
+    void scale_element_masses(const std::vector<Real>& factor);
+
+    /// §6.1 lumped mass and §6.2 rotary inertia (control.rotary_inertia) of every particle:
+    /// the shares of its elements (node_inertia_share) summed in element order.
     std::vector<Real> particle_mass, particle_inertia;
-    /// Per element, its share at each of its corners (the same for the three).
-    std::vector<Real> element_node_mass, element_node_inertia;
+    /// Per element, its share at each of its corners (the same for the three), and the
+    /// share's inertia / mass.
+    std::vector<Real> element_node_mass, element_node_inertia, element_gyration2;
+
+private:
+    /// particle_mass and particle_inertia from the element shares, in element order.
+    void sum_particle_shares();
+    std::vector<Index> corner_particle;  ///< 3 e + i: corner i of element e
 };
 
 }  // namespace fpmshell

@@ -103,6 +103,16 @@ struct Damping {
 enum class SolutionMode { Dynamic, Relaxation };
 enum class BendingKernel { Bciz, Dkt };
 enum class MembraneKernel { Cst, Smoothed };
+/// How a triangle shares its rotary inertia among its corners (theory.md §6.2):
+/// Belytschko (Kennedy, Belytschko & Lin 1986), Abaqus/Explicit, OpenRadioss.
+enum class RotaryInertia { Belytschko, Abaqus, Radioss };
+
+/// control.mass_scaling (theory.md §6.10, LS-DYNA DT2MS < 0, OpenRadioss /DT/NODA/CST): the
+/// elements whose step is below time_step get added mass and inertia at set-up.
+struct MassScaling {
+    Real time_step = 0;            ///< the target step of the run (0: no mass scaling)
+    Real added_mass_limit = 0.05;  ///< a warning past this fraction of a section's mass
+};
 
 struct Control {
     Real end_time = 0;
@@ -122,6 +132,8 @@ struct Control {
     /// control.end_when_body_stops: the run ends once this rigid body has stopped, i.e. its
     /// velocity along its initial velocity is no longer positive (-1: run to end_time only)
     Index end_body = -1;
+    RotaryInertia rotary_inertia = RotaryInertia::Belytschko;
+    MassScaling mass_scaling;
 };
 
 /// One entry of `rigid_bodies`: a rigid impactor with a plane face (theory.md §8.3). It moves

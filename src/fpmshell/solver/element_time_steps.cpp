@@ -109,7 +109,8 @@ Real ElementTimeSteps::bending_ratio(Index e, const std::array<Vec3, 3>& corners
     const std::size_t ue = static_cast<std::size_t>(e);
     const auto& [p0, p1, p2] = corners;
     const std::size_t sec = static_cast<std::size_t>(section_[ue]);
-    const Real membrane_dt = characteristic_length(p0, p1, p2) / wave_speed_[sec];
+    Real membrane_dt = characteristic_length(p0, p1, p2) / wave_speed_[sec];
+    if (!mass_scale_.empty()) membrane_dt *= mass_scale_[ue];  // §6.10, as node_mass_
     // only min(1, bending_dt / membrane_dt) is used (critical_dt): a bound suffices where the
     // bending modes are surely slower than the membrane
     const Real bending_dt =
@@ -123,6 +124,35 @@ void ElementTimeSteps::reevaluate(Index e, const std::array<Index, 3>& t,
     const std::size_t ue = static_cast<std::size_t>(e);
     bend_ratio_[ue] = bending_ratio(e, corners_of(t, x));
     bend_lc_[ue] = lc;
+}
+
+// §6.10 eq. 6.10a: with the stiffness damping a_s of §6.4 the critical step is
+// sqrt(dt^2 + a_s^2) - a_s for the undamped step dt, so the undamped step that reaches `step`
+// is sqrt((step + a_s)^2 - a_s^2); the undamped step grows by sqrt(f_e).
+std::vector<Real> ElementTimeSteps::mass_scaling_factors(
+    Real step, const std::vector<std::array<Index, 3>>& triangles,
+    const std::vector<Vec3>& x) const {
+    const Real a = stiffness_damping_;
+    const Real needed = std::sqrt((step + a) * (step + a) - a * a);
+    std::vector<Real> factor(triangles.size(), 1.0);
+    for (std::size_t e = 0; e < triangles.size(); ++e) {
+        const auto [p0, p1, p2] = corners_of(triangles[e], x);
+        Real dt = characteristic_length(p0, p1, p2) /
+                  wave_speed_[static_cast<std::size_t>(section_[e])] *
+                  std::min(Real{1}, bend_ratio_[e]);
+        if (!mass_scale_.empty()) dt *= mass_scale_[e];
+        if (dt > 0 && dt < needed) factor[e] = (needed / dt) * (needed / dt);
+    }
+    return factor;
+}
+
+void ElementTimeSteps::scale_masses(const std::vector<Real>& factor) {
+    if (mass_scale_.empty()) mass_scale_.assign(factor.size(), 1.0);
+    for (std::size_t e = 0; e < factor.size(); ++e) {
+        node_mass_[e] *= factor[e];
+        node_inertia_[e] *= factor[e];
+        mass_scale_[e] *= std::sqrt(factor[e]);
+    }
 }
 
 }  // namespace fpmshell

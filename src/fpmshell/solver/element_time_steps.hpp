@@ -34,6 +34,7 @@ public:
         // slower to integrate, bend_ratio_ < 1 (bending_time_step.hpp).
         Real dt = lc / wave_speed_[static_cast<std::size_t>(section_[ue])] *
                   std::min(Real{1}, bend_ratio_[ue]);
+        if (!mass_scale_.empty()) dt *= mass_scale_[ue];  // §6.10: sqrt(f_e)
         if (stiffness_damping_ > 0) {  // §6.4: dt <= (2/w)(sqrt(1+xi^2) - xi), w = 2/dt
             const Real xi = stiffness_damping_ / dt;
             dt *= std::sqrt(1.0 + xi * xi) - xi;
@@ -53,6 +54,16 @@ public:
     /// re-evaluated (a 9x9 eigenproblem) when L_c has changed by more than this fraction since
     /// the last evaluation, which bounds the ratio's staleness to a few per cent of the step.
     static constexpr Real k_bending_ratio_drift = 0.05;
+
+    /// §6.10 mass scaling: per element, the factor f_e >= 1 on its mass and inertia shares
+    /// that raises its critical step at the corners x to at least `step` (eq. 6.10a; 1 where
+    /// it is there already).
+    [[nodiscard]] std::vector<Real> mass_scaling_factors(
+        Real step, const std::vector<std::array<Index, 3>>& triangles,
+        const std::vector<Vec3>& x) const;
+    /// Multiplies element e's mass and inertia shares by factor[e] (mass_scaling_factors): its
+    /// membrane and bending steps grow by sqrt(factor[e]), the bending ratio stays.
+    void scale_masses(const std::vector<Real>& factor);
 
     /// The state carried from step to step (restart files): per element, the bending ratio and
     /// the L_c it was evaluated at.
@@ -76,6 +87,7 @@ private:
     Real stiffness_damping_ = 0;
     std::vector<Real> bend_ratio_;  ///< per element, bending critical step / (L_c / c)
     std::vector<Real> bend_lc_;     ///< per element, the L_c bend_ratio_ was evaluated at
+    std::vector<Real> mass_scale_;  ///< per element, sqrt(f_e) of §6.10 (empty: no scaling)
 };
 
 }  // namespace fpmshell

@@ -26,7 +26,9 @@ ExplicitSolver::ExplicitSolver(const Model& model)
     s_.x0 = model.nodes;
     s_.x = model.nodes;
     s_.x_prev = model.nodes;
-    // §6.1 lumped mass, §6.2 option B rotary inertia (summed by the topology).
+    // §6.10 mass scaling of the elements below the target step, then the §6.1 lumped mass
+    // and §6.2 rotary inertia (summed by the topology).
+    added_mass_ = apply_mass_scaling(model, topology_, elements_.time_steps());
     s_.mass = topology_.particle_mass;
     s_.inertia = topology_.particle_inertia;
     // §1.3 the area-weighted normal; the mean edge length.

@@ -17,6 +17,7 @@
 #include "fpmshell/solver/cycle_policy.hpp"
 #include "fpmshell/solver/energy_balance.hpp"
 #include "fpmshell/solver/external_loads.hpp"
+#include "fpmshell/solver/mass_scaling.hpp"
 #include "fpmshell/solver/particle_state.hpp"
 #include "fpmshell/solver/shell_elements.hpp"
 
@@ -55,6 +56,8 @@ public:
     [[nodiscard]] const ShellElements& elements() const { return elements_; }
     [[nodiscard]] const EnergyBalance& energy() const { return energy_; }
     [[nodiscard]] const Model& model() const { return model_; }
+    /// The mass added by control.mass_scaling per section (§6.10; zero without it).
+    [[nodiscard]] const AddedMass& added_mass() const { return added_mass_; }
     /// a^n = (v^{n+1/2} - v^{n-1/2}) / dt_n of the last cycle.
     [[nodiscard]] Vec3 acceleration(Index p) const;
     /// Rigid bodies (model order): displacement at t_{n+1}, velocity v^{n+1/2}, contact force at
@@ -154,6 +157,7 @@ private:
     const Model& model_;
     MeshTopology topology_;
     ShellElements elements_;
+    AddedMass added_mass_;
     ParticleState s_;
     EnergyBalance energy_;
     std::unique_ptr<BoundaryConditions> bc_;  ///< built once the kink particles are known

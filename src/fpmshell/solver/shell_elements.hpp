@@ -50,6 +50,9 @@ public:
         return time_steps_.critical_dt(e, current_length(e, x));
     }
 
+    /// The elements' critical steps (§6.4), for the set-up's mass scaling (§6.10).
+    [[nodiscard]] ElementTimeSteps& time_steps() { return time_steps_; }
+
     [[nodiscard]] Index size() const { return static_cast<Index>(tri_.size()); }
     /// Membrane force N and bending moment M of element e averaged over the element, in its
     /// local frame, at the end of the last step.

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "fpmshell/core/errors.hpp"
@@ -748,6 +749,48 @@ TEST(ModelReader, AppliesSetOverrides) {
     expect_override_error({"control.end_time=[1"}, "control.end_time", "not valid YAML");
     expect_override_error({"control..end_time=1"}, "control..end_time", "empty component");
     expect_override_error({"mesh.nx=0"}, "mesh.nx", "whole number");
+}
+
+// control.rotary_inertia and control.mass_scaling (theory.md §6.2, §6.10): the words and the
+// numbers land in Control, the defaults are the option-B inertia and no mass scaling, and a bad
+// value names the file, the line and the key.
+TEST(ModelReader, ReadsRotaryInertiaAndMassScaling) {
+    const TempDir dir;
+    const Model plain = read_model(dir.write("plain.yaml", k_base));
+    EXPECT_EQ(plain.control.rotary_inertia, RotaryInertia::Belytschko);
+    EXPECT_EQ(plain.control.mass_scaling.time_step, 0.0);
+    EXPECT_EQ(plain.control.mass_scaling.added_mass_limit, 0.05);
+    for (const auto& [word, kind] : {std::pair{"belytschko", RotaryInertia::Belytschko},
+                                     std::pair{"abaqus", RotaryInertia::Abaqus},
+                                     std::pair{"radioss", RotaryInertia::Radioss}}) {
+        const Model m = read_model(
+            dir.write(std::string(word) + ".yaml", k_base + "  rotary_inertia: " + word + "\n"));
+        EXPECT_EQ(m.control.rotary_inertia, kind) << word;
+    }
+    const Model scaled = read_model(dir.write(
+        "scaled.yaml", k_base + "  mass_scaling: {time_step: 2.5e-7, added_mass_limit: 0.1}\n"));
+    EXPECT_EQ(scaled.control.mass_scaling.time_step, 2.5e-7);
+    EXPECT_EQ(scaled.control.mass_scaling.added_mass_limit, 0.1);
+    const Model overridden =
+        read_model(dir.write("overridden.yaml", k_base + "  mass_scaling: {time_step: 2.5e-7}\n"),
+                   {"control.mass_scaling.time_step=1e-6"});
+    EXPECT_EQ(overridden.control.mass_scaling.time_step, 1e-6);
+
+    expect_error(k_base + "  rotary_inertia: lsdyna\n", 9, "control.rotary_inertia",
+                 "expected one of belytschko, abaqus, radioss");
+    expect_error(k_base + "  mass_scaling: {time_step: -1.0e-7}\n", 9,
+                 "control.mass_scaling.time_step", "greater than 0");
+    expect_error(k_base + "  mass_scaling: {time_step: 0}\n", 9, "control.mass_scaling.time_step",
+                 "greater than 0");
+    expect_error(k_base + "  mass_scaling: {added_mass_limit: 0.1}\n", 9,
+                 "control.mass_scaling.time_step", "is required but missing");
+    expect_error(k_base + "  mass_scaling: {time_step: 1.0e-7, added_mass_limit: -0.1}\n", 9,
+                 "control.mass_scaling.added_mass_limit", "");
+    expect_error(k_base + "  mass_scaling: {time_step: 1.0e-7, dt2ms: 1}\n", 9,
+                 "control.mass_scaling.dt2ms", "unknown key");
+    expect_error(k_base + "  mass_scaling: 1.0e-7\n", 9, "control.mass_scaling", "expected a map");
+    expect_error(k_base + "  mode: relaxation\n  mass_scaling: {time_step: 1.0e-7}\n", 10,
+                 "control.mass_scaling", "dynamic runs");
 }
 
 }  // namespace
