@@ -10,8 +10,16 @@
 
 namespace fpmshell {
 
+/// sigma_f and sigma_f' at one plastic strain per lane of T (core/simd.hpp).
+template <class T>
+struct FlowValue {
+    T value, slope;
+};
+
 struct FlowStress {
     enum class Kind { Linear, JohnsonCook };
+    /// Johnson-Cook with n < 1: below this plastic strain the slope is taken at it.
+    static constexpr Real k_slope_floor = 1e-6;
     Kind kind = Kind::Linear;
     Real yield_stress = 0;  ///< linear: sigma_y0
     Real hardening = 0;  ///< linear: plastic modulus H = E E_t / (E - E_t); 0 = perfectly plastic
@@ -26,7 +34,7 @@ struct FlowStress {
     /// does not rely on the slope there, theory.md §7.3 step 3).
     [[nodiscard]] Real slope(Real alpha) const {
         if (kind == Kind::Linear) return hardening;
-        const Real at = std::max(alpha, Real{1e-6});
+        const Real at = std::max(alpha, k_slope_floor);
         return b * n * std::pow(at, n - 1.0);
     }
     struct ValueSlope {
@@ -36,7 +44,7 @@ struct FlowStress {
     /// loop needs both at every iterate). Equal to value() and slope() to rounding.
     [[nodiscard]] ValueSlope value_and_slope(Real alpha) const {
         if (kind == Kind::Linear) return {yield_stress + hardening * alpha, hardening};
-        if (!(alpha >= 1e-6)) return {value(alpha), slope(alpha)};
+        if (!(alpha >= k_slope_floor)) return {value(alpha), slope(alpha)};
         const Real p = std::pow(alpha, n - 1.0);  // alpha^n = alpha alpha^(n-1)
         return {a + b * alpha * p, b * n * p};
     }

@@ -12,23 +12,9 @@
 
 #include "fpmshell/core/simd.hpp"
 #include "fpmshell/materials/flow_stress.hpp"
+#include "fpmshell/materials/j2_consistency.hpp"
 
 namespace fpmshell {
-
-/// Newton iterations before the return mapping gives up and keeps its last iterate.
-inline constexpr int k_max_return_iterations = 100;
-
-/// What the return mapping needs of a J2 material (J2Plastic holds one).
-struct J2ReturnConstants {
-    Real c11 = 0, c12 = 0,
-         c33 = 0;        ///< plane-stress C: [[c11, c12, 0], [c12, c11, 0], [0, 0, c33]]
-    Real bulk_term = 0;  ///< E / (3 (1 - nu)), the A1 coefficient of §7.3 without H_k
-    Real two_g = 0;      ///< 2 G, the A2 coefficient without H_k
-    Real beta = 1;       ///< hardening mix of §7.2: 1 isotropic, 0 kinematic
-    Real tolerance = 0;  ///< J2Plastic::k_yield_tolerance
-    FlowStress flow;
-    Real flow_radius0 = 0;  ///< sigma_f(0)
-};
 
 /// The history of one point per lane, as in MaterialPoint (the filtered strain rate is the
 /// caller's: it sets the rate factor R, frozen during the return, §7.4 option a).
@@ -43,7 +29,8 @@ template <class T>
 struct J2Return {
     J2PointState<T> state;
     T plastic_work;
-    MaskOf<T> yielded;  ///< lanes whose trial state was outside the yield surface
+    MaskOf<T> yielded;    ///< lanes whose trial state was outside the yield surface
+    int evaluations = 0;  ///< evaluations of the consistency residual (the most of any lane)
 };
 
 namespace j2_detail {
@@ -53,42 +40,6 @@ template <class T>
 [[nodiscard]] FPMSHELL_INLINE T p_norm2(const std::array<T, 3>& x) {
     const T s = x[0] + x[1], d = x[1] - x[0];
     return s * s * (1.0 / 6.0) + 0.5 * d * d + 2.0 * x[2] * x[2];
-}
-
-template <class T>
-struct Radius {
-    T radius;  ///< kappa(alpha) / R = sigma_f(0) + beta (sigma_f(alpha) - sigma_f(0)), §7.4
-    T slope;   ///< sigma_f'(alpha)
-};
-
-/// kappa / R and sigma_f' at alpha on the lanes of `lanes` (the others are left at 0). A linear
-/// curve is pack arithmetic; a Johnson-Cook one takes one power per lane.
-template <class T>
-[[nodiscard]] FPMSHELL_INLINE Radius<T> radius_and_slope(const J2ReturnConstants& c, const T& alpha,
-                                                         const MaskOf<T>& lanes) {
-    const Real f0 = c.flow_radius0;
-    if (c.flow.kind == FlowStress::Kind::Linear)
-        return {f0 + c.beta * ((c.flow.yield_stress + c.flow.hardening * alpha) - f0),
-                T(c.flow.hardening)};
-    Radius<T> out{T(0.0), T(0.0)};
-    for (int l = 0; l < lanes_of<T>; ++l) {
-        if (!lane(lanes, l)) continue;
-        const FlowStress::ValueSlope f = c.flow.value_and_slope(lane(alpha, l));
-        set_lane(out.radius, l, f0 + c.beta * (f.value - f0));
-        set_lane(out.slope, l, f.slope);
-    }
-    return out;
-}
-
-/// sigma_f'(alpha) on the lanes of `lanes`.
-template <class T>
-[[nodiscard]] FPMSHELL_INLINE T flow_slope(const J2ReturnConstants& c, const T& alpha,
-                                           const MaskOf<T>& lanes) {
-    if (c.flow.kind == FlowStress::Kind::Linear) return T(c.flow.hardening);
-    T out = 0.0;
-    for (int l = 0; l < lanes_of<T>; ++l)
-        if (lane(lanes, l)) set_lane(out, l, c.flow.slope(lane(alpha, l)));
-    return out;
 }
 
 }  // namespace j2_detail
@@ -123,68 +74,43 @@ template <class T>
     const MaskOf<T> yielding = out.yielded;
     if (!any_lane(yielding)) return out;
 
-    // 2 constants; H_k frozen at alpha_n (§7.4)
-    const MaskOf<T> slope_unknown = yielding && (flow_slope_n < 0.0);
-    const T slope_n =
-        any_lane(slope_unknown)
-            ? select(slope_unknown, flow_slope(c, alpha_n, slope_unknown), flow_slope_n)
-            : flow_slope_n;
+    // 2 constants; H_k frozen at alpha_n (§7.4); a point that never yielded has the slope of
+    // the flow curve at alpha = 0
+    const T slope_n = select(flow_slope_n < 0.0, T(c.flow_slope0), flow_slope_n);
     const T h_k = (1.0 - c.beta) * r * slope_n;
     const T s_tr = xi_tr[0] + xi_tr[1], d_tr = xi_tr[1] - xi_tr[0];
-    const T a1_sq = s_tr * s_tr * (1.0 / 6.0);                      // A1
-    const T a2_sq = 0.5 * d_tr * d_tr + 2.0 * xi_tr[2] * xi_tr[2];  // A2
-    const T a1 = c.bulk_term + (2.0 / 3.0) * h_k;
-    const T a2 = c.two_g + (2.0 / 3.0) * h_k;
-    const Real sqrt23 = std::sqrt(2.0 / 3.0);
-    const T r_beta = r * c.beta;
+    TrialReturn<T> t;
+    t.a1_sq = s_tr * s_tr * (1.0 / 6.0);                      // A1
+    t.a2_sq = 0.5 * d_tr * d_tr + 2.0 * xi_tr[2] * xi_tr[2];  // A2
+    t.a1 = c.bulk_term + (2.0 / 3.0) * h_k;
+    t.a2 = c.two_g + (2.0 / 3.0) * h_k;
+    const T fbar2_tr = t.a1_sq + t.a2_sq;
+    t.fbar_tr = sqrt(fbar2_tr);
+    t.a_bar = (t.a1_sq * t.a1 + t.a2_sq * t.a2) / fbar2_tr;
+    t.alpha_n = alpha_n;
+    t.r = r;
+    t.kappa_n = kappa_n;
+    t.third_k2 = third_k2;
+    t.flow_radius_n = flow_radius_n;
 
-    // 3 F(dgamma) = f_bar^2 / 2 - kappa(alpha(dgamma))^2 / 3, strictly decreasing; Newton kept
-    // inside a bracket [lo, hi] with bisection as the fallback. The upper end is found only
-    // when needed: Newton from the left of the root of a decreasing F moves right, and the
-    // first iterate past the root closes the bracket.
-    Radius<T> last{flow_radius_n, slope_n};  // the flow curve at the last dgamma evaluated
-    T f = f_tr;                              // F and F' at dgamma = 0 from what is known already
-    T df = -(a1_sq * a1 + a2_sq * a2) -
-           (2.0 / 3.0) * kappa_n * (r_beta * slope_n) * sqrt23 * sqrt(a1_sq + a2_sq);
-    const T first_guess = f_tr / (third_k2 * select(a1 < a2, a1, a2));
-    const Real infinity = std::numeric_limits<Real>::infinity();
-    T lo = 0.0, hi = infinity, dg = 0.0;
-    MaskOf<T> open = yielding;  // lanes still iterating
-    MaskOf<T> converged = !yielding;
-    for (int it = 0; it < k_max_return_iterations; ++it) {
-        if (it > 0) {
-            // q_i = 1 / (1 + a_i dgamma) with one division: the Newton step is a chain of
-            // dependent divisions and square roots, whose latency sets the cost of a return
-            const T u1 = 1.0 + a1 * dg, u2 = 1.0 + a2 * dg;
-            const T inv_u1u2 = 1.0 / (u1 * u2);
-            const T q1 = u2 * inv_u1u2, q2 = u1 * inv_u1u2;
-            const T fb2 = a1_sq * q1 * q1 + a2_sq * q2 * q2;
-            const T fb = sqrt(fb2);
-            const T dfb2 = -2.0 * a1_sq * a1 * q1 * q1 * q1 - 2.0 * a2_sq * a2 * q2 * q2 * q2;
-            const T alpha = alpha_n + sqrt23 * dg * fb;
-            const T dalpha = sqrt23 * (fb + select(fb > 0.0, dg * dfb2 / (2.0 * fb), T(0.0)));
-            const Radius<T> at = radius_and_slope(c, alpha, open);
-            const T kappa = r * at.radius, dkappa = r_beta * at.slope;
-            f = select(open, 0.5 * fb2 - kappa * kappa * (1.0 / 3.0), f);
-            df = select(open, 0.5 * dfb2 - (2.0 / 3.0) * kappa * dkappa * dalpha, df);
-            last.radius = select(open, at.radius, last.radius);
-            last.slope = select(open, at.slope, last.slope);
-        }
-        const MaskOf<T> done = open && (abs(f) < c.tolerance * third_k2);
-        converged = converged || done;
-        open = open && !done;
-        if (!any_lane(open)) break;
-        const MaskOf<T> above = f > 0.0;
-        lo = select(open && above, dg, lo);
-        hi = select(open && !above, dg, hi);
-        T next = select(df < 0.0, dg - f / df, T(-1.0));
-        const T bisect = select(hi < infinity, 0.5 * (lo + hi), max(2.0 * lo, first_guess));
-        next = select((next > lo) && (next < hi), next, bisect);
-        dg = select(open, next, dg);
+    // 3 the consistency condition (§7.3a)
+    const FlowStress& fl = c.flow;
+    Consistency<T> solution;
+    if (fl.kind == FlowStress::Kind::Linear) {
+        solution = solve_for_dgamma(c, t, slope_n, yielding, [&](const T& alpha) {
+            return FlowValue<T>{fl.yield_stress + fl.hardening * alpha, T(fl.hardening)};
+        });
+    } else if (fl.n <= 1.0 && c.beta > 0.0) {
+        solution = solve_for_flow_stress(c, t, yielding);
+    } else {
+        solution = solve_for_dgamma(c, t, slope_n, yielding,
+                                    [&](const T& alpha) { return johnson_cook_curve(c, alpha); });
     }
+    const T dg = solution.dgamma;
+    out.evaluations = solution.evaluations;
 
     // 4 update
-    const T u1 = 1.0 + a1 * dg, u2 = 1.0 + a2 * dg;
+    const T u1 = 1.0 + t.a1 * dg, u2 = 1.0 + t.a2 * dg;
     const T inv_u1u2 = 1.0 / (u1 * u2);
     const T s = s_tr * (u2 * inv_u1u2), d = d_tr * (u1 * inv_u1u2);
     const std::array<T, 3> xi{0.5 * (s - d), 0.5 * (s + d), xi_tr[2] * (u1 * inv_u1u2)};
@@ -194,16 +120,9 @@ template <class T>
         next.back_stress[k] = old.back_stress[k] + hardening_step * xi[k];
         next.stress[k] = next.back_stress[k] + xi[k];
     }
-    next.plastic_strain = alpha_n + sqrt23 * dg * sqrt(p_norm2(xi));
-    // the flow curve at the converged dgamma is at hand (alpha(dgamma) above, to rounding)
-    const MaskOf<T> unconverged = yielding && !converged;
-    if (any_lane(unconverged)) {
-        const Radius<T> at = radius_and_slope(c, next.plastic_strain, unconverged);
-        last.radius = select(unconverged, at.radius, last.radius);
-        last.slope = select(unconverged, at.slope, last.slope);
-    }
-    next.flow_radius = last.radius;
-    next.flow_slope = last.slope;
+    next.plastic_strain = alpha_n + k_sqrt23 * dg * sqrt(p_norm2(xi));
+    next.flow_radius = solution.flow_radius;
+    next.flow_slope = solution.flow_slope;
     // d_eps_p = dgamma P xi (engineering shear). Dissipation by the trapezoidal rule, like the
     // element's strain work: then strain work - plastic work = the exact change of the elastic
     // energy 1/2 sigma C^-1 sigma, never negative whatever the increment.

@@ -1,0 +1,253 @@
+// Step 3 of the plane-stress return mapping (theory.md §7.3): the consistency condition
+// f_bar(dgamma) = sqrt(2/3) kappa(alpha(dgamma)) solved for the plastic multiplier dgamma on the
+// lanes of a scalar type T (core/simd.hpp), by a safeguarded Newton iteration on one of two
+// unknowns (§7.3a):
+// - dgamma itself, for a linear flow curve (and a Johnson-Cook one with n > 1 or without
+//   isotropic hardening, beta = 0);
+// - the flow stress y = sigma_f(alpha_{n+1}), for a Johnson-Cook curve with n <= 1 and
+//   beta > 0, where sigma_f'(alpha) = B n alpha^(n-1) is infinite at alpha = 0 but the inverse
+//   alpha(y) = ((y - A) / B)^(1/n) is smooth.
+// Both iterate on the residual in norm form, Phi = (1 + a_bar dgamma)(f_bar - sqrt(2/3) kappa),
+// nearly linear in dgamma, and stop on the residual of §7.3, |F| < tol kappa_n^2 / 3.
+#pragma once
+
+#include <limits>
+
+#include "fpmshell/core/simd.hpp"
+#include "fpmshell/core/simd_math.hpp"
+#include "fpmshell/materials/flow_stress.hpp"
+
+namespace fpmshell {
+
+/// Newton iterations before the return mapping gives up and keeps its last iterate.
+inline constexpr int k_max_return_iterations = 100;
+
+/// What the return mapping needs of a J2 material (J2Plastic holds one).
+struct J2ReturnConstants {
+    Real c11 = 0, c12 = 0,
+         c33 = 0;        ///< plane-stress C: [[c11, c12, 0], [c12, c11, 0], [0, 0, c33]]
+    Real bulk_term = 0;  ///< E / (3 (1 - nu)), the A1 coefficient of §7.3 without H_k
+    Real two_g = 0;      ///< 2 G, the A2 coefficient without H_k
+    Real beta = 1;       ///< hardening mix of §7.2: 1 isotropic, 0 kinematic
+    Real tolerance = 0;  ///< J2Plastic::k_yield_tolerance
+    FlowStress flow;
+    Real flow_radius0 = 0;  ///< sigma_f(0)
+    Real flow_slope0 = 0;   ///< FlowStress::slope(0) (Johnson-Cook: the slope at alpha = 1e-6)
+};
+
+namespace j2_detail {
+
+inline constexpr Real k_sqrt23 = 0.816496580927726;  // sqrt(2/3)
+
+/// The trial state of the yielding lanes as step 3 needs it (§7.3 steps 1-2).
+template <class T>
+struct TrialReturn {
+    T a1_sq, a2_sq;   ///< A1, A2
+    T a1, a2;         ///< a1, a2 (with H_k)
+    T a_bar;          ///< (A1 a1 + A2 a2) / (A1 + A2): f_bar ~ f_bar_tr / (1 + a_bar dgamma)
+    T fbar_tr;        ///< sqrt(A1 + A2) = f_bar(0)
+    T alpha_n;        ///< alpha_n
+    T r;              ///< the rate factor R
+    T kappa_n;        ///< R kappa(alpha_n) / R = the yield radius at alpha_n
+    T third_k2;       ///< kappa_n^2 / 3, the scale of the convergence test
+    T flow_radius_n;  ///< kappa(alpha_n) / R
+};
+
+/// The solution of step 3 on each lane.
+template <class T>
+struct Consistency {
+    T dgamma;
+    T flow_radius;  ///< kappa / R at the solution, to store (§7.4)
+    T flow_slope;   ///< sigma_f' at the solution, to store (the next step's H_k)
+    MaskOf<T> converged;
+    int evaluations = 0;  ///< evaluations of the residual (the most of any lane)
+};
+
+/// f_bar(dgamma) and f_bar f_bar'(dgamma), where f_bar^2 = A1 / (1 + a1 dgamma)^2 +
+/// A2 / (1 + a2 dgamma)^2: the Newton steps below are written with f_bar' times f_bar, which
+/// needs no division.
+template <class T>
+struct ReturnedNorm {
+    T fbar, fbar_dfbar;
+};
+template <class T>
+[[nodiscard]] FPMSHELL_INLINE ReturnedNorm<T> returned_norm(const TrialReturn<T>& t, const T& dg) {
+    // q_i = 1 / (1 + a_i dgamma) with one division: the iteration is a chain of dependent
+    // divisions, square roots and polynomials, whose latency sets the cost of a return
+    const T u1 = 1.0 + t.a1 * dg, u2 = 1.0 + t.a2 * dg;
+    const T inv_u1u2 = 1.0 / (u1 * u2);
+    const T q1 = u2 * inv_u1u2, q2 = u1 * inv_u1u2;
+    const T c1 = t.a1_sq * q1 * q1, c2 = t.a2_sq * q2 * q2;
+    return {sqrt(c1 + c2), -(c1 * (t.a1 * q1) + c2 * (t.a2 * q2))};
+}
+
+/// An upper bound of dgamma: with kappa >= kappa_n and f_bar <= f_bar_tr / (1 + a_min dgamma),
+/// f_bar reaches sqrt(2/3) kappa before (f_bar_tr / (sqrt(2/3) kappa_n) - 1) / a_min.
+template <class T>
+[[nodiscard]] FPMSHELL_INLINE T dgamma_upper_bound(const TrialReturn<T>& t) {
+    const T g0 = t.fbar_tr - k_sqrt23 * t.kappa_n;
+    return g0 / (k_sqrt23 * t.kappa_n * min(t.a1, t.a2));
+}
+
+/// The Johnson-Cook curve on packs: sigma_f(alpha) and sigma_f'(alpha) as
+/// FlowStress::value_and_slope gives them (the slope at alpha = 1e-6 below it), one power per
+/// lane (two where 0 < alpha < 1e-6).
+template <class T>
+[[nodiscard]] FPMSHELL_INLINE FlowValue<T> johnson_cook_curve(const J2ReturnConstants& c,
+                                                              const T& alpha) {
+    const FlowStress& f = c.flow;
+    const MaskOf<T> small = alpha < FlowStress::k_slope_floor;
+    const T p = vector_pow(max(alpha, T(FlowStress::k_slope_floor)), T(f.n - 1.0));
+    T value = f.a + f.b * alpha * p;  // alpha^n = alpha alpha^(n-1)
+    if (any_lane(small)) {
+        const MaskOf<T> positive = alpha > 0.0;
+        const T tiny = select(small && positive, vector_pow(max(alpha, T(1e-300)), T(f.n)), T(0.0));
+        value = select(small, f.a + f.b * tiny, value);
+    }
+    return {value, select(small, T(c.flow_slope0), f.b * f.n * p)};
+}
+
+/// Step 3 by Newton on dgamma, for a flow curve `curve(alpha) -> {sigma_f, sigma_f'}`:
+///   f_bar(dgamma) as returned_norm, alpha = alpha_n + sqrt(2/3) dgamma f_bar,
+///   kappa = R (sigma_f(0) + beta (sigma_f(alpha) - sigma_f(0))),
+///   Phi = (1 + a_bar dgamma)(f_bar - sqrt(2/3) kappa), Phi' by the chain rule,
+/// from dgamma = 0 (where Phi and Phi' are known from the trial state and the stored slope)
+/// inside the bracket [0, dgamma_upper_bound], bisecting when a Newton iterate leaves it.
+template <class T, class Curve>
+[[nodiscard]] Consistency<T> solve_for_dgamma(const J2ReturnConstants& c, const TrialReturn<T>& t,
+                                              const T& slope_n, const MaskOf<T>& lanes,
+                                              const Curve& curve) {
+    const Real f0 = c.flow_radius0;
+    const T r_beta = t.r * c.beta;
+    Consistency<T> out{T(0.0), t.flow_radius_n, slope_n, !lanes, 0};
+    // Phi and Phi' at dgamma = 0 (f_bar' = -a_bar f_bar_tr there)
+    T g = t.fbar_tr - k_sqrt23 * t.kappa_n;
+    T phi = g;
+    T dphi = -t.a_bar * (k_sqrt23 * t.kappa_n) - (2.0 / 3.0) * r_beta * slope_n * t.fbar_tr;
+    T lo = 0.0, hi = dgamma_upper_bound(t), dg = 0.0;
+    MaskOf<T> open = lanes;
+    for (int it = 0; it < k_max_return_iterations; ++it) {
+        if (it > 0) {
+            const ReturnedNorm<T> n = returned_norm(t, dg);
+            const T alpha = t.alpha_n + k_sqrt23 * dg * n.fbar;
+            const T fbar_dalpha = k_sqrt23 * (n.fbar * n.fbar + dg * n.fbar_dfbar);
+            const FlowValue<T> at = curve(alpha);
+            const T radius = f0 + c.beta * (at.value - f0);
+            const T kappa = t.r * radius;
+            g = n.fbar - k_sqrt23 * kappa;
+            const T f = 0.5 * g * (n.fbar + k_sqrt23 * kappa);  // F of §7.3
+            // Phi and f_bar Phi' (the Newton step is their ratio)
+            phi = (1.0 + t.a_bar * dg) * (g * n.fbar);
+            dphi =
+                t.a_bar * g * n.fbar +
+                (1.0 + t.a_bar * dg) * (n.fbar_dfbar - k_sqrt23 * r_beta * at.slope * fbar_dalpha);
+            out.dgamma = select(open, dg, out.dgamma);
+            out.flow_radius = select(open, radius, out.flow_radius);
+            out.flow_slope = select(open, at.slope, out.flow_slope);
+            out.evaluations = it;
+            const MaskOf<T> done = open && (abs(f) < c.tolerance * t.third_k2);
+            out.converged = out.converged || done;
+            open = open && !done;
+            if (!any_lane(open)) break;
+        }
+        const MaskOf<T> above = phi > 0.0;  // Phi f_bar, the sign of Phi
+        lo = select(open && above, dg, lo);
+        hi = select(open && !above, dg, hi);
+        const T newton = dg - phi / dphi;
+        dg = select(open, select((newton > lo) && (newton < hi), newton, 0.5 * (lo + hi)), dg);
+    }
+    return out;
+}
+
+/// Step 3 for a Johnson-Cook curve with n <= 1 and beta > 0, by Newton on the flow stress
+/// y = sigma_f(alpha_{n+1}) (theory.md §7.3a):
+///   alpha(y) = ((y - A) / B)^(1/n),  kappa(y) = R (A + beta (y - A)),
+///   dgamma(y) = 3/2 (alpha(y) - alpha_n) / kappa(y)   (alpha = alpha_n + sqrt(2/3) dgamma f_bar
+///                                                     with f_bar = sqrt(2/3) kappa),
+///   Phi(y) = (1 + a_bar dgamma)(f_bar(dgamma) - sqrt(2/3) kappa), decreasing in y.
+/// Bracket [y_n, y_hi]: y_n = sigma_f(alpha_n); y_hi = sigma_f(alpha_n + d_alpha_u), d_alpha_u
+/// from dgamma_upper_bound, bounded by the tangent y_n + sigma_f'(alpha_n) d_alpha_u (sigma_f
+/// is concave) and evaluated exactly (one power) where the increment can exceed alpha_n.
+/// Start: the Newton step from y_n (Phi and Phi' there from the trial state), or y_hi if less.
+template <class T>
+[[nodiscard]] Consistency<T> solve_for_flow_stress(const J2ReturnConstants& c,
+                                                   const TrialReturn<T>& t,
+                                                   const MaskOf<T>& lanes) {
+    const FlowStress& fl = c.flow;
+    const Real a = fl.a, inv_b = 1.0 / fl.b, inv_n = 1.0 / fl.n;
+    const T r_beta = t.r * c.beta;
+    const Real infinity = std::numeric_limits<Real>::infinity();
+    Consistency<T> out{T(0.0), t.flow_radius_n, T(c.flow_slope0), !lanes, 0};
+    // y_n: the stored radius is A + beta (y_n - A)
+    const T y_n = c.beta == 1.0 ? t.flow_radius_n : a + (t.flow_radius_n - a) * (1.0 / c.beta);
+    const MaskOf<T> hardened = (t.alpha_n > 0.0) && (y_n > a);
+    // dalpha/dy at y_n = alpha_n / (n (y_n - A)) = 1 / sigma_f'(alpha_n), written as the ratio
+    // alpha_e / (n y_e): at alpha_n = 0 it is 0 for n < 1 and 1 / B for n = 1
+    const T alpha_e = select(hardened, t.alpha_n, T(fl.n == 1.0 ? inv_b : 0.0));
+    const T y_e = select(hardened, y_n - a, T(1.0));
+    // the Newton step from y_n, where dgamma = 0, Phi = g0 and (f_bar' = -a_bar f_bar_tr)
+    // Phi' = -sqrt(2/3) (3/2 a_bar dalpha/dy + R beta)
+    const T g0 = t.fbar_tr - k_sqrt23 * t.kappa_n;
+    const T y_newton =
+        y_n + g0 * (fl.n * y_e) / (k_sqrt23 * (1.5 * t.a_bar * alpha_e + r_beta * (fl.n * y_e)));
+    // the upper end of the bracket: d_alpha <= sqrt(2/3) dgamma_upper_bound f_bar_tr, and the
+    // tangent of the concave curve at alpha_n lies above it
+    const T d_alpha_u = g0 * t.fbar_tr / (t.kappa_n * min(t.a1, t.a2));
+    T y_hi = select(hardened, y_n + (fl.n * y_e) * d_alpha_u / select(hardened, t.alpha_n, T(1.0)),
+                    T(infinity));
+    const MaskOf<T> steep = lanes && (t.alpha_n < d_alpha_u);
+    if (any_lane(steep)) {  // the curve itself, at the tighter bound of f_bar(dgamma_u)
+        const T dg_u = dgamma_upper_bound(t);
+        const T d_alpha = k_sqrt23 * dg_u * returned_norm(t, dg_u).fbar;
+        y_hi = select(steep, min(y_hi, a + fl.b * vector_pow(t.alpha_n + d_alpha, T(fl.n))), y_hi);
+    }
+    T lo = y_n, hi = y_hi;
+    T y = min(y_newton, y_hi);
+    T last_alpha = 0.0, last_excess = 0.0;  // alpha(y) and y - A at the last evaluation
+    MaskOf<T> open = lanes;
+    for (int it = 1; it <= k_max_return_iterations; ++it) {
+        const T excess = max(y - a, T(0.0));
+        const MaskOf<T> positive = excess > 0.0;
+        const T alpha = select(
+            positive, vector_exp(inv_n * vector_log(max(excess * inv_b, T(1e-300)))), T(0.0));
+        const T radius = a + c.beta * (y - a);
+        const T kappa = t.r * radius;
+        // one division for 1 / kappa and 1 / (y - A)
+        const T inv = 1.0 / (select(positive, excess, T(1.0)) * kappa);
+        const T inv_kappa = select(positive, excess, T(1.0)) * inv;
+        const T dalpha =
+            select(positive, alpha * inv_n * (kappa * inv), T(fl.n == 1.0 ? inv_b : 0.0));
+        const T dg = 1.5 * (alpha - t.alpha_n) * inv_kappa;
+        const T ddg = (1.5 * dalpha - dg * r_beta) * inv_kappa;
+        const ReturnedNorm<T> n = returned_norm(t, dg);
+        const T g = n.fbar - k_sqrt23 * kappa;
+        const T f = 0.5 * g * (n.fbar + k_sqrt23 * kappa);  // F of §7.3
+        // Phi f_bar and Phi' f_bar (the Newton step is their ratio)
+        const T phi = (1.0 + t.a_bar * dg) * (g * n.fbar);
+        const T dphi = t.a_bar * ddg * (g * n.fbar) +
+                       (1.0 + t.a_bar * dg) * (n.fbar_dfbar * ddg - k_sqrt23 * r_beta * n.fbar);
+        out.dgamma = select(open, dg, out.dgamma);
+        out.flow_radius = select(open, radius, out.flow_radius);
+        last_alpha = select(open, alpha, last_alpha);
+        last_excess = select(open, excess, last_excess);
+        out.evaluations = it;
+        const MaskOf<T> done = open && (abs(f) < c.tolerance * t.third_k2);
+        out.converged = out.converged || done;
+        open = open && !done;
+        if (!any_lane(open)) break;
+        const MaskOf<T> above = phi > 0.0;
+        lo = select(open && above, y, lo);
+        hi = select(open && !above, y, hi);
+        const T newton = y - phi / dphi;
+        y = select(open, select((newton > lo) && (newton < hi), newton, 0.5 * (lo + hi)), y);
+    }
+    // sigma_f' = B n alpha^(n-1) = n (y - A) / alpha, taken at k_slope_floor below it (FlowStress)
+    const MaskOf<T> floor = last_alpha < FlowStress::k_slope_floor;
+    out.flow_slope = select(lanes && !floor, fl.n * last_excess / select(floor, T(1.0), last_alpha),
+                            out.flow_slope);
+    return out;
+}
+
+}  // namespace j2_detail
+
+}  // namespace fpmshell
