@@ -6,6 +6,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "fpmshell/core/simd.hpp"
+#include "fpmshell/core/simd_math.hpp"
 #include "fpmshell/core/types.hpp"
 
 namespace fpmshell {
@@ -57,14 +59,24 @@ struct RateFactor {
     Real c = 0, reference_rate = 1;  ///< Johnson-Cook: 1 + C ln(max(rate / rate_0, 1))
 
     [[nodiscard]] bool active() const { return kind != Kind::None; }
-    [[nodiscard]] Real value(Real rate) const {
+    /// R(rate) on every lane of T (core/simd.hpp), with the logarithm and power of
+    /// core/simd_math.hpp: the element blocks take a pack of rates at once, and a point computed
+    /// alone gets the same factor as its lane would.
+    template <class T>
+    [[nodiscard]] T value(const T& rate) const {
         switch (kind) {
-            case Kind::CowperSymonds:
-                return rate > 0 ? 1.0 + std::pow(rate / d, 1.0 / q) : 1.0;
-            case Kind::JohnsonCook:  // below the reference rate the factor is 1: no logarithm
-                return rate > reference_rate ? 1.0 + c * std::log(rate / reference_rate) : 1.0;
+            case Kind::CowperSymonds: {
+                const MaskOf<T> moving = rate > 0.0;
+                const T ratio = select(moving, max(rate * (1.0 / d), T(1e-300)), T(1.0));
+                return select(moving, 1.0 + vector_pow(ratio, T(1.0 / q)), T(1.0));
+            }
+            case Kind::JohnsonCook: {  // below the reference rate the factor is 1
+                const MaskOf<T> fast = rate > reference_rate;
+                const T ratio = select(fast, rate * (1.0 / reference_rate), T(1.0));
+                return select(fast, 1.0 + c * vector_log(ratio), T(1.0));
+            }
             default:
-                return 1.0;
+                return T(1.0);
         }
     }
 };
