@@ -32,8 +32,8 @@ struct FlowStress {
         return a + (alpha > 0 ? b * std::pow(alpha, n) : 0.0);
     }
     /// d sigma_f / d alpha; for Johnson-Cook with n < 1 the slope is infinite at alpha = 0:
-    /// it is taken at a small plastic strain instead (the return mapping brackets its root and
-    /// does not rely on the slope there, theory.md §7.3 step 3).
+    /// it is taken at a small plastic strain instead (the return mapping iterates on the flow
+    /// stress there and does not rely on this slope, theory.md §7.3a).
     [[nodiscard]] Real slope(Real alpha) const {
         if (kind == Kind::Linear) return hardening;
         const Real at = std::max(alpha, k_slope_floor);

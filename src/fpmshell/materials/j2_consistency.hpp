@@ -7,7 +7,8 @@
 // - the flow stress y = sigma_f(alpha_{n+1}), for a Johnson-Cook curve with n <= 1 and
 //   beta > 0, where sigma_f'(alpha) = B n alpha^(n-1) is infinite at alpha = 0 but the inverse
 //   alpha(y) = ((y - A) / B)^(1/n) is smooth.
-// Both iterate on the residual in norm form, Phi = (1 + a_bar dgamma)(f_bar - sqrt(2/3) kappa),
+// Both iterate on the residual in norm form, Phi = (1 + a_bar dgamma)(f_bar - sqrt(2/3) kappa)
+// (eq. 7.3a-1),
 // nearly linear in dgamma, and stop on the residual of §7.3, |F| < tol kappa_n^2 / 3.
 #pragma once
 
@@ -57,8 +58,9 @@ struct TrialReturn {
 template <class T>
 struct Consistency {
     T dgamma;
-    T flow_radius;  ///< kappa / R at the solution, to store (§7.4)
-    T flow_slope;   ///< sigma_f' at the solution, to store (the next step's H_k)
+    T q1, q2, fbar;  ///< 1 / (1 + a_i dgamma) and f_bar at dgamma, for step 4
+    T flow_radius;   ///< kappa / R at the solution, to store (§7.4)
+    T flow_slope;    ///< sigma_f' at the solution, to store (the next step's H_k)
     MaskOf<T> converged;
     int evaluations = 0;  ///< evaluations of the residual (the most of any lane)
 };
@@ -69,6 +71,7 @@ struct Consistency {
 template <class T>
 struct ReturnedNorm {
     T fbar, fbar_dfbar;
+    T q1, q2;  ///< 1 / (1 + a_i dgamma)
 };
 template <class T>
 [[nodiscard]] FPMSHELL_INLINE ReturnedNorm<T> returned_norm(const TrialReturn<T>& t, const T& dg) {
@@ -78,11 +81,11 @@ template <class T>
     const T inv_u1u2 = 1.0 / (u1 * u2);
     const T q1 = u2 * inv_u1u2, q2 = u1 * inv_u1u2;
     const T c1 = t.a1_sq * q1 * q1, c2 = t.a2_sq * q2 * q2;
-    return {sqrt(c1 + c2), -(c1 * (t.a1 * q1) + c2 * (t.a2 * q2))};
+    return {sqrt(c1 + c2), -(c1 * (t.a1 * q1) + c2 * (t.a2 * q2)), q1, q2};
 }
 
-/// An upper bound of dgamma: with kappa >= kappa_n and f_bar <= f_bar_tr / (1 + a_min dgamma),
-/// f_bar reaches sqrt(2/3) kappa before (f_bar_tr / (sqrt(2/3) kappa_n) - 1) / a_min.
+/// An upper bound of dgamma (eq. 7.3a-2): with kappa >= kappa_n and f_bar <= f_bar_tr / (1 + a_min
+/// dgamma), f_bar reaches sqrt(2/3) kappa before (f_bar_tr / (sqrt(2/3) kappa_n) - 1) / a_min.
 template <class T>
 [[nodiscard]] FPMSHELL_INLINE T dgamma_upper_bound(const TrialReturn<T>& t) {
     const T g0 = t.fbar_tr - k_sqrt23 * t.kappa_n;
@@ -119,7 +122,7 @@ template <class T, class Curve>
                                               const Curve& curve) {
     const Real f0 = c.flow_radius0;
     const T r_beta = t.r * c.beta;
-    Consistency<T> out{T(0.0), t.flow_radius_n, slope_n, !lanes, 0};
+    Consistency<T> out{T(0.0), T(1.0), T(1.0), t.fbar_tr, t.flow_radius_n, slope_n, !lanes, 0};
     // Phi and Phi' at dgamma = 0 (f_bar' = -a_bar f_bar_tr there)
     T g = t.fbar_tr - k_sqrt23 * t.kappa_n;
     T phi = g;
@@ -142,6 +145,9 @@ template <class T, class Curve>
                 t.a_bar * g * n.fbar +
                 (1.0 + t.a_bar * dg) * (n.fbar_dfbar - k_sqrt23 * r_beta * at.slope * fbar_dalpha);
             out.dgamma = select(open, dg, out.dgamma);
+            out.q1 = select(open, n.q1, out.q1);
+            out.q2 = select(open, n.q2, out.q2);
+            out.fbar = select(open, n.fbar, out.fbar);
             out.flow_radius = select(open, radius, out.flow_radius);
             out.flow_slope = select(open, at.slope, out.flow_slope);
             out.evaluations = it;
@@ -160,7 +166,7 @@ template <class T, class Curve>
 }
 
 /// Step 3 for a Johnson-Cook curve with n <= 1 and beta > 0, by Newton on the flow stress
-/// y = sigma_f(alpha_{n+1}) (theory.md §7.3a):
+/// y = sigma_f(alpha_{n+1}) (theory.md §7.3a, eq. 7.3a-3):
 ///   alpha(y) = ((y - A) / B)^(1/n),  kappa(y) = R (A + beta (y - A)),
 ///   dgamma(y) = 3/2 (alpha(y) - alpha_n) / kappa(y)   (alpha = alpha_n + sqrt(2/3) dgamma f_bar
 ///                                                     with f_bar = sqrt(2/3) kappa),
@@ -177,7 +183,8 @@ template <class T>
     const Real a = fl.a, inv_b = 1.0 / fl.b, inv_n = 1.0 / fl.n;
     const T r_beta = t.r * c.beta;
     const Real infinity = std::numeric_limits<Real>::infinity();
-    Consistency<T> out{T(0.0), t.flow_radius_n, T(c.flow_slope0), !lanes, 0};
+    Consistency<T> out{T(0.0),          T(1.0),           T(1.0), t.fbar_tr,
+                       t.flow_radius_n, T(c.flow_slope0), !lanes, 0};
     // y_n: the stored radius is A + beta (y_n - A)
     const T y_n = c.beta == 1.0 ? t.flow_radius_n : a + (t.flow_radius_n - a) * (1.0 / c.beta);
     const MaskOf<T> hardened = (t.alpha_n > 0.0) && (y_n > a);
@@ -185,8 +192,8 @@ template <class T>
     // alpha_e / (n y_e): at alpha_n = 0 it is 0 for n < 1 and 1 / B for n = 1
     const T alpha_e = select(hardened, t.alpha_n, T(fl.n == 1.0 ? inv_b : 0.0));
     const T y_e = select(hardened, y_n - a, T(1.0));
-    // the Newton step from y_n, where dgamma = 0, Phi = g0 and (f_bar' = -a_bar f_bar_tr)
-    // Phi' = -sqrt(2/3) (3/2 a_bar dalpha/dy + R beta)
+    // the Newton step from y_n (eq. 7.3a-4), where dgamma = 0, Phi = g0 and (f_bar' = -a_bar
+    // f_bar_tr) Phi' = -sqrt(2/3) (3/2 a_bar dalpha/dy + R beta)
     const T g0 = t.fbar_tr - k_sqrt23 * t.kappa_n;
     const T y_newton =
         y_n + g0 * (fl.n * y_e) / (k_sqrt23 * (1.5 * t.a_bar * alpha_e + r_beta * (fl.n * y_e)));
@@ -227,6 +234,9 @@ template <class T>
         const T dphi = t.a_bar * ddg * (g * n.fbar) +
                        (1.0 + t.a_bar * dg) * (n.fbar_dfbar * ddg - k_sqrt23 * r_beta * n.fbar);
         out.dgamma = select(open, dg, out.dgamma);
+        out.q1 = select(open, n.q1, out.q1);
+        out.q2 = select(open, n.q2, out.q2);
+        out.fbar = select(open, n.fbar, out.fbar);
         out.flow_radius = select(open, radius, out.flow_radius);
         last_alpha = select(open, alpha, last_alpha);
         last_excess = select(open, excess, last_excess);

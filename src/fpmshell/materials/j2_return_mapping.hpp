@@ -109,18 +109,16 @@ template <class T>
     const T dg = solution.dgamma;
     out.evaluations = solution.evaluations;
 
-    // 4 update
-    const T u1 = 1.0 + t.a1 * dg, u2 = 1.0 + t.a2 * dg;
-    const T inv_u1u2 = 1.0 / (u1 * u2);
-    const T s = s_tr * (u2 * inv_u1u2), d = d_tr * (u1 * inv_u1u2);
-    const std::array<T, 3> xi{0.5 * (s - d), 0.5 * (s + d), xi_tr[2] * (u1 * inv_u1u2)};
+    // 4 update, with q_i = 1 / (1 + a_i dgamma) and f_bar = sqrt(xi^T P xi) of the last evaluation
+    const T s = s_tr * solution.q1, d = d_tr * solution.q2;
+    const std::array<T, 3> xi{0.5 * (s - d), 0.5 * (s + d), xi_tr[2] * solution.q2};
     const T hardening_step = (2.0 / 3.0) * h_k * dg;
     J2PointState<T> next;
     for (std::size_t k = 0; k < 3; ++k) {
         next.back_stress[k] = old.back_stress[k] + hardening_step * xi[k];
         next.stress[k] = next.back_stress[k] + xi[k];
     }
-    next.plastic_strain = alpha_n + k_sqrt23 * dg * sqrt(p_norm2(xi));
+    next.plastic_strain = alpha_n + k_sqrt23 * dg * solution.fbar;
     next.flow_radius = solution.flow_radius;
     next.flow_slope = solution.flow_slope;
     // d_eps_p = dgamma P xi (engineering shear). Dissipation by the trapezoidal rule, like the
