@@ -12,6 +12,7 @@
 // nearly linear in dgamma, and stop on the residual of §7.3, |F| < tol kappa_n^2 / 3.
 #pragma once
 
+#include <array>
 #include <limits>
 
 #include "fpmshell/core/simd.hpp"
@@ -110,60 +111,90 @@ template <class T>
     return {value, select(small, T(c.flow_slope0), f.b * f.n * p)};
 }
 
+/// The bracketed Newton update shared by both iterations: x between lo and hi, whose residual
+/// phi decreases in x; the lanes of `open` move to the Newton iterate, or to the middle of the
+/// bracket where that leaves it.
+template <class T>
+FPMSHELL_INLINE void newton_in_bracket(const MaskOf<T>& open, const T& phi, const T& dphi, T& x,
+                                       T& lo, T& hi) {
+    const MaskOf<T> above = phi > 0.0;
+    lo = select(open && above, x, lo);
+    hi = select(open && !above, x, hi);
+    const T newton = x - phi / dphi;
+    x = select(open, select((newton > lo) && (newton < hi), newton, 0.5 * (lo + hi)), x);
+}
+
 /// Step 3 by Newton on dgamma, for a flow curve `curve(alpha) -> {sigma_f, sigma_f'}`:
 ///   f_bar(dgamma) as returned_norm, alpha = alpha_n + sqrt(2/3) dgamma f_bar,
 ///   kappa = R (sigma_f(0) + beta (sigma_f(alpha) - sigma_f(0))),
 ///   Phi = (1 + a_bar dgamma)(f_bar - sqrt(2/3) kappa), Phi' by the chain rule,
 /// from dgamma = 0 (where Phi and Phi' are known from the trial state and the stored slope)
 /// inside the bracket [0, dgamma_upper_bound], bisecting when a Newton iterate leaves it.
+/// The constructor takes the first step; each iterate() evaluates Phi once, stops the lanes
+/// that have converged and moves the others (solve_in_lockstep runs several at once).
 template <class T, class Curve>
-[[nodiscard]] Consistency<T> solve_for_dgamma(const J2ReturnConstants& c, const TrialReturn<T>& t,
-                                              const T& slope_n, const MaskOf<T>& lanes,
-                                              const Curve& curve) {
-    const Real f0 = c.flow_radius0;
-    const T r_beta = t.r * c.beta;
-    Consistency<T> out{T(0.0), T(1.0), T(1.0), t.fbar_tr, t.flow_radius_n, slope_n, !lanes, 0};
-    // Phi and Phi' at dgamma = 0 (f_bar' = -a_bar f_bar_tr there)
-    T g = t.fbar_tr - k_sqrt23 * t.kappa_n;
-    T phi = g;
-    T dphi = -t.a_bar * (k_sqrt23 * t.kappa_n) - (2.0 / 3.0) * r_beta * slope_n * t.fbar_tr;
-    T lo = 0.0, hi = dgamma_upper_bound(t), dg = 0.0;
-    MaskOf<T> open = lanes;
-    for (int it = 0; it < k_max_return_iterations; ++it) {
-        if (it > 0) {
-            const ReturnedNorm<T> n = returned_norm(t, dg);
-            const T alpha = t.alpha_n + k_sqrt23 * dg * n.fbar;
-            const T fbar_dalpha = k_sqrt23 * (n.fbar * n.fbar + dg * n.fbar_dfbar);
-            const FlowValue<T> at = curve(alpha);
-            const T radius = f0 + c.beta * (at.value - f0);
-            const T kappa = t.r * radius;
-            g = n.fbar - k_sqrt23 * kappa;
-            const T f = 0.5 * g * (n.fbar + k_sqrt23 * kappa);  // F of §7.3
-            // Phi and f_bar Phi' (the Newton step is their ratio)
-            phi = (1.0 + t.a_bar * dg) * (g * n.fbar);
-            dphi =
-                t.a_bar * g * n.fbar +
-                (1.0 + t.a_bar * dg) * (n.fbar_dfbar - k_sqrt23 * r_beta * at.slope * fbar_dalpha);
-            out.dgamma = select(open, dg, out.dgamma);
-            out.q1 = select(open, n.q1, out.q1);
-            out.q2 = select(open, n.q2, out.q2);
-            out.fbar = select(open, n.fbar, out.fbar);
-            out.flow_radius = select(open, radius, out.flow_radius);
-            out.flow_slope = select(open, at.slope, out.flow_slope);
-            out.evaluations = it;
-            const MaskOf<T> done = open && (abs(f) < c.tolerance * t.third_k2);
-            out.converged = out.converged || done;
-            open = open && !done;
-            if (!any_lane(open)) break;
-        }
-        const MaskOf<T> above = phi > 0.0;  // Phi f_bar, the sign of Phi
-        lo = select(open && above, dg, lo);
-        hi = select(open && !above, dg, hi);
-        const T newton = dg - phi / dphi;
-        dg = select(open, select((newton > lo) && (newton < hi), newton, 0.5 * (lo + hi)), dg);
+class DgammaIteration {
+public:
+    DgammaIteration(const J2ReturnConstants& c, const TrialReturn<T>& t, const T& slope_n,
+                    const MaskOf<T>& lanes, const Curve& curve)
+        : c_(c),
+          t_(t),
+          curve_(curve),
+          r_beta_(t.r * c.beta),
+          out_{T(0.0), T(1.0), T(1.0), t.fbar_tr, t.flow_radius_n, slope_n, !lanes, 0},
+          open_(lanes),
+          lo_(0.0),
+          hi_(dgamma_upper_bound(t)),
+          dg_(0.0) {
+        // Phi and Phi' at dgamma = 0 (f_bar' = -a_bar f_bar_tr there)
+        const T phi = t.fbar_tr - k_sqrt23 * t.kappa_n;
+        const T dphi =
+            -t.a_bar * (k_sqrt23 * t.kappa_n) - (2.0 / 3.0) * r_beta_ * slope_n * t.fbar_tr;
+        newton_in_bracket(open_, phi, dphi, dg_, lo_, hi_);
     }
-    return out;
-}
+    [[nodiscard]] bool open() const { return any_lane(open_); }
+    /// One evaluation and step; whether some lane is still open.
+    bool iterate() {
+        const Real f0 = c_.flow_radius0;
+        const TrialReturn<T>& t = t_;
+        const ReturnedNorm<T> n = returned_norm(t, dg_);
+        const T alpha = t.alpha_n + k_sqrt23 * dg_ * n.fbar;
+        const T fbar_dalpha = k_sqrt23 * (n.fbar * n.fbar + dg_ * n.fbar_dfbar);
+        const FlowValue<T> at = curve_(alpha);
+        const T radius = f0 + c_.beta * (at.value - f0);
+        const T kappa = t.r * radius;
+        const T g = n.fbar - k_sqrt23 * kappa;
+        const T f = 0.5 * g * (n.fbar + k_sqrt23 * kappa);  // F of §7.3
+        // Phi f_bar and Phi' f_bar (the Newton step is their ratio)
+        const T phi = (1.0 + t.a_bar * dg_) * (g * n.fbar);
+        const T dphi =
+            t.a_bar * g * n.fbar +
+            (1.0 + t.a_bar * dg_) * (n.fbar_dfbar - k_sqrt23 * r_beta_ * at.slope * fbar_dalpha);
+        out_.dgamma = select(open_, dg_, out_.dgamma);
+        out_.q1 = select(open_, n.q1, out_.q1);
+        out_.q2 = select(open_, n.q2, out_.q2);
+        out_.fbar = select(open_, n.fbar, out_.fbar);
+        out_.flow_radius = select(open_, radius, out_.flow_radius);
+        out_.flow_slope = select(open_, at.slope, out_.flow_slope);
+        ++out_.evaluations;
+        const MaskOf<T> done = open_ && (abs(f) < c_.tolerance * t.third_k2);
+        out_.converged = out_.converged || done;
+        open_ = open_ && !done;
+        if (!any_lane(open_)) return false;
+        newton_in_bracket(open_, phi, dphi, dg_, lo_, hi_);
+        return true;
+    }
+    [[nodiscard]] const Consistency<T>& result() const { return out_; }
+
+private:
+    const J2ReturnConstants& c_;
+    TrialReturn<T> t_;
+    Curve curve_;
+    T r_beta_;
+    Consistency<T> out_;
+    MaskOf<T> open_;
+    T lo_, hi_, dg_;
+};
 
 /// Step 3 for a Johnson-Cook curve with n <= 1 and beta > 0, by Newton on the flow stress
 /// y = sigma_f(alpha_{n+1}) (theory.md §7.3a, eq. 7.3a-3):
@@ -175,87 +206,127 @@ template <class T, class Curve>
 /// from dgamma_upper_bound, bounded by the tangent y_n + sigma_f'(alpha_n) d_alpha_u (sigma_f
 /// is concave) and evaluated exactly (one power) where the increment can exceed alpha_n.
 /// Start: the Newton step from y_n (Phi and Phi' there from the trial state), or y_hi if less.
+/// iterate() as DgammaIteration's.
 template <class T>
-[[nodiscard]] Consistency<T> solve_for_flow_stress(const J2ReturnConstants& c,
-                                                   const TrialReturn<T>& t,
-                                                   const MaskOf<T>& lanes) {
-    const FlowStress& fl = c.flow;
-    const Real a = fl.a, inv_b = 1.0 / fl.b, inv_n = 1.0 / fl.n;
-    const T r_beta = t.r * c.beta;
-    const Real infinity = std::numeric_limits<Real>::infinity();
-    Consistency<T> out{T(0.0),          T(1.0),           T(1.0), t.fbar_tr,
-                       t.flow_radius_n, T(c.flow_slope0), !lanes, 0};
-    // y_n: the stored radius is A + beta (y_n - A)
-    const T y_n = c.beta == 1.0 ? t.flow_radius_n : a + (t.flow_radius_n - a) * (1.0 / c.beta);
-    const MaskOf<T> hardened = (t.alpha_n > 0.0) && (y_n > a);
-    // dalpha/dy at y_n = alpha_n / (n (y_n - A)) = 1 / sigma_f'(alpha_n), written as the ratio
-    // alpha_e / (n y_e): at alpha_n = 0 it is 0 for n < 1 and 1 / B for n = 1
-    const T alpha_e = select(hardened, t.alpha_n, T(fl.n == 1.0 ? inv_b : 0.0));
-    const T y_e = select(hardened, y_n - a, T(1.0));
-    // the Newton step from y_n (eq. 7.3a-4), where dgamma = 0, Phi = g0 and (f_bar' = -a_bar
-    // f_bar_tr) Phi' = -sqrt(2/3) (3/2 a_bar dalpha/dy + R beta)
-    const T g0 = t.fbar_tr - k_sqrt23 * t.kappa_n;
-    const T y_newton =
-        y_n + g0 * (fl.n * y_e) / (k_sqrt23 * (1.5 * t.a_bar * alpha_e + r_beta * (fl.n * y_e)));
-    // the upper end of the bracket: d_alpha <= sqrt(2/3) dgamma_upper_bound f_bar_tr, and the
-    // tangent of the concave curve at alpha_n lies above it
-    const T d_alpha_u = g0 * t.fbar_tr / (t.kappa_n * min(t.a1, t.a2));
-    T y_hi = select(hardened, y_n + (fl.n * y_e) * d_alpha_u / select(hardened, t.alpha_n, T(1.0)),
-                    T(infinity));
-    const MaskOf<T> steep = lanes && (t.alpha_n < d_alpha_u);
-    if (any_lane(steep)) {  // the curve itself, at the tighter bound of f_bar(dgamma_u)
-        const T dg_u = dgamma_upper_bound(t);
-        const T d_alpha = k_sqrt23 * dg_u * returned_norm(t, dg_u).fbar;
-        y_hi = select(steep, min(y_hi, a + fl.b * vector_pow(t.alpha_n + d_alpha, T(fl.n))), y_hi);
+class FlowStressIteration {
+public:
+    FlowStressIteration(const J2ReturnConstants& c, const TrialReturn<T>& t, const MaskOf<T>& lanes)
+        : c_(c),
+          t_(t),
+          lanes_(lanes),
+          a_(c.flow.a),
+          inv_b_(1.0 / c.flow.b),
+          inv_n_(1.0 / c.flow.n),
+          r_beta_(t.r * c.beta),
+          out_{T(0.0), T(1.0), T(1.0), t.fbar_tr, t.flow_radius_n, T(c.flow_slope0), !lanes, 0},
+          open_(lanes) {
+        const FlowStress& fl = c.flow;
+        const Real a = a_, infinity = std::numeric_limits<Real>::infinity();
+        // y_n: the stored radius is A + beta (y_n - A)
+        const T y_n = c.beta == 1.0 ? t.flow_radius_n : a + (t.flow_radius_n - a) * (1.0 / c.beta);
+        const MaskOf<T> hardened = (t.alpha_n > 0.0) && (y_n > a);
+        // dalpha/dy at y_n = alpha_n / (n (y_n - A)) = 1 / sigma_f'(alpha_n), written as the
+        // ratio alpha_e / (n y_e): at alpha_n = 0 it is 0 for n < 1 and 1 / B for n = 1
+        const T alpha_e = select(hardened, t.alpha_n, T(fl.n == 1.0 ? inv_b_ : 0.0));
+        const T y_e = select(hardened, y_n - a, T(1.0));
+        // the Newton step from y_n (eq. 7.3a-4), where dgamma = 0, Phi = g0 and (f_bar' =
+        // -a_bar f_bar_tr) Phi' = -sqrt(2/3) (3/2 a_bar dalpha/dy + R beta)
+        const T g0 = t.fbar_tr - k_sqrt23 * t.kappa_n;
+        const T y_newton =
+            y_n +
+            g0 * (fl.n * y_e) / (k_sqrt23 * (1.5 * t.a_bar * alpha_e + r_beta_ * (fl.n * y_e)));
+        // the upper end of the bracket: d_alpha <= sqrt(2/3) dgamma_upper_bound f_bar_tr, and
+        // the tangent of the concave curve at alpha_n lies above it
+        const T d_alpha_u = g0 * t.fbar_tr / (t.kappa_n * min(t.a1, t.a2));
+        T y_hi =
+            select(hardened, y_n + (fl.n * y_e) * d_alpha_u / select(hardened, t.alpha_n, T(1.0)),
+                   T(infinity));
+        const MaskOf<T> steep = lanes && (t.alpha_n < d_alpha_u);
+        if (any_lane(steep)) {  // the curve itself, at the tighter bound of f_bar(dgamma_u)
+            const T dg_u = dgamma_upper_bound(t);
+            const T d_alpha = k_sqrt23 * dg_u * returned_norm(t, dg_u).fbar;
+            y_hi =
+                select(steep, min(y_hi, a + fl.b * vector_pow(t.alpha_n + d_alpha, T(fl.n))), y_hi);
+        }
+        lo_ = y_n;
+        hi_ = y_hi;
+        y_ = min(y_newton, y_hi);
+        last_alpha_ = 0.0;
+        last_excess_ = 0.0;
     }
-    T lo = y_n, hi = y_hi;
-    T y = min(y_newton, y_hi);
-    T last_alpha = 0.0, last_excess = 0.0;  // alpha(y) and y - A at the last evaluation
-    MaskOf<T> open = lanes;
-    for (int it = 1; it <= k_max_return_iterations; ++it) {
-        const T excess = max(y - a, T(0.0));
+    [[nodiscard]] bool open() const { return any_lane(open_); }
+    /// One evaluation and step; whether some lane is still open.
+    bool iterate() {
+        const TrialReturn<T>& t = t_;
+        const T excess = max(y_ - a_, T(0.0));
         const MaskOf<T> positive = excess > 0.0;
         const T alpha = select(
-            positive, vector_exp(inv_n * vector_log(max(excess * inv_b, T(1e-300)))), T(0.0));
-        const T radius = a + c.beta * (y - a);
+            positive, vector_exp(inv_n_ * vector_log(max(excess * inv_b_, T(1e-300)))), T(0.0));
+        const T radius = a_ + c_.beta * (y_ - a_);
         const T kappa = t.r * radius;
         // one division for 1 / kappa and 1 / (y - A)
         const T inv = 1.0 / (select(positive, excess, T(1.0)) * kappa);
         const T inv_kappa = select(positive, excess, T(1.0)) * inv;
         const T dalpha =
-            select(positive, alpha * inv_n * (kappa * inv), T(fl.n == 1.0 ? inv_b : 0.0));
+            select(positive, alpha * inv_n_ * (kappa * inv), T(c_.flow.n == 1.0 ? inv_b_ : 0.0));
         const T dg = 1.5 * (alpha - t.alpha_n) * inv_kappa;
-        const T ddg = (1.5 * dalpha - dg * r_beta) * inv_kappa;
+        const T ddg = (1.5 * dalpha - dg * r_beta_) * inv_kappa;
         const ReturnedNorm<T> n = returned_norm(t, dg);
         const T g = n.fbar - k_sqrt23 * kappa;
         const T f = 0.5 * g * (n.fbar + k_sqrt23 * kappa);  // F of §7.3
         // Phi f_bar and Phi' f_bar (the Newton step is their ratio)
         const T phi = (1.0 + t.a_bar * dg) * (g * n.fbar);
         const T dphi = t.a_bar * ddg * (g * n.fbar) +
-                       (1.0 + t.a_bar * dg) * (n.fbar_dfbar * ddg - k_sqrt23 * r_beta * n.fbar);
-        out.dgamma = select(open, dg, out.dgamma);
-        out.q1 = select(open, n.q1, out.q1);
-        out.q2 = select(open, n.q2, out.q2);
-        out.fbar = select(open, n.fbar, out.fbar);
-        out.flow_radius = select(open, radius, out.flow_radius);
-        last_alpha = select(open, alpha, last_alpha);
-        last_excess = select(open, excess, last_excess);
-        out.evaluations = it;
-        const MaskOf<T> done = open && (abs(f) < c.tolerance * t.third_k2);
-        out.converged = out.converged || done;
-        open = open && !done;
-        if (!any_lane(open)) break;
-        const MaskOf<T> above = phi > 0.0;
-        lo = select(open && above, y, lo);
-        hi = select(open && !above, y, hi);
-        const T newton = y - phi / dphi;
-        y = select(open, select((newton > lo) && (newton < hi), newton, 0.5 * (lo + hi)), y);
+                       (1.0 + t.a_bar * dg) * (n.fbar_dfbar * ddg - k_sqrt23 * r_beta_ * n.fbar);
+        out_.dgamma = select(open_, dg, out_.dgamma);
+        out_.q1 = select(open_, n.q1, out_.q1);
+        out_.q2 = select(open_, n.q2, out_.q2);
+        out_.fbar = select(open_, n.fbar, out_.fbar);
+        out_.flow_radius = select(open_, radius, out_.flow_radius);
+        last_alpha_ = select(open_, alpha, last_alpha_);
+        last_excess_ = select(open_, excess, last_excess_);
+        ++out_.evaluations;
+        const MaskOf<T> done = open_ && (abs(f) < c_.tolerance * t.third_k2);
+        out_.converged = out_.converged || done;
+        open_ = open_ && !done;
+        if (!any_lane(open_)) return false;
+        newton_in_bracket(open_, phi, dphi, y_, lo_, hi_);
+        return true;
     }
-    // sigma_f' = B n alpha^(n-1) = n (y - A) / alpha, taken at k_slope_floor below it (FlowStress)
-    const MaskOf<T> floor = last_alpha < FlowStress::k_slope_floor;
-    out.flow_slope = select(lanes && !floor, fl.n * last_excess / select(floor, T(1.0), last_alpha),
-                            out.flow_slope);
-    return out;
+    /// The solution, with sigma_f' = B n alpha^(n-1) = n (y - A) / alpha at the last
+    /// evaluation (taken at FlowStress::k_slope_floor below it, as FlowStress::slope does).
+    [[nodiscard]] Consistency<T> result() const {
+        Consistency<T> out = out_;
+        const MaskOf<T> floor = last_alpha_ < FlowStress::k_slope_floor;
+        out.flow_slope =
+            select(lanes_ && !floor, c_.flow.n * last_excess_ / select(floor, T(1.0), last_alpha_),
+                   out.flow_slope);
+        return out;
+    }
+
+private:
+    const J2ReturnConstants& c_;
+    TrialReturn<T> t_;
+    MaskOf<T> lanes_;
+    Real a_, inv_b_, inv_n_;
+    T r_beta_;
+    Consistency<T> out_;
+    MaskOf<T> open_;
+    T lo_, hi_, y_;
+    T last_alpha_, last_excess_;  // alpha(y) and y - A at the last evaluation
+};
+
+/// Runs the iterations of several independent points in lockstep, one evaluation of each per
+/// round: their chains of dependent divisions, square roots and polynomials overlap on one
+/// core, where one alone waits on the latency of each step.
+template <class Iteration, std::size_t K>
+void solve_in_lockstep(std::array<Iteration, K>& iterations) {
+    for (int it = 0; it < k_max_return_iterations; ++it) {
+        bool open = false;
+        for (Iteration& i : iterations)
+            if (i.open()) open = i.iterate() || open;
+        if (!open) return;
+    }
 }
 
 }  // namespace j2_detail

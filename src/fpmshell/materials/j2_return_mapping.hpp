@@ -9,6 +9,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <utility>
 
 #include "fpmshell/core/simd.hpp"
 #include "fpmshell/materials/flow_stress.hpp"
@@ -44,15 +45,25 @@ template <class T>
 
 }  // namespace j2_detail
 
-/// §7.3 on the lanes of `lanes`: the trial state from the old one and the strain increment
-/// d_eps (engineering shear), the elastic check, and where it fails the return along the
-/// plane-stress projection. r: the rate factor R >= 1 of each lane (§7.4). A lane outside
-/// `lanes` returns its trial state.
+namespace j2_detail {
+
+/// Steps 1-2 of one point per lane: the trial state, the elastic check, the constants of the
+/// return.
 template <class T>
-[[nodiscard]] J2Return<T> j2_return_mapping(const J2ReturnConstants& c, const J2PointState<T>& old,
-                                            const std::array<T, 3>& d_eps, const T& r,
-                                            const MaskOf<T>& lanes) {
-    using namespace j2_detail;
+struct Trial {
+    J2Return<T> out;  ///< the trial state (what a lane that does not yield returns)
+    MaskOf<T> yielding;
+    TrialReturn<T> t;
+    std::array<T, 3> xi_tr;
+    T s_tr, d_tr, h_k, slope_n;
+};
+
+template <class T>
+[[nodiscard]] FPMSHELL_INLINE Trial<T> trial_state(const J2ReturnConstants& c,
+                                                   const J2PointState<T>& old,
+                                                   const std::array<T, 3>& d_eps, const T& r,
+                                                   const MaskOf<T>& lanes) {
+    Trial<T> tr{};  // zero where no lane yields: never read, but defined
     const T alpha_n = old.plastic_strain;
     // kappa / R and sigma_f' at alpha_n, stored by the last plastic step (the flow curve at
     // alpha = 0 before the first one; -1: the slope is not known yet)
@@ -63,27 +74,28 @@ template <class T>
     const std::array<T, 3> sigma_tr{old.stress[0] + (c.c11 * d_eps[0] + c.c12 * d_eps[1]),
                                     old.stress[1] + (c.c12 * d_eps[0] + c.c11 * d_eps[1]),
                                     old.stress[2] + c.c33 * d_eps[2]};
-    const std::array<T, 3> xi_tr{sigma_tr[0] - old.back_stress[0], sigma_tr[1] - old.back_stress[1],
-                                 sigma_tr[2] - old.back_stress[2]};
+    tr.xi_tr = {sigma_tr[0] - old.back_stress[0], sigma_tr[1] - old.back_stress[1],
+                sigma_tr[2] - old.back_stress[2]};
     const T kappa_n = r * flow_radius_n;
     const T third_k2 = kappa_n * kappa_n * (1.0 / 3.0);
-    const T f_tr = 0.5 * p_norm2(xi_tr) - third_k2;
-    J2Return<T> out{{sigma_tr, old.back_stress, alpha_n, flow_radius_n, flow_slope_n},
-                    T(0.0),
-                    lanes && (f_tr > c.tolerance * third_k2)};
-    const MaskOf<T> yielding = out.yielded;
-    if (!any_lane(yielding)) return out;
+    const T f_tr = 0.5 * p_norm2(tr.xi_tr) - third_k2;
+    tr.out = {{sigma_tr, old.back_stress, alpha_n, flow_radius_n, flow_slope_n},
+              T(0.0),
+              lanes && (f_tr > c.tolerance * third_k2)};
+    tr.yielding = tr.out.yielded;
+    if (!any_lane(tr.yielding)) return tr;
 
     // 2 constants; H_k frozen at alpha_n (§7.4); a point that never yielded has the slope of
     // the flow curve at alpha = 0
-    const T slope_n = select(flow_slope_n < 0.0, T(c.flow_slope0), flow_slope_n);
-    const T h_k = (1.0 - c.beta) * r * slope_n;
-    const T s_tr = xi_tr[0] + xi_tr[1], d_tr = xi_tr[1] - xi_tr[0];
-    TrialReturn<T> t;
-    t.a1_sq = s_tr * s_tr * (1.0 / 6.0);                      // A1
-    t.a2_sq = 0.5 * d_tr * d_tr + 2.0 * xi_tr[2] * xi_tr[2];  // A2
-    t.a1 = c.bulk_term + (2.0 / 3.0) * h_k;
-    t.a2 = c.two_g + (2.0 / 3.0) * h_k;
+    tr.slope_n = select(flow_slope_n < 0.0, T(c.flow_slope0), flow_slope_n);
+    tr.h_k = (1.0 - c.beta) * r * tr.slope_n;
+    tr.s_tr = tr.xi_tr[0] + tr.xi_tr[1];
+    tr.d_tr = tr.xi_tr[1] - tr.xi_tr[0];
+    TrialReturn<T>& t = tr.t;
+    t.a1_sq = tr.s_tr * tr.s_tr * (1.0 / 6.0);                            // A1
+    t.a2_sq = 0.5 * tr.d_tr * tr.d_tr + 2.0 * tr.xi_tr[2] * tr.xi_tr[2];  // A2
+    t.a1 = c.bulk_term + (2.0 / 3.0) * tr.h_k;
+    t.a2 = c.two_g + (2.0 / 3.0) * tr.h_k;
     const T fbar2_tr = t.a1_sq + t.a2_sq;
     t.fbar_tr = sqrt(fbar2_tr);
     t.a_bar = (t.a1_sq * t.a1 + t.a2_sq * t.a2) / fbar2_tr;
@@ -92,33 +104,29 @@ template <class T>
     t.kappa_n = kappa_n;
     t.third_k2 = third_k2;
     t.flow_radius_n = flow_radius_n;
+    return tr;
+}
 
-    // 3 the consistency condition (§7.3a)
-    const FlowStress& fl = c.flow;
-    Consistency<T> solution;
-    if (fl.kind == FlowStress::Kind::Linear) {
-        solution = solve_for_dgamma(c, t, slope_n, yielding, [&](const T& alpha) {
-            return FlowValue<T>{fl.yield_stress + fl.hardening * alpha, T(fl.hardening)};
-        });
-    } else if (fl.n <= 1.0 && c.beta > 0.0) {
-        solution = solve_for_flow_stress(c, t, yielding);
-    } else {
-        solution = solve_for_dgamma(c, t, slope_n, yielding,
-                                    [&](const T& alpha) { return johnson_cook_curve(c, alpha); });
-    }
+/// Step 4 from the solution of step 3.
+template <class T>
+[[nodiscard]] FPMSHELL_INLINE J2Return<T> returned_state(const J2PointState<T>& old,
+                                                         const Trial<T>& tr,
+                                                         const Consistency<T>& solution) {
+    J2Return<T> out = tr.out;
+    const MaskOf<T>& yielding = tr.yielding;
     const T dg = solution.dgamma;
     out.evaluations = solution.evaluations;
-
-    // 4 update, with q_i = 1 / (1 + a_i dgamma) and f_bar = sqrt(xi^T P xi) of the last evaluation
-    const T s = s_tr * solution.q1, d = d_tr * solution.q2;
-    const std::array<T, 3> xi{0.5 * (s - d), 0.5 * (s + d), xi_tr[2] * solution.q2};
-    const T hardening_step = (2.0 / 3.0) * h_k * dg;
+    // 4 update, with q_i = 1 / (1 + a_i dgamma) and f_bar = sqrt(xi^T P xi) of the last
+    // evaluation
+    const T s = tr.s_tr * solution.q1, d = tr.d_tr * solution.q2;
+    const std::array<T, 3> xi{0.5 * (s - d), 0.5 * (s + d), tr.xi_tr[2] * solution.q2};
+    const T hardening_step = (2.0 / 3.0) * tr.h_k * dg;
     J2PointState<T> next;
     for (std::size_t k = 0; k < 3; ++k) {
         next.back_stress[k] = old.back_stress[k] + hardening_step * xi[k];
         next.stress[k] = next.back_stress[k] + xi[k];
     }
-    next.plastic_strain = alpha_n + k_sqrt23 * dg * solution.fbar;
+    next.plastic_strain = tr.t.alpha_n + k_sqrt23 * dg * solution.fbar;
     next.flow_radius = solution.flow_radius;
     next.flow_slope = solution.flow_slope;
     // d_eps_p = dgamma P xi (engineering shear). Dissipation by the trapezoidal rule, like the
@@ -138,6 +146,68 @@ template <class T>
     out.state.flow_slope = select(yielding, next.flow_slope, out.state.flow_slope);
     out.plastic_work = select(yielding, work, T(0.0));
     return out;
+}
+
+/// {f(0), ..., f(K - 1)}
+template <std::size_t K, class F>
+[[nodiscard]] FPMSHELL_INLINE auto array_of(const F& f) {
+    return [&]<std::size_t... I>(std::index_sequence<I...>) { return std::array{f(I)...}; }
+    (std::make_index_sequence<K>{});
+}
+
+}  // namespace j2_detail
+
+/// §7.3 on K points per lane at once (their Newton iterations in lockstep, j2_consistency.hpp),
+/// each on the lanes of its `lanes`: the trial state from the old one and the strain increment
+/// d_eps (engineering shear), the elastic check, and where it fails the return along the
+/// plane-stress projection. r: the rate factor R >= 1 of each lane (§7.4). A lane outside
+/// `lanes` returns its trial state. A point's result does not depend on the others.
+template <class T, std::size_t K>
+[[nodiscard]] std::array<J2Return<T>, K> j2_return_mapping_points(
+    const J2ReturnConstants& c, const std::array<J2PointState<T>, K>& old,
+    const std::array<std::array<T, 3>, K>& d_eps, const std::array<T, K>& r,
+    const std::array<MaskOf<T>, K>& lanes) {
+    using namespace j2_detail;
+    const std::array<Trial<T>, K> tr = array_of<K>(
+        [&](std::size_t k) { return trial_state(c, old[k], d_eps[k], r[k], lanes[k]); });
+    bool any = false;
+    for (const Trial<T>& x : tr) any = any || any_lane(x.yielding);
+    if (!any) return array_of<K>([&](std::size_t k) { return tr[k].out; });
+
+    // 3 the consistency condition (§7.3a)
+    const FlowStress& fl = c.flow;
+    std::array<Consistency<T>, K> solution;
+    auto solve = [&](auto make) {
+        auto iterations = array_of<K>(make);
+        solve_in_lockstep(iterations);
+        for (std::size_t k = 0; k < K; ++k) solution[k] = iterations[k].result();
+    };
+    if (fl.kind == FlowStress::Kind::Linear) {
+        auto linear = [&fl](const T& alpha) {
+            return FlowValue<T>{fl.yield_stress + fl.hardening * alpha, T(fl.hardening)};
+        };
+        solve([&](std::size_t k) {
+            return DgammaIteration<T, decltype(linear)>(c, tr[k].t, tr[k].slope_n, tr[k].yielding,
+                                                        linear);
+        });
+    } else if (fl.n <= 1.0 && c.beta > 0.0) {
+        solve([&](std::size_t k) { return FlowStressIteration<T>(c, tr[k].t, tr[k].yielding); });
+    } else {
+        auto curve = [&c](const T& alpha) { return johnson_cook_curve(c, alpha); };
+        solve([&](std::size_t k) {
+            return DgammaIteration<T, decltype(curve)>(c, tr[k].t, tr[k].slope_n, tr[k].yielding,
+                                                       curve);
+        });
+    }
+    return array_of<K>([&](std::size_t k) { return returned_state(old[k], tr[k], solution[k]); });
+}
+
+/// §7.3 on one point per lane (j2_return_mapping_points with K = 1).
+template <class T>
+[[nodiscard]] J2Return<T> j2_return_mapping(const J2ReturnConstants& c, const J2PointState<T>& old,
+                                            const std::array<T, 3>& d_eps, const T& r,
+                                            const MaskOf<T>& lanes) {
+    return j2_return_mapping_points<T, 1>(c, {old}, {d_eps}, {r}, {lanes})[0];
 }
 
 }  // namespace fpmshell

@@ -48,10 +48,11 @@ ElasticTriangleLoads<RealPack> block_point_loads(const J2Plastic& material, cons
                               const std::array<RealPack, 3>* d_eps, const RealPack* rate_factor,
                               RealPack* new_stress, RealPack* d_plastic_work) {
         const J2ReturnConstants& constants = material.return_constants();
-        // a point on its own packs: the old state straight from the block's fields
-        auto return_point = [&](std::size_t p) {
+        // Points on their own packs, two at a time (their Newton iterations in lockstep,
+        // materials/j2_consistency.hpp), the old state straight from the block's fields.
+        auto old_state = [&](std::size_t p) {
             const RealPack zero(0.0);
-            const J2PointState<RealPack> old{
+            return J2PointState<RealPack>{
                 {field(p, J2::k_stress), field(p, J2::k_stress + 1), field(p, J2::k_stress + 2)},
                 {kinematic ? field(p, J2::k_back_stress) : zero,
                  kinematic ? field(p, J2::k_back_stress + 1) : zero,
@@ -59,8 +60,8 @@ ElasticTriangleLoads<RealPack> block_point_loads(const J2Plastic& material, cons
                 field(p, J2::k_plastic_strain),
                 field(p, J2::k_flow_radius),
                 field(p, J2::k_flow_slope)};
-            const J2Return<RealPack> ret =
-                j2_return_mapping(constants, old, d_eps[p], rate_factor[p], yielding[p]);
+        };
+        auto store = [&](std::size_t p, const J2Return<RealPack>& ret) {
             const RealPack::mask_type& y = ret.yielded;  // not: inside after all (rounding)
             for (std::size_t r = 0; r < 3; ++r) {
                 stdx::where(yielding[p], new_stress[3 * p + r]) = ret.state.stress[r];
@@ -74,6 +75,18 @@ ElasticTriangleLoads<RealPack> block_point_loads(const J2Plastic& material, cons
             stdx::where(y, field(p, J2::k_flow_radius)) = ret.state.flow_radius;
             stdx::where(y, field(p, J2::k_flow_slope)) = ret.state.flow_slope;
         };
+        auto return_point = [&](std::size_t p) {
+            store(p, j2_return_mapping(constants, old_state(p), d_eps[p], rate_factor[p],
+                                       yielding[p]));
+        };
+        auto return_two_points = [&](std::size_t p, std::size_t q) {
+            const std::array<J2Return<RealPack>, 2> ret = j2_return_mapping_points<RealPack, 2>(
+                constants, {old_state(p), old_state(q)}, {d_eps[p], d_eps[q]},
+                {rate_factor[p], rate_factor[q]}, {yielding[p], yielding[q]});
+            store(p, ret[0]);
+            store(q, ret[1]);
+        };
+        std::size_t pending = n_pts;  // a point waiting for a second one
         constexpr int w = k_lanes;
         // the inputs of the batch, structure of arrays: stress 3, back stress 3, alpha, flow
         // radius, flow slope, strain increment 3, rate factor
@@ -118,7 +131,12 @@ ElasticTriangleLoads<RealPack> block_point_loads(const J2Plastic& material, cons
             const int count = stdx::popcount(yielding[p]);
             if (count == 0) continue;
             if (2 * count > k_lanes) {
-                return_point(p);
+                if (pending == n_pts) {
+                    pending = p;
+                } else {
+                    return_two_points(pending, p);
+                    pending = n_pts;
+                }
                 continue;
             }
             for (int l = 0; l < k_lanes; ++l) {
@@ -140,6 +158,7 @@ ElasticTriangleLoads<RealPack> block_point_loads(const J2Plastic& material, cons
             }
         }
         if (n > 0) run_batch();
+        if (pending != n_pts) return_point(pending);
     };
     const ElasticTriangleLoads<RealPack> loads =
         elastic_triangle_loads(*step.motion, *step.constants, step.thickness, stress.data(),
