@@ -73,6 +73,7 @@ template <class T>
 struct ReturnedNorm {
     T fbar, fbar_dfbar;
     T q1, q2;  ///< 1 / (1 + a_i dgamma)
+    T c1, c2;  ///< A_i q_i^2 (f_bar^2 = c1 + c2)
 };
 template <class T>
 [[nodiscard]] FPMSHELL_INLINE ReturnedNorm<T> returned_norm(const TrialReturn<T>& t, const T& dg) {
@@ -82,7 +83,7 @@ template <class T>
     const T inv_u1u2 = 1.0 / (u1 * u2);
     const T q1 = u2 * inv_u1u2, q2 = u1 * inv_u1u2;
     const T c1 = t.a1_sq * q1 * q1, c2 = t.a2_sq * q2 * q2;
-    return {sqrt(c1 + c2), -(c1 * (t.a1 * q1) + c2 * (t.a2 * q2)), q1, q2};
+    return {sqrt(c1 + c2), -(c1 * (t.a1 * q1) + c2 * (t.a2 * q2)), q1, q2, c1, c2};
 }
 
 /// An upper bound of dgamma (eq. 7.3a-2): with kappa >= kappa_n and f_bar <= f_bar_tr / (1 + a_min
@@ -124,6 +125,21 @@ FPMSHELL_INLINE void newton_in_bracket(const MaskOf<T>& open, const T& phi, cons
     x = select(open, select((newton > lo) && (newton < hi), newton, 0.5 * (lo + hi)), x);
 }
 
+/// As newton_in_bracket with Halley's step, -2 Phi Phi' / (2 Phi'^2 - Phi Phi''), where it
+/// scales Newton's by a factor in (2/3, 2) (else Newton's): one division as Newton's.
+template <class T>
+FPMSHELL_INLINE void halley_in_bracket(const MaskOf<T>& open, const T& phi, const T& dphi,
+                                       const T& d2phi, T& x, T& lo, T& hi) {
+    const MaskOf<T> above = phi > 0.0;
+    lo = select(open && above, x, lo);
+    hi = select(open && !above, x, hi);
+    const T two_d2 = 2.0 * dphi * dphi, phi_d2 = phi * d2phi;
+    const MaskOf<T> halley = (phi_d2 < 0.5 * two_d2) && (phi_d2 > -0.5 * two_d2);
+    const T step = select(halley, 2.0 * phi * dphi, phi) / select(halley, two_d2 - phi_d2, dphi);
+    const T next = x - step;
+    x = select(open, select((next > lo) && (next < hi), next, 0.5 * (lo + hi)), x);
+}
+
 /// Step 3 by Newton on dgamma, for a flow curve `curve(alpha) -> {sigma_f, sigma_f'}`:
 ///   f_bar(dgamma) as returned_norm, alpha = alpha_n + sqrt(2/3) dgamma f_bar,
 ///   kappa = R (sigma_f(0) + beta (sigma_f(alpha) - sigma_f(0))),
@@ -146,11 +162,15 @@ public:
           lo_(0.0),
           hi_(dgamma_upper_bound(t)),
           dg_(0.0) {
-        // Phi and Phi' at dgamma = 0 (f_bar' = -a_bar f_bar_tr there)
+        // Phi, Phi' and Phi'' at dgamma = 0 (f_bar' = -a_bar f_bar_tr there; Phi'' =
+        // 3 f_bar_tr (m2 - a_bar^2), m2 = (A1 a1^2 + A2 a2^2) / (A1 + A2), for a curve of
+        // sigma_f'' = 0)
         const T phi = t.fbar_tr - k_sqrt23 * t.kappa_n;
         const T dphi =
             -t.a_bar * (k_sqrt23 * t.kappa_n) - (2.0 / 3.0) * r_beta_ * slope_n * t.fbar_tr;
-        newton_in_bracket(open_, phi, dphi, dg_, lo_, hi_);
+        const T m2 = (t.a1_sq * t.a1 * t.a1 + t.a2_sq * t.a2 * t.a2) / (t.fbar_tr * t.fbar_tr);
+        const T d2phi = 3.0 * t.fbar_tr * (m2 - t.a_bar * t.a_bar);
+        halley_in_bracket(open_, phi, dphi, d2phi, dg_, lo_, hi_);
     }
     [[nodiscard]] bool open() const { return any_lane(open_); }
     /// One evaluation and step; whether some lane is still open.
@@ -165,11 +185,20 @@ public:
         const T kappa = t.r * radius;
         const T g = n.fbar - k_sqrt23 * kappa;
         const T f = 0.5 * g * (n.fbar + k_sqrt23 * kappa);  // F of §7.3
-        // Phi f_bar and Phi' f_bar (the Newton step is their ratio)
-        const T phi = (1.0 + t.a_bar * dg_) * (g * n.fbar);
-        const T dphi =
-            t.a_bar * g * n.fbar +
-            (1.0 + t.a_bar * dg_) * (n.fbar_dfbar - k_sqrt23 * r_beta_ * at.slope * fbar_dalpha);
+        // Phi f_bar, Phi' f_bar and Phi'' f_bar (Halley's step: f_bar^2 cancels), with
+        // f_bar f_bar'' = (f_bar^2)''/2 - (f_bar f_bar')^2 / f_bar^2 and kappa'' from alpha''
+        // (sigma_f'' left out: a start for the next step, the bracket keeps it safe)
+        const T u = 1.0 + t.a_bar * dg_;
+        const T g_fbar = g * n.fbar;
+        const T dg_fbar = n.fbar_dfbar - k_sqrt23 * r_beta_ * at.slope * fbar_dalpha;
+        const T a1q1 = t.a1 * n.q1, a2q2 = t.a2 * n.q2;
+        const T fbar_d2fbar = 3.0 * (n.c1 * a1q1 * a1q1 + n.c2 * a2q2 * a2q2) -
+                              n.fbar_dfbar * n.fbar_dfbar / (n.c1 + n.c2);
+        const T fbar_d2alpha = k_sqrt23 * (2.0 * n.fbar_dfbar + dg_ * fbar_d2fbar);
+        const T d2g_fbar = fbar_d2fbar - k_sqrt23 * r_beta_ * at.slope * fbar_d2alpha;
+        const T phi = u * g_fbar;
+        const T dphi = t.a_bar * g_fbar + u * dg_fbar;
+        const T d2phi = 2.0 * t.a_bar * dg_fbar + u * d2g_fbar;
         out_.dgamma = select(open_, dg_, out_.dgamma);
         out_.q1 = select(open_, n.q1, out_.q1);
         out_.q2 = select(open_, n.q2, out_.q2);
@@ -181,7 +210,7 @@ public:
         out_.converged = out_.converged || done;
         open_ = open_ && !done;
         if (!any_lane(open_)) return false;
-        newton_in_bracket(open_, phi, dphi, dg_, lo_, hi_);
+        halley_in_bracket(open_, phi, dphi, d2phi, dg_, lo_, hi_);
         return true;
     }
     [[nodiscard]] const Consistency<T>& result() const { return out_; }
