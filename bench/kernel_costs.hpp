@@ -104,18 +104,18 @@ inline constexpr double k_elastic_update = 18;
 // curve, no rate factor:
 //   trial (sigma_n + C d_eps 18, xi 3, kappa 1, kappa^2 / 3 2, p_norm2 10 + 2, test 1)   37
 //   constants of the return (h_k 3, s, d 2, A1 2, A2 5, a1 5, a2 3, f_bar_tr 2, a_bar 4,
-//   bound of dgamma 5, Phi'(0) 8, Newton step 4) 43, the update (s, d 2, xi 5, back stress 8,
-//   stress 3, alpha 3, P xi 7, plastic work 13) 41                                      84
+//   bound of dgamma 5, Phi'(0) 8, Phi''(0) 9, Halley step 10) 58, the update (s, d 2,
+//   xi 5, back stress 8, stress 3, alpha 3, P xi 7, plastic work 13) 41                 99
 //   per evaluation of Phi (q1, q2 5, c1, c2 4, f_bar 2, f_bar f_bar' 5, alpha 3,
-//   f_bar alpha' 4, flow curve 2, kappa 4, g 2, F 4, Phi 4, Phi' 9) with its test and
-//   bracketed Newton step (6)                                                           63
+//   f_bar alpha' 4, flow curve 2, kappa 4, g 2, F 4, Phi 4, Phi' 9, Phi'' 25) with its
+//   test and bracketed Halley step (12)                                                 85
 // Evaluations: J2Return::evaluations on the plate of bench/crash_kernels (every point
-// yielding, trial overshoot about 10 % of the yield radius): 3 on nearly every pack of 8.
+// yielding, trial overshoot about 10 % of the yield radius): 2 on nearly every pack of 8.
 // A Johnson-Cook evaluation adds a power (vector_log and vector_exp, core/simd_math.hpp).
 inline constexpr double k_j2_trial = 37;
-inline constexpr double k_j2_return = 84;
-inline constexpr double k_j2_newton_evaluation = 63;
-inline constexpr int k_j2_newton_evaluations_plate = 3;
+inline constexpr double k_j2_return = 99;
+inline constexpr double k_j2_newton_evaluation = 85;
+inline constexpr int k_j2_newton_evaluations_plate = 2;
 // The square tube (Johnson-Cook, trial overshoots of a few per cent in a crash): 3 assumed.
 inline constexpr int k_j2_newton_evaluations_tube = 3;
 // Johnson-Cook flow curve and rate factor (the square tube): the filtered effective strain
