@@ -125,8 +125,8 @@ FPMSHELL_INLINE void newton_in_bracket(const MaskOf<T>& open, const T& phi, cons
     x = select(open, select((newton > lo) && (newton < hi), newton, 0.5 * (lo + hi)), x);
 }
 
-/// As newton_in_bracket with Halley's step, -2 Phi Phi' / (2 Phi'^2 - Phi Phi''), where it
-/// scales Newton's by a factor in (2/3, 2) (else Newton's): one division as Newton's.
+/// As newton_in_bracket with Halley's step (eq. 7.3a-5), -2 Phi Phi' / (2 Phi'^2 - Phi Phi''),
+/// where it scales Newton's by a factor in (2/3, 2) (else Newton's): one division as Newton's.
 template <class T>
 FPMSHELL_INLINE void halley_in_bracket(const MaskOf<T>& open, const T& phi, const T& dphi,
                                        const T& d2phi, T& x, T& lo, T& hi) {
