@@ -34,7 +34,7 @@
 
 namespace fpmshell::bench::cost {
 
-inline constexpr double k_transcendental = 20;  // log / pow: ~20 flop of polynomial
+inline constexpr double k_transcendental = 20;  // log: ~20 flop of polynomial (pow: 2)
 
 // ---- element loop (ShellElements::compute), per element -----------------------------------
 
@@ -101,30 +101,29 @@ inline constexpr double k_material_point = 45;
 // LinearElastic::update: sigma += C d_eps, 15 + 3.
 inline constexpr double k_elastic_update = 18;
 
-// J2Plastic::update (j2_plastic.cpp), bilinear flow curve, no rate factor:
+// The return mapping (materials/j2_return_mapping.hpp, j2_consistency.hpp), bilinear flow
+// curve, no rate factor:
 //   trial (sigma_n + C d_eps 18, xi 3, kappa 1, kappa^2 / 3 2, p_norm2 10 + 2, test 1)   37
-//   constants of the return (h_k 3, s, d 2, A1 2, A2 5, a1 5, a2 3, first guess 2,
-//   F'(0) 12) 34, the test and Newton step at dgamma = 0 3, the update (s, d 6, xi 7,
-//   back stress 8, stress 3, alpha 14, P xi 7, plastic work 13) 58                        95
-//   per further evaluation of F and F' (q1, q2 6, fb2 5, sqrt, dfb2 11, alpha 3, dalpha 5,
-//   flow curve 7, kappa 3, F 4, F' 5 = 50) with its test and Newton step (3)             53
-// Newton evaluations: the library does not report them, so the loop of j2_plastic.cpp was
-// replayed outside it on the increments of the table's steady plastic plate (trial overshoot
-// about 10 % of the yield radius, bench_models.hpp): 4 evaluations after the one at dgamma = 0
-// (3 at overshoots of 1-3 %, 5 at 20-50 %; the same replay timed the whole update at ~210 ns,
-// 25 x the elastic branch: the Newton chain of divisions and square roots is latency-bound).
-// With ONE evaluation, as first assumed, a yielding point would count 185 instead of 344.
+//   constants of the return (h_k 3, s, d 2, A1 2, A2 5, a1 5, a2 3, f_bar_tr 2, a_bar 4,
+//   bound of dgamma 5, Phi'(0) 8, Phi''(0) 9, Halley step 10) 58, the update (s, d 2,
+//   xi 5, back stress 8, stress 3, alpha 3, P xi 7, plastic work 13) 41                 99
+//   per evaluation of Phi (q1, q2 5, c1, c2 4, f_bar 2, f_bar f_bar' 5, alpha 3,
+//   f_bar alpha' 4, flow curve 2, kappa 4, g 2, F 4, Phi 4, Phi' 9, Phi'' 25) with its
+//   test and bracketed Halley step (12)                                                 85
+// Evaluations: J2Return::evaluations on the plate of bench/crash_kernels (every point
+// yielding, trial overshoot about 10 % of the yield radius): 2 on nearly every pack of 8.
+// A Johnson-Cook evaluation adds a power (vector_log and vector_exp, core/simd_math.hpp).
 inline constexpr double k_j2_trial = 37;
-inline constexpr double k_j2_return = 95;
-inline constexpr double k_j2_newton_evaluation = 53;
-inline constexpr int k_j2_newton_evaluations_plate = 4;
+inline constexpr double k_j2_return = 99;
+inline constexpr double k_j2_newton_evaluation = 85;
+inline constexpr int k_j2_newton_evaluations_plate = 2;
 // The square tube (Johnson-Cook, trial overshoots of a few per cent in a crash): 3 assumed.
 inline constexpr int k_j2_newton_evaluations_tube = 3;
 // Johnson-Cook flow curve and rate factor (the square tube): the filtered effective strain
-// rate (11 + 3) and the rate factor (div, log, 2) at every point; a pow per flow-curve
-// evaluation of the return (one per Newton evaluation).
+// rate (11 + 3) and the rate factor (div, log, 2) at every point; a pow (a log and an exp)
+// per flow-curve evaluation of the return (one per Newton evaluation).
 inline constexpr double k_j2_rate = 14 + 3 + k_transcendental;
-inline constexpr double k_j2_johnson_cook_evaluation = k_transcendental;
+inline constexpr double k_j2_johnson_cook_evaluation = 2 * k_transcendental;
 
 struct MaterialCost {
     bool plastic = false;

@@ -60,10 +60,21 @@ inline void prefetch_packs(const RealPack* first, std::size_t count) {
 template <class T>
 inline constexpr int lanes_of = std::is_same_v<T, Real> ? 1 : k_lanes;
 
+/// The small helpers below are forced inline: GCC otherwise keeps some pack-valued calls
+/// (a 3x3 product is 9 pack FMAs, less than the call's spills; a call to max in the return
+/// mapping spills its whole register file).
+#define FPMSHELL_INLINE [[gnu::always_inline]] inline
+
 using std::abs;
 using std::max;
+using std::min;
 using std::sqrt;
-[[nodiscard]] inline RealPack max(const RealPack& a, const RealPack& b) { return stdx::max(a, b); }
+[[nodiscard]] FPMSHELL_INLINE RealPack max(const RealPack& a, const RealPack& b) {
+    return stdx::max(a, b);
+}
+[[nodiscard]] FPMSHELL_INLINE RealPack min(const RealPack& a, const RealPack& b) {
+    return stdx::min(a, b);
+}
 // GCC 12 warns of an uninitialised variable inside its own AVX-512 sqrt intrinsic once inlined
 // (GCC bug 105593, fixed in GCC 13); the pragma at this call site silences that false report.
 #pragma GCC diagnostic push
@@ -71,10 +82,6 @@ using std::sqrt;
 #pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
 [[nodiscard]] inline RealPack sqrt(const RealPack& a) { return stdx::sqrt(a); }
 #pragma GCC diagnostic pop
-
-/// The small helpers below are forced inline: GCC otherwise keeps some pack-valued calls
-/// (a 3x3 product is 9 pack FMAs, less than the call's spills).
-#define FPMSHELL_INLINE [[gnu::always_inline]] inline
 
 /// A 3-vector of T (one per lane).
 template <class T>

@@ -203,12 +203,12 @@ template <class T, class ReturnMapping = NoReturnMapping, class PointUpdate = El
                                    (1.0 - yield->rate_filter) * yield->strain_rate[point];
                 yield->new_strain_rate[point] = new_rate;
                 // A lane outside the R = 1 surface is checked against its own R(rate) >= 1:
-                // one logarithm or power per such lane, none for the points well inside.
+                // one logarithm or power per pack with such a lane, none for the points well
+                // inside.
                 const MaskOf<T> outside = !inside && valid;
                 if (any_lane(outside)) {
-                    for (int l = 0; l < lanes_of<T>; ++l)
-                        if (lane(outside, l))
-                            set_lane(rate_factor[point], l, yield->rate->value(lane(new_rate, l)));
+                    rate_factor[point] =
+                        select(outside, yield->rate->value(new_rate), rate_factor[point]);
                     const T k2_rate = rate_factor[point] * rate_factor[point] * k2;
                     inside = inside || (half_p2 - k2_rate <= yield->tolerance * k2_rate);
                 }

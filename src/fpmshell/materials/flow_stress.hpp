@@ -6,12 +6,22 @@
 #include <algorithm>
 #include <cmath>
 
+#include "fpmshell/core/simd.hpp"
+#include "fpmshell/core/simd_math.hpp"
 #include "fpmshell/core/types.hpp"
 
 namespace fpmshell {
 
+/// sigma_f and sigma_f' at one plastic strain per lane of T (core/simd.hpp).
+template <class T>
+struct FlowValue {
+    T value, slope;
+};
+
 struct FlowStress {
     enum class Kind { Linear, JohnsonCook };
+    /// Johnson-Cook with n < 1: below this plastic strain the slope is taken at it.
+    static constexpr Real k_slope_floor = 1e-6;
     Kind kind = Kind::Linear;
     Real yield_stress = 0;  ///< linear: sigma_y0
     Real hardening = 0;  ///< linear: plastic modulus H = E E_t / (E - E_t); 0 = perfectly plastic
@@ -22,11 +32,11 @@ struct FlowStress {
         return a + (alpha > 0 ? b * std::pow(alpha, n) : 0.0);
     }
     /// d sigma_f / d alpha; for Johnson-Cook with n < 1 the slope is infinite at alpha = 0:
-    /// it is taken at a small plastic strain instead (the return mapping brackets its root and
-    /// does not rely on the slope there, theory.md §7.3 step 3).
+    /// it is taken at a small plastic strain instead (the return mapping iterates on the flow
+    /// stress there and does not rely on this slope, theory.md §7.3a).
     [[nodiscard]] Real slope(Real alpha) const {
         if (kind == Kind::Linear) return hardening;
-        const Real at = std::max(alpha, Real{1e-6});
+        const Real at = std::max(alpha, k_slope_floor);
         return b * n * std::pow(at, n - 1.0);
     }
     struct ValueSlope {
@@ -36,7 +46,7 @@ struct FlowStress {
     /// loop needs both at every iterate). Equal to value() and slope() to rounding.
     [[nodiscard]] ValueSlope value_and_slope(Real alpha) const {
         if (kind == Kind::Linear) return {yield_stress + hardening * alpha, hardening};
-        if (!(alpha >= 1e-6)) return {value(alpha), slope(alpha)};
+        if (!(alpha >= k_slope_floor)) return {value(alpha), slope(alpha)};
         const Real p = std::pow(alpha, n - 1.0);  // alpha^n = alpha alpha^(n-1)
         return {a + b * alpha * p, b * n * p};
     }
@@ -49,14 +59,24 @@ struct RateFactor {
     Real c = 0, reference_rate = 1;  ///< Johnson-Cook: 1 + C ln(max(rate / rate_0, 1))
 
     [[nodiscard]] bool active() const { return kind != Kind::None; }
-    [[nodiscard]] Real value(Real rate) const {
+    /// R(rate) on every lane of T (core/simd.hpp), with the logarithm and power of
+    /// core/simd_math.hpp: the element blocks take a pack of rates at once, and a point computed
+    /// alone gets the same factor as its lane would.
+    template <class T>
+    [[nodiscard]] T value(const T& rate) const {
         switch (kind) {
-            case Kind::CowperSymonds:
-                return rate > 0 ? 1.0 + std::pow(rate / d, 1.0 / q) : 1.0;
-            case Kind::JohnsonCook:  // below the reference rate the factor is 1: no logarithm
-                return rate > reference_rate ? 1.0 + c * std::log(rate / reference_rate) : 1.0;
+            case Kind::CowperSymonds: {
+                const MaskOf<T> moving = rate > 0.0;
+                const T ratio = select(moving, max(rate * (1.0 / d), T(1e-300)), T(1.0));
+                return select(moving, 1.0 + vector_pow(ratio, T(1.0 / q)), T(1.0));
+            }
+            case Kind::JohnsonCook: {  // below the reference rate the factor is 1
+                const MaskOf<T> fast = rate > reference_rate;
+                const T ratio = select(fast, rate * (1.0 / reference_rate), T(1.0));
+                return select(fast, 1.0 + c * vector_log(ratio), T(1.0));
+            }
             default:
-                return 1.0;
+                return T(1.0);
         }
     }
 };

@@ -19,6 +19,7 @@ J2Plastic::J2Plastic(Real youngs_modulus, Real poisson_ratio, const FlowStress& 
     constants_.tolerance = k_yield_tolerance;
     constants_.flow = flow_;
     constants_.flow_radius0 = flow_.value(0);
+    constants_.flow_slope0 = flow_.slope(0);
 }
 
 Real J2Plastic::yield_radius(Real alpha, Real r) const {

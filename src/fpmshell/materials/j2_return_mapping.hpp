@@ -9,26 +9,13 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <utility>
 
 #include "fpmshell/core/simd.hpp"
 #include "fpmshell/materials/flow_stress.hpp"
+#include "fpmshell/materials/j2_consistency.hpp"
 
 namespace fpmshell {
-
-/// Newton iterations before the return mapping gives up and keeps its last iterate.
-inline constexpr int k_max_return_iterations = 100;
-
-/// What the return mapping needs of a J2 material (J2Plastic holds one).
-struct J2ReturnConstants {
-    Real c11 = 0, c12 = 0,
-         c33 = 0;        ///< plane-stress C: [[c11, c12, 0], [c12, c11, 0], [0, 0, c33]]
-    Real bulk_term = 0;  ///< E / (3 (1 - nu)), the A1 coefficient of §7.3 without H_k
-    Real two_g = 0;      ///< 2 G, the A2 coefficient without H_k
-    Real beta = 1;       ///< hardening mix of §7.2: 1 isotropic, 0 kinematic
-    Real tolerance = 0;  ///< J2Plastic::k_yield_tolerance
-    FlowStress flow;
-    Real flow_radius0 = 0;  ///< sigma_f(0)
-};
 
 /// The history of one point per lane, as in MaterialPoint (the filtered strain rate is the
 /// caller's: it sets the rate factor R, frozen during the return, §7.4 option a).
@@ -43,7 +30,8 @@ template <class T>
 struct J2Return {
     J2PointState<T> state;
     T plastic_work;
-    MaskOf<T> yielded;  ///< lanes whose trial state was outside the yield surface
+    MaskOf<T> yielded;    ///< lanes whose trial state was outside the yield surface
+    int evaluations = 0;  ///< evaluations of the consistency residual (the most of any lane)
 };
 
 namespace j2_detail {
@@ -55,53 +43,27 @@ template <class T>
     return s * s * (1.0 / 6.0) + 0.5 * d * d + 2.0 * x[2] * x[2];
 }
 
-template <class T>
-struct Radius {
-    T radius;  ///< kappa(alpha) / R = sigma_f(0) + beta (sigma_f(alpha) - sigma_f(0)), §7.4
-    T slope;   ///< sigma_f'(alpha)
-};
-
-/// kappa / R and sigma_f' at alpha on the lanes of `lanes` (the others are left at 0). A linear
-/// curve is pack arithmetic; a Johnson-Cook one takes one power per lane.
-template <class T>
-[[nodiscard]] FPMSHELL_INLINE Radius<T> radius_and_slope(const J2ReturnConstants& c, const T& alpha,
-                                                         const MaskOf<T>& lanes) {
-    const Real f0 = c.flow_radius0;
-    if (c.flow.kind == FlowStress::Kind::Linear)
-        return {f0 + c.beta * ((c.flow.yield_stress + c.flow.hardening * alpha) - f0),
-                T(c.flow.hardening)};
-    Radius<T> out{T(0.0), T(0.0)};
-    for (int l = 0; l < lanes_of<T>; ++l) {
-        if (!lane(lanes, l)) continue;
-        const FlowStress::ValueSlope f = c.flow.value_and_slope(lane(alpha, l));
-        set_lane(out.radius, l, f0 + c.beta * (f.value - f0));
-        set_lane(out.slope, l, f.slope);
-    }
-    return out;
-}
-
-/// sigma_f'(alpha) on the lanes of `lanes`.
-template <class T>
-[[nodiscard]] FPMSHELL_INLINE T flow_slope(const J2ReturnConstants& c, const T& alpha,
-                                           const MaskOf<T>& lanes) {
-    if (c.flow.kind == FlowStress::Kind::Linear) return T(c.flow.hardening);
-    T out = 0.0;
-    for (int l = 0; l < lanes_of<T>; ++l)
-        if (lane(lanes, l)) set_lane(out, l, c.flow.slope(lane(alpha, l)));
-    return out;
-}
-
 }  // namespace j2_detail
 
-/// §7.3 on the lanes of `lanes`: the trial state from the old one and the strain increment
-/// d_eps (engineering shear), the elastic check, and where it fails the return along the
-/// plane-stress projection. r: the rate factor R >= 1 of each lane (§7.4). A lane outside
-/// `lanes` returns its trial state.
+namespace j2_detail {
+
+/// Steps 1-2 of one point per lane: the trial state, the elastic check, the constants of the
+/// return.
 template <class T>
-[[nodiscard]] J2Return<T> j2_return_mapping(const J2ReturnConstants& c, const J2PointState<T>& old,
-                                            const std::array<T, 3>& d_eps, const T& r,
-                                            const MaskOf<T>& lanes) {
-    using namespace j2_detail;
+struct Trial {
+    J2Return<T> out;  ///< the trial state (what a lane that does not yield returns)
+    MaskOf<T> yielding;
+    TrialReturn<T> t;
+    std::array<T, 3> xi_tr;
+    T s_tr, d_tr, h_k, slope_n;
+};
+
+template <class T>
+[[nodiscard]] FPMSHELL_INLINE Trial<T> trial_state(const J2ReturnConstants& c,
+                                                   const J2PointState<T>& old,
+                                                   const std::array<T, 3>& d_eps, const T& r,
+                                                   const MaskOf<T>& lanes) {
+    Trial<T> tr{};  // zero where no lane yields: never read, but defined
     const T alpha_n = old.plastic_strain;
     // kappa / R and sigma_f' at alpha_n, stored by the last plastic step (the flow curve at
     // alpha = 0 before the first one; -1: the slope is not known yet)
@@ -112,98 +74,61 @@ template <class T>
     const std::array<T, 3> sigma_tr{old.stress[0] + (c.c11 * d_eps[0] + c.c12 * d_eps[1]),
                                     old.stress[1] + (c.c12 * d_eps[0] + c.c11 * d_eps[1]),
                                     old.stress[2] + c.c33 * d_eps[2]};
-    const std::array<T, 3> xi_tr{sigma_tr[0] - old.back_stress[0], sigma_tr[1] - old.back_stress[1],
-                                 sigma_tr[2] - old.back_stress[2]};
+    tr.xi_tr = {sigma_tr[0] - old.back_stress[0], sigma_tr[1] - old.back_stress[1],
+                sigma_tr[2] - old.back_stress[2]};
     const T kappa_n = r * flow_radius_n;
     const T third_k2 = kappa_n * kappa_n * (1.0 / 3.0);
-    const T f_tr = 0.5 * p_norm2(xi_tr) - third_k2;
-    J2Return<T> out{{sigma_tr, old.back_stress, alpha_n, flow_radius_n, flow_slope_n},
-                    T(0.0),
-                    lanes && (f_tr > c.tolerance * third_k2)};
-    const MaskOf<T> yielding = out.yielded;
-    if (!any_lane(yielding)) return out;
+    const T f_tr = 0.5 * p_norm2(tr.xi_tr) - third_k2;
+    tr.out = {{sigma_tr, old.back_stress, alpha_n, flow_radius_n, flow_slope_n},
+              T(0.0),
+              lanes && (f_tr > c.tolerance * third_k2)};
+    tr.yielding = tr.out.yielded;
+    if (!any_lane(tr.yielding)) return tr;
 
-    // 2 constants; H_k frozen at alpha_n (§7.4)
-    const MaskOf<T> slope_unknown = yielding && (flow_slope_n < 0.0);
-    const T slope_n =
-        any_lane(slope_unknown)
-            ? select(slope_unknown, flow_slope(c, alpha_n, slope_unknown), flow_slope_n)
-            : flow_slope_n;
-    const T h_k = (1.0 - c.beta) * r * slope_n;
-    const T s_tr = xi_tr[0] + xi_tr[1], d_tr = xi_tr[1] - xi_tr[0];
-    const T a1_sq = s_tr * s_tr * (1.0 / 6.0);                      // A1
-    const T a2_sq = 0.5 * d_tr * d_tr + 2.0 * xi_tr[2] * xi_tr[2];  // A2
-    const T a1 = c.bulk_term + (2.0 / 3.0) * h_k;
-    const T a2 = c.two_g + (2.0 / 3.0) * h_k;
-    const Real sqrt23 = std::sqrt(2.0 / 3.0);
-    const T r_beta = r * c.beta;
+    // 2 constants; H_k frozen at alpha_n (§7.4); a point that never yielded has the slope of
+    // the flow curve at alpha = 0
+    tr.slope_n = select(flow_slope_n < 0.0, T(c.flow_slope0), flow_slope_n);
+    tr.h_k = (1.0 - c.beta) * r * tr.slope_n;
+    tr.s_tr = tr.xi_tr[0] + tr.xi_tr[1];
+    tr.d_tr = tr.xi_tr[1] - tr.xi_tr[0];
+    TrialReturn<T>& t = tr.t;
+    t.a1_sq = tr.s_tr * tr.s_tr * (1.0 / 6.0);                            // A1
+    t.a2_sq = 0.5 * tr.d_tr * tr.d_tr + 2.0 * tr.xi_tr[2] * tr.xi_tr[2];  // A2
+    t.a1 = c.bulk_term + (2.0 / 3.0) * tr.h_k;
+    t.a2 = c.two_g + (2.0 / 3.0) * tr.h_k;
+    const T fbar2_tr = t.a1_sq + t.a2_sq;
+    t.fbar_tr = sqrt(fbar2_tr);
+    t.a_bar = (t.a1_sq * t.a1 + t.a2_sq * t.a2) / fbar2_tr;
+    t.alpha_n = alpha_n;
+    t.r = r;
+    t.kappa_n = kappa_n;
+    t.third_k2 = third_k2;
+    t.flow_radius_n = flow_radius_n;
+    return tr;
+}
 
-    // 3 F(dgamma) = f_bar^2 / 2 - kappa(alpha(dgamma))^2 / 3, strictly decreasing; Newton kept
-    // inside a bracket [lo, hi] with bisection as the fallback. The upper end is found only
-    // when needed: Newton from the left of the root of a decreasing F moves right, and the
-    // first iterate past the root closes the bracket.
-    Radius<T> last{flow_radius_n, slope_n};  // the flow curve at the last dgamma evaluated
-    T f = f_tr;                              // F and F' at dgamma = 0 from what is known already
-    T df = -(a1_sq * a1 + a2_sq * a2) -
-           (2.0 / 3.0) * kappa_n * (r_beta * slope_n) * sqrt23 * sqrt(a1_sq + a2_sq);
-    const T first_guess = f_tr / (third_k2 * select(a1 < a2, a1, a2));
-    const Real infinity = std::numeric_limits<Real>::infinity();
-    T lo = 0.0, hi = infinity, dg = 0.0;
-    MaskOf<T> open = yielding;  // lanes still iterating
-    MaskOf<T> converged = !yielding;
-    for (int it = 0; it < k_max_return_iterations; ++it) {
-        if (it > 0) {
-            // q_i = 1 / (1 + a_i dgamma) with one division: the Newton step is a chain of
-            // dependent divisions and square roots, whose latency sets the cost of a return
-            const T u1 = 1.0 + a1 * dg, u2 = 1.0 + a2 * dg;
-            const T inv_u1u2 = 1.0 / (u1 * u2);
-            const T q1 = u2 * inv_u1u2, q2 = u1 * inv_u1u2;
-            const T fb2 = a1_sq * q1 * q1 + a2_sq * q2 * q2;
-            const T fb = sqrt(fb2);
-            const T dfb2 = -2.0 * a1_sq * a1 * q1 * q1 * q1 - 2.0 * a2_sq * a2 * q2 * q2 * q2;
-            const T alpha = alpha_n + sqrt23 * dg * fb;
-            const T dalpha = sqrt23 * (fb + select(fb > 0.0, dg * dfb2 / (2.0 * fb), T(0.0)));
-            const Radius<T> at = radius_and_slope(c, alpha, open);
-            const T kappa = r * at.radius, dkappa = r_beta * at.slope;
-            f = select(open, 0.5 * fb2 - kappa * kappa * (1.0 / 3.0), f);
-            df = select(open, 0.5 * dfb2 - (2.0 / 3.0) * kappa * dkappa * dalpha, df);
-            last.radius = select(open, at.radius, last.radius);
-            last.slope = select(open, at.slope, last.slope);
-        }
-        const MaskOf<T> done = open && (abs(f) < c.tolerance * third_k2);
-        converged = converged || done;
-        open = open && !done;
-        if (!any_lane(open)) break;
-        const MaskOf<T> above = f > 0.0;
-        lo = select(open && above, dg, lo);
-        hi = select(open && !above, dg, hi);
-        T next = select(df < 0.0, dg - f / df, T(-1.0));
-        const T bisect = select(hi < infinity, 0.5 * (lo + hi), max(2.0 * lo, first_guess));
-        next = select((next > lo) && (next < hi), next, bisect);
-        dg = select(open, next, dg);
-    }
-
-    // 4 update
-    const T u1 = 1.0 + a1 * dg, u2 = 1.0 + a2 * dg;
-    const T inv_u1u2 = 1.0 / (u1 * u2);
-    const T s = s_tr * (u2 * inv_u1u2), d = d_tr * (u1 * inv_u1u2);
-    const std::array<T, 3> xi{0.5 * (s - d), 0.5 * (s + d), xi_tr[2] * (u1 * inv_u1u2)};
-    const T hardening_step = (2.0 / 3.0) * h_k * dg;
+/// Step 4 from the solution of step 3.
+template <class T>
+[[nodiscard]] FPMSHELL_INLINE J2Return<T> returned_state(const J2PointState<T>& old,
+                                                         const Trial<T>& tr,
+                                                         const Consistency<T>& solution) {
+    J2Return<T> out = tr.out;
+    const MaskOf<T>& yielding = tr.yielding;
+    const T dg = solution.dgamma;
+    out.evaluations = solution.evaluations;
+    // 4 update, with q_i = 1 / (1 + a_i dgamma) and f_bar = sqrt(xi^T P xi) of the last
+    // evaluation
+    const T s = tr.s_tr * solution.q1, d = tr.d_tr * solution.q2;
+    const std::array<T, 3> xi{0.5 * (s - d), 0.5 * (s + d), tr.xi_tr[2] * solution.q2};
+    const T hardening_step = (2.0 / 3.0) * tr.h_k * dg;
     J2PointState<T> next;
     for (std::size_t k = 0; k < 3; ++k) {
         next.back_stress[k] = old.back_stress[k] + hardening_step * xi[k];
         next.stress[k] = next.back_stress[k] + xi[k];
     }
-    next.plastic_strain = alpha_n + sqrt23 * dg * sqrt(p_norm2(xi));
-    // the flow curve at the converged dgamma is at hand (alpha(dgamma) above, to rounding)
-    const MaskOf<T> unconverged = yielding && !converged;
-    if (any_lane(unconverged)) {
-        const Radius<T> at = radius_and_slope(c, next.plastic_strain, unconverged);
-        last.radius = select(unconverged, at.radius, last.radius);
-        last.slope = select(unconverged, at.slope, last.slope);
-    }
-    next.flow_radius = last.radius;
-    next.flow_slope = last.slope;
+    next.plastic_strain = tr.t.alpha_n + k_sqrt23 * dg * solution.fbar;
+    next.flow_radius = solution.flow_radius;
+    next.flow_slope = solution.flow_slope;
     // d_eps_p = dgamma P xi (engineering shear). Dissipation by the trapezoidal rule, like the
     // element's strain work: then strain work - plastic work = the exact change of the elastic
     // energy 1/2 sigma C^-1 sigma, never negative whatever the increment.
@@ -221,6 +146,68 @@ template <class T>
     out.state.flow_slope = select(yielding, next.flow_slope, out.state.flow_slope);
     out.plastic_work = select(yielding, work, T(0.0));
     return out;
+}
+
+/// {f(0), ..., f(K - 1)}
+template <std::size_t K, class F>
+[[nodiscard]] FPMSHELL_INLINE auto array_of(const F& f) {
+    return [&]<std::size_t... I>(std::index_sequence<I...>) { return std::array{f(I)...}; }
+    (std::make_index_sequence<K>{});
+}
+
+}  // namespace j2_detail
+
+/// §7.3 on K points per lane at once (their Newton iterations in lockstep, j2_consistency.hpp),
+/// each on the lanes of its `lanes`: the trial state from the old one and the strain increment
+/// d_eps (engineering shear), the elastic check, and where it fails the return along the
+/// plane-stress projection. r: the rate factor R >= 1 of each lane (§7.4). A lane outside
+/// `lanes` returns its trial state. A point's result does not depend on the others.
+template <class T, std::size_t K>
+[[nodiscard]] std::array<J2Return<T>, K> j2_return_mapping_points(
+    const J2ReturnConstants& c, const std::array<J2PointState<T>, K>& old,
+    const std::array<std::array<T, 3>, K>& d_eps, const std::array<T, K>& r,
+    const std::array<MaskOf<T>, K>& lanes) {
+    using namespace j2_detail;
+    const std::array<Trial<T>, K> tr = array_of<K>(
+        [&](std::size_t k) { return trial_state(c, old[k], d_eps[k], r[k], lanes[k]); });
+    bool any = false;
+    for (const Trial<T>& x : tr) any = any || any_lane(x.yielding);
+    if (!any) return array_of<K>([&](std::size_t k) { return tr[k].out; });
+
+    // 3 the consistency condition (§7.3a)
+    const FlowStress& fl = c.flow;
+    std::array<Consistency<T>, K> solution;
+    auto solve = [&](auto make) {
+        auto iterations = array_of<K>(make);
+        solve_in_lockstep(iterations);
+        for (std::size_t k = 0; k < K; ++k) solution[k] = iterations[k].result();
+    };
+    if (fl.kind == FlowStress::Kind::Linear) {
+        auto linear = [&fl](const T& alpha) {
+            return FlowValue<T>{fl.yield_stress + fl.hardening * alpha, T(fl.hardening)};
+        };
+        solve([&](std::size_t k) {
+            return DgammaIteration<T, decltype(linear)>(c, tr[k].t, tr[k].slope_n, tr[k].yielding,
+                                                        linear);
+        });
+    } else if (fl.n <= 1.0 && c.beta > 0.0) {
+        solve([&](std::size_t k) { return FlowStressIteration<T>(c, tr[k].t, tr[k].yielding); });
+    } else {
+        auto curve = [&c](const T& alpha) { return johnson_cook_curve(c, alpha); };
+        solve([&](std::size_t k) {
+            return DgammaIteration<T, decltype(curve)>(c, tr[k].t, tr[k].slope_n, tr[k].yielding,
+                                                       curve);
+        });
+    }
+    return array_of<K>([&](std::size_t k) { return returned_state(old[k], tr[k], solution[k]); });
+}
+
+/// §7.3 on one point per lane (j2_return_mapping_points with K = 1).
+template <class T>
+[[nodiscard]] J2Return<T> j2_return_mapping(const J2ReturnConstants& c, const J2PointState<T>& old,
+                                            const std::array<T, 3>& d_eps, const T& r,
+                                            const MaskOf<T>& lanes) {
+    return j2_return_mapping_points<T, 1>(c, {old}, {d_eps}, {r}, {lanes})[0];
 }
 
 }  // namespace fpmshell

@@ -39,12 +39,54 @@ ElasticTriangleLoads<RealPack> block_point_loads(const J2Plastic& material, cons
         for (std::size_t p = 0; p < n_points; ++p) strain_rate[p] = field(p, J2::k_strain_rate);
     }
     // The yielding points: the return mapping of §7.3 on the yielding (point, lane) pairs of
-    // the block, k_lanes pairs at a time (packed densely: the pairs of a block that yields in
-    // part fill whole packs), in place in the block's state (a lane that takes this path never
-    // falls back, so its old state is not needed again).
+    // the block, in place in the block's state (a lane that takes this path never falls back,
+    // so its old state is not needed again). A point that yields on most lanes runs on its own
+    // packs, masked; the pairs of the other points are packed densely, k_lanes pairs at a time
+    // (the pairs of a block that yields in part fill whole packs). A lane's result does not
+    // depend on its pack: the iteration is masked lane by lane.
     auto return_mapping = [&](std::size_t n_pts, const RealPack::mask_type* yielding,
                               const std::array<RealPack, 3>* d_eps, const RealPack* rate_factor,
                               RealPack* new_stress, RealPack* d_plastic_work) {
+        const J2ReturnConstants& constants = material.return_constants();
+        // Points on their own packs, two at a time (their Newton iterations in lockstep,
+        // materials/j2_consistency.hpp), the old state straight from the block's fields.
+        auto old_state = [&](std::size_t p) {
+            const RealPack zero(0.0);
+            return J2PointState<RealPack>{
+                {field(p, J2::k_stress), field(p, J2::k_stress + 1), field(p, J2::k_stress + 2)},
+                {kinematic ? field(p, J2::k_back_stress) : zero,
+                 kinematic ? field(p, J2::k_back_stress + 1) : zero,
+                 kinematic ? field(p, J2::k_back_stress + 2) : zero},
+                field(p, J2::k_plastic_strain),
+                field(p, J2::k_flow_radius),
+                field(p, J2::k_flow_slope)};
+        };
+        auto store = [&](std::size_t p, const J2Return<RealPack>& ret) {
+            const RealPack::mask_type& y = ret.yielded;  // not: inside after all (rounding)
+            for (std::size_t r = 0; r < 3; ++r) {
+                stdx::where(yielding[p], new_stress[3 * p + r]) = ret.state.stress[r];
+                if (kinematic)
+                    stdx::where(y, field(p, J2::k_back_stress + r)) = ret.state.back_stress[r];
+            }
+            stdx::where(y, d_plastic_work[p]) = ret.plastic_work;
+            stdx::where(y, field(p, J2::k_plastic_strain)) = ret.state.plastic_strain;
+            stdx::where(y, field(p, J2::k_plastic_work)) =
+                field(p, J2::k_plastic_work) + ret.plastic_work;
+            stdx::where(y, field(p, J2::k_flow_radius)) = ret.state.flow_radius;
+            stdx::where(y, field(p, J2::k_flow_slope)) = ret.state.flow_slope;
+        };
+        auto return_point = [&](std::size_t p) {
+            store(p, j2_return_mapping(constants, old_state(p), d_eps[p], rate_factor[p],
+                                       yielding[p]));
+        };
+        auto return_two_points = [&](std::size_t p, std::size_t q) {
+            const std::array<J2Return<RealPack>, 2> ret = j2_return_mapping_points<RealPack, 2>(
+                constants, {old_state(p), old_state(q)}, {d_eps[p], d_eps[q]},
+                {rate_factor[p], rate_factor[q]}, {yielding[p], yielding[q]});
+            store(p, ret[0]);
+            store(q, ret[1]);
+        };
+        std::size_t pending = n_pts;  // a point waiting for a second one
         constexpr int w = k_lanes;
         // the inputs of the batch, structure of arrays: stress 3, back stress 3, alpha, flow
         // radius, flow slope, strain increment 3, rate factor
@@ -63,8 +105,8 @@ ElasticTriangleLoads<RealPack> block_point_loads(const J2Plastic& material, cons
                                              pack(8)};
             RealPack::mask_type used(false);
             for (int i = 0; i < n; ++i) used[static_cast<std::size_t>(i)] = true;
-            const J2Return<RealPack> ret = j2_return_mapping(
-                material.return_constants(), old, {pack(9), pack(10), pack(11)}, pack(12), used);
+            const J2Return<RealPack> ret =
+                j2_return_mapping(constants, old, {pack(9), pack(10), pack(11)}, pack(12), used);
             for (int i = 0; i < n; ++i) {
                 const std::size_t p = batch_point[static_cast<std::size_t>(i)];
                 const int l = batch_lane[static_cast<std::size_t>(i)];
@@ -86,7 +128,17 @@ ElasticTriangleLoads<RealPack> block_point_loads(const J2Plastic& material, cons
             n = 0;
         };
         for (std::size_t p = 0; p < n_pts; ++p) {
-            if (!any_lane(yielding[p])) continue;
+            const int count = stdx::popcount(yielding[p]);
+            if (count == 0) continue;
+            if (2 * count > k_lanes) {
+                if (pending == n_pts) {
+                    pending = p;
+                } else {
+                    return_two_points(pending, p);
+                    pending = n_pts;
+                }
+                continue;
+            }
             for (int l = 0; l < k_lanes; ++l) {
                 if (!lane(yielding[p], l)) continue;
                 const auto i = static_cast<std::size_t>(n);
@@ -106,6 +158,7 @@ ElasticTriangleLoads<RealPack> block_point_loads(const J2Plastic& material, cons
             }
         }
         if (n > 0) run_batch();
+        if (pending != n_pts) return_point(pending);
     };
     const ElasticTriangleLoads<RealPack> loads =
         elastic_triangle_loads(*step.motion, *step.constants, step.thickness, stress.data(),

@@ -29,12 +29,12 @@ J2Plastic bilinear(Real hardening, Real beta) {
     return J2Plastic(k_e, k_nu, f, RateFactor{}, beta);
 }
 
-J2Plastic johnson_cook(Real beta) {  // the tube's steel (benchmarks.md 5.3), n < 1
+J2Plastic johnson_cook(Real beta, Real n = 0.4) {  // the tube's steel (benchmarks.md 5.3), n < 1
     FlowStress f;
     f.kind = FlowStress::Kind::JohnsonCook;
     f.a = k_sy;
     f.b = 500e6;
-    f.n = 0.4;
+    f.n = n;
     RateFactor rate;
     rate.kind = RateFactor::Kind::JohnsonCook;
     rate.c = 0.02;
@@ -145,6 +145,10 @@ TEST(J2ReturnMapping, EveryLaneEqualsItsScalarReturnPerfectlyPlastic) {
 TEST(J2ReturnMapping, EveryLaneEqualsItsScalarReturnJohnsonCookWithRateFactors) {
     check_lanes_against_scalar(johnson_cook(0.5).return_constants(), true, 200);
     check_lanes_against_scalar(johnson_cook(0.0).return_constants(), true, 100);  // kinematic
+    // the exponents at the ends of the range: the flow-stress iteration (n <= 1) and the
+    // dgamma iteration with the curve on packs (n > 1)
+    for (Real n : {0.1, 1.0, 1.5})
+        check_lanes_against_scalar(johnson_cook(1.0, n).return_constants(), true, 100);
 }
 
 TEST(J2ReturnMapping, LanesOutsideTheMaskKeepTheirTrialState) {

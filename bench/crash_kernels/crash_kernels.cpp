@@ -1,0 +1,226 @@
+// fpmshell_crash_kernels: the element kernel of the plastic sections of a crash run, timed on
+// one thread in ns per element-step (docs/performance.md, "Crash kernels"). Every point of
+// every element yields at every timed step: the cost of the return mapping at its worst.
+//
+// The model is the steady plastic plate of bench_models.hpp (a homogeneous biaxial stretch and
+// bending prescribed on the edges and given as the initial velocity; 5 Lobatto points through
+// the thickness x 3 in-plane points) with the section's material one of:
+//   jc        Johnson-Cook A = 180 MPa, B = 450 MPa, n = 0.5 (the crushed half-cylinder)
+//   jc-rate   the same with C = 0.02, reference rate 1 /s (the rate factor at every point)
+//   jc-n0.1   Johnson-Cook n = 0.1 (a flow curve steep at small plastic strain)
+//   bilinear  J2, sigma_y = 250 MPa, E_t = E / 21 (the plate of `fpmshell_bench --table`)
+//   elastic   the same section linear elastic: the cost of everything but the return mapping
+// The stretch rate is set from the stable step so that the points reach the yield surface
+// after 10 steps; the samples start after 14. A sample times ShellElements::compute on a twin
+// of the solver's elements, given the solver's current path element (an untimed copy),
+// `batch` times in a row: its points keep yielding under the same increment. Time: the
+// thread's CPU time (the machine may be shared), in ns per element-step.
+//
+// The source uses only the library's model and solver interface, so that the same file builds
+// against another build of the library (tools/interleaved_kernels.py compares two builds).
+//
+// usage: fpmshell_crash_kernels [--models jc,jc-rate,jc-n0.1,bilinear,elastic] [--n 71] [--samples
+// 7]
+//                               [--batch 10]
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <ctime>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
+#include "fpmshell/mesh/generators.hpp"
+#include "fpmshell/model/mesh_topology.hpp"
+#include "fpmshell/solver/explicit_solver.hpp"
+#include "fpmshell/solver/shell_elements.hpp"
+
+namespace {
+
+using namespace fpmshell;
+
+constexpr int k_steps_to_yield = 10;
+
+/// The plastic plate of n x n squares (2 n^2 triangles), steel 2 mm, 5 x 3 points, `material`
+/// (its elastic constants are overwritten), yielding at step k_steps_to_yield.
+Model steady_plate(Index n, Material material, Real yield_stress) {
+    PlateParams pp;
+    pp.nx = pp.ny = n;
+    pp.pattern = DiagonalPattern::Alternate;
+    MeshData mesh = generate_plate(pp);
+    Model m;
+    m.title = "crash kernel plate";
+    m.nodes = mesh.nodes;
+    m.triangles = mesh.triangles;
+    material.name = "steel";
+    material.density = 7800;
+    material.youngs_modulus = 2.1e11;
+    material.poisson_ratio = 0.3;
+    m.materials.push_back(material);
+    m.sections.push_back({0, 0.002, 5, 3});
+    m.element_section.assign(m.triangles.size(), 0);
+    m.control.end_time = 1;
+    // The stable step of the regular mesh: the membrane step of its triangles (legs 1 / n) or
+    // the solver's own, whichever the solver reports after its set-up.
+    const Real dt = ExplicitSolver(m).stable_dt();
+    // strains e_x = 2 e, e_y = e: plane-stress von Mises stress 2.244 E e (nu = 0.3)
+    const Real e_yield = yield_stress / (2.244 * material.youngs_modulus);
+    const Real rate = e_yield / (k_steps_to_yield * dt);
+    auto velocity = [rate](const Vec3& x) {
+        const Real dx = x.x() - 0.5, dy = x.y() - 0.5;
+        return Vec3(2 * rate * dx, rate * dy, 0.5 * rate * (dx * dx + dy * dy));
+    };
+    for (Index p : mesh.node_sets.at("boundary")) {
+        BoundaryCondition bc;
+        bc.nodes = {p};
+        bc.prescribed = PrescribedKind::Velocity;
+        bc.value = velocity(m.nodes[static_cast<std::size_t>(p)]);
+        m.boundary.push_back(bc);
+    }
+    for (Index p = 0; p < static_cast<Index>(m.nodes.size()); ++p) {
+        InitialVelocity iv;
+        iv.nodes = {p};
+        iv.velocity = velocity(m.nodes[static_cast<std::size_t>(p)]);
+        m.initial_conditions.push_back(iv);
+    }
+    return m;
+}
+
+struct Case {
+    std::string name;
+    Material material;
+    Real yield_stress;
+};
+
+Case make_case(const std::string& name) {
+    Material m;
+    if (name == "elastic") {  // the same section elastic: the floor of the plastic rows
+        m.type = MaterialType::Elastic;
+        return {name, m, 250e6};
+    }
+    if (name == "bilinear") {
+        m.type = MaterialType::J2Plastic;
+        m.yield_stress = 250e6;
+        m.tangent_modulus = 1e10;
+        return {name, m, m.yield_stress};
+    }
+    m.type = MaterialType::JohnsonCook;
+    m.jc_a = 180e6;
+    m.jc_b = 450e6;
+    m.jc_n = name == "jc-n0.1" ? 0.1 : 0.5;
+    if (name == "jc-rate") {
+        m.jc_c = 0.02;
+        m.reference_strain_rate = 1;
+    } else if (name != "jc" && name != "jc-n0.1") {
+        std::fprintf(stderr, "unknown model %s (jc, jc-rate, jc-n0.1, bilinear, elastic)\n",
+                     name.c_str());
+        std::exit(2);
+    }
+    return {name, m, m.jc_a};
+}
+
+/// CPU time of the calling thread: on a machine shared with other work, the time the kernel
+/// ran, not the time it waited for a core.
+double thread_cpu_seconds() {
+    timespec ts{};
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+    return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
+}
+
+double median(std::vector<double> v) {
+    std::sort(v.begin(), v.end());
+    const std::size_t n = v.size();
+    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+/// The plastic strain of every (element, thickness point) pair, averaged in the plane.
+std::vector<Real> plastic_strains(const ShellElements& el) {
+    std::vector<Real> out;
+    for (Index e = 0; e < el.size(); ++e)
+        for (int k = 0; k < el.thickness_points(e); ++k) out.push_back(el.plastic_strain(e, k));
+    return out;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    std::string models = "jc,jc-rate,jc-n0.1,bilinear,elastic";
+    Index n = 71;
+    int samples = 7, batch = 10;
+    for (int i = 1; i < argc; ++i) {
+        const std::string a = argv[i];
+        if (i + 1 >= argc) {
+            std::fprintf(stderr, "%s needs a value\n", a.c_str());
+            return 2;
+        }
+        const std::string v = argv[++i];
+        if (a == "--models")
+            models = v;
+        else if (a == "--n")
+            n = std::atoi(v.c_str());
+        else if (a == "--samples")
+            samples = std::max(1, std::atoi(v.c_str()));
+        else if (a == "--batch")
+            batch = std::max(1, std::atoi(v.c_str()));
+        else {
+            std::fprintf(stderr, "unknown option %s\n", a.c_str());
+            return 2;
+        }
+    }
+#ifdef _OPENMP
+    omp_set_num_threads(1);
+#endif
+    std::printf("| model | elements | ns / element-step (median of %d) | min | yielding |\n",
+                samples);
+    std::printf("|---|---:|---:|---:|---:|\n");
+    std::stringstream list(models);
+    std::string name;
+    while (std::getline(list, name, ',')) {
+        const Case c = make_case(name);
+        const Model m = steady_plate(n, c.material, c.yield_stress);
+        ExplicitSolver solver(m);
+        const MeshTopology topology(m);
+        ShellElements twin(m, topology);
+        ParticleState ps = solver.state();
+        auto sync = [&] {
+            const ParticleState& s = solver.state();
+            ps.x_prev = s.x_prev;
+            ps.x = s.x;
+            ps.dtheta = s.dtheta;
+            ps.drill_axis = s.drill_axis;
+        };
+        auto compute = [&] { (void)twin.compute(ps, 0.0, solver.last_dt()); };
+        for (int i = 0; i < k_steps_to_yield + 4; ++i) {  // the twin in step with the solver
+            sync();
+            compute();
+            solver.step(1e30);
+        }
+        std::vector<double> ns;
+        const double es = static_cast<double>(batch) * static_cast<double>(m.n_elements());
+        double share = 1;
+        for (int s = 0; s < samples; ++s) {
+            solver.step(1e30);
+            sync();
+            if (s == 0) {  // one untimed compute: the share of the pairs whose strain grows
+                const std::vector<Real> before = plastic_strains(twin);
+                compute();
+                const std::vector<Real> after = plastic_strains(twin);
+                long grew = 0;
+                for (std::size_t i = 0; i < before.size(); ++i) grew += after[i] > before[i];
+                share = static_cast<double>(grew) / static_cast<double>(before.size());
+            }
+            const double t0 = thread_cpu_seconds();
+            for (int b = 0; b < batch; ++b) compute();
+            ns.push_back((thread_cpu_seconds() - t0) * 1e9 / es);
+        }
+        std::printf("| %s | %d | %.0f | %.0f | %.1f %% |\n", c.name.c_str(), m.n_elements(),
+                    median(ns), *std::min_element(ns.begin(), ns.end()), 100 * share);
+        std::fflush(stdout);
+    }
+    return 0;
+}
