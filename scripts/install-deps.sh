@@ -9,7 +9,7 @@ PACKAGES=(
     build-essential cmake clang-format
     libeigen3-dev libyaml-cpp-dev libcli11-dev libfmt-dev
     libgtest-dev libbenchmark-dev libgmsh-dev
-    python3 python3-matplotlib python3-numpy
+    python3 python3-matplotlib python3-numpy python3-yaml
 )
 
 if [[ "${FPMSHELL_SKIP_DEPS:-0}" == "1" ]]; then

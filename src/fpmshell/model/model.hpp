@@ -56,7 +56,7 @@ struct Section {
     Index material = -1;       ///< index into Model::materials
     Real thickness = 0;        ///< h
     int thickness_points = 2;  ///< 2 = Gauss (elastic default)
-    int inplane_points = 3;    ///< 3 or 7 (theory.md §4.5)
+    int inplane_points = 3;    ///< 3 or 7 (theory.md §4.5, §7.5)
 };
 
 enum class PrescribedKind { None, Displacement, Velocity, AngularVelocity };

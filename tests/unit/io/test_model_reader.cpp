@@ -291,7 +291,7 @@ TEST(ModelReader, ReadsPlasticMaterials) {
     EXPECT_EQ(m.cs_q, 5);
     EXPECT_TRUE(j2.control.thickness_update);
     EXPECT_EQ(j2.sections[0].thickness_points, 5);
-    EXPECT_EQ(j2.sections[0].inplane_points, 7);
+    EXPECT_EQ(j2.sections[0].inplane_points, 3);
 
     const Model jc = read_model(dir.write(
         "jc.yaml",
