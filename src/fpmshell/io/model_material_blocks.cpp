@@ -120,7 +120,7 @@ void read_sections(const YamlValue& v, Model& model) {
         s.material = named_material(model, m.at("material", "a material name"));
         if (model.materials[static_cast<std::size_t>(s.material)].plastic()) {
             s.thickness_points = 5;  // Lobatto: the surfaces yield first (theory.md §7.5)
-            s.inplane_points = 3;  // docs/option-studies.md: 7 changes no tested row by > 0.4 %
+            s.inplane_points = 3;    // docs/option-studies.md: 7 changes no tested row by > 0.4 %
         }
         s.thickness = m.at("thickness", "a number > 0").positive();
         if (const auto tp = m.find("thickness_points")) {
