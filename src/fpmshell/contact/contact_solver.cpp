@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
 
 #include "fpmshell/contact/closest_point.hpp"
 #include "fpmshell/io/restart_archive.hpp"
@@ -287,8 +288,9 @@ void ContactSolver::collect_self(const Definition& d, const std::vector<Vec3>& x
         // the chunk's keys in order, the first found of equal ones kept
         buf.unique.resize(buf.keys.size());
         for (std::size_t k = 0; k < buf.keys.size(); ++k) buf.unique[k] = k;
-        std::stable_sort(buf.unique.begin(), buf.unique.end(),
-                         [&](std::size_t a, std::size_t b) { return buf.keys[a] < buf.keys[b]; });
+        std::sort(buf.unique.begin(), buf.unique.end(), [&](std::size_t a, std::size_t b) {
+            return buf.keys[a] < buf.keys[b] || (buf.keys[a] == buf.keys[b] && a < b);
+        });
         buf.unique.erase(
             std::unique(buf.unique.begin(), buf.unique.end(),
                         [&](std::size_t a, std::size_t b) { return buf.keys[a] == buf.keys[b]; }),
@@ -437,7 +439,6 @@ void ContactSolver::enforce(const std::vector<Vec3>& x, std::vector<Vec3>& x_pre
     constraints_.clear();
     closed_.clear();
     int max_iterations = 1;
-    Real h_min = 0;
     for (Definition& d : definitions_) {
         if (d.def.method != ContactMethod::LagrangeMultiplier) continue;
         max_iterations = std::max(max_iterations, d.def.max_iterations);
@@ -452,27 +453,38 @@ void ContactSolver::enforce(const std::vector<Vec3>& x, std::vector<Vec3>& x_pre
     // pair that is already inside at t_n (it escaped detection, or the linearised gap of the
     // last step left it slightly in) is held where it is, not pushed out: pushing it out
     // against its force would do positive work and create energy.
-    std::size_t kept = 0;
-    for (Constraint& c : constraints_) {
+    const std::size_t n_found = constraints_.size();
+    [[maybe_unused]] const bool parallel_all = n_found >= parallel_min_constraints_;
+    long held = 0, kept = 0;  // counts and a smallest value: the same for any thread count
+    Real h_min = std::numeric_limits<Real>::infinity();
+#pragma omp parallel for schedule(static) reduction(+ : held, kept) reduction(min : h_min) \
+    if (parallel_all)
+    for (std::size_t k = 0; k < n_found; ++k) {
+        Constraint& c = constraints_[k];
         Vec3 r = x[static_cast<std::size_t>(c.slave)];
         if (c.element >= 0)
-            for (std::size_t k = 0; k < 3; ++k)
-                r -= c.xi[k] * x[static_cast<std::size_t>(c.master[k])];
+            for (std::size_t j = 0; j < 3; ++j)
+                r -= c.xi[j] * x[static_cast<std::size_t>(c.master[j])];
         if (c.body >= 0)
             r -= model_.rigid_bodies[static_cast<std::size_t>(c.body)].point +
                  bodies[static_cast<std::size_t>(c.body)].u;
         const Real inside = c.offset - c.normal.dot(r);
         if (inside > k_sweep_tolerance * c.offset) {
             c.allowance = inside;
-            ++stats_.held_penetrations;
+            ++held;
         }
         c.weight = weight(c, beta_particle, beta_body, bodies);
         if (c.weight > 0) {
-            h_min = kept == 0 ? c.thickness : std::min(h_min, c.thickness);
-            constraints_[kept++] = c;
+            ++kept;
+            h_min = std::min(h_min, c.thickness);
         }
     }
-    constraints_.resize(kept);
+    stats_.held_penetrations += held;
+    if (kept == 0) h_min = 0;
+    if (static_cast<std::size_t>(kept) < n_found)
+        constraints_.erase(std::remove_if(constraints_.begin(), constraints_.end(),
+                                          [](const Constraint& c) { return !(c.weight > 0); }),
+                           constraints_.end());
 
     auto gap = [&](const Constraint& c) {
         Vec3 r = x_pred[static_cast<std::size_t>(c.slave)];
@@ -602,8 +614,15 @@ void ContactSolver::enforce(const std::vector<Vec3>& x, std::vector<Vec3>& x_pre
                                         [](const Constraint& c) { return c.lambda > 0; }));
     stats_.max_active = std::max(stats_.max_active, stats_.active);
 
-    for (const Constraint& c : constraints_) {
-        note_penetration(c.allowance - gap(c), c, step);  // <= 0 (not noted) for the pairs apart
+    // The penetrations left at t_{n+1} (<= 0 for the pairs apart), in parallel; the largest
+    // is picked in constraint order, the first of equal ones, like the forces' sums below.
+    penetration_.resize(constraints_.size());
+#pragma omp parallel for schedule(static) if (parallel_all)
+    for (std::size_t k = 0; k < constraints_.size(); ++k)
+        penetration_[k] = constraints_[k].allowance - gap(constraints_[k]);
+    for (std::size_t i = 0; i < constraints_.size(); ++i) {
+        const Constraint& c = constraints_[i];
+        note_penetration(penetration_[i], c, step);
         if (c.lambda == 0) continue;
         f_contact[static_cast<std::size_t>(c.slave)] += c.lambda * c.normal;
         if (c.element >= 0)

@@ -158,6 +158,7 @@ private:
     };
     ConstraintIslands islands_;
     std::vector<ConstraintIslands::Nodes> island_nodes_;  ///< scratch, per constraint
+    std::vector<Real> penetration_;   ///< scratch, per constraint: left at t_{n+1}
     std::vector<int> island_sweeps_;  ///< scratch, per island: its sweeps, < 0 unconverged
     std::vector<std::int64_t> island_updates_;  ///< scratch, per island
     std::vector<Real> element_thickness_;
