@@ -24,6 +24,10 @@ constexpr Real k_lambda_tolerance = 1e-6;  // ... and no multiplier changed by 1
 constexpr Real k_activation_fraction = 0.5;
 // An edge point with a corner weight above this is the corner (particle-to-particle pair).
 constexpr Real k_corner_weight = 0.99;
+// A pass over the constraints (copy, weights, penetrations) costs tens of ns per constraint:
+// it runs in parallel from this many times the sweeps' minimum (on the tube's ~1 400 constraints
+// a parallel region per pass cost more than it shared out on two threads).
+constexpr std::size_t k_pass_factor = 4;
 
 Vec3 unit_normal(const Vec3& a, const Vec3& b, const Vec3& c) {
     const Vec3 n = (b - a).cross(c - a);
@@ -285,16 +289,27 @@ void ContactSolver::collect_self(const Definition& d, const std::vector<Vec3>& x
                 }
             }
         }
-        // the chunk's keys in order, the first found of equal ones kept
-        buf.unique.resize(buf.keys.size());
-        for (std::size_t k = 0; k < buf.keys.size(); ++k) buf.unique[k] = k;
-        std::sort(buf.unique.begin(), buf.unique.end(), [&](std::size_t a, std::size_t b) {
-            return buf.keys[a] < buf.keys[b] || (buf.keys[a] == buf.keys[b] && a < b);
+        // The chunk's keys in order, the first found of equal ones kept. Sorted as two integers
+        // (particles >= 0; the third entry -1 of a corner key becomes 0), in the order of the
+        // keys themselves.
+        buf.sorted.resize(buf.keys.size());
+        for (std::size_t k = 0; k < buf.keys.size(); ++k) {
+            const std::array<Index, 3>& key = buf.keys[k];
+            buf.sorted[k] = {
+                (static_cast<std::uint64_t>(static_cast<std::uint32_t>(key[0])) << 32) |
+                    static_cast<std::uint32_t>(key[1]),
+                static_cast<std::uint32_t>(key[2] + 1), static_cast<std::uint32_t>(k)};
+        }
+        std::sort(buf.sorted.begin(), buf.sorted.end(), [](const SortKey& p, const SortKey& q) {
+            return p.high != q.high ? p.high < q.high
+                   : p.low != q.low ? p.low < q.low
+                                    : p.index < q.index;
         });
-        buf.unique.erase(
-            std::unique(buf.unique.begin(), buf.unique.end(),
-                        [&](std::size_t a, std::size_t b) { return buf.keys[a] == buf.keys[b]; }),
-            buf.unique.end());
+        buf.unique.clear();
+        for (std::size_t k = 0; k < buf.sorted.size(); ++k)
+            if (k == 0 || buf.sorted[k].high != buf.sorted[k - 1].high ||
+                buf.sorted[k].low != buf.sorted[k - 1].low)
+                buf.unique.push_back(buf.sorted[k].index);
     }
     // One constraint per key: the first found (slave order, then candidate order), so the
     // result does not depend on anything but the mesh and the state. Each chunk has sorted its
@@ -334,7 +349,7 @@ void ContactSolver::collect_self(const Definition& d, const std::vector<Vec3>& x
     out.resize(n_out + merged_.size());
     closed.resize(n_closed);
     const std::size_t n_merged = merged_.size();
-#pragma omp parallel if (parallel)
+#pragma omp parallel if (parallel && n_out + n_merged >= k_pass_factor * parallel_min_constraints_)
     {
 #pragma omp for schedule(static) nowait
         for (std::size_t chunk = 0; chunk < n_chunks; ++chunk) {
@@ -454,7 +469,7 @@ void ContactSolver::enforce(const std::vector<Vec3>& x, std::vector<Vec3>& x_pre
     // last step left it slightly in) is held where it is, not pushed out: pushing it out
     // against its force would do positive work and create energy.
     const std::size_t n_found = constraints_.size();
-    [[maybe_unused]] const bool parallel_all = n_found >= parallel_min_constraints_;
+    [[maybe_unused]] const bool parallel_all = n_found >= k_pass_factor * parallel_min_constraints_;
     long held = 0, kept = 0;  // counts and a smallest value: the same for any thread count
     Real h_min = std::numeric_limits<Real>::infinity();
 #pragma omp parallel for schedule(static) reduction(+ : held, kept) reduction(min : h_min) \
@@ -584,8 +599,13 @@ void ContactSolver::enforce(const std::vector<Vec3>& x, std::vector<Vec3>& x_pre
     // share the force and the multipliers drift slowly between them, no gap moved by more than
     // 1e-6 h in the sweep. An island's sweeps depend on that island alone, so the islands run
     // without a barrier between sweeps.
+    // In parallel only when the largest island leaves the others at least half of the work:
+    // one island that holds most constraints (the tube's folds and striker) gains nothing from
+    // a second thread and would pay the region.
     [[maybe_unused]] const bool parallel =
-        n_islands > 1 && constraints_.size() >= parallel_min_constraints_;
+        n_islands > 1 && constraints_.size() >= parallel_min_constraints_ &&
+        (parallel_min_constraints_ == 0 ||
+         2 * islands_.members(islands_.largest_first()[0]).size() <= constraints_.size());
 #pragma omp parallel for schedule(dynamic, 1) if (parallel)
     for (std::size_t j = 0; j < n_islands; ++j) {
         const std::uint32_t island = islands_.largest_first()[j];

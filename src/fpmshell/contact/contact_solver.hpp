@@ -83,7 +83,8 @@ public:
 
     /// The smallest numbers of slaves (search, collection) and of constraints (sweeps) run in
     /// parallel; smaller ones run on one thread. The results are the same either way: tests
-    /// lower them to run a small model's contact in parallel.
+    /// lower them to run a small model's contact in parallel (constraints 0: the sweeps in
+    /// parallel whatever the islands' sizes).
     void set_parallel_minimum(std::size_t slaves, std::size_t constraints) {
         parallel_min_slaves_ = slaves;
         parallel_min_constraints_ = constraints;
@@ -171,9 +172,14 @@ private:
     /// What one chunk of slaves finds (collect_self runs the chunks in parallel): the unkeyed
     /// constraints, those already through at t_n, and the edge and corner constraints with their
     /// keys; `unique` lists the latter in key order, the first found of equal keys only.
+    struct SortKey {  ///< a key as two integers and the constraint's place in the chunk
+        std::uint64_t high = 0;
+        std::uint32_t low = 0, index = 0;
+    };
     struct CollectBuffers {
         std::vector<Constraint> out, closed, keyed;
         std::vector<std::array<Index, 3>> keys;
+        std::vector<SortKey> sorted;  ///< scratch
         std::vector<std::size_t> unique;
         std::size_t out_at = 0, closed_at = 0;  ///< where the chunk's lists go in the output
     };

@@ -181,13 +181,10 @@ void ExplicitSolver::penalty_contact(const StepLengths& dt) {
     }
     if (!contact_) return;
     std::swap(s_.f_contact, s_.f_contact_prev);
-    const std::size_t np = s_.size();
-#pragma omp parallel for schedule(static) if (parallel_particles_)
-    for (std::size_t p = 0; p < np; ++p) s_.f_contact[p].setZero();
+    for (Vec3& f : s_.f_contact) f.setZero();
     if (!contact_->has_penalty()) return;
-    Real motion2 = 0;  // a largest value: the same for any order, hence any thread count
-#pragma omp parallel for schedule(static) reduction(max : motion2) if (parallel_particles_)
-    for (std::size_t p = 0; p < np; ++p)
+    Real motion2 = 0;
+    for (std::size_t p = 0; p < s_.size(); ++p)
         motion2 = std::max(motion2, (s_.x[p] - s_.x_prev[p]).squaredNorm());
     body_u_pred_.resize(bodies_.size());  // here: the bodies at t_n
     for (std::size_t b = 0; b < bodies_.size(); ++b) body_u_pred_[b] = bodies_[b].u;
@@ -222,23 +219,20 @@ void ExplicitSolver::lagrange_contact(const StepLengths& dt) {
     // the velocities follow: v^{n+1/2} = (x^{n+1} - x^n) / dt (§8.3).
     const std::size_t np = s_.size();
     const Real dt_new = dt.dt_new;
-    x_pred_.resize(np);  // scratch members: no allocation in the time loop
-    x_pred_before_.resize(np);
-    Real motion2 = 0;  // a largest value: the same for any order, hence any thread count
-#pragma omp parallel for schedule(static) reduction(max : motion2) if (parallel_particles_)
+    x_pred_.resize(np);
+    Real motion2 = 0;
     for (std::size_t p = 0; p < np; ++p) {
         const Vec3 dx = dt_new * s_.v[p];
         x_pred_[p] = s_.x[p] + dx;
-        x_pred_before_[p] = x_pred_[p];
         motion2 = std::max(motion2, dx.squaredNorm());
     }
     body_u_pred_.resize(bodies_.size());
     for (std::size_t b = 0; b < bodies_.size(); ++b)
         body_u_pred_[b] = bodies_[b].u + dt_new * bodies_[b].v;
+    x_pred_before_ = x_pred_;  // scratch members: no allocation in the time loop
     body_u_before_ = body_u_pred_;
     contact_->enforce(s_.x, x_pred_, body_u_pred_, bodies_, dt.c1 * dt.dt_n * dt_new,
                       dt.dt_n * dt_new, std::sqrt(motion2), steps_, s_.f_contact);
-#pragma omp parallel for schedule(static) if (parallel_particles_)
     for (std::size_t p = 0; p < np; ++p)
         if (x_pred_[p] != x_pred_before_[p]) s_.v[p] += (x_pred_[p] - x_pred_before_[p]) / dt_new;
     for (std::size_t b = 0; b < bodies_.size(); ++b)
