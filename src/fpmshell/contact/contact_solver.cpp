@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
 
 #include "fpmshell/contact/closest_point.hpp"
 #include "fpmshell/io/restart_archive.hpp"
@@ -23,6 +24,10 @@ constexpr Real k_lambda_tolerance = 1e-6;  // ... and no multiplier changed by 1
 constexpr Real k_activation_fraction = 0.5;
 // An edge point with a corner weight above this is the corner (particle-to-particle pair).
 constexpr Real k_corner_weight = 0.99;
+// A pass over the constraints (copy, weights, penetrations) costs tens of ns per constraint:
+// it runs in parallel from this many times the sweeps' minimum (on the tube's ~1 400 constraints
+// a parallel region per pass cost more than it shared out on two threads).
+constexpr std::size_t k_pass_factor = 4;
 
 Vec3 unit_normal(const Vec3& a, const Vec3& b, const Vec3& c) {
     const Vec3 n = (b - a).cross(c - a);
@@ -123,37 +128,57 @@ void ContactSolver::search(Definition& d, const std::vector<Vec3>& x) {
     if (ne > 0) mean_extent /= static_cast<Real>(ne);
     grid_.build(box_lo_, box_hi_, mean_extent);
 
-    d.candidate_start.assign(d.slaves.size() + 1, 0);
+    // The slaves in fixed chunks, in parallel, each chunk into its own list; the lists are
+    // joined in chunk order, so the candidates come in slave order for any thread count.
+    const std::size_t n_slaves = d.slaves.size();
+    const std::size_t n_chunks = (n_slaves + k_collect_chunk - 1) / k_collect_chunk;
+    if (search_chunks_.size() < n_chunks) search_chunks_.resize(n_chunks);
+    d.candidate_start.assign(n_slaves + 1, 0);
+    [[maybe_unused]] const bool parallel = n_slaves >= parallel_min_slaves_;
+#pragma omp parallel for schedule(dynamic) if (parallel)
+    for (std::size_t chunk = 0; chunk < n_chunks; ++chunk) {
+        std::vector<Index>& found = search_chunks_[chunk];
+        found.clear();
+        for (std::size_t i = chunk * k_collect_chunk;
+             i < std::min(n_slaves, (chunk + 1) * k_collect_chunk); ++i) {
+            const Index s = d.slaves[i];
+            const Vec3& xs = x[static_cast<std::size_t>(s)];
+            const Vec3& xs0 = model_.nodes[static_cast<std::size_t>(s)];
+            grid_.for_each_near(xs, [&](Index item) {
+                const Index e = d.def.elements[static_cast<std::size_t>(item)];
+                const auto& t = tri[static_cast<std::size_t>(e)];
+                if (t[0] == s || t[1] == s || t[2] == s) return;
+                for (std::int64_t k = d.neighbour_start[i]; k < d.neighbour_start[i + 1]; ++k) {
+                    const Index nb = d.neighbours[static_cast<std::size_t>(k)];
+                    if (t[0] == nb || t[1] == nb || t[2] == nb) return;
+                }
+                const Vec3& a = x[static_cast<std::size_t>(t[0])];
+                const Vec3& b = x[static_cast<std::size_t>(t[1])];
+                const Vec3& c = x[static_cast<std::size_t>(t[2])];
+                const Real offset =
+                    d.slave_offset[i] + 0.5 * element_thickness_[static_cast<std::size_t>(e)];
+                const TriangleClosestPoint cp = closest_point_on_triangle(xs, a, b, c, 0.0);
+                if ((xs - cp.point).norm() > offset + d.margin) return;
+                // Self-contact exclusion (theory.md §8.1, R8): material that starts closer than
+                // the exclusion radius is held together by the shell itself, not by contact.
+                const TriangleClosestPoint cp0 =
+                    closest_point_on_triangle(xs0, model_.nodes[static_cast<std::size_t>(t[0])],
+                                              model_.nodes[static_cast<std::size_t>(t[1])],
+                                              model_.nodes[static_cast<std::size_t>(t[2])], 0.0);
+                if ((xs0 - cp0.point).norm() < d.exclusion_radius) return;
+                found.push_back(e);
+            });
+            d.candidate_start[i + 1] = static_cast<std::int64_t>(found.size());  // in the chunk
+        }
+    }
     d.candidates.clear();
-    for (std::size_t i = 0; i < d.slaves.size(); ++i) {
-        const Index s = d.slaves[i];
-        const Vec3& xs = x[static_cast<std::size_t>(s)];
-        const Vec3& xs0 = model_.nodes[static_cast<std::size_t>(s)];
-        grid_.for_each_near(xs, [&](Index item) {
-            const Index e = d.def.elements[static_cast<std::size_t>(item)];
-            const auto& t = tri[static_cast<std::size_t>(e)];
-            if (t[0] == s || t[1] == s || t[2] == s) return;
-            for (std::int64_t k = d.neighbour_start[i]; k < d.neighbour_start[i + 1]; ++k) {
-                const Index nb = d.neighbours[static_cast<std::size_t>(k)];
-                if (t[0] == nb || t[1] == nb || t[2] == nb) return;
-            }
-            const Vec3& a = x[static_cast<std::size_t>(t[0])];
-            const Vec3& b = x[static_cast<std::size_t>(t[1])];
-            const Vec3& c = x[static_cast<std::size_t>(t[2])];
-            const Real offset =
-                d.slave_offset[i] + 0.5 * element_thickness_[static_cast<std::size_t>(e)];
-            const TriangleClosestPoint cp = closest_point_on_triangle(xs, a, b, c, 0.0);
-            if ((xs - cp.point).norm() > offset + d.margin) return;
-            // Self-contact exclusion (theory.md §8.1, R8): material that starts closer than the
-            // exclusion radius is held together by the shell itself, not by contact.
-            const TriangleClosestPoint cp0 =
-                closest_point_on_triangle(xs0, model_.nodes[static_cast<std::size_t>(t[0])],
-                                          model_.nodes[static_cast<std::size_t>(t[1])],
-                                          model_.nodes[static_cast<std::size_t>(t[2])], 0.0);
-            if ((xs0 - cp0.point).norm() < d.exclusion_radius) return;
-            d.candidates.push_back(e);
-        });
-        d.candidate_start[i + 1] = static_cast<std::int64_t>(d.candidates.size());
+    for (std::size_t chunk = 0; chunk < n_chunks; ++chunk) {
+        const auto base = static_cast<std::int64_t>(d.candidates.size());
+        for (std::size_t i = chunk * k_collect_chunk;
+             i < std::min(n_slaves, (chunk + 1) * k_collect_chunk); ++i)
+            d.candidate_start[i + 1] += base;
+        const std::vector<Index>& found = search_chunks_[chunk];
+        d.candidates.insert(d.candidates.end(), found.begin(), found.end());
     }
 }
 
@@ -170,7 +195,8 @@ void ContactSolver::collect_self(const Definition& d, const std::vector<Vec3>& x
     const std::size_t n_slaves = d.slaves.size();
     const std::size_t n_chunks = (n_slaves + k_collect_chunk - 1) / k_collect_chunk;
     if (collect_chunks_.size() < n_chunks) collect_chunks_.resize(n_chunks);
-#pragma omp parallel for schedule(dynamic) if (n_chunks > 1)
+    [[maybe_unused]] const bool parallel = n_slaves >= parallel_min_slaves_;
+#pragma omp parallel for schedule(dynamic) if (parallel)
     for (std::size_t chunk = 0; chunk < n_chunks; ++chunk) {
         CollectBuffers& buf = collect_chunks_[chunk];
         buf.out.clear();
@@ -263,25 +289,78 @@ void ContactSolver::collect_self(const Definition& d, const std::vector<Vec3>& x
                 }
             }
         }
-    }
-    keyed_.clear();
-    keyed_constraints_.clear();
-    for (std::size_t chunk = 0; chunk < n_chunks; ++chunk) {
-        const CollectBuffers& buf = collect_chunks_[chunk];
-        out.insert(out.end(), buf.out.begin(), buf.out.end());
-        closed.insert(closed.end(), buf.closed.begin(), buf.closed.end());
+        // The chunk's keys in order, the first found of equal ones kept. Sorted as two integers
+        // (particles >= 0; the third entry -1 of a corner key becomes 0), in the order of the
+        // keys themselves.
+        buf.sorted.resize(buf.keys.size());
         for (std::size_t k = 0; k < buf.keys.size(); ++k) {
-            keyed_.push_back({buf.keys[k], keyed_constraints_.size()});
-            keyed_constraints_.push_back(buf.keyed[k]);
+            const std::array<Index, 3>& key = buf.keys[k];
+            buf.sorted[k] = {
+                (static_cast<std::uint64_t>(static_cast<std::uint32_t>(key[0])) << 32) |
+                    static_cast<std::uint32_t>(key[1]),
+                static_cast<std::uint32_t>(key[2] + 1), static_cast<std::uint32_t>(k)};
         }
+        std::sort(buf.sorted.begin(), buf.sorted.end(), [](const SortKey& p, const SortKey& q) {
+            return p.high != q.high ? p.high < q.high
+                   : p.low != q.low ? p.low < q.low
+                                    : p.index < q.index;
+        });
+        buf.unique.clear();
+        for (std::size_t k = 0; k < buf.sorted.size(); ++k)
+            if (k == 0 || buf.sorted[k].high != buf.sorted[k - 1].high ||
+                buf.sorted[k].low != buf.sorted[k - 1].low)
+                buf.unique.push_back(buf.sorted[k].index);
     }
     // One constraint per key: the first found (slave order, then candidate order), so the
-    // result does not depend on anything but the mesh and the state. Sorting (key, order
-    // found) pairs, not the constraints themselves, moves 32 bytes per pair instead of ~190.
-    std::sort(keyed_.begin(), keyed_.end());
-    for (std::size_t k = 0; k < keyed_.size(); ++k)
-        if (k == 0 || keyed_[k].first != keyed_[k - 1].first)
-            out.push_back(keyed_constraints_[keyed_[k].second]);
+    // result does not depend on anything but the mesh and the state. Each chunk has sorted its
+    // keys and kept the first of equal ones; merging the chunks' lists, the earliest chunk
+    // first among equal keys, gives the keys in order, each with its first-found constraint.
+    // The unkeyed constraints come first, in chunk order, then the keyed ones in key order.
+    std::size_t n_out = out.size(), n_closed = closed.size();
+    merge_heads_.clear();
+    for (std::size_t chunk = 0; chunk < n_chunks; ++chunk) {
+        CollectBuffers& buf = collect_chunks_[chunk];
+        buf.out_at = n_out;
+        buf.closed_at = n_closed;
+        n_out += buf.out.size();
+        n_closed += buf.closed.size();
+        if (!buf.unique.empty()) merge_heads_.push_back({chunk, 0});
+    }
+    merged_.clear();
+    auto later = [&](const MergeHead& a, const MergeHead& b) {  // a comes after b
+        const auto& ka = collect_chunks_[a.chunk].keys[collect_chunks_[a.chunk].unique[a.next]];
+        const auto& kb = collect_chunks_[b.chunk].keys[collect_chunks_[b.chunk].unique[b.next]];
+        return kb < ka || (kb == ka && b.chunk < a.chunk);
+    };
+    std::make_heap(merge_heads_.begin(), merge_heads_.end(), later);
+    while (!merge_heads_.empty()) {
+        std::pop_heap(merge_heads_.begin(), merge_heads_.end(), later);
+        MergeHead& h = merge_heads_.back();
+        const CollectBuffers& buf = collect_chunks_[h.chunk];
+        const std::array<Index, 3>& key = buf.keys[buf.unique[h.next]];
+        if (merged_.empty() || merged_.back().key != key)
+            merged_.push_back({key, h.chunk, buf.unique[h.next]});
+        if (++h.next < buf.unique.size())
+            std::push_heap(merge_heads_.begin(), merge_heads_.end(), later);
+        else
+            merge_heads_.pop_back();
+    }
+    const std::size_t keyed_at = n_out;
+    out.resize(n_out + merged_.size());
+    closed.resize(n_closed);
+    const std::size_t n_merged = merged_.size();
+#pragma omp parallel if (parallel && n_out + n_merged >= k_pass_factor * parallel_min_constraints_)
+    {
+#pragma omp for schedule(static) nowait
+        for (std::size_t chunk = 0; chunk < n_chunks; ++chunk) {
+            const CollectBuffers& buf = collect_chunks_[chunk];
+            std::copy(buf.out.begin(), buf.out.end(), out.begin() + buf.out_at);
+            std::copy(buf.closed.begin(), buf.closed.end(), closed.begin() + buf.closed_at);
+        }
+#pragma omp for schedule(static)
+        for (std::size_t k = 0; k < n_merged; ++k)
+            out[keyed_at + k] = collect_chunks_[merged_[k].chunk].keyed[merged_[k].index];
+    }
 }
 
 void ContactSolver::collect_rigid(const Definition& d, const std::vector<Vec3>& y,
@@ -375,7 +454,6 @@ void ContactSolver::enforce(const std::vector<Vec3>& x, std::vector<Vec3>& x_pre
     constraints_.clear();
     closed_.clear();
     int max_iterations = 1;
-    Real h_min = 0;
     for (Definition& d : definitions_) {
         if (d.def.method != ContactMethod::LagrangeMultiplier) continue;
         max_iterations = std::max(max_iterations, d.def.max_iterations);
@@ -390,27 +468,38 @@ void ContactSolver::enforce(const std::vector<Vec3>& x, std::vector<Vec3>& x_pre
     // pair that is already inside at t_n (it escaped detection, or the linearised gap of the
     // last step left it slightly in) is held where it is, not pushed out: pushing it out
     // against its force would do positive work and create energy.
-    std::size_t kept = 0;
-    for (Constraint& c : constraints_) {
+    const std::size_t n_found = constraints_.size();
+    [[maybe_unused]] const bool parallel_all = n_found >= k_pass_factor * parallel_min_constraints_;
+    long held = 0, kept = 0;  // counts and a smallest value: the same for any thread count
+    Real h_min = std::numeric_limits<Real>::infinity();
+#pragma omp parallel for schedule(static) reduction(+ : held, kept) reduction(min : h_min) \
+    if (parallel_all)
+    for (std::size_t k = 0; k < n_found; ++k) {
+        Constraint& c = constraints_[k];
         Vec3 r = x[static_cast<std::size_t>(c.slave)];
         if (c.element >= 0)
-            for (std::size_t k = 0; k < 3; ++k)
-                r -= c.xi[k] * x[static_cast<std::size_t>(c.master[k])];
+            for (std::size_t j = 0; j < 3; ++j)
+                r -= c.xi[j] * x[static_cast<std::size_t>(c.master[j])];
         if (c.body >= 0)
             r -= model_.rigid_bodies[static_cast<std::size_t>(c.body)].point +
                  bodies[static_cast<std::size_t>(c.body)].u;
         const Real inside = c.offset - c.normal.dot(r);
         if (inside > k_sweep_tolerance * c.offset) {
             c.allowance = inside;
-            ++stats_.held_penetrations;
+            ++held;
         }
         c.weight = weight(c, beta_particle, beta_body, bodies);
         if (c.weight > 0) {
-            h_min = kept == 0 ? c.thickness : std::min(h_min, c.thickness);
-            constraints_[kept++] = c;
+            ++kept;
+            h_min = std::min(h_min, c.thickness);
         }
     }
-    constraints_.resize(kept);
+    stats_.held_penetrations += held;
+    if (kept == 0) h_min = 0;
+    if (static_cast<std::size_t>(kept) < n_found)
+        constraints_.erase(std::remove_if(constraints_.begin(), constraints_.end(),
+                                          [](const Constraint& c) { return !(c.weight > 0); }),
+                           constraints_.end());
 
     auto gap = [&](const Constraint& c) {
         Vec3 r = x_pred[static_cast<std::size_t>(c.slave)];
@@ -423,13 +512,42 @@ void ContactSolver::enforce(const std::vector<Vec3>& x, std::vector<Vec3>& x_pre
         }
         return c.normal.dot(r) - c.offset + c.allowance;
     };
-    // Projected Gauss-Seidel on lambda >= 0, g + W dlambda >= 0, complementarity (§8.3).
+    // Projected Gauss-Seidel on lambda >= 0, g + W dlambda >= 0, complementarity (§8.3), per
+    // island of constraints (contact/constraint_islands.hpp): constraints that share no
+    // particle and no movable body never see each other's updates, so each island is a problem
+    // of its own, swept in its constraints' order, and the islands run in parallel with results
+    // that do not depend on the thread count. A fixed body (infinite mass) does not move: it
+    // joins no island.
+    const std::size_t np = x_pred.size();
+    island_nodes_.resize(constraints_.size());
+    particle_moved_at_.resize(np, -1);
+    body_moved_at_.resize(body_u_pred.size(), -1);
+    for (std::size_t k = 0; k < constraints_.size(); ++k) {
+        const Constraint& c = constraints_[k];
+        ConstraintIslands::Nodes& nodes = island_nodes_[k];
+        nodes = {c.slave, -1, -1, -1, -1};
+        if (c.element >= 0)
+            for (std::size_t j = 0; j < 3; ++j) nodes[j + 1] = c.master[j];
+        if (c.body >= 0 && bodies[static_cast<std::size_t>(c.body)].inv_mass > 0)
+            nodes[4] = static_cast<Index>(np) + c.body;
+        for (Index v : nodes)  // no update of this step yet (the sweep bookkeeping below)
+            if (v >= 0) {
+                if (static_cast<std::size_t>(v) < np)
+                    particle_moved_at_[static_cast<std::size_t>(v)] = -1;
+                else
+                    body_moved_at_[static_cast<std::size_t>(v) - np] = -1;
+            }
+    }
+    islands_.build(island_nodes_, np + body_u_pred.size());
+    const std::size_t n_islands = islands_.count();
+    island_sweeps_.assign(n_islands, 0);
+    island_updates_.assign(n_islands, 0);
+
     // An open constraint (lambda = 0, gap >= 0 when last evaluated) none of whose particles or
     // body has moved since gives the same gap again, hence no update and no change to the
     // sweep's measures: it is skipped, which leaves the result bitwise the same (most pairs
-    // near contact are open; the few closed ones need the sweeps).
-    particle_moved_at_.resize(x_pred.size(), -1);
-    body_moved_at_.resize(body_u_pred.size(), -1);
+    // near contact are open; the few closed ones need the sweeps). The stamps count the
+    // updates of the island in this step.
     auto unchanged_since_evaluated = [&](const Constraint& c) {
         if (c.evaluated_at < 0 ||
             particle_moved_at_[static_cast<std::size_t>(c.slave)] > c.evaluated_at)
@@ -440,47 +558,73 @@ void ContactSolver::enforce(const std::vector<Vec3>& x, std::vector<Vec3>& x_pre
                     return false;
         return c.body < 0 || body_moved_at_[static_cast<std::size_t>(c.body)] <= c.evaluated_at;
     };
-    int sweeps = 0;
-    bool converged = constraints_.empty();
-    while (!converged && sweeps < max_iterations) {
-        ++sweeps;
-        Real deepest = 0, largest_change = 0, largest_lambda = 0, largest_move = 0;
-        for (Constraint& c : constraints_) {
+    auto sweep_island = [&](std::size_t island) {
+        SweepMeasures m;
+        std::int64_t& updates = island_updates_[island];
+        for (std::uint32_t member : islands_.members(island)) {
+            Constraint& c = constraints_[member];
             if (c.lambda == 0 && c.last_gap >= 0 && unchanged_since_evaluated(c)) continue;
             const Real g = gap(c);
             c.last_gap = g;
-            c.evaluated_at = updates_;
-            deepest = std::max(deepest, -g);
+            c.evaluated_at = updates;
+            m.deepest = std::max(m.deepest, -g);
             const Real lambda_new = std::max(Real(0), c.lambda - g / c.weight);
             const Real dl = lambda_new - c.lambda;
-            largest_lambda = std::max(largest_lambda, lambda_new);
+            m.largest_lambda = std::max(m.largest_lambda, lambda_new);
             if (dl == 0) continue;
             c.lambda = lambda_new;
-            largest_change = std::max(largest_change, std::abs(dl));
-            largest_move = std::max(largest_move, std::abs(dl) * c.weight);
-            ++updates_;
+            m.largest_change = std::max(m.largest_change, std::abs(dl));
+            m.largest_move = std::max(m.largest_move, std::abs(dl) * c.weight);
+            ++updates;
             const auto us = static_cast<std::size_t>(c.slave);
             x_pred[us] += (beta_particle * dl) * inv_mass_[us].cwiseProduct(c.normal);
-            particle_moved_at_[us] = updates_;
+            particle_moved_at_[us] = updates;
             if (c.element >= 0)
                 for (std::size_t k = 0; k < 3; ++k) {
                     const auto um = static_cast<std::size_t>(c.master[k]);
                     x_pred[um] -=
                         (beta_particle * dl * c.xi[k]) * inv_mass_[um].cwiseProduct(c.normal);
-                    particle_moved_at_[um] = updates_;
+                    particle_moved_at_[um] = updates;
                 }
-            if (c.body >= 0) {
+            if (c.body >= 0 && bodies[static_cast<std::size_t>(c.body)].inv_mass > 0) {
                 const auto b = static_cast<std::size_t>(c.body);
                 body_u_pred[b] -= (beta_body * dl * bodies[b].inv_mass) * c.normal;
-                body_moved_at_[b] = updates_;
+                body_moved_at_[b] = updates;
             }
         }
-        // §8.3: every gap closed to 1e-3 h and the multipliers settled to 1e-6 (relative), or,
-        // where two nearly parallel constraints share the force and the multipliers drift
-        // slowly between them, no gap moved by more than 1e-6 h in the sweep.
-        converged = deepest <= k_sweep_tolerance * h_min &&
-                    (largest_change <= k_lambda_tolerance * largest_lambda ||
-                     largest_move <= k_lambda_tolerance * h_min);
+        return m;
+    };
+    // Each island is swept until it has converged by itself (§8.3): every gap closed to 1e-3 h
+    // and the multipliers settled to 1e-6 (relative), or, where two nearly parallel constraints
+    // share the force and the multipliers drift slowly between them, no gap moved by more than
+    // 1e-6 h in the sweep. An island's sweeps depend on that island alone, so the islands run
+    // without a barrier between sweeps.
+    // In parallel only when the largest island leaves the others at least half of the work:
+    // one island that holds most constraints (the tube's folds and striker) gains nothing from
+    // a second thread and would pay the region.
+    [[maybe_unused]] const bool parallel =
+        n_islands > 1 && constraints_.size() >= parallel_min_constraints_ &&
+        (parallel_min_constraints_ == 0 ||
+         2 * islands_.members(islands_.largest_first()[0]).size() <= constraints_.size());
+#pragma omp parallel for schedule(dynamic, 1) if (parallel)
+    for (std::size_t j = 0; j < n_islands; ++j) {
+        const std::uint32_t island = islands_.largest_first()[j];
+        int sweeps = 0;
+        bool converged = false;
+        while (!converged && sweeps < max_iterations) {
+            ++sweeps;
+            const SweepMeasures m = sweep_island(island);
+            converged = m.deepest <= k_sweep_tolerance * h_min &&
+                        (m.largest_change <= k_lambda_tolerance * m.largest_lambda ||
+                         m.largest_move <= k_lambda_tolerance * h_min);
+        }
+        island_sweeps_[island] = converged ? sweeps : -sweeps;
+    }
+    int sweeps = 0;
+    bool converged = true;
+    for (int s : island_sweeps_) {
+        sweeps = std::max(sweeps, std::abs(s));
+        converged = converged && s > 0;
     }
     if (!converged) ++stats_.unconverged_steps;
     stats_.sweeps = sweeps;
@@ -490,8 +634,15 @@ void ContactSolver::enforce(const std::vector<Vec3>& x, std::vector<Vec3>& x_pre
                                         [](const Constraint& c) { return c.lambda > 0; }));
     stats_.max_active = std::max(stats_.max_active, stats_.active);
 
-    for (const Constraint& c : constraints_) {
-        note_penetration(c.allowance - gap(c), c, step);  // <= 0 (not noted) for the pairs apart
+    // The penetrations left at t_{n+1} (<= 0 for the pairs apart), in parallel; the largest
+    // is picked in constraint order, the first of equal ones, like the forces' sums below.
+    penetration_.resize(constraints_.size());
+#pragma omp parallel for schedule(static) if (parallel_all)
+    for (std::size_t k = 0; k < constraints_.size(); ++k)
+        penetration_[k] = constraints_[k].allowance - gap(constraints_[k]);
+    for (std::size_t i = 0; i < constraints_.size(); ++i) {
+        const Constraint& c = constraints_[i];
+        note_penetration(penetration_[i], c, step);
         if (c.lambda == 0) continue;
         f_contact[static_cast<std::size_t>(c.slave)] += c.lambda * c.normal;
         if (c.element >= 0)
@@ -512,6 +663,16 @@ void ContactSolver::enforce(const std::vector<Vec3>& x, std::vector<Vec3>& x_pre
             (x_pred[static_cast<std::size_t>(c.slave)] - cp.point).dot(unit_normal(ya, yb, yc)));
         note_penetration(c.offset - dist, c, step);
     }
+}
+
+std::vector<std::pair<Index, Index>> ContactSolver::candidate_pairs(std::size_t definition) const {
+    const Definition& d = definitions_[definition];
+    std::vector<std::pair<Index, Index>> pairs;
+    if (!d.searched) return pairs;
+    for (std::size_t i = 0; i < d.slaves.size(); ++i)
+        for (std::int64_t k = d.candidate_start[i]; k < d.candidate_start[i + 1]; ++k)
+            pairs.emplace_back(d.slaves[i], d.candidates[static_cast<std::size_t>(k)]);
+    return pairs;
 }
 
 template <class Archive>

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "fpmshell/contact/bucket_grid.hpp"
+#include "fpmshell/contact/constraint_islands.hpp"
 #include "fpmshell/contact/rigid_body_state.hpp"
 #include "fpmshell/core/types.hpp"
 #include "fpmshell/model/mesh_topology.hpp"
@@ -74,6 +75,20 @@ public:
                  std::vector<Vec3>& f_contact);
 
     [[nodiscard]] const ContactStatistics& statistics() const { return stats_; }
+
+    /// The candidate pairs (slave particle, triangle) of definition `definition` found by its
+    /// last search (none before the first).
+    [[nodiscard]] std::vector<std::pair<Index, Index>> candidate_pairs(
+        std::size_t definition) const;
+
+    /// The smallest numbers of slaves (search, collection) and of constraints (sweeps) run in
+    /// parallel; smaller ones run on one thread. The results are the same either way: tests
+    /// lower them to run a small model's contact in parallel (constraints 0: the sweeps in
+    /// parallel whatever the islands' sizes).
+    void set_parallel_minimum(std::size_t slaves, std::size_t constraints) {
+        parallel_min_slaves_ = slaves;
+        parallel_min_constraints_ = constraints;
+    }
 
     /// The state carried from step to step (search cadence, candidates, statistics), for a
     /// restart file (io/restart_archive.hpp).
@@ -135,10 +150,18 @@ private:
 
     const Model& model_;
     std::vector<Vec3> inv_mass_;
-    /// Sweep bookkeeping (enforce): updates made so far (never reset), and per particle and
-    /// rigid body the count at which its predicted position last changed.
-    std::int64_t updates_ = 0;
+    /// Sweep bookkeeping (enforce): per particle and rigid body, the count of its island's
+    /// updates in this step at which its predicted position last changed (-1: not yet).
     std::vector<std::int64_t> particle_moved_at_, body_moved_at_;
+    /// The largest values of one sweep over an island, for the convergence test (§8.3).
+    struct SweepMeasures {
+        Real deepest = 0, largest_change = 0, largest_lambda = 0, largest_move = 0;
+    };
+    ConstraintIslands islands_;
+    std::vector<ConstraintIslands::Nodes> island_nodes_;  ///< scratch, per constraint
+    std::vector<Real> penetration_;   ///< scratch, per constraint: left at t_{n+1}
+    std::vector<int> island_sweeps_;  ///< scratch, per island: its sweeps, < 0 unconverged
+    std::vector<std::int64_t> island_updates_;  ///< scratch, per island
     std::vector<Real> element_thickness_;
     std::vector<Real> node_thickness_;
     std::vector<Definition> definitions_;
@@ -146,17 +169,40 @@ private:
     BucketGrid grid_;
     std::vector<Vec3> box_lo_, box_hi_;             ///< scratch for the grid
     std::vector<Constraint> constraints_, closed_;  ///< scratch, reused every step
-    /// scratch: the edge and corner pairs, (key, index in keyed_constraints_) sorted together
-    std::vector<std::pair<std::array<Index, 3>, std::size_t>> keyed_;
-    std::vector<Constraint> keyed_constraints_;  ///< scratch: their constraints, in the order found
-    /// What one chunk of slaves finds (collect_self runs the chunks in parallel).
+    /// What one chunk of slaves finds (collect_self runs the chunks in parallel): the unkeyed
+    /// constraints, those already through at t_n, and the edge and corner constraints with their
+    /// keys; `unique` lists the latter in key order, the first found of equal keys only.
+    struct SortKey {  ///< a key as two integers and the constraint's place in the chunk
+        std::uint64_t high = 0;
+        std::uint32_t low = 0, index = 0;
+    };
     struct CollectBuffers {
         std::vector<Constraint> out, closed, keyed;
         std::vector<std::array<Index, 3>> keys;
+        std::vector<SortKey> sorted;  ///< scratch
+        std::vector<std::size_t> unique;
+        std::size_t out_at = 0, closed_at = 0;  ///< where the chunk's lists go in the output
     };
+    /// scratch of the merge of the chunks' keyed constraints: the next key of each chunk, and
+    /// the merged list (key, chunk, index in the chunk's `keyed`)
+    struct MergeHead {
+        std::size_t chunk = 0, next = 0;
+    };
+    struct MergedKey {
+        std::array<Index, 3> key{};
+        std::size_t chunk = 0, index = 0;
+    };
+    std::vector<MergeHead> merge_heads_;
+    std::vector<MergedKey> merged_;
     static constexpr std::size_t k_collect_chunk = 256;  ///< slaves per chunk
     std::vector<CollectBuffers> collect_chunks_;         ///< scratch, per chunk
+    std::vector<std::vector<Index>> search_chunks_;      ///< scratch: candidates per chunk
     ContactStatistics stats_;
+    /// Below, a parallel region costs more than it shares out: 2 000 slaves like the particle
+    /// passes (solver/explicit_solver.cpp); 512 constraints, since a parallel sweep costs a
+    /// barrier per sweep, more than a few hundred constraint updates.
+    std::size_t parallel_min_slaves_ = 2000;
+    std::size_t parallel_min_constraints_ = 512;
 };
 
 }  // namespace fpmshell
