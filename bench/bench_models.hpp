@@ -1,6 +1,7 @@
 // The models the benchmark program times, shared by the Google Benchmark cases
 // (bench_elastic_plate.cpp, bench_square_tube.cpp) and the figure-of-merit table
-// (perf_table.cpp): the clamped plate under pressure, its plastic variant, and the square tube.
+// (perf_table.cpp) and the crash kernels (crash_kernels/): the clamped plate under pressure,
+// its plastic variants, and the square tube.
 #pragma once
 
 #include <algorithm>
@@ -100,6 +101,34 @@ inline Real plate_stable_dt(const Model& m) {
     return m.control.time_step_scale * dt;
 }
 
+/// The motion of the steady plastic plates (steady_plastic_plate_model, the crash kernels): on
+/// the unit plate, biaxial stretching (strain rates 2 : 1) and bending by one velocity field,
+/// prescribed on `edge` and given as the initial velocity everywhere, at the rate that brings
+/// the points to yield_stress after steps_to_yield steps of dt.
+inline void impose_steady_flow(Model& m, const std::vector<Index>& edge, Real yield_stress,
+                               int steps_to_yield, Real dt) {
+    // strains e_x = 2 e, e_y = e: plane-stress von Mises stress 2.244 E e (nu = 0.3)
+    const Real e_yield = yield_stress / (2.244 * m.materials[0].youngs_modulus);
+    const Real rate = e_yield / (steps_to_yield * dt);
+    auto velocity = [rate](const Vec3& x) {
+        const Real dx = x.x() - 0.5, dy = x.y() - 0.5;
+        return Vec3(2 * rate * dx, rate * dy, 0.5 * rate * (dx * dx + dy * dy));
+    };
+    for (Index p : edge) {
+        BoundaryCondition bc;
+        bc.nodes = {p};
+        bc.prescribed = PrescribedKind::Velocity;
+        bc.value = velocity(m.nodes[static_cast<std::size_t>(p)]);
+        m.boundary.push_back(bc);
+    }
+    for (Index p = 0; p < static_cast<Index>(m.nodes.size()); ++p) {
+        InitialVelocity iv;
+        iv.nodes = {p};
+        iv.velocity = velocity(m.nodes[static_cast<std::size_t>(p)]);
+        m.initial_conditions.push_back(iv);
+    }
+}
+
 /// A steady plastic flow for the figure-of-merit table (perf_table.cpp), the same at every mesh
 /// size: the plate of elastic_plate_model, J2 plastic (sigma_y 250 MPa, E_t = E / 21), 5 Lobatto
 /// points through the thickness x inplane_points, stretched biaxially (strain rates 2 : 1) and
@@ -122,26 +151,7 @@ inline Model steady_plastic_plate_model(Index n, int inplane_points, int steps_t
     const std::vector<Index> edge =
         m.boundary.at(0).nodes;  // the clamped edges of the elastic plate
     m.boundary.clear();
-    // strains e_x = 2 e, e_y = e: plane-stress von Mises stress 2.244 E e (nu = 0.3)
-    const Real e_yield = steel.yield_stress / (2.244 * steel.youngs_modulus);
-    const Real rate = e_yield / (steps_to_yield * plate_stable_dt(m));
-    auto velocity = [rate](const Vec3& x) {
-        const Real dx = x.x() - 0.5, dy = x.y() - 0.5;
-        return Vec3(2 * rate * dx, rate * dy, 0.5 * rate * (dx * dx + dy * dy));
-    };
-    for (Index p : edge) {
-        BoundaryCondition bc;
-        bc.nodes = {p};
-        bc.prescribed = PrescribedKind::Velocity;
-        bc.value = velocity(m.nodes[static_cast<std::size_t>(p)]);
-        m.boundary.push_back(bc);
-    }
-    for (Index p = 0; p < static_cast<Index>(m.nodes.size()); ++p) {
-        InitialVelocity iv;
-        iv.nodes = {p};
-        iv.velocity = velocity(m.nodes[static_cast<std::size_t>(p)]);
-        m.initial_conditions.push_back(iv);
-    }
+    impose_steady_flow(m, edge, steel.yield_stress, steps_to_yield, plate_stable_dt(m));
     return m;
 }
 

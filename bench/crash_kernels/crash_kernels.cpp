@@ -35,6 +35,7 @@
 #include <omp.h>
 #endif
 
+#include "../bench_models.hpp"
 #include "fpmshell/mesh/generators.hpp"
 #include "fpmshell/model/mesh_topology.hpp"
 #include "fpmshell/solver/explicit_solver.hpp"
@@ -68,26 +69,7 @@ Model steady_plate(Index n, Material material, Real yield_stress) {
     // The stable step of the regular mesh: the membrane step of its triangles (legs 1 / n) or
     // the solver's own, whichever the solver reports after its set-up.
     const Real dt = ExplicitSolver(m).stable_dt();
-    // strains e_x = 2 e, e_y = e: plane-stress von Mises stress 2.244 E e (nu = 0.3)
-    const Real e_yield = yield_stress / (2.244 * material.youngs_modulus);
-    const Real rate = e_yield / (k_steps_to_yield * dt);
-    auto velocity = [rate](const Vec3& x) {
-        const Real dx = x.x() - 0.5, dy = x.y() - 0.5;
-        return Vec3(2 * rate * dx, rate * dy, 0.5 * rate * (dx * dx + dy * dy));
-    };
-    for (Index p : mesh.node_sets.at("boundary")) {
-        BoundaryCondition bc;
-        bc.nodes = {p};
-        bc.prescribed = PrescribedKind::Velocity;
-        bc.value = velocity(m.nodes[static_cast<std::size_t>(p)]);
-        m.boundary.push_back(bc);
-    }
-    for (Index p = 0; p < static_cast<Index>(m.nodes.size()); ++p) {
-        InitialVelocity iv;
-        iv.nodes = {p};
-        iv.velocity = velocity(m.nodes[static_cast<std::size_t>(p)]);
-        m.initial_conditions.push_back(iv);
-    }
+    bench::impose_steady_flow(m, mesh.node_sets.at("boundary"), yield_stress, k_steps_to_yield, dt);
     return m;
 }
 

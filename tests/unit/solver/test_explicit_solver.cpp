@@ -22,8 +22,11 @@
 #include "fpmshell/mesh/generators.hpp"
 #include "fpmshell/solver/explicit_solver.hpp"
 #include "one_section_model.hpp"
+#include "plate_runs.hpp"
 
 using namespace fpmshell;
+using fpmshell::test::max_energy_error;
+using fpmshell::test::simply_support;
 
 namespace {
 
@@ -38,39 +41,12 @@ Model plate_model(Index n, Real h = 0.01) {
     return m;
 }
 
-/// Simply supported edges (uz), in-plane motion free except what removes the rigid modes.
-void simply_support(Model& m) {
-    BoundaryCondition bc;
-    bc.nodes = m.node_sets.at("boundary");
-    bc.fixed = {false, false, true, false, false, false};
-    m.boundary.push_back(bc);
-    BoundaryCondition corner;
-    corner.nodes = {0};
-    corner.fixed = {true, true, false, false, false, false};
-    m.boundary.push_back(corner);
-}
-
 /// Random initial velocities in all directions on every node (excites the highest modes).
 void random_velocities(Model& m, Real scale, unsigned seed) {
     std::mt19937 rng(seed);
     std::uniform_real_distribution<Real> u(-1, 1);
     for (Index p = 0; p < m.n_particles(); ++p)
         m.initial_conditions.push_back({{p}, scale * Vec3(u(rng), u(rng), u(rng)), Vec3::Zero()});
-}
-
-/// Runs n steps; returns the largest |energy error| seen, or +inf if the run failed.
-Real max_energy_error(const Model& m, int n_steps) {
-    ExplicitSolver s(m);
-    Real worst = 0;
-    try {
-        for (int i = 0; i < n_steps; ++i) {
-            s.step(1e30);
-            worst = std::max(worst, std::abs(s.energy().error()));
-        }
-    } catch (const RunFailure&) {
-        return std::numeric_limits<Real>::infinity();
-    }
-    return worst;
 }
 
 }  // namespace

@@ -14,6 +14,7 @@
 #include "fpmshell/mesh/generators.hpp"
 #include "fpmshell/solver/explicit_solver.hpp"
 #include "one_section_model.hpp"
+#include "plate_runs.hpp"
 
 using namespace fpmshell;
 
@@ -29,14 +30,7 @@ Model jittered_plate(Real h) {
                                      std::cos(5.0 * static_cast<Real>(p)), 0.0);
     Model m = test::one_section_model(mesh, h);
     m.control.end_time = 1;
-    BoundaryCondition bc;
-    bc.nodes = m.node_sets.at("boundary");
-    bc.fixed = {false, false, true, false, false, false};
-    m.boundary.push_back(bc);
-    BoundaryCondition corner;
-    corner.nodes = {0};
-    corner.fixed = {true, true, false, false, false, false};
-    m.boundary.push_back(corner);
+    test::simply_support(m);
     std::mt19937 rng(5);
     std::uniform_real_distribution<Real> u(-1, 1);
     for (Index p = 0; p < m.n_particles(); ++p)

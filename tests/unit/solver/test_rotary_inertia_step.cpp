@@ -15,6 +15,7 @@
 #include "fpmshell/mesh/generators.hpp"
 #include "fpmshell/solver/explicit_solver.hpp"
 #include "one_section_model.hpp"
+#include "plate_runs.hpp"
 
 using namespace fpmshell;
 
@@ -29,35 +30,13 @@ Model thick_plate(Real h, RotaryInertia kind) {
     Model m = test::one_section_model(generate_plate(pp), h);
     m.control.end_time = 1;
     m.control.rotary_inertia = kind;
-    BoundaryCondition bc;
-    bc.nodes = m.node_sets.at("boundary");
-    bc.fixed = {false, false, true, false, false, false};
-    m.boundary.push_back(bc);
-    BoundaryCondition corner;
-    corner.nodes = {0};
-    corner.fixed = {true, true, false, false, false, false};
-    m.boundary.push_back(corner);
+    test::simply_support(m);
     std::mt19937 rng(7);
     std::uniform_real_distribution<Real> u(-1, 1);
     for (Index p = 0; p < m.n_particles(); ++p)
         m.initial_conditions.push_back(
             {{p}, 1e-3 * Vec3(u(rng), u(rng), u(rng)), 1e-2 * Vec3(u(rng), u(rng), 0.0)});
     return m;
-}
-
-/// The largest |energy error| over n steps (+inf when the run fails).
-Real max_energy_error(const Model& m, int n_steps) {
-    ExplicitSolver s(m);
-    Real worst = 0;
-    try {
-        for (int i = 0; i < n_steps; ++i) {
-            s.step(1e30);
-            worst = std::max(worst, std::abs(s.energy().error()));
-        }
-    } catch (const RunFailure&) {
-        return std::numeric_limits<Real>::infinity();
-    }
-    return worst;
 }
 
 }  // namespace
@@ -105,6 +84,7 @@ TEST(RotaryInertiaStep, FreeVibrationAtTheRaisedStepConservesEnergy) {
     // bound of benchmarks.md §1 for the option-B free vibration)
     for (const RotaryInertia kind :
          {RotaryInertia::Belytschko, RotaryInertia::Abaqus, RotaryInertia::Radioss}) {
-        EXPECT_LT(max_energy_error(thick_plate(0.25, kind), 5000), 1e-3) << static_cast<int>(kind);
+        EXPECT_LT(test::max_energy_error(thick_plate(0.25, kind), 5000), 1e-3)
+            << static_cast<int>(kind);
     }
 }
