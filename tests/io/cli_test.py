@@ -215,8 +215,9 @@ code, out = fpm("run", scaled, "-o", sres, "--quiet", "--threads", "1")
 check("a mass-scaled run exits 0", code == 0, out)
 if code == 0:
     log = open(os.path.join(sres, "log.txt")).read()
-    check("the added mass is logged, with a warning past the limit",
-          "mass scaling to time step 6e-05: added mass" in log
+    check("the added mass is logged at set-up and at the end, with a warning past the limit",
+          "mass scaling to time step 6e-05, at set-up: added mass" in log
+          and "mass scaling to time step 6e-05, by the end of the run: added mass" in log
           and "warning: mass scaling adds" in log and "sections.0" in log, log)
     s = json.load(open(os.path.join(sres, "summary.json")))
     ms = s.get("mass_scaling", {})

@@ -54,6 +54,12 @@ public:
     ContactSolver(const Model& model, const MeshTopology& topology,
                   const std::vector<Vec3>& inv_mass, const std::vector<Real>& element_thickness);
 
+    /// The inverse mass of particle p (per direction, as in the constructor) after its mass
+    /// changed (mass scaling during the run, §6.10).
+    void set_inverse_mass(Index p, const Vec3& inv_mass) {
+        inv_mass_[static_cast<std::size_t>(p)] = inv_mass;
+    }
+
     [[nodiscard]] bool empty() const { return definitions_.empty(); }
     [[nodiscard]] bool has_penalty() const { return has_penalty_; }
     [[nodiscard]] bool has_lagrange() const { return has_lagrange_; }

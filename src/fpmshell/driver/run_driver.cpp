@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <string_view>
 
 #ifdef _OPENMP
 #include <omp.h>
@@ -184,14 +185,15 @@ void add_result_files(ObserverList& out, const Model& model, const RunOptions& o
     out.add<ClosingReport>(log, opt.output_dir);
 }
 
-/// control.mass_scaling (§6.10): the mass added, and a warning for every section past
-/// added_mass_limit.
-void report_mass_scaling(const Model& model, const AddedMass& added, LogFile& log) {
+/// control.mass_scaling (§6.10): the mass added (`when`: at set-up, or by the end of the run),
+/// and a warning for every section past added_mass_limit.
+void report_mass_scaling(const Model& model, const AddedMass& added, std::string_view when,
+                         LogFile& log) {
     const MassScaling& ms = model.control.mass_scaling;
     if (!(ms.time_step > 0)) return;
     const Real physical = added.total_physical();
-    log.print("mass scaling to time step {:.6g}: added mass {:.6g} ({:.3g} % of {:.6g})",
-              ms.time_step, added.total_added(),
+    log.print("mass scaling to time step {:.6g}, {}: added mass {:.6g} ({:.3g} % of {:.6g})",
+              ms.time_step, when, added.total_added(),
               physical > 0 ? 100.0 * added.total_added() / physical : 0.0, physical);
     for (const Index s : added.over_limit(model)) {
         const auto us = static_cast<std::size_t>(s);
@@ -226,7 +228,7 @@ int run_model(const Model& model, const RunOptions& opt) {
               model.n_particles(), model.n_elements(), threads);
 
     ExplicitSolver solver(model);
-    report_mass_scaling(model, solver.added_mass(), log);
+    report_mass_scaling(model, solver.added_mass(), "at set-up", log);
     OutputSchedule schedule(model);
     const std::filesystem::path restart_path = opt.output_dir / k_restart_file;
     ObserverList out;
@@ -260,6 +262,7 @@ int run_model(const Model& model, const RunOptions& opt) {
                     : relaxation  ? last_good
                                   : solver.state().x_prev);
     }
+    if (!relaxation) report_mass_scaling(model, solver.added_mass(), "by the end of the run", log);
     end.wall_seconds = run.clock.seconds();
     end.threads = threads;
     out.finish(solver, end);

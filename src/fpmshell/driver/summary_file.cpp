@@ -88,13 +88,15 @@ JsonValue rigid_bodies_json(const Model& model, const ExplicitSolver& solver) {
     return bodies;
 }
 
-/// control.mass_scaling (§6.10): the target step and the mass added, in all and per section.
+/// control.mass_scaling (§6.10): the target step and the mass added by the end of the run (at
+/// set-up and during the run), in all and per section.
 JsonValue mass_scaling_json(const Model& model, const AddedMass& added) {
     JsonValue mj = JsonValue::object();
     mj.set("time_step", model.control.mass_scaling.time_step);
     mj.set("added_mass", added.total_added());
     mj.set("physical_mass", added.total_physical());
     mj.set("added_mass_limit", model.control.mass_scaling.added_mass_limit);
+    mj.set("added_kinetic_energy", added.kinetic_energy);  // eq. 6.10b, in the external work
     JsonValue sections = JsonValue::array();
     for (std::size_t s = 0; s < added.added.size(); ++s) {
         JsonValue sj = JsonValue::object();

@@ -12,8 +12,9 @@ namespace {
 constexpr char k_magic[8] = {'F', 'P', 'M', 'S', 'H', 'R', 'S', 'T'};
 // Raised whenever the content of a restart file changes. A file of another format is refused:
 // the sections of the solver, the elements and the result files are read only in the layout
-// this build writes (format 4: one section per result file, "history", "energy" and "fields").
-constexpr std::uint32_t k_format_version = 4;
+// this build writes (format 5: the solver's section "mass_scaling", the masses mass scaling has
+// added during the run; one section per result file, "history", "energy" and "fields").
+constexpr std::uint32_t k_format_version = 5;
 
 }  // namespace
 

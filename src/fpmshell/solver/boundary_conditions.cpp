@@ -49,12 +49,16 @@ BoundaryConditions::BoundaryConditions(const Model& model,
 }
 
 std::vector<Vec3> BoundaryConditions::free_inverse_mass(const std::vector<Real>& mass) const {
-    std::vector<Vec3> inv_mass(mass.size(), Vec3::Zero());
-    for (std::size_t p = 0; p < mass.size(); ++p) {
-        if (prescribed_translation_[p] || !(mass[p] > 0)) continue;
-        for (std::size_t d = 0; d < 3; ++d)
-            if (!fixed_[p][d]) inv_mass[p][static_cast<Eigen::Index>(d)] = 1.0 / mass[p];
-    }
+    std::vector<Vec3> inv_mass(mass.size());
+    for (std::size_t p = 0; p < mass.size(); ++p) inv_mass[p] = free_inverse_mass(p, mass[p]);
+    return inv_mass;
+}
+
+Vec3 BoundaryConditions::free_inverse_mass(std::size_t p, Real mass) const {
+    Vec3 inv_mass = Vec3::Zero();
+    if (prescribed_translation_[p] || !(mass > 0)) return inv_mass;
+    for (std::size_t d = 0; d < 3; ++d)
+        if (!fixed_[p][d]) inv_mass[static_cast<Eigen::Index>(d)] = 1.0 / mass;
     return inv_mass;
 }
 

@@ -102,6 +102,8 @@ public:
 
     /// Per particle and direction: 1 / m where free, 0 where fixed or prescribed (contact §8.3).
     [[nodiscard]] std::vector<Vec3> free_inverse_mass(const std::vector<Real>& mass) const;
+    /// free_inverse_mass of particle p of mass m.
+    [[nodiscard]] Vec3 free_inverse_mass(std::size_t p, Real mass) const;
 
     /// Imposes the prescribed velocities, displacements and angular velocities on v^{n+1/2},
     /// w^{n+1/2} (§6.7) and adds the reactions that impose them: m / (c1 dt_n) times the change

@@ -129,21 +129,43 @@ void ElementTimeSteps::reevaluate(Index e, const std::array<Index, 3>& t,
 // §6.10 eq. 6.10a: with the stiffness damping a_s of §6.4 the critical step is
 // sqrt(dt^2 + a_s^2) - a_s for the undamped step dt, so the undamped step that reaches `step`
 // is sqrt((step + a_s)^2 - a_s^2); the undamped step grows by sqrt(f_e).
+Real ElementTimeSteps::undamped_target(Real step) const {
+    const Real a = stiffness_damping_;
+    return std::sqrt((step + a) * (step + a) - a * a);
+}
+
 std::vector<Real> ElementTimeSteps::mass_scaling_factors(
     Real step, const std::vector<std::array<Index, 3>>& triangles,
     const std::vector<Vec3>& x) const {
-    const Real a = stiffness_damping_;
-    const Real needed = std::sqrt((step + a) * (step + a) - a * a);
+    const Real needed = undamped_target(step);
     std::vector<Real> factor(triangles.size(), 1.0);
     for (std::size_t e = 0; e < triangles.size(); ++e) {
         const auto [p0, p1, p2] = corners_of(triangles[e], x);
-        Real dt = characteristic_length(p0, p1, p2) /
-                  wave_speed_[static_cast<std::size_t>(section_[e])] *
-                  std::min(Real{1}, bend_ratio_[e]);
-        if (!mass_scale_.empty()) dt *= mass_scale_[e];
+        const Real dt = undamped_dt(static_cast<Index>(e), characteristic_length(p0, p1, p2));
         if (dt > 0 && dt < needed) factor[e] = (needed / dt) * (needed / dt);
     }
     return factor;
+}
+
+void ElementTimeSteps::enable_run_scaling(Real step) {
+    run_target_ = undamped_target(step);
+    pending_.assign(section_.size(), 0.0);
+    if (mass_scale_.empty()) mass_scale_.assign(section_.size(), 1.0);
+}
+
+std::vector<ElementTimeSteps::CornerAddition> ElementTimeSteps::take_pending_scaling() {
+    std::vector<CornerAddition> added;
+    for (std::size_t e = 0; e < pending_.size(); ++e) {
+        const Real f = pending_[e];
+        if (f == 0) continue;
+        pending_[e] = 0;
+        added.push_back(
+            {static_cast<Index>(e), node_mass_[e] * (f - 1.0), node_inertia_[e] * (f - 1.0)});
+        node_mass_[e] *= f;
+        node_inertia_[e] *= f;
+        mass_scale_[e] *= std::sqrt(f);
+    }
+    return added;
 }
 
 void ElementTimeSteps::scale_masses(const std::vector<Real>& factor) {

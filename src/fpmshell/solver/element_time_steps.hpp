@@ -29,17 +29,21 @@ public:
     /// Critical step of element e of current length lc (§6.4), unscaled. (Inline, as
     /// refresh: the element loop calls both for every element of every step.)
     [[nodiscard]] Real critical_dt(Index e, Real lc) const {
-        const auto ue = static_cast<std::size_t>(e);
-        // §6.4 membrane step L_c / c; the bending modes of thick elements (h / L_c > ~0.5) are
-        // slower to integrate, bend_ratio_ < 1 (bending_time_step.hpp).
-        Real dt = lc / wave_speed_[static_cast<std::size_t>(section_[ue])] *
-                  std::min(Real{1}, bend_ratio_[ue]);
-        if (!mass_scale_.empty()) dt *= mass_scale_[ue];  // §6.10: sqrt(f_e)
-        if (stiffness_damping_ > 0) {  // §6.4: dt <= (2/w)(sqrt(1+xi^2) - xi), w = 2/dt
-            const Real xi = stiffness_damping_ / dt;
-            dt *= std::sqrt(1.0 + xi * xi) - xi;
+        return with_stiffness_damping(undamped_dt(e, lc));
+    }
+    /// critical_dt with §6.10's mass scaling during the run: an element whose step has fallen
+    /// below the target of enable_run_scaling is given the step of the target, and its mass
+    /// factor is kept for take_pending_scaling (element e only writes entry e: the element
+    /// loop may call it from several threads). `scaled` counts the elements so given.
+    [[nodiscard]] Real scaled_critical_dt(Index e, Real lc, Index& scaled) {
+        Real dt = undamped_dt(e, lc);
+        // eq. 6.10a (an element scaled already may be an ulp below the target: not again)
+        if (dt < run_target_ * (1.0 - 1e-12) && dt > 0) {
+            pending_[static_cast<std::size_t>(e)] = (run_target_ / dt) * (run_target_ / dt);
+            dt = run_target_;
+            ++scaled;
         }
-        return dt;
+        return with_stiffness_damping(dt);
     }
     /// Re-evaluates the bending ratio of element e (corners t, positions x, current length lc)
     /// when lc has drifted by more than k_bending_ratio_drift from the length the ratio was
@@ -64,6 +68,24 @@ public:
     /// Multiplies element e's mass and inertia shares by factor[e] (mass_scaling_factors): its
     /// membrane and bending steps grow by sqrt(factor[e]), the bending ratio stays.
     void scale_masses(const std::vector<Real>& factor);
+    /// §6.10 during the run: from now on scaled_critical_dt keeps every element's critical step
+    /// at or above `step` (the run's target / time_step_scale).
+    void enable_run_scaling(Real step);
+    /// The mass and inertia added to one corner of an element by the scaling of a step.
+    struct CornerAddition {
+        Index element;
+        Real mass, inertia;
+    };
+    /// Applies the mass factors scaled_critical_dt has kept since the last call to the elements'
+    /// shares, and returns what each element's corners gained, in element order.
+    [[nodiscard]] std::vector<CornerAddition> take_pending_scaling();
+
+    /// The state of §6.10 carried from step to step (restart files): per element, its corner
+    /// mass and inertia shares and sqrt(f_e).
+    template <class Archive>
+    void transfer_masses(Archive& ar) {
+        ar(node_mass_, node_inertia_, mass_scale_);
+    }
 
     /// The state carried from step to step (restart files): per element, the bending ratio and
     /// the L_c it was evaluated at.
@@ -77,6 +99,26 @@ private:
     [[nodiscard]] Real bending_ratio(Index e, const std::array<Vec3, 3>& corners) const;
     /// Sets every element's ratio at the initial geometry, shared within shape classes.
     void share_initial_ratios(const Model& model);
+    /// The step of element e of length lc before the reduction for stiffness damping (§6.4).
+    [[nodiscard]] Real undamped_dt(Index e, Real lc) const {
+        const auto ue = static_cast<std::size_t>(e);
+        // §6.4 membrane step L_c / c; the bending modes of thick elements (h / L_c > ~0.5) are
+        // slower to integrate, bend_ratio_ < 1 (bending_time_step.hpp).
+        Real dt = lc / wave_speed_[static_cast<std::size_t>(section_[ue])] *
+                  std::min(Real{1}, bend_ratio_[ue]);
+        if (!mass_scale_.empty()) dt *= mass_scale_[ue];  // §6.10: sqrt(f_e)
+        return dt;
+    }
+    /// §6.4: dt <= (2/w)(sqrt(1+xi^2) - xi), w = 2/dt
+    [[nodiscard]] Real with_stiffness_damping(Real dt) const {
+        if (stiffness_damping_ > 0) {
+            const Real xi = stiffness_damping_ / dt;
+            dt *= std::sqrt(1.0 + xi * xi) - xi;
+        }
+        return dt;
+    }
+    /// The undamped step that the damped critical step `step` needs (eq. 6.10a).
+    [[nodiscard]] Real undamped_target(Real step) const;
 
     std::vector<Index> section_;          ///< per element
     std::vector<Real> wave_speed_;        ///< per section
@@ -88,6 +130,8 @@ private:
     std::vector<Real> bend_ratio_;  ///< per element, bending critical step / (L_c / c)
     std::vector<Real> bend_lc_;     ///< per element, the L_c bend_ratio_ was evaluated at
     std::vector<Real> mass_scale_;  ///< per element, sqrt(f_e) of §6.10 (empty: no scaling)
+    Real run_target_ = 0;           ///< §6.10 during the run: the undamped target step (0: off)
+    std::vector<Real> pending_;     ///< per element, the factor scaled_critical_dt kept (0: none)
 };
 
 }  // namespace fpmshell

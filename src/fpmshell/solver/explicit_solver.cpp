@@ -29,6 +29,9 @@ ExplicitSolver::ExplicitSolver(const Model& model)
     // §6.10 mass scaling of the elements below the target step, then the §6.1 lumped mass
     // and §6.2 rotary inertia (summed by the topology).
     added_mass_ = apply_mass_scaling(model, topology_, elements_.time_steps());
+    if (model.control.mass_scaling.time_step > 0)  // and during the run
+        elements_.time_steps().enable_run_scaling(model.control.mass_scaling.time_step /
+                                                  model.control.time_step_scale);
     s_.mass = topology_.particle_mass;
     s_.inertia = topology_.particle_inertia;
     // §1.3 the area-weighted normal; the mean edge length.
@@ -145,10 +148,33 @@ ShellElements::StepTotals ExplicitSolver::compute_internal_loads(const CyclePoli
         elements_.compute(s_, viscous_rate, policy.rate_effects ? dt_half_ : 0.0);
     element_steps_ += elements_.size();
     if (tot.failed_element >= 0) report_failed_element(tot.failed_element);
+    if (tot.mass_scaled > 0) add_scaled_mass();
     energy_.internal += tot.strain_work;  // includes the plastic dissipation, like LS-DYNA's
     energy_.plastic += tot.plastic_work;  // internal energy; reported on its own as well
     energy_.damping += tot.damping_work;
     return tot;
+}
+
+// §6.10 during the run: the corners of the elements the loop scaled gain their mass and inertia
+// (in element order: the same sums for any thread count) before the velocity update uses them.
+// The velocity v^{n-1/2} stays; the kinetic energy 1/2 v^{n-1/2} M v^{n+1/2} of t_n then holds
+// 1/2 dm |v^{n-1/2}|^2 more than the work of the forces gives (eq. 6.10b): external work.
+void ExplicitSolver::add_scaled_mass() {
+    for (const ElementTimeSteps::CornerAddition& a :
+         elements_.time_steps().take_pending_scaling()) {
+        const auto ue = static_cast<std::size_t>(a.element);
+        added_mass_.added[static_cast<std::size_t>(model_.element_section[ue])] += 3.0 * a.mass;
+        for (const Index p : model_.triangles[ue]) {
+            const auto up = static_cast<std::size_t>(p);
+            const Real work =
+                0.5 * (a.mass * s_.v[up].squaredNorm() + a.inertia * s_.omega[up].squaredNorm());
+            added_mass_.kinetic_energy += work;
+            energy_.external_work += work;
+            s_.mass[up] += a.mass;
+            s_.inertia[up] += a.inertia;
+            if (contact_) contact_->set_inverse_mass(p, bc_->free_inverse_mass(up, s_.mass[up]));
+        }
+    }
 }
 
 ExplicitSolver::StepLengths ExplicitSolver::next_step_lengths(
@@ -388,9 +414,13 @@ void ExplicitSolver::transfer_state(Archive& ar) {
 
 void ExplicitSolver::save(RestartWriter& out) const {
     out.section("solver");
-    const_cast<ExplicitSolver*>(this)->transfer_state(out);
+    auto& self = const_cast<ExplicitSolver&>(*this);  // the archive's interface is shared with load
+    self.transfer_state(out);
     out.section("elements");
     elements_.save(out);
+    out.section("mass_scaling");
+    self.elements_.time_steps().transfer_masses(out);
+    out(self.added_mass_);
     out.section("contact");
     out(static_cast<bool>(contact_));
     if (contact_) contact_->save(out);
@@ -407,6 +437,14 @@ void ExplicitSolver::load(RestartReader& in) {
     for (std::size_t p = 0; p < s_.size(); ++p) s_.drill_axis[p] = bc_->drill_axis(p, s_.normal[p]);
     in.section("elements");
     elements_.load(in);
+    in.section("mass_scaling");
+    elements_.time_steps().transfer_masses(in);
+    in(added_mass_);
+    // the contact's inverse masses follow the masses the run had reached (§6.10)
+    if (contact_)
+        for (std::size_t p = 0; p < s_.size(); ++p)
+            contact_->set_inverse_mass(static_cast<Index>(p),
+                                       bc_->free_inverse_mass(p, s_.mass[p]));
     in.section("contact");
     bool has_contact = false;
     in(has_contact);

@@ -99,6 +99,9 @@ private:
     /// 1 element loop on the path element (x^{n-1}, x^n, dtheta^{n-1/2}) -> f_int^n, m_int^n
     /// (§2-§5); books the strain, plastic and damping work.
     [[nodiscard]] ShellElements::StepTotals compute_internal_loads(const CyclePolicy& policy);
+    /// 1 (§6.10) the mass and inertia the element loop added to the elements whose step fell
+    /// below the target of control.mass_scaling, given to their particles.
+    void add_scaled_mass();
     /// 3 dt_{n+1/2} = scale min dt_e, growth capped at 1.2 dt_{n-1/2} (§6.4), and dt_n.
     [[nodiscard]] StepLengths next_step_lengths(const CyclePolicy& policy,
                                                 const ShellElements::StepTotals& elements,

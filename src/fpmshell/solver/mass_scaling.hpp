@@ -1,7 +1,10 @@
 // Mass scaling (theory.md §6.10; LS-DYNA's *CONTROL_TIMESTEP DT2MS < 0, OpenRadioss's
-// /DT/NODA/CST): the elements whose critical step at the initial geometry is below the target
+// /DT/NODA/CST): the elements whose critical step is below the target
 // control.mass_scaling.time_step get their mass and rotary inertia shares multiplied by the
-// factor that brings their step to it; everything else keeps its physical mass.
+// factor that brings their step to it; everything else keeps its physical mass. This file
+// scales the elements at the initial geometry; during the run the element loop scales those
+// whose step falls below the target as they deform (ElementTimeSteps::scaled_critical_dt,
+// ExplicitSolver).
 #pragma once
 
 #include <vector>
@@ -17,12 +20,21 @@ namespace fpmshell {
 struct AddedMass {
     std::vector<Real> added;     ///< the mass added to the section's elements
     std::vector<Real> physical;  ///< the section's elements' mass without it
+    /// The kinetic energy the mass added during the run brought with it, 1/2 dm |v|^2 + 1/2 dJ
+    /// |w|^2 at the particle's velocity (eq. 6.10b), booked as external work.
+    Real kinetic_energy = 0;
     [[nodiscard]] Real total_added() const;
     [[nodiscard]] Real total_physical() const;
     /// The sections whose added mass exceeds control.mass_scaling.added_mass_limit times
     /// their physical mass.
     [[nodiscard]] std::vector<Index> over_limit(const Model& model) const;
 };
+
+/// Members for a restart file (io/restart_archive.hpp).
+template <class Archive>
+void transfer(Archive& ar, AddedMass& a) {
+    ar(a.added, a.physical, a.kinetic_energy);
+}
 
 /// Applies control.mass_scaling to the element shares of topology (and the particle sums) and
 /// to steps (the critical steps follow the scaled masses); without it only measures the

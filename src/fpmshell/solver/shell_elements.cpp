@@ -240,7 +240,7 @@ ShellElements::ElementTotals ShellElements::compute_element(Index e, ParticleSta
     const Real lc = rt.checks.characteristic_length;  // §6.4, once per element and step
     time_steps_.refresh(e, tri_[ue], s.x, lc);
     ElementTotals totals;
-    totals.dt = time_steps_.critical_dt(e, lc);
+    totals.dt = time_steps_.scaled_critical_dt(e, lc, totals.mass_scaled);
     totals.dt_element = e;
     // the 3 slots across the sides exist (and are gathered) only with the smoothed membrane
     constexpr auto w = static_cast<std::size_t>(k_lanes);
@@ -280,6 +280,7 @@ void ShellElements::ElementTotals::add(const ElementTotals& o) {
     strain_work += o.strain_work;
     damping_work += o.damping_work;
     plastic_work += o.plastic_work;
+    mass_scaled += o.mass_scaled;
     // the lowest-numbered element among equals, as a scan in element order finds
     if (o.dt < dt ||
         (o.dt == dt && o.dt_element >= 0 && (dt_element < 0 || o.dt_element < dt_element))) {
@@ -394,7 +395,7 @@ void ShellElements::compute_block(Index b, ParticleState& s, Real viscous_rate, 
         t.strain_work = lane(loads.strain_work, l);
         t.damping_work = lane(loads.damping_work, l);
         t.plastic_work = lane(loads.plastic_work, l);
-        t.dt = time_steps_.critical_dt(static_cast<Index>(ue), lc);
+        t.dt = time_steps_.scaled_critical_dt(static_cast<Index>(ue), lc, t.mass_scaled);
         t.dt_element = static_cast<Index>(ue);
         totals.add(t);
     }
@@ -475,6 +476,7 @@ ShellElements::StepTotals ShellElements::compute(ParticleState& s, Real viscous_
     tot.min_dt = all.dt;
     tot.min_dt_element = all.dt_element;
     tot.failed_element = all.failed;
+    tot.mass_scaled = all.mass_scaled;
     return tot;
 }
 
@@ -510,16 +512,7 @@ void ShellElements::load(RestartReader& in) {
         (group_of(e).stress_only() ? n_stress_only : n_history) += group_of(e).n_points();
     std::vector<MaterialPoint> points;
     std::vector<Voigt3> stresses, n, m;  // the resultants N, M of every element
-    if (in.format() >= 2) {
-        in(points, stresses, thickness_, time_steps_.ratio(), time_steps_.ratio_length(), n, m);
-    } else {  // format 1: no elastic stresses apart (restart_archive.cpp)
-        if (n_stress_only > 0)
-            in.fail(
-                "restart file of format 1, which holds no elastic stresses apart: it can resume a "
-                "model "
-                "without elastic sections only");
-        in(points, thickness_, time_steps_.ratio(), time_steps_.ratio_length(), n, m);
-    }
+    in(points, stresses, thickness_, time_steps_.ratio(), time_steps_.ratio_length(), n, m);
     if (points.size() != n_history || stresses.size() != n_stress_only ||
         thickness_.size() != n_elements || n.size() != n_elements || m.size() != n_elements)
         in.fail("restart file of a model with other elements or integration rules");

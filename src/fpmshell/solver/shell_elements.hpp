@@ -36,6 +36,9 @@ public:
         Real min_dt = 0;        ///< smallest element critical step at t_n (§6.4), unscaled
         Index min_dt_element = -1;
         Index failed_element = -1;  ///< first degenerate or flipped element, -1 if none
+        /// elements whose step fell below the target of §6.10 mass scaling this step (their
+        /// factors wait in time_steps().take_pending_scaling())
+        Index mass_scaled = 0;
     };
 
     /// Internal forces and moments at t_n from the path element (x_prev, x, dtheta); writes
@@ -84,6 +87,7 @@ private:
         Real strain_work = 0, damping_work = 0, plastic_work = 0;
         Real dt = std::numeric_limits<Real>::infinity();
         Index dt_element = -1, failed = -1;
+        Index mass_scaled = 0;             ///< elements given added mass this step (§6.10)
         void add(const ElementTotals& o);  ///< o's works added after this one's
     };
     /// The smoothed membrane's view of an element's neighbours (membrane_smoothing.hpp).
