@@ -519,6 +519,7 @@ void ContactSolver::enforce(const std::vector<Vec3>& x, std::vector<Vec3>& x_pre
     // that do not depend on the thread count. A fixed body (infinite mass) does not move: it
     // joins no island.
     const std::size_t np = x_pred.size();
+    warm_start(x_pred, body_u_pred, bodies, beta_particle, beta_body);
     island_nodes_.resize(constraints_.size());
     particle_moved_at_.resize(np, -1);
     body_moved_at_.resize(body_u_pred.size(), -1);
@@ -627,6 +628,7 @@ void ContactSolver::enforce(const std::vector<Vec3>& x, std::vector<Vec3>& x_pre
         converged = converged && s > 0;
     }
     if (!converged) ++stats_.unconverged_steps;
+    keep_multipliers();
     stats_.sweeps = sweeps;
     stats_.max_sweeps = std::max(stats_.max_sweeps, sweeps);
     stats_.active =
@@ -665,6 +667,42 @@ void ContactSolver::enforce(const std::vector<Vec3>& x, std::vector<Vec3>& x_pre
     }
 }
 
+MultiplierMemory::Key ContactSolver::key_of(const Constraint& c) {
+    return {c.slave, c.master[0], c.master[1], c.master[2], c.body};
+}
+
+// §8.3a: every constraint starts from the multiplier its key had at the end of the last step,
+// applied as the sweeps apply an update (in constraint order: the same for any thread count).
+void ContactSolver::warm_start(std::vector<Vec3>& x_pred, std::vector<Vec3>& body_u_pred,
+                               const std::vector<RigidBodyState>& bodies, Real beta_particle,
+                               Real beta_body) {
+    if (memory_.size() == 0) return;
+    for (Constraint& c : constraints_) {
+        const Real lambda = memory_.recall(key_of(c));
+        if (lambda == 0) continue;
+        c.lambda = lambda;
+        const auto us = static_cast<std::size_t>(c.slave);
+        x_pred[us] += (beta_particle * lambda) * inv_mass_[us].cwiseProduct(c.normal);
+        if (c.element >= 0)
+            for (std::size_t k = 0; k < 3; ++k) {
+                const auto um = static_cast<std::size_t>(c.master[k]);
+                x_pred[um] -=
+                    (beta_particle * lambda * c.xi[k]) * inv_mass_[um].cwiseProduct(c.normal);
+            }
+        if (c.body >= 0 && bodies[static_cast<std::size_t>(c.body)].inv_mass > 0) {
+            const auto b = static_cast<std::size_t>(c.body);
+            body_u_pred[b] -= (beta_body * lambda * bodies[b].inv_mass) * c.normal;
+        }
+    }
+}
+
+void ContactSolver::keep_multipliers() {
+    memory_entries_.clear();
+    for (const Constraint& c : constraints_)
+        if (c.lambda > 0) memory_entries_.emplace_back(key_of(c), c.lambda);
+    memory_.keep(memory_entries_);
+}
+
 std::vector<std::pair<Index, Index>> ContactSolver::candidate_pairs(std::size_t definition) const {
     const Definition& d = definitions_[definition];
     std::vector<std::pair<Index, Index>> pairs;
@@ -682,6 +720,7 @@ void ContactSolver::transfer_state(Archive& ar) {
     ar(st.active, st.max_active, st.sweeps, st.max_sweeps, st.unconverged_steps, st.searches);
     ar(st.held_penetrations, st.max_penetration, st.max_penetration_ratio, st.max_penetration_step);
     ar(st.max_penetration_particle, st.max_penetration_element, st.seconds);
+    memory_.transfer(ar);
 }
 
 void ContactSolver::save(RestartWriter& out) const {

@@ -16,6 +16,7 @@
 
 #include "fpmshell/contact/bucket_grid.hpp"
 #include "fpmshell/contact/constraint_islands.hpp"
+#include "fpmshell/contact/multiplier_memory.hpp"
 #include "fpmshell/contact/rigid_body_state.hpp"
 #include "fpmshell/core/types.hpp"
 #include "fpmshell/model/mesh_topology.hpp"
@@ -150,6 +151,14 @@ private:
     [[nodiscard]] Real weight(const Constraint& c, Real beta_particle, Real beta_body,
                               const std::vector<RigidBodyState>& bodies) const;
     void note_penetration(Real penetration, const Constraint& c, long step);
+    /// The identity of constraint c from step to step (§8.3a).
+    [[nodiscard]] static MultiplierMemory::Key key_of(const Constraint& c);
+    /// §8.3a: the constraints start from the multipliers the memory kept for their keys, and
+    /// the predicted positions move by what those multipliers do.
+    void warm_start(std::vector<Vec3>& x_pred, std::vector<Vec3>& body_u_pred,
+                    const std::vector<RigidBodyState>& bodies, Real beta_particle, Real beta_body);
+    /// Keeps the positive multipliers of this step's constraints for the next (§8.3a).
+    void keep_multipliers();
     void prepare_search(Definition& d, const std::vector<Vec3>& x, Real motion);
     template <class Archive>
     void transfer_state(Archive& ar);
@@ -163,6 +172,8 @@ private:
     struct SweepMeasures {
         Real deepest = 0, largest_change = 0, largest_lambda = 0, largest_move = 0;
     };
+    MultiplierMemory memory_;  ///< the last step's multipliers (§8.3a)
+    std::vector<std::pair<MultiplierMemory::Key, Real>> memory_entries_;  ///< scratch
     ConstraintIslands islands_;
     std::vector<ConstraintIslands::Nodes> island_nodes_;  ///< scratch, per constraint
     std::vector<Real> penetration_;   ///< scratch, per constraint: left at t_{n+1}

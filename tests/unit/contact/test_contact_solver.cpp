@@ -5,12 +5,15 @@
 // - two plates driven into each other do not interpenetrate at any step;
 // - a curved shell falling onto a fixed plane: the energy balance closes with the contact
 //   energy; the penalty (elastic) contact gives the energy back after the rebound;
-// - a strip rolled up beyond a full turn lies on itself instead of passing through.
+// - a strip rolled up beyond a full turn lies on itself instead of passing through;
+// - the multiplier memory of the warm start (§8.3a) keeps the positive multipliers by key and
+//   recalls them.
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 #include "fpmshell/contact/closest_point.hpp"
+#include "fpmshell/contact/multiplier_memory.hpp"
 #include "fpmshell/core/errors.hpp"
 #include "fpmshell/mesh/generators.hpp"
 #include "fpmshell/solver/explicit_solver.hpp"
@@ -314,4 +317,20 @@ TEST(Contact, FoldedStripSqueezedShutHoldsItsSelfContact) {
             EXPECT_LT(closest, 0.5 * h);
         }
     }
+}
+
+TEST(MultiplierMemory, RecallsThePositiveMultipliersByKey) {
+    MultiplierMemory memory;
+    using Key = MultiplierMemory::Key;
+    memory.keep({{Key{3, 1, 2, 4, -1}, 2.0},
+                 {Key{0, -1, -1, -1, 0}, 5.0},
+                 {Key{3, 1, 2, 4, -1}, 7.0},  // a second copy of a key: the first counts
+                 {Key{1, 1, 2, 4, -1}, 0.0}});
+    EXPECT_EQ(memory.size(), 2U);
+    EXPECT_EQ(memory.recall(Key{3, 1, 2, 4, -1}), 2.0);
+    EXPECT_EQ(memory.recall(Key{0, -1, -1, -1, 0}), 5.0);
+    EXPECT_EQ(memory.recall(Key{1, 1, 2, 4, -1}), 0.0);  // zero is not kept
+    EXPECT_EQ(memory.recall(Key{9, 9, 9, 9, 9}), 0.0);
+    memory.keep({});
+    EXPECT_EQ(memory.recall(Key{3, 1, 2, 4, -1}), 0.0);  // the last step's only
 }
