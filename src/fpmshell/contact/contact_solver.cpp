@@ -18,10 +18,13 @@ constexpr Real k_exclusion_factor = 1.5;   // default exclusion radius: 1.5 x la
 constexpr Real k_margin_fraction = 0.5;    // search margin: 0.5 x largest offset
 constexpr Real k_sweep_tolerance = 1e-3;   // sweeps stop when no gap is below -1e-3 h (§8.3)
 constexpr Real k_lambda_tolerance = 1e-6;  // ... and no multiplier changed by 1e-6 of the largest
-// Pairs closer than this fraction of their offset at the predictor join the Gauss-Seidel
-// sweeps with lambda = 0: a correction that pushes a particle into a surface it was only near
-// is then undone in the same step, not one step later by a force that does positive work.
-constexpr Real k_activation_fraction = 0.5;
+// Pairs closer than the activation distance at the predictor join the Gauss-Seidel sweeps with
+// lambda = 0 (theory.md §8.3): a correction that pushes a particle into a surface it was only
+// near is then undone in the same step, not one step later by a force that does positive work.
+// A correction moves a particle by about the penetration it removes, itself at most about the
+// relative motion of one step: the distance is 4 times the largest motion of the step, at least
+// 5 % and at most half of the pair's offset.
+constexpr Real k_activation_min = 0.05, k_activation_max = 0.5, k_activation_motions = 4.0;
 // An edge point with a corner weight above this is the corner (particle-to-particle pair).
 constexpr Real k_corner_weight = 0.99;
 // A pass over the constraints (copy, weights, penetrations) costs tens of ns per constraint:
@@ -33,6 +36,27 @@ Vec3 unit_normal(const Vec3& a, const Vec3& b, const Vec3& c) {
     const Vec3 n = (b - a).cross(c - a);
     const Real len = n.norm();
     return len > 0 ? Vec3(n / len) : Vec3::Zero();
+}
+
+/// Whether a pair (slave at xs, ys; triangle of frame f, corner a at xa, ya) surely makes no
+/// constraint, as collect_self decides it: the slave is farther than `reach` ((1 + activation
+/// fraction) x offset) from the triangle's face at y, and on the side of its plane it was on at
+/// x. Then the face gap sigma n.(y_s - p) - offset (in the face) or the edge or corner distance
+/// - offset (beside it) exceeds the activation threshold, and a pair closed at x would need a
+/// distance below the offset at y. Both signs with a margin of 1e-9 of the reach, far above the
+/// rounding of the closest point's plane distance that collect_self takes.
+bool far_on_its_side(const ContactSolver::TriangleFrame& f, const Vec3& xs, const Vec3& ys,
+                     const Vec3& xa, const Vec3& ya, Real reach) {
+    const Real beyond = reach * (1.0 + 1e-9) + f.radius_y;
+    if ((ys - f.centre_y).squaredNorm() <= beyond * beyond) return false;
+    const Real side_x = f.n_x.dot(xs - xa), side_y = f.n_y.dot(ys - ya);
+    const Real margin = 1e-9 * reach;
+    return (side_x > margin && side_y > margin) || (side_x < -margin && side_y < -margin);
+}
+
+Real activation_distance(Real offset, Real motion) {
+    return std::min(k_activation_max * offset,
+                    std::max(k_activation_min * offset, k_activation_motions * motion));
 }
 
 class Stopwatch {
@@ -110,6 +134,7 @@ void ContactSolver::prepare_search(Definition& d, const std::vector<Vec3>& x, Re
 
 void ContactSolver::search(Definition& d, const std::vector<Vec3>& x) {
     ++stats_.searches;
+    d.candidate_triangles.clear();  // remade by collect_self from the new candidates
     const auto& tri = model_.triangles;
     const std::size_t ne = d.def.elements.size();
     const Real reach = d.max_offset + d.margin;
@@ -182,7 +207,7 @@ void ContactSolver::search(Definition& d, const std::vector<Vec3>& x) {
     }
 }
 
-void ContactSolver::collect_self(const Definition& d, const std::vector<Vec3>& x,
+void ContactSolver::collect_self(Definition& d, const std::vector<Vec3>& x,
                                  const std::vector<Vec3>& y, bool lagrange,
                                  std::vector<Constraint>& out, std::vector<Constraint>& closed) {
     const auto& tri = model_.triangles;
@@ -196,6 +221,35 @@ void ContactSolver::collect_self(const Definition& d, const std::vector<Vec3>& x
     const std::size_t n_chunks = (n_slaves + k_collect_chunk - 1) / k_collect_chunk;
     if (collect_chunks_.size() < n_chunks) collect_chunks_.resize(n_chunks);
     [[maybe_unused]] const bool parallel = n_slaves >= parallel_min_slaves_;
+    // Every triangle's unit normals at x and y, and a sphere about it at y, once per step
+    // instead of once per pair: the candidates of one triangle are many slaves.
+    if (d.candidate_triangles.empty() && !d.candidates.empty()) {  // after a search or a restart
+        d.candidate_triangles = d.candidates;
+        std::sort(d.candidate_triangles.begin(), d.candidate_triangles.end());
+        d.candidate_triangles.erase(
+            std::unique(d.candidate_triangles.begin(), d.candidate_triangles.end()),
+            d.candidate_triangles.end());
+    }
+    frames_.resize(tri.size());
+    const std::size_t n_tri = d.candidate_triangles.size();
+#pragma omp parallel for schedule(static) if (parallel)
+    for (std::size_t k = 0; k < n_tri; ++k) {
+        const auto e = static_cast<std::size_t>(d.candidate_triangles[k]);
+        const auto& t = tri[e];
+        const Vec3& ya = y[static_cast<std::size_t>(t[0])];
+        const Vec3& yb = y[static_cast<std::size_t>(t[1])];
+        const Vec3& yc = y[static_cast<std::size_t>(t[2])];
+        TriangleFrame& f = frames_[e];
+        f.n_x = unit_normal(x[static_cast<std::size_t>(t[0])], x[static_cast<std::size_t>(t[1])],
+                            x[static_cast<std::size_t>(t[2])]);
+        f.n_y = lagrange ? unit_normal(ya, yb, yc) : f.n_x;
+        f.centre_y = (ya + yb + yc) / 3.0;
+        // the face of §8.1 reaches barycentric weights of -k_face_tolerance: the triangle
+        // scaled about its centroid by 1 + 3 k_face_tolerance; 1.1 covers it
+        f.radius_y = 1.1 * std::sqrt(std::max({(ya - f.centre_y).squaredNorm(),
+                                               (yb - f.centre_y).squaredNorm(),
+                                               (yc - f.centre_y).squaredNorm()}));
+    }
 #pragma omp parallel for schedule(dynamic) if (parallel)
     for (std::size_t chunk = 0; chunk < n_chunks; ++chunk) {
         CollectBuffers& buf = collect_chunks_[chunk];
@@ -213,6 +267,12 @@ void ContactSolver::collect_self(const Definition& d, const std::vector<Vec3>& x
                 const auto& t = tri[static_cast<std::size_t>(e)];
                 const Real offset =
                     d.slave_offset[i] + 0.5 * element_thickness_[static_cast<std::size_t>(e)];
+                const TriangleFrame& f = frames_[static_cast<std::size_t>(e)];
+                if (far_on_its_side(
+                        f, x[us], y[us], x[static_cast<std::size_t>(t[0])],
+                        y[static_cast<std::size_t>(t[0])],
+                        offset + (lagrange ? activation_distance(offset, motion_) : 0.0)))
+                    continue;
                 Constraint c;
                 c.slave = s;
                 c.element = e;
@@ -223,7 +283,7 @@ void ContactSolver::collect_self(const Definition& d, const std::vector<Vec3>& x
                 const Vec3& xa = x[static_cast<std::size_t>(t[0])];
                 const Vec3& xb = x[static_cast<std::size_t>(t[1])];
                 const Vec3& xc = x[static_cast<std::size_t>(t[2])];
-                const Vec3 n_x = unit_normal(xa, xb, xc);
+                const Vec3& n_x = f.n_x;
                 const TriangleClosestPoint cp_x =
                     closest_point_on_triangle(x[us], xa, xb, xc, k_face_tolerance);
                 const Vec3 rel_x = x[us] - cp_x.point;
@@ -234,7 +294,7 @@ void ContactSolver::collect_self(const Definition& d, const std::vector<Vec3>& x
                 const Vec3& ya = y[static_cast<std::size_t>(t[0])];
                 const Vec3& yb = y[static_cast<std::size_t>(t[1])];
                 const Vec3& yc = y[static_cast<std::size_t>(t[2])];
-                const Vec3 n_y = lagrange ? unit_normal(ya, yb, yc) : n_x;
+                const Vec3& n_y = f.n_y;
                 const TriangleClosestPoint cp_y =
                     lagrange ? closest_point_on_triangle(y[us], ya, yb, yc, k_face_tolerance)
                              : cp_x;
@@ -280,7 +340,7 @@ void ContactSolver::collect_self(const Definition& d, const std::vector<Vec3>& x
                     c.normal = rel / dist;
                     c.gap = dist - offset;
                 }
-                if (!(c.gap < (lagrange ? k_activation_fraction * offset : 0.0))) continue;
+                if (!(c.gap < (lagrange ? activation_distance(offset, motion_) : 0.0))) continue;
                 if (key[0] < 0) {
                     buf.out.push_back(c);
                 } else {
@@ -376,7 +436,7 @@ void ContactSolver::collect_rigid(const Definition& d, const std::vector<Vec3>& 
         // shell turns (an offset that follows the orientation does work and creates energy).
         const Real offset = 0.5 * node_thickness_[us];
         const Real gap = body.normal.dot(y[us] - point) - offset;
-        if (!(gap < (lagrange ? k_activation_fraction * offset : 0.0))) continue;
+        if (!(gap < (lagrange ? activation_distance(offset, motion_) : 0.0))) continue;
         Constraint c;
         c.slave = s;
         c.body = d.def.body;
@@ -453,6 +513,7 @@ void ContactSolver::enforce(const std::vector<Vec3>& x, std::vector<Vec3>& x_pre
     Stopwatch watch(stats_.seconds);
     constraints_.clear();
     closed_.clear();
+    motion_ = motion;
     int max_iterations = 1;
     for (Definition& d : definitions_) {
         if (d.def.method != ContactMethod::LagrangeMultiplier) continue;
@@ -733,6 +794,7 @@ void ContactSolver::load(RestartReader& in) {
     in(n);
     if (n != definitions_.size()) in.fail("restart file of a model with other contact definitions");
     transfer_state(in);
+    for (Definition& d : definitions_) d.candidate_triangles.clear();  // of the loaded candidates
 }
 
 }  // namespace fpmshell

@@ -83,6 +83,13 @@ public:
 
     [[nodiscard]] const ContactStatistics& statistics() const { return stats_; }
 
+    /// What collect_self takes of a triangle once per step: its unit normals at x^n and at the
+    /// predictor y, and a sphere about its face at y.
+    struct TriangleFrame {
+        Vec3 n_x = Vec3::Zero(), n_y = Vec3::Zero(), centre_y = Vec3::Zero();
+        Real radius_y = 0;
+    };
+
     /// The candidate pairs (slave particle, triangle) of definition `definition` found by its
     /// last search (none before the first).
     [[nodiscard]] std::vector<std::pair<Index, Index>> candidate_pairs(
@@ -137,12 +144,15 @@ private:
         bool searched = false;
         std::vector<std::int64_t> candidate_start;  ///< CSR per slave
         std::vector<Index> candidates;              ///< triangles
+        /// the triangles among the candidates, once each (collect_self's frames; empty after
+        /// a search until collect_self remakes it)
+        std::vector<Index> candidate_triangles;
     };
 
     void search(Definition& d, const std::vector<Vec3>& x);
     /// Self-contact constraints of definition d: geometry at x (side of each pair, §8.2) and
     /// gaps at y (the predictor for Lagrange multipliers, x itself for the penalty).
-    void collect_self(const Definition& d, const std::vector<Vec3>& x, const std::vector<Vec3>& y,
+    void collect_self(Definition& d, const std::vector<Vec3>& x, const std::vector<Vec3>& y,
                       bool lagrange, std::vector<Constraint>& out, std::vector<Constraint>& closed);
     /// Rigid-face constraints at positions y; lagrange: also the particles near the face.
     void collect_rigid(const Definition& d, const std::vector<Vec3>& y,
@@ -186,6 +196,8 @@ private:
     BucketGrid grid_;
     std::vector<Vec3> box_lo_, box_hi_;             ///< scratch for the grid
     std::vector<Constraint> constraints_, closed_;  ///< scratch, reused every step
+    std::vector<TriangleFrame> frames_;             ///< scratch of collect_self, per triangle
+    Real motion_ = 0;  ///< enforce: the largest predictor motion of the step (activation)
     /// What one chunk of slaves finds (collect_self runs the chunks in parallel): the unkeyed
     /// constraints, those already through at t_n, and the edge and corner constraints with their
     /// keys; `unique` lists the latter in key order, the first found of equal keys only.
