@@ -47,6 +47,7 @@ struct TrialReturn {
     T a1_sq, a2_sq;   ///< A1, A2
     T a1, a2;         ///< a1, a2 (with H_k)
     T a_bar;          ///< (A1 a1 + A2 a2) / (A1 + A2): f_bar ~ f_bar_tr / (1 + a_bar dgamma)
+    T m2;             ///< (A1 a1^2 + A2 a2^2) / (A1 + A2), for Phi'' at dgamma = 0
     T fbar_tr;        ///< sqrt(A1 + A2) = f_bar(0)
     T alpha_n;        ///< alpha_n
     T r;              ///< the rate factor R
@@ -168,13 +169,12 @@ public:
         const T phi = t.fbar_tr - k_sqrt23 * t.kappa_n;
         const T dphi =
             -t.a_bar * (k_sqrt23 * t.kappa_n) - (2.0 / 3.0) * r_beta_ * slope_n * t.fbar_tr;
-        const T m2 = (t.a1_sq * t.a1 * t.a1 + t.a2_sq * t.a2 * t.a2) / (t.fbar_tr * t.fbar_tr);
-        const T d2phi = 3.0 * t.fbar_tr * (m2 - t.a_bar * t.a_bar);
+        const T d2phi = 3.0 * t.fbar_tr * (t.m2 - t.a_bar * t.a_bar);
         halley_in_bracket(open_, phi, dphi, d2phi, dg_, lo_, hi_);
     }
     [[nodiscard]] bool open() const { return any_lane(open_); }
-    /// One evaluation and step; whether some lane is still open.
-    bool iterate() {
+    /// One evaluation and step of the open lanes (none changes where no lane is open).
+    FPMSHELL_INLINE void iterate() {
         const Real f0 = c_.flow_radius0;
         const TrialReturn<T>& t = t_;
         const ReturnedNorm<T> n = returned_norm(t, dg_);
@@ -205,13 +205,11 @@ public:
         out_.fbar = select(open_, n.fbar, out_.fbar);
         out_.flow_radius = select(open_, radius, out_.flow_radius);
         out_.flow_slope = select(open_, at.slope, out_.flow_slope);
-        ++out_.evaluations;
+        out_.evaluations += any_lane(open_) ? 1 : 0;
         const MaskOf<T> done = open_ && (abs(f) < c_.tolerance * t.third_k2);
         out_.converged = out_.converged || done;
         open_ = open_ && !done;
-        if (!any_lane(open_)) return false;
         halley_in_bracket(open_, phi, dphi, d2phi, dg_, lo_, hi_);
-        return true;
     }
     [[nodiscard]] const Consistency<T>& result() const { return out_; }
 
@@ -284,8 +282,8 @@ public:
         last_excess_ = 0.0;
     }
     [[nodiscard]] bool open() const { return any_lane(open_); }
-    /// One evaluation and step; whether some lane is still open.
-    bool iterate() {
+    /// One evaluation and step of the open lanes (none changes where no lane is open).
+    FPMSHELL_INLINE void iterate() {
         const TrialReturn<T>& t = t_;
         const T excess = max(y_ - a_, T(0.0));
         const MaskOf<T> positive = excess > 0.0;
@@ -314,13 +312,11 @@ public:
         out_.flow_radius = select(open_, radius, out_.flow_radius);
         last_alpha_ = select(open_, alpha, last_alpha_);
         last_excess_ = select(open_, excess, last_excess_);
-        ++out_.evaluations;
+        out_.evaluations += any_lane(open_) ? 1 : 0;
         const MaskOf<T> done = open_ && (abs(f) < c_.tolerance * t.third_k2);
         out_.converged = out_.converged || done;
         open_ = open_ && !done;
-        if (!any_lane(open_)) return false;
         newton_in_bracket(open_, phi, dphi, y_, lo_, hi_);
-        return true;
     }
     /// The solution, with sigma_f' = B n alpha^(n-1) = n (y - A) / alpha at the last
     /// evaluation (taken at FlowStress::k_slope_floor below it, as FlowStress::slope does).
@@ -346,14 +342,14 @@ private:
 };
 
 /// Runs the iterations of several independent points in lockstep, one evaluation of each per
-/// round: their chains of dependent divisions, square roots and polynomials overlap on one
-/// core, where one alone waits on the latency of each step.
+/// round, without a branch between them: their chains of dependent divisions, square roots and
+/// polynomials overlap on one core, where one alone waits on the latency of each step.
 template <class Iteration, std::size_t K>
 void solve_in_lockstep(std::array<Iteration, K>& iterations) {
     for (int it = 0; it < k_max_return_iterations; ++it) {
+        for (Iteration& i : iterations) i.iterate();
         bool open = false;
-        for (Iteration& i : iterations)
-            if (i.open()) open = i.iterate() || open;
+        for (const Iteration& i : iterations) open = open || i.open();
         if (!open) return;
     }
 }
