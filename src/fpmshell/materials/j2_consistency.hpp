@@ -12,7 +12,9 @@
 // nearly linear in dgamma, and stop on the residual of §7.3, |F| < tol kappa_n^2 / 3.
 #pragma once
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <limits>
 
 #include "fpmshell/core/simd.hpp"
@@ -35,7 +37,29 @@ struct J2ReturnConstants {
     FlowStress flow;
     Real flow_radius0 = 0;  ///< sigma_f(0)
     Real flow_slope0 = 0;   ///< FlowStress::slope(0) (Johnson-Cook: the slope at alpha = 1e-6)
+    /// Johnson-Cook: the binomial coefficients C(1/n, k), k = 0 ... 12, of (1 + d)^(1/n), and
+    /// the |d| up to which the series is exact to rounding (FlowStressIteration, §7.3a)
+    std::array<Real, 13> inverse_power_series{};
+    Real inverse_power_radius = 0;
 };
+
+/// The binomial series of (1 + d)^(1/n) (J2ReturnConstants): sets c.inverse_power_series and
+/// c.inverse_power_radius for the exponent n > 0.
+inline void set_inverse_power_series(J2ReturnConstants& c, Real n) {
+    const Real p = 1.0 / n;
+    Real coefficient = 1.0;
+    for (std::size_t k = 0; k < c.inverse_power_series.size(); ++k) {
+        c.inverse_power_series[k] = coefficient;
+        coefficient *= (p - static_cast<Real>(k)) / static_cast<Real>(k + 1);
+    }
+    // the first term left out, C(1/n, 13) d^13, below 1e-17 with a factor 2 for the rest of the
+    // tail (whose terms shrink by (k - 1/n) / (k + 1) |d| < 1 each)
+    const Real radius = 1.0 / 16.0;
+    c.inverse_power_radius =
+        coefficient == 0.0
+            ? radius
+            : std::min(radius, 0.5 * std::pow(1e-17 / std::abs(coefficient), 1.0 / 13.0));
+}
 
 namespace j2_detail {
 
@@ -280,6 +304,10 @@ public:
         y_ = min(y_newton, y_hi);
         last_alpha_ = 0.0;
         last_excess_ = 0.0;
+        centre_y_ = y_n;
+        centre_alpha_ = 0.0;
+        centre_inv_excess_ = 0.0;
+        centred_ = !lanes && lanes;  // none: the first evaluation takes the power
     }
     [[nodiscard]] bool open() const { return any_lane(open_); }
     /// One evaluation and step of the open lanes (none changes where no lane is open).
@@ -287,8 +315,16 @@ public:
         const TrialReturn<T>& t = t_;
         const T excess = max(y_ - a_, T(0.0));
         const MaskOf<T> positive = excess > 0.0;
-        const T alpha = select(
-            positive, vector_exp(inv_n_ * vector_log(max(excess * inv_b_, T(1e-300)))), T(0.0));
+        // alpha(y) = ((y - A) / B)^(1/n): near the last iterate y_k (eq. 7.3a-6) by the series of
+        // alpha_k (1 + d)^(1/n), d = (y - y_k) / (y_k - A), exact to rounding for |d| within
+        // inverse_power_radius; else (the first evaluation, any lane farther) e^(ln x / n)
+        const T d = (y_ - centre_y_) * centre_inv_excess_;
+        T alpha;
+        if (!any_lane(open_ && !(centred_ && abs(d) <= c_.inverse_power_radius)))
+            alpha = centre_alpha_ * inverse_power(d);
+        else
+            alpha = select(
+                positive, vector_exp(inv_n_ * vector_log(max(excess * inv_b_, T(1e-300)))), T(0.0));
         const T radius = a_ + c_.beta * (y_ - a_);
         const T kappa = t.r * radius;
         // one division for 1 / kappa and 1 / (y - A)
@@ -312,6 +348,10 @@ public:
         out_.flow_radius = select(open_, radius, out_.flow_radius);
         last_alpha_ = select(open_, alpha, last_alpha_);
         last_excess_ = select(open_, excess, last_excess_);
+        centre_y_ = y_;
+        centre_alpha_ = alpha;
+        centre_inv_excess_ = kappa * inv;  // 1 / (y - A) where positive
+        centred_ = positive;
         out_.evaluations += any_lane(open_) ? 1 : 0;
         const MaskOf<T> done = open_ && (abs(f) < c_.tolerance * t.third_k2);
         out_.converged = out_.converged || done;
@@ -337,8 +377,21 @@ private:
     T r_beta_;
     Consistency<T> out_;
     MaskOf<T> open_;
+    /// (1 + d)^(1/n) by its binomial series to d^12, Estrin's scheme (as core/simd_math.hpp)
+    [[nodiscard]] FPMSHELL_INLINE T inverse_power(const T& d) const {
+        const std::array<Real, 13>& c = c_.inverse_power_series;
+        const T d2 = d * d, d4 = d2 * d2, d8 = d4 * d4;
+        const T q0 = (c[0] + c[1] * d) + d2 * (c[2] + c[3] * d);
+        const T q1 = (c[4] + c[5] * d) + d2 * (c[6] + c[7] * d);
+        const T q2 = (c[8] + c[9] * d) + d2 * (c[10] + c[11] * d);
+        return (q0 + d4 * q1) + d8 * (q2 + d4 * c[12]);
+    }
+
     T lo_, hi_, y_;
-    T last_alpha_, last_excess_;  // alpha(y) and y - A at the last evaluation
+    T last_alpha_, last_excess_;  // alpha(y) and y - A at the last evaluation (open lanes)
+    // the last evaluation on every lane: y, alpha(y), 1 / (y - A), and whether y > A
+    T centre_y_, centre_alpha_, centre_inv_excess_;
+    MaskOf<T> centred_;
 };
 
 /// Runs the iterations of several independent points in lockstep, one evaluation of each per
