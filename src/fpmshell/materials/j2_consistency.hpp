@@ -261,7 +261,8 @@ private:
 template <class T>
 class FlowStressIteration {
 public:
-    FlowStressIteration(const J2ReturnConstants& c, const TrialReturn<T>& t, const MaskOf<T>& lanes)
+    FPMSHELL_INLINE FlowStressIteration(const J2ReturnConstants& c, const TrialReturn<T>& t,
+                                        const MaskOf<T>& lanes)
         : c_(c),
           t_(t),
           lanes_(lanes),
@@ -304,10 +305,12 @@ public:
         y_ = min(y_newton, y_hi);
         last_alpha_ = 0.0;
         last_excess_ = 0.0;
+        // the series of the first evaluation from (y_n, alpha_n) on the hardened lanes: alpha_n
+        // is alpha(y_n) to the convergence tolerance of the last step
         centre_y_ = y_n;
-        centre_alpha_ = 0.0;
-        centre_inv_excess_ = 0.0;
-        centred_ = !lanes && lanes;  // none: the first evaluation takes the power
+        centre_alpha_ = select(hardened, t.alpha_n, T(0.0));
+        centre_inv_excess_ = 1.0 / y_e;
+        centred_ = hardened;
     }
     [[nodiscard]] bool open() const { return any_lane(open_); }
     /// One evaluation and step of the open lanes (none changes where no lane is open).
@@ -315,9 +318,10 @@ public:
         const TrialReturn<T>& t = t_;
         const T excess = max(y_ - a_, T(0.0));
         const MaskOf<T> positive = excess > 0.0;
-        // alpha(y) = ((y - A) / B)^(1/n): near the last iterate y_k (eq. 7.3a-6) by the series of
-        // alpha_k (1 + d)^(1/n), d = (y - y_k) / (y_k - A), exact to rounding for |d| within
-        // inverse_power_radius; else (the first evaluation, any lane farther) e^(ln x / n)
+        // alpha(y) = ((y - A) / B)^(1/n): near the last iterate y_k (eq. 7.3a-6; y_n, alpha_n
+        // before the first) by the series of alpha_k (1 + d)^(1/n), d = (y - y_k) / (y_k - A),
+        // exact to rounding for |d| within inverse_power_radius; else (any lane farther, or at
+        // y_k = A) e^(ln x / n)
         const T d = (y_ - centre_y_) * centre_inv_excess_;
         T alpha;
         if (!any_lane(open_ && !(centred_ && abs(d) <= c_.inverse_power_radius)))
