@@ -256,7 +256,8 @@ private:
 /// Bracket [y_n, y_hi]: y_n = sigma_f(alpha_n); y_hi = sigma_f(alpha_n + d_alpha_u), d_alpha_u
 /// from dgamma_upper_bound, bounded by the tangent y_n + sigma_f'(alpha_n) d_alpha_u (sigma_f
 /// is concave) and evaluated exactly (one power) where the increment can exceed alpha_n.
-/// Start: the Newton step from y_n (Phi and Phi' there from the trial state), or y_hi if less.
+/// Start: Halley's step from y_n (Phi, Phi' and Phi'' there from the trial state), or y_hi if
+/// less.
 /// iterate() as DgammaIteration's.
 template <class T>
 class FlowStressIteration {
@@ -281,12 +282,24 @@ public:
         // ratio alpha_e / (n y_e): at alpha_n = 0 it is 0 for n < 1 and 1 / B for n = 1
         const T alpha_e = select(hardened, t.alpha_n, T(fl.n == 1.0 ? inv_b_ : 0.0));
         const T y_e = select(hardened, y_n - a, T(1.0));
-        // the Newton step from y_n (eq. 7.3a-4), where dgamma = 0, Phi = g0 and (f_bar' =
-        // -a_bar f_bar_tr) Phi' = -sqrt(2/3) (3/2 a_bar dalpha/dy + R beta)
+        // Halley's step from y_n (eqs. 7.3a-4, 7.3a-5), where dgamma = 0, Phi = g0 and (f_bar' =
+        // -a_bar f_bar_tr) Phi' = -sqrt(2/3) (3/2 a_bar dalpha/dy + R beta), Phi'' by the chain
+        // rule; derivatives in y times s = n (y_n - A), so that dalpha/dy s = alpha_e and
+        // d2alpha/dy2 s^2 = (1 - n) alpha_e (0 where not hardened: Newton's step)
         const T g0 = t.fbar_tr - k_sqrt23 * t.kappa_n;
-        const T y_newton =
-            y_n +
-            g0 * (fl.n * y_e) / (k_sqrt23 * (1.5 * t.a_bar * alpha_e + r_beta_ * (fl.n * y_e)));
+        const T s = fl.n * y_e;
+        const T p1 = -k_sqrt23 * (1.5 * t.a_bar * alpha_e + r_beta_ * s);  // Phi' s
+        const T inv_kappa_n = 1.0 / t.kappa_n;
+        const T dg1 = 1.5 * alpha_e * inv_kappa_n;  // dgamma' s
+        const T dg2 =
+            (select(hardened, T(1.5 * (1.0 - fl.n)) * alpha_e, T(0.0)) - 2.0 * dg1 * s * r_beta_) *
+            inv_kappa_n;                                                   // dgamma'' s^2
+        const T g1 = -t.a_bar * t.fbar_tr * dg1 - k_sqrt23 * r_beta_ * s;  // g' s
+        const T g2 = t.fbar_tr * ((3.0 * t.m2 - t.a_bar * t.a_bar) * dg1 * dg1 - t.a_bar * dg2);
+        const T p2 = t.a_bar * (dg2 * g0 + 2.0 * dg1 * g1) + g2;  // Phi'' s^2
+        const MaskOf<T> halley = abs(g0 * p2) < p1 * p1;
+        const T y_newton = y_n - select(halley, 2.0 * g0 * p1, g0) * s /
+                                     select(halley, 2.0 * p1 * p1 - g0 * p2, p1);
         // the upper end of the bracket: d_alpha <= sqrt(2/3) dgamma_upper_bound f_bar_tr, and
         // the tangent of the concave curve at alpha_n lies above it
         const T d_alpha_u = g0 * t.fbar_tr / (t.kappa_n * min(t.a1, t.a2));
