@@ -12,7 +12,9 @@
 // nearly linear in dgamma, and stop on the residual of §7.3, |F| < tol kappa_n^2 / 3.
 #pragma once
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <limits>
 
 #include "fpmshell/core/simd.hpp"
@@ -35,7 +37,29 @@ struct J2ReturnConstants {
     FlowStress flow;
     Real flow_radius0 = 0;  ///< sigma_f(0)
     Real flow_slope0 = 0;   ///< FlowStress::slope(0) (Johnson-Cook: the slope at alpha = 1e-6)
+    /// Johnson-Cook: the binomial coefficients C(1/n, k), k = 0 ... 12, of (1 + d)^(1/n), and
+    /// the |d| up to which the series is exact to rounding (FlowStressIteration, §7.3a)
+    std::array<Real, 13> inverse_power_series{};
+    Real inverse_power_radius = 0;
 };
+
+/// The binomial series of (1 + d)^(1/n) (J2ReturnConstants): sets c.inverse_power_series and
+/// c.inverse_power_radius for the exponent n > 0.
+inline void set_inverse_power_series(J2ReturnConstants& c, Real n) {
+    const Real p = 1.0 / n;
+    Real coefficient = 1.0;
+    for (std::size_t k = 0; k < c.inverse_power_series.size(); ++k) {
+        c.inverse_power_series[k] = coefficient;
+        coefficient *= (p - static_cast<Real>(k)) / static_cast<Real>(k + 1);
+    }
+    // the first term left out, C(1/n, 13) d^13, below 1e-17 with a factor 2 for the rest of the
+    // tail (whose terms shrink by (k - 1/n) / (k + 1) |d| < 1 each)
+    const Real radius = 1.0 / 16.0;
+    c.inverse_power_radius =
+        coefficient == 0.0
+            ? radius
+            : std::min(radius, 0.5 * std::pow(1e-17 / std::abs(coefficient), 1.0 / 13.0));
+}
 
 namespace j2_detail {
 
@@ -47,6 +71,7 @@ struct TrialReturn {
     T a1_sq, a2_sq;   ///< A1, A2
     T a1, a2;         ///< a1, a2 (with H_k)
     T a_bar;          ///< (A1 a1 + A2 a2) / (A1 + A2): f_bar ~ f_bar_tr / (1 + a_bar dgamma)
+    T m2;             ///< (A1 a1^2 + A2 a2^2) / (A1 + A2), for Phi'' at dgamma = 0
     T fbar_tr;        ///< sqrt(A1 + A2) = f_bar(0)
     T alpha_n;        ///< alpha_n
     T r;              ///< the rate factor R
@@ -168,13 +193,12 @@ public:
         const T phi = t.fbar_tr - k_sqrt23 * t.kappa_n;
         const T dphi =
             -t.a_bar * (k_sqrt23 * t.kappa_n) - (2.0 / 3.0) * r_beta_ * slope_n * t.fbar_tr;
-        const T m2 = (t.a1_sq * t.a1 * t.a1 + t.a2_sq * t.a2 * t.a2) / (t.fbar_tr * t.fbar_tr);
-        const T d2phi = 3.0 * t.fbar_tr * (m2 - t.a_bar * t.a_bar);
+        const T d2phi = 3.0 * t.fbar_tr * (t.m2 - t.a_bar * t.a_bar);
         halley_in_bracket(open_, phi, dphi, d2phi, dg_, lo_, hi_);
     }
     [[nodiscard]] bool open() const { return any_lane(open_); }
-    /// One evaluation and step; whether some lane is still open.
-    bool iterate() {
+    /// One evaluation and step of the open lanes (none changes where no lane is open).
+    FPMSHELL_INLINE void iterate() {
         const Real f0 = c_.flow_radius0;
         const TrialReturn<T>& t = t_;
         const ReturnedNorm<T> n = returned_norm(t, dg_);
@@ -205,13 +229,11 @@ public:
         out_.fbar = select(open_, n.fbar, out_.fbar);
         out_.flow_radius = select(open_, radius, out_.flow_radius);
         out_.flow_slope = select(open_, at.slope, out_.flow_slope);
-        ++out_.evaluations;
+        out_.evaluations += any_lane(open_) ? 1 : 0;
         const MaskOf<T> done = open_ && (abs(f) < c_.tolerance * t.third_k2);
         out_.converged = out_.converged || done;
         open_ = open_ && !done;
-        if (!any_lane(open_)) return false;
         halley_in_bracket(open_, phi, dphi, d2phi, dg_, lo_, hi_);
-        return true;
     }
     [[nodiscard]] const Consistency<T>& result() const { return out_; }
 
@@ -234,12 +256,14 @@ private:
 /// Bracket [y_n, y_hi]: y_n = sigma_f(alpha_n); y_hi = sigma_f(alpha_n + d_alpha_u), d_alpha_u
 /// from dgamma_upper_bound, bounded by the tangent y_n + sigma_f'(alpha_n) d_alpha_u (sigma_f
 /// is concave) and evaluated exactly (one power) where the increment can exceed alpha_n.
-/// Start: the Newton step from y_n (Phi and Phi' there from the trial state), or y_hi if less.
+/// Start: Halley's step from y_n (Phi, Phi' and Phi'' there from the trial state), or y_hi if
+/// less.
 /// iterate() as DgammaIteration's.
 template <class T>
 class FlowStressIteration {
 public:
-    FlowStressIteration(const J2ReturnConstants& c, const TrialReturn<T>& t, const MaskOf<T>& lanes)
+    FPMSHELL_INLINE FlowStressIteration(const J2ReturnConstants& c, const TrialReturn<T>& t,
+                                        const MaskOf<T>& lanes)
         : c_(c),
           t_(t),
           lanes_(lanes),
@@ -258,12 +282,24 @@ public:
         // ratio alpha_e / (n y_e): at alpha_n = 0 it is 0 for n < 1 and 1 / B for n = 1
         const T alpha_e = select(hardened, t.alpha_n, T(fl.n == 1.0 ? inv_b_ : 0.0));
         const T y_e = select(hardened, y_n - a, T(1.0));
-        // the Newton step from y_n (eq. 7.3a-4), where dgamma = 0, Phi = g0 and (f_bar' =
-        // -a_bar f_bar_tr) Phi' = -sqrt(2/3) (3/2 a_bar dalpha/dy + R beta)
+        // Halley's step from y_n (eqs. 7.3a-4, 7.3a-5), where dgamma = 0, Phi = g0 and (f_bar' =
+        // -a_bar f_bar_tr) Phi' = -sqrt(2/3) (3/2 a_bar dalpha/dy + R beta), Phi'' by the chain
+        // rule; derivatives in y times s = n (y_n - A), so that dalpha/dy s = alpha_e and
+        // d2alpha/dy2 s^2 = (1 - n) alpha_e (0 where not hardened: Newton's step)
         const T g0 = t.fbar_tr - k_sqrt23 * t.kappa_n;
-        const T y_newton =
-            y_n +
-            g0 * (fl.n * y_e) / (k_sqrt23 * (1.5 * t.a_bar * alpha_e + r_beta_ * (fl.n * y_e)));
+        const T s = fl.n * y_e;
+        const T p1 = -k_sqrt23 * (1.5 * t.a_bar * alpha_e + r_beta_ * s);  // Phi' s
+        const T inv_kappa_n = 1.0 / t.kappa_n;
+        const T dg1 = 1.5 * alpha_e * inv_kappa_n;  // dgamma' s
+        const T dg2 =
+            (select(hardened, T(1.5 * (1.0 - fl.n)) * alpha_e, T(0.0)) - 2.0 * dg1 * s * r_beta_) *
+            inv_kappa_n;                                                   // dgamma'' s^2
+        const T g1 = -t.a_bar * t.fbar_tr * dg1 - k_sqrt23 * r_beta_ * s;  // g' s
+        const T g2 = t.fbar_tr * ((3.0 * t.m2 - t.a_bar * t.a_bar) * dg1 * dg1 - t.a_bar * dg2);
+        const T p2 = t.a_bar * (dg2 * g0 + 2.0 * dg1 * g1) + g2;  // Phi'' s^2
+        const MaskOf<T> halley = abs(g0 * p2) < p1 * p1;
+        const T y_newton = y_n - select(halley, 2.0 * g0 * p1, g0) * s /
+                                     select(halley, 2.0 * p1 * p1 - g0 * p2, p1);
         // the upper end of the bracket: d_alpha <= sqrt(2/3) dgamma_upper_bound f_bar_tr, and
         // the tangent of the concave curve at alpha_n lies above it
         const T d_alpha_u = g0 * t.fbar_tr / (t.kappa_n * min(t.a1, t.a2));
@@ -282,15 +318,30 @@ public:
         y_ = min(y_newton, y_hi);
         last_alpha_ = 0.0;
         last_excess_ = 0.0;
+        // the series of the first evaluation from (y_n, alpha_n) on the hardened lanes: alpha_n
+        // is alpha(y_n) to the convergence tolerance of the last step
+        centre_y_ = y_n;
+        centre_alpha_ = select(hardened, t.alpha_n, T(0.0));
+        centre_inv_excess_ = 1.0 / y_e;
+        centred_ = hardened;
     }
     [[nodiscard]] bool open() const { return any_lane(open_); }
-    /// One evaluation and step; whether some lane is still open.
-    bool iterate() {
+    /// One evaluation and step of the open lanes (none changes where no lane is open).
+    FPMSHELL_INLINE void iterate() {
         const TrialReturn<T>& t = t_;
         const T excess = max(y_ - a_, T(0.0));
         const MaskOf<T> positive = excess > 0.0;
-        const T alpha = select(
-            positive, vector_exp(inv_n_ * vector_log(max(excess * inv_b_, T(1e-300)))), T(0.0));
+        // alpha(y) = ((y - A) / B)^(1/n): near the last iterate y_k (eq. 7.3a-6; y_n, alpha_n
+        // before the first) by the series of alpha_k (1 + d)^(1/n), d = (y - y_k) / (y_k - A),
+        // exact to rounding for |d| within inverse_power_radius; else (any lane farther, or at
+        // y_k = A) e^(ln x / n)
+        const T d = (y_ - centre_y_) * centre_inv_excess_;
+        T alpha;
+        if (!any_lane(open_ && !(centred_ && abs(d) <= c_.inverse_power_radius)))
+            alpha = centre_alpha_ * inverse_power(d);
+        else
+            alpha = select(
+                positive, vector_exp(inv_n_ * vector_log(max(excess * inv_b_, T(1e-300)))), T(0.0));
         const T radius = a_ + c_.beta * (y_ - a_);
         const T kappa = t.r * radius;
         // one division for 1 / kappa and 1 / (y - A)
@@ -314,13 +365,15 @@ public:
         out_.flow_radius = select(open_, radius, out_.flow_radius);
         last_alpha_ = select(open_, alpha, last_alpha_);
         last_excess_ = select(open_, excess, last_excess_);
-        ++out_.evaluations;
+        centre_y_ = y_;
+        centre_alpha_ = alpha;
+        centre_inv_excess_ = kappa * inv;  // 1 / (y - A) where positive
+        centred_ = positive;
+        out_.evaluations += any_lane(open_) ? 1 : 0;
         const MaskOf<T> done = open_ && (abs(f) < c_.tolerance * t.third_k2);
         out_.converged = out_.converged || done;
         open_ = open_ && !done;
-        if (!any_lane(open_)) return false;
         newton_in_bracket(open_, phi, dphi, y_, lo_, hi_);
-        return true;
     }
     /// The solution, with sigma_f' = B n alpha^(n-1) = n (y - A) / alpha at the last
     /// evaluation (taken at FlowStress::k_slope_floor below it, as FlowStress::slope does).
@@ -341,19 +394,32 @@ private:
     T r_beta_;
     Consistency<T> out_;
     MaskOf<T> open_;
+    /// (1 + d)^(1/n) by its binomial series to d^12, Estrin's scheme (as core/simd_math.hpp)
+    [[nodiscard]] FPMSHELL_INLINE T inverse_power(const T& d) const {
+        const std::array<Real, 13>& c = c_.inverse_power_series;
+        const T d2 = d * d, d4 = d2 * d2, d8 = d4 * d4;
+        const T q0 = (c[0] + c[1] * d) + d2 * (c[2] + c[3] * d);
+        const T q1 = (c[4] + c[5] * d) + d2 * (c[6] + c[7] * d);
+        const T q2 = (c[8] + c[9] * d) + d2 * (c[10] + c[11] * d);
+        return (q0 + d4 * q1) + d8 * (q2 + d4 * c[12]);
+    }
+
     T lo_, hi_, y_;
-    T last_alpha_, last_excess_;  // alpha(y) and y - A at the last evaluation
+    T last_alpha_, last_excess_;  // alpha(y) and y - A at the last evaluation (open lanes)
+    // the last evaluation on every lane: y, alpha(y), 1 / (y - A), and whether y > A
+    T centre_y_, centre_alpha_, centre_inv_excess_;
+    MaskOf<T> centred_;
 };
 
 /// Runs the iterations of several independent points in lockstep, one evaluation of each per
-/// round: their chains of dependent divisions, square roots and polynomials overlap on one
-/// core, where one alone waits on the latency of each step.
+/// round, without a branch between them: their chains of dependent divisions, square roots and
+/// polynomials overlap on one core, where one alone waits on the latency of each step.
 template <class Iteration, std::size_t K>
 void solve_in_lockstep(std::array<Iteration, K>& iterations) {
     for (int it = 0; it < k_max_return_iterations; ++it) {
+        for (Iteration& i : iterations) i.iterate();
         bool open = false;
-        for (Iteration& i : iterations)
-            if (i.open()) open = i.iterate() || open;
+        for (const Iteration& i : iterations) open = open || i.open();
         if (!open) return;
     }
 }

@@ -20,6 +20,8 @@ J2Plastic::J2Plastic(Real youngs_modulus, Real poisson_ratio, const FlowStress& 
     constants_.flow = flow_;
     constants_.flow_radius0 = flow_.value(0);
     constants_.flow_slope0 = flow_.slope(0);
+    if (flow_.kind == FlowStress::Kind::JohnsonCook && flow_.n > 0.0)
+        set_inverse_power_series(constants_, flow_.n);
 }
 
 Real J2Plastic::yield_radius(Real alpha, Real r) const {

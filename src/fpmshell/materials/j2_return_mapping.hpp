@@ -63,7 +63,7 @@ template <class T>
                                                    const J2PointState<T>& old,
                                                    const std::array<T, 3>& d_eps, const T& r,
                                                    const MaskOf<T>& lanes) {
-    Trial<T> tr{};  // zero where no lane yields: never read, but defined
+    Trial<T> tr;  // set below (zeroing the whole of it costs a pack's return a few per cent)
     const T alpha_n = old.plastic_strain;
     // kappa / R and sigma_f' at alpha_n, stored by the last plastic step (the flow curve at
     // alpha = 0 before the first one; -1: the slope is not known yet)
@@ -83,7 +83,11 @@ template <class T>
               T(0.0),
               lanes && (f_tr > c.tolerance * third_k2)};
     tr.yielding = tr.out.yielded;
-    if (!any_lane(tr.yielding)) return tr;
+    if (!any_lane(tr.yielding)) {  // never read for a result, but defined
+        tr.t = TrialReturn<T>{};
+        tr.s_tr = tr.d_tr = tr.h_k = tr.slope_n = T(0.0);
+        return tr;
+    }
 
     // 2 constants; H_k frozen at alpha_n (§7.4); a point that never yielded has the slope of
     // the flow curve at alpha = 0
@@ -98,7 +102,9 @@ template <class T>
     t.a2 = c.two_g + (2.0 / 3.0) * tr.h_k;
     const T fbar2_tr = t.a1_sq + t.a2_sq;
     t.fbar_tr = sqrt(fbar2_tr);
-    t.a_bar = (t.a1_sq * t.a1 + t.a2_sq * t.a2) / fbar2_tr;
+    const T inv_fbar2_tr = 1.0 / fbar2_tr;
+    t.a_bar = (t.a1_sq * t.a1 + t.a2_sq * t.a2) * inv_fbar2_tr;
+    t.m2 = (t.a1_sq * t.a1 * t.a1 + t.a2_sq * t.a2 * t.a2) * inv_fbar2_tr;
     t.alpha_n = alpha_n;
     t.r = r;
     t.kappa_n = kappa_n;
@@ -151,7 +157,10 @@ template <class T>
 /// {f(0), ..., f(K - 1)}
 template <std::size_t K, class F>
 [[nodiscard]] FPMSHELL_INLINE auto array_of(const F& f) {
-    return [&]<std::size_t... I>(std::index_sequence<I...>) { return std::array{f(I)...}; }
+    using Value = std::decay_t<decltype(f(std::size_t{0}))>;  // not CTAD: K = 1 of an array
+    return [&]<std::size_t... I>(std::index_sequence<I...>) {
+        return std::array<Value, K>{f(I)...};
+    }
     (std::make_index_sequence<K>{});
 }
 

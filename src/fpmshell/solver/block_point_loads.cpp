@@ -2,6 +2,12 @@
 
 namespace fpmshell {
 
+namespace {
+/// Points whose iterations run in lockstep (j2_return_mapping_points): enough independent
+/// chains of divisions and square roots to hide their latency.
+constexpr std::size_t k_lockstep_points = 4;
+}  // namespace
+
 ElasticTriangleLoads<RealPack> block_point_loads(const J2Plastic& material, const BlockStep& step) {
     using namespace block_points_detail;
     using J2 = J2Plastic;
@@ -48,8 +54,12 @@ ElasticTriangleLoads<RealPack> block_point_loads(const J2Plastic& material, cons
                               const std::array<RealPack, 3>* d_eps, const RealPack* rate_factor,
                               RealPack* new_stress, RealPack* d_plastic_work) {
         const J2ReturnConstants& constants = material.return_constants();
-        // Points on their own packs, two at a time (their Newton iterations in lockstep,
-        // materials/j2_consistency.hpp), the old state straight from the block's fields.
+        // The fields only a return reads, of the next block: plastic zones span neighbouring
+        // blocks, whose loads of these fields otherwise stall on memory.
+        prefetch_fields(step, J2::k_plastic_strain, 2);
+        prefetch_fields(step, J2::k_flow_slope, 1);
+        // Points on their own packs, k_lockstep_points at a time (their Newton iterations in
+        // lockstep, materials/j2_consistency.hpp), the old state straight from the block's fields.
         auto old_state = [&](std::size_t p) {
             const RealPack zero(0.0);
             return J2PointState<RealPack>{
@@ -75,18 +85,18 @@ ElasticTriangleLoads<RealPack> block_point_loads(const J2Plastic& material, cons
             stdx::where(y, field(p, J2::k_flow_radius)) = ret.state.flow_radius;
             stdx::where(y, field(p, J2::k_flow_slope)) = ret.state.flow_slope;
         };
-        auto return_point = [&](std::size_t p) {
-            store(p, j2_return_mapping(constants, old_state(p), d_eps[p], rate_factor[p],
-                                       yielding[p]));
+        // K points p[0..K) at once
+        auto return_points = [&]<std::size_t K>(const std::size_t* p) {
+            using j2_detail::array_of;
+            const std::array<J2Return<RealPack>, K> ret = j2_return_mapping_points<RealPack, K>(
+                constants, array_of<K>([&](std::size_t k) { return old_state(p[k]); }),
+                array_of<K>([&](std::size_t k) { return d_eps[p[k]]; }),
+                array_of<K>([&](std::size_t k) { return rate_factor[p[k]]; }),
+                array_of<K>([&](std::size_t k) { return yielding[p[k]]; }));
+            for (std::size_t k = 0; k < K; ++k) store(p[k], ret[k]);
         };
-        auto return_two_points = [&](std::size_t p, std::size_t q) {
-            const std::array<J2Return<RealPack>, 2> ret = j2_return_mapping_points<RealPack, 2>(
-                constants, {old_state(p), old_state(q)}, {d_eps[p], d_eps[q]},
-                {rate_factor[p], rate_factor[q]}, {yielding[p], yielding[q]});
-            store(p, ret[0]);
-            store(q, ret[1]);
-        };
-        std::size_t pending = n_pts;  // a point waiting for a second one
+        std::array<std::size_t, k_max_block_points> own;  // the points on their own packs
+        std::size_t n_own = 0;
         constexpr int w = k_lanes;
         // the inputs of the batch, structure of arrays: stress 3, back stress 3, alpha, flow
         // radius, flow slope, strain increment 3, rate factor
@@ -131,12 +141,7 @@ ElasticTriangleLoads<RealPack> block_point_loads(const J2Plastic& material, cons
             const int count = stdx::popcount(yielding[p]);
             if (count == 0) continue;
             if (2 * count > k_lanes) {
-                if (pending == n_pts) {
-                    pending = p;
-                } else {
-                    return_two_points(pending, p);
-                    pending = n_pts;
-                }
+                own[n_own++] = p;
                 continue;
             }
             for (int l = 0; l < k_lanes; ++l) {
@@ -158,7 +163,22 @@ ElasticTriangleLoads<RealPack> block_point_loads(const J2Plastic& material, cons
             }
         }
         if (n > 0) run_batch();
-        if (pending != n_pts) return_point(pending);
+        std::size_t i = 0;
+        for (; i + k_lockstep_points <= n_own; i += k_lockstep_points)
+            return_points.template operator()<k_lockstep_points>(own.data() + i);
+        switch (n_own - i) {
+            case 3:
+                return_points.template operator()<3>(own.data() + i);
+                break;
+            case 2:
+                return_points.template operator()<2>(own.data() + i);
+                break;
+            case 1:
+                return_points.template operator()<1>(own.data() + i);
+                break;
+            default:
+                break;
+        }
     };
     const ElasticTriangleLoads<RealPack> loads =
         elastic_triangle_loads(*step.motion, *step.constants, step.thickness, stress.data(),
