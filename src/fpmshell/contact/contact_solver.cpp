@@ -15,7 +15,7 @@ namespace {
 constexpr Real k_face_tolerance = 0.02;    // theory.md §8.1: barycentric weights >= -0.02
 constexpr Real k_open_fraction = 0.5;      // a pair is open at t_n when its distance >= 0.5 offset
 constexpr Real k_exclusion_factor = 1.5;   // default exclusion radius: 1.5 x largest thickness (R8)
-constexpr Real k_margin_fraction = 0.5;    // search margin: 0.5 x largest offset
+constexpr Real k_margin_fraction = 0.2;    // search margin: 0.2 x largest offset (§8.1)
 constexpr Real k_sweep_tolerance = 1e-3;   // sweeps stop when no gap is below -1e-3 h (§8.3)
 constexpr Real k_lambda_tolerance = 1e-6;  // ... and no multiplier changed by 1e-6 of the largest
 // Pairs closer than the activation distance at the predictor join the Gauss-Seidel sweeps with
@@ -39,19 +39,22 @@ Vec3 unit_normal(const Vec3& a, const Vec3& b, const Vec3& c) {
 }
 
 /// Whether a pair (slave at xs, ys; triangle of frame f, corner a at xa, ya) surely makes no
-/// constraint, as collect_self decides it: the slave is farther than `reach` ((1 + activation
-/// fraction) x offset) from the triangle's face at y, and on the side of its plane it was on at
-/// x. Then the face gap sigma n.(y_s - p) - offset (in the face) or the edge or corner distance
-/// - offset (beside it) exceeds the activation threshold, and a pair closed at x would need a
-/// distance below the offset at y. Both signs with a margin of 1e-9 of the reach, far above the
-/// rounding of the closest point's plane distance that collect_self takes.
+/// constraint, as collect_self decides it: the slave is on the side of the triangle's plane at y
+/// that it was on at x, and farther than `reach` (offset + activation distance) from the
+/// triangle's face at y: from its plane, or from a sphere about it. Then the face gap
+/// sigma n.(y_s - p) - offset (in the face) or the edge or corner distance - offset (beside it,
+/// never less than the plane distance) exceeds the activation distance, and a pair closed at x
+/// would need a plane distance below the offset at y. Both signs with a margin of 1e-9 of the
+/// reach, far above the rounding of the closest point's plane distance that collect_self takes.
 bool far_on_its_side(const ContactSolver::TriangleFrame& f, const Vec3& xs, const Vec3& ys,
                      const Vec3& xa, const Vec3& ya, Real reach) {
-    const Real beyond = reach * (1.0 + 1e-9) + f.radius_y;
-    if ((ys - f.centre_y).squaredNorm() <= beyond * beyond) return false;
     const Real side_x = f.n_x.dot(xs - xa), side_y = f.n_y.dot(ys - ya);
     const Real margin = 1e-9 * reach;
-    return (side_x > margin && side_y > margin) || (side_x < -margin && side_y < -margin);
+    if (!((side_x > margin && side_y > margin) || (side_x < -margin && side_y < -margin)))
+        return false;
+    const Real beyond = reach + margin;
+    if (std::abs(side_y) > beyond) return true;
+    return (ys - f.centre_y).squaredNorm() > (beyond + f.radius_y) * (beyond + f.radius_y);
 }
 
 Real activation_distance(Real offset, Real motion) {

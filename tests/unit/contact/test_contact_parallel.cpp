@@ -25,7 +25,8 @@ using namespace fpmshell;
 
 namespace {
 
-constexpr Real k_h = 0.02;  // thickness: offsets h, search margin h / 2, exclusion 1.5 h
+constexpr Real k_h = 0.02;  // thickness: offsets h, exclusion 1.5 h
+constexpr Real k_margin = 0.2 * k_h;  // the search margin of theory.md (8.1a): 0.2 x the offset
 
 /// A 1 x 0.5 sheet (nx x ny cells) whose half x > 0.5 is folded back over the other at a height
 /// of about 1.5 h, every particle moved by up to `noise` in each direction; the initial geometry
@@ -180,9 +181,9 @@ TEST(ContactSearch, FindsTheSamePairsAsABruteForceSearch) {
         solver.enforce(f.x, x_pred, body_u, bodies, 1e-4, 1e-4, 0.0, 0, force);
         std::vector<std::pair<Index, Index>> found = solver.candidate_pairs(0);
         std::sort(found.begin(), found.end());
-        // reach: offset (h_s + h_e) / 2 = h plus the margin h / 2
+        // reach: offset (h_s + h_e) / 2 = h plus the margin
         const std::vector<std::pair<Index, Index>> expected =
-            brute_force_pairs(f.model, f.x, 1.5 * k_h);
+            brute_force_pairs(f.model, f.x, k_h + k_margin);
         ASSERT_GT(expected.size(), 50u) << "the layers are within reach of each other";
         EXPECT_EQ(found, expected) << "seed " << seed;
 
@@ -193,7 +194,7 @@ TEST(ContactSearch, FindsTheSamePairsAsABruteForceSearch) {
         std::vector<Vec3> moved = f.x;
         for (Vec3& p : moved) {
             Vec3 d(u(rng), u(rng), u(rng));
-            p += (0.499 * 0.5 * k_h / std::max(d.norm(), Real(1))) * d;
+            p += (0.499 * k_margin / std::max(d.norm(), Real(1))) * d;
         }
         for (const auto& pair : brute_force_pairs(f.model, moved, k_h))
             EXPECT_TRUE(std::binary_search(found.begin(), found.end(), pair))
