@@ -25,7 +25,7 @@ using namespace fpmshell;
 
 namespace {
 
-constexpr Real k_h = 0.02;  // thickness: offsets h, exclusion 1.5 h
+constexpr Real k_h = 0.02;            // thickness: offsets h, exclusion 1.5 h
 constexpr Real k_margin = 0.2 * k_h;  // the search margin of theory.md (8.1a): 0.2 x the offset
 
 /// A 1 x 0.5 sheet (nx x ny cells) whose half x > 0.5 is folded back over the other at a height
