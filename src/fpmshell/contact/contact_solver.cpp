@@ -761,7 +761,6 @@ void ContactSolver::warm_start(std::vector<Vec3>& x_pred, std::vector<Vec3>& bod
 }
 
 void ContactSolver::keep_multipliers() {
-    memory_entries_.clear();
     for (const Constraint& c : constraints_)
         if (c.lambda > 0) memory_entries_.emplace_back(key_of(c), c.lambda);
     memory_.keep(memory_entries_);

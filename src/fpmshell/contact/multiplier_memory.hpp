@@ -20,15 +20,18 @@ public:
     using Key = std::array<Index, 5>;
 
     /// Forgets the last step's multipliers and keeps these (the positive ones), given as
-    /// (key, lambda) in any order; equal keys keep the first given.
-    void keep(std::vector<std::pair<Key, Real>> entries) {
+    /// (key, lambda) in any order; equal keys keep the first given. `entries` is taken over and
+    /// given back holding the old buffer (cleared), for the next step to fill without
+    /// allocating.
+    void keep(std::vector<std::pair<Key, Real>>& entries) {
         std::erase_if(entries, [](const auto& e) { return !(e.second > 0); });
         std::stable_sort(entries.begin(), entries.end(),
                          [](const auto& a, const auto& b) { return a.first < b.first; });
         entries.erase(std::unique(entries.begin(), entries.end(),
                                   [](const auto& a, const auto& b) { return a.first == b.first; }),
                       entries.end());
-        entries_ = std::move(entries);
+        entries_.swap(entries);
+        entries.clear();
     }
     /// The multiplier kept for `key` (0: none).
     [[nodiscard]] Real recall(const Key& key) const {

@@ -322,15 +322,17 @@ TEST(Contact, FoldedStripSqueezedShutHoldsItsSelfContact) {
 TEST(MultiplierMemory, RecallsThePositiveMultipliersByKey) {
     MultiplierMemory memory;
     using Key = MultiplierMemory::Key;
-    memory.keep({{Key{3, 1, 2, 4, -1}, 2.0},
-                 {Key{0, -1, -1, -1, 0}, 5.0},
-                 {Key{3, 1, 2, 4, -1}, 7.0},  // a second copy of a key: the first counts
-                 {Key{1, 1, 2, 4, -1}, 0.0}});
+    std::vector<std::pair<Key, Real>> entries{
+        {Key{3, 1, 2, 4, -1}, 2.0},
+        {Key{0, -1, -1, -1, 0}, 5.0},
+        {Key{3, 1, 2, 4, -1}, 7.0},  // a second copy of a key: the first counts
+        {Key{1, 1, 2, 4, -1}, 0.0}};
+    memory.keep(entries);
     EXPECT_EQ(memory.size(), 2U);
     EXPECT_EQ(memory.recall(Key{3, 1, 2, 4, -1}), 2.0);
     EXPECT_EQ(memory.recall(Key{0, -1, -1, -1, 0}), 5.0);
     EXPECT_EQ(memory.recall(Key{1, 1, 2, 4, -1}), 0.0);  // zero is not kept
     EXPECT_EQ(memory.recall(Key{9, 9, 9, 9, 9}), 0.0);
-    memory.keep({});
+    memory.keep(entries);
     EXPECT_EQ(memory.recall(Key{3, 1, 2, 4, -1}), 0.0);  // the last step's only
 }

@@ -152,6 +152,17 @@ void run_straight_and_stopped(const Model& model, const std::string& tag, RunOpt
     ASSERT_EQ(run_model(model, first), 0);
 }
 
+/// Resumes the run stopped into first.output_dir to its end, and checks that its result files
+/// hold the same bytes as those of the run that never stopped.
+void resume_and_compare(const Model& model, const RunOptions& first, const RunOptions& straight) {
+    RunOptions second = first;
+    second.stop_at_step = 0;
+    second.resume = true;
+    ASSERT_EQ(run_model(model, second), 0);
+    for (const char* file : {"history.csv", "energy.csv", "fields.pvd"})
+        EXPECT_EQ(bytes_of(first.output_dir / file), bytes_of(straight.output_dir / file)) << file;
+}
+
 TEST(Restart, AStoppedAndResumedRunWritesTheSameBytesAsAnUninterruptedOne) {
     const Model model = small_tube(4e-4);
     RunOptions straight, first;
@@ -159,13 +170,7 @@ TEST(Restart, AStoppedAndResumedRunWritesTheSameBytesAsAnUninterruptedOne) {
     ASSERT_TRUE(fs::exists(first.output_dir / k_restart_file));
     EXPECT_NE(bytes_of(first.output_dir / "history.csv"),
               bytes_of(straight.output_dir / "history.csv"));
-    RunOptions second = first;
-    second.stop_at_step = 0;
-    second.resume = true;
-    ASSERT_EQ(run_model(model, second), 0);
-
-    for (const char* file : {"history.csv", "energy.csv", "fields.pvd"})
-        EXPECT_EQ(bytes_of(first.output_dir / file), bytes_of(straight.output_dir / file)) << file;
+    ASSERT_NO_FATAL_FAILURE(resume_and_compare(model, first, straight));
     int frames = 0;
     for (const auto& entry : fs::directory_iterator(straight.output_dir / "fields")) {
         const fs::path name = entry.path().filename();
@@ -195,12 +200,7 @@ TEST(Restart, MassScalingDuringTheRunResumesBitForBit) {
     model.control.mass_scaling.time_step = 1.3 * ExplicitSolver(model).stable_dt();
     RunOptions straight, first;
     ASSERT_NO_FATAL_FAILURE(run_straight_and_stopped(model, "_ms", straight, first));
-    RunOptions second = first;
-    second.stop_at_step = 0;
-    second.resume = true;
-    ASSERT_EQ(run_model(model, second), 0);
-    for (const char* file : {"history.csv", "energy.csv", "fields.pvd"})
-        EXPECT_EQ(bytes_of(first.output_dir / file), bytes_of(straight.output_dir / file)) << file;
+    ASSERT_NO_FATAL_FAILURE(resume_and_compare(model, first, straight));
     // the mass grew during the run (energy.csv's last column: the added mass)
     const auto [at_start, at_end] =
         last_column_first_and_last(bytes_of(straight.output_dir / "energy.csv"));
