@@ -641,21 +641,7 @@ void ContactSolver::enforce(const std::vector<Vec3>& x, std::vector<Vec3>& x_pre
             m.largest_change = std::max(m.largest_change, std::abs(dl));
             m.largest_move = std::max(m.largest_move, std::abs(dl) * c.weight);
             ++updates;
-            const auto us = static_cast<std::size_t>(c.slave);
-            x_pred[us] += (beta_particle * dl) * inv_mass_[us].cwiseProduct(c.normal);
-            particle_moved_at_[us] = updates;
-            if (c.element >= 0)
-                for (std::size_t k = 0; k < 3; ++k) {
-                    const auto um = static_cast<std::size_t>(c.master[k]);
-                    x_pred[um] -=
-                        (beta_particle * dl * c.xi[k]) * inv_mass_[um].cwiseProduct(c.normal);
-                    particle_moved_at_[um] = updates;
-                }
-            if (c.body >= 0 && bodies[static_cast<std::size_t>(c.body)].inv_mass > 0) {
-                const auto b = static_cast<std::size_t>(c.body);
-                body_u_pred[b] -= (beta_body * dl * bodies[b].inv_mass) * c.normal;
-                body_moved_at_[b] = updates;
-            }
+            move_by(c, dl, x_pred, body_u_pred, bodies, beta_particle, beta_body, updates);
         }
         return m;
     };
@@ -731,6 +717,26 @@ void ContactSolver::enforce(const std::vector<Vec3>& x, std::vector<Vec3>& x_pre
     }
 }
 
+void ContactSolver::move_by(const Constraint& c, Real dl, std::vector<Vec3>& x_pred,
+                            std::vector<Vec3>& body_u_pred,
+                            const std::vector<RigidBodyState>& bodies, Real beta_particle,
+                            Real beta_body, std::int64_t stamp) {
+    const auto us = static_cast<std::size_t>(c.slave);
+    x_pred[us] += (beta_particle * dl) * inv_mass_[us].cwiseProduct(c.normal);
+    if (stamp >= 0) particle_moved_at_[us] = stamp;
+    if (c.element >= 0)
+        for (std::size_t k = 0; k < 3; ++k) {
+            const auto um = static_cast<std::size_t>(c.master[k]);
+            x_pred[um] -= (beta_particle * dl * c.xi[k]) * inv_mass_[um].cwiseProduct(c.normal);
+            if (stamp >= 0) particle_moved_at_[um] = stamp;
+        }
+    if (c.body >= 0 && bodies[static_cast<std::size_t>(c.body)].inv_mass > 0) {
+        const auto b = static_cast<std::size_t>(c.body);
+        body_u_pred[b] -= (beta_body * dl * bodies[b].inv_mass) * c.normal;
+        if (stamp >= 0) body_moved_at_[b] = stamp;
+    }
+}
+
 MultiplierMemory::Key ContactSolver::key_of(const Constraint& c) {
     return {c.slave, c.master[0], c.master[1], c.master[2], c.body};
 }
@@ -745,18 +751,7 @@ void ContactSolver::warm_start(std::vector<Vec3>& x_pred, std::vector<Vec3>& bod
         const Real lambda = memory_.recall(key_of(c));
         if (lambda == 0) continue;
         c.lambda = lambda;
-        const auto us = static_cast<std::size_t>(c.slave);
-        x_pred[us] += (beta_particle * lambda) * inv_mass_[us].cwiseProduct(c.normal);
-        if (c.element >= 0)
-            for (std::size_t k = 0; k < 3; ++k) {
-                const auto um = static_cast<std::size_t>(c.master[k]);
-                x_pred[um] -=
-                    (beta_particle * lambda * c.xi[k]) * inv_mass_[um].cwiseProduct(c.normal);
-            }
-        if (c.body >= 0 && bodies[static_cast<std::size_t>(c.body)].inv_mass > 0) {
-            const auto b = static_cast<std::size_t>(c.body);
-            body_u_pred[b] -= (beta_body * lambda * bodies[b].inv_mass) * c.normal;
-        }
+        move_by(c, lambda, x_pred, body_u_pred, bodies, beta_particle, beta_body, -1);
     }
 }
 

@@ -161,6 +161,12 @@ private:
     [[nodiscard]] Real weight(const Constraint& c, Real beta_particle, Real beta_body,
                               const std::vector<RigidBodyState>& bodies) const;
     void note_penetration(Real penetration, const Constraint& c, long step);
+    /// The predicted positions after constraint c's multiplier grows by dl (§8.3): its particles
+    /// and body move by beta dl M^-1 G; with stamp >= 0 the sweeps' bookkeeping records that
+    /// they moved at that update.
+    void move_by(const Constraint& c, Real dl, std::vector<Vec3>& x_pred,
+                 std::vector<Vec3>& body_u_pred, const std::vector<RigidBodyState>& bodies,
+                 Real beta_particle, Real beta_body, std::int64_t stamp);
     /// The identity of constraint c from step to step (§8.3a).
     [[nodiscard]] static MultiplierMemory::Key key_of(const Constraint& c);
     /// §8.3a: the constraints start from the multipliers the memory kept for their keys, and

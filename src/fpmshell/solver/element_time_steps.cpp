@@ -161,20 +161,20 @@ std::vector<ElementTimeSteps::CornerAddition> ElementTimeSteps::take_pending_sca
         pending_[e] = 0;
         added.push_back(
             {static_cast<Index>(e), node_mass_[e] * (f - 1.0), node_inertia_[e] * (f - 1.0)});
-        node_mass_[e] *= f;
-        node_inertia_[e] *= f;
-        mass_scale_[e] *= std::sqrt(f);
+        scale_element(e, f);
     }
     return added;
 }
 
 void ElementTimeSteps::scale_masses(const std::vector<Real>& factor) {
     if (mass_scale_.empty()) mass_scale_.assign(factor.size(), 1.0);
-    for (std::size_t e = 0; e < factor.size(); ++e) {
-        node_mass_[e] *= factor[e];
-        node_inertia_[e] *= factor[e];
-        mass_scale_[e] *= std::sqrt(factor[e]);
-    }
+    for (std::size_t e = 0; e < factor.size(); ++e) scale_element(e, factor[e]);
+}
+
+void ElementTimeSteps::scale_element(std::size_t e, Real f) {
+    node_mass_[e] *= f;
+    node_inertia_[e] *= f;
+    mass_scale_[e] *= std::sqrt(f);
 }
 
 }  // namespace fpmshell

@@ -97,6 +97,8 @@ private:
     void reevaluate(Index e, const std::array<Index, 3>& t, const std::vector<Vec3>& x, Real lc);
     /// Bending critical step / (L_c / c) of element e at corners `corners`.
     [[nodiscard]] Real bending_ratio(Index e, const std::array<Vec3, 3>& corners) const;
+    /// Multiplies element e's mass and inertia shares by f (§6.10): its steps grow by sqrt(f).
+    void scale_element(std::size_t e, Real f);
     /// Sets every element's ratio at the initial geometry, shared within shape classes.
     void share_initial_ratios(const Model& model);
     /// The step of element e of length lc before the reduction for stiffness damping (§6.4).
