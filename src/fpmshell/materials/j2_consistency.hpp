@@ -1,6 +1,6 @@
 // Step 3 of the plane-stress return mapping (theory.md §7.3): the consistency condition
 // f_bar(dgamma) = sqrt(2/3) kappa(alpha(dgamma)) solved for the plastic multiplier dgamma on the
-// lanes of a scalar type T (core/simd.hpp), by a safeguarded Newton iteration on one of two
+// lanes of a scalar type T (core/simd.hpp), by a bracketed Halley iteration on one of two
 // unknowns (§7.3a):
 // - dgamma itself, for a linear flow curve (and a Johnson-Cook one with n > 1 or without
 //   isotropic hardening, beta = 0);
@@ -137,21 +137,11 @@ template <class T>
     return {value, select(small, T(c.flow_slope0), f.b * f.n * p)};
 }
 
-/// The bracketed Newton update shared by both iterations: x between lo and hi, whose residual
-/// phi decreases in x; the lanes of `open` move to the Newton iterate, or to the middle of the
-/// bracket where that leaves it.
-template <class T>
-FPMSHELL_INLINE void newton_in_bracket(const MaskOf<T>& open, const T& phi, const T& dphi, T& x,
-                                       T& lo, T& hi) {
-    const MaskOf<T> above = phi > 0.0;
-    lo = select(open && above, x, lo);
-    hi = select(open && !above, x, hi);
-    const T newton = x - phi / dphi;
-    x = select(open, select((newton > lo) && (newton < hi), newton, 0.5 * (lo + hi)), x);
-}
-
-/// As newton_in_bracket with Halley's step (eq. 7.3a-5), -2 Phi Phi' / (2 Phi'^2 - Phi Phi''),
-/// where it scales Newton's by a factor in (2/3, 2) (else Newton's): one division as Newton's.
+/// The bracketed update shared by both iterations: x between lo and hi, whose residual phi
+/// decreases in x; the lanes of `open` take Halley's step (eq. 7.3a-5),
+/// -2 Phi Phi' / (2 Phi'^2 - Phi Phi''), where it scales Newton's by a factor in (2/3, 2) (else
+/// Newton's; one division either way), or go to the middle of the bracket where the step leaves
+/// it.
 template <class T>
 FPMSHELL_INLINE void halley_in_bracket(const MaskOf<T>& open, const T& phi, const T& dphi,
                                        const T& d2phi, T& x, T& lo, T& hi) {
@@ -209,6 +199,17 @@ public:
         const T kappa = t.r * radius;
         const T g = n.fbar - k_sqrt23 * kappa;
         const T f = 0.5 * g * (n.fbar + k_sqrt23 * kappa);  // F of §7.3
+        out_.dgamma = select(open_, dg_, out_.dgamma);
+        out_.q1 = select(open_, n.q1, out_.q1);
+        out_.q2 = select(open_, n.q2, out_.q2);
+        out_.fbar = select(open_, n.fbar, out_.fbar);
+        out_.flow_radius = select(open_, radius, out_.flow_radius);
+        out_.flow_slope = select(open_, at.slope, out_.flow_slope);
+        out_.evaluations += any_lane(open_) ? 1 : 0;
+        const MaskOf<T> done = open_ && (abs(f) < c_.tolerance * t.third_k2);
+        out_.converged = out_.converged || done;
+        open_ = open_ && !done;
+        if (!any_lane(open_)) return;  // the usual last round: no step to take
         // Phi f_bar, Phi' f_bar and Phi'' f_bar (Halley's step: f_bar^2 cancels), with
         // f_bar f_bar'' = (f_bar^2)''/2 - (f_bar f_bar')^2 / f_bar^2 and kappa'' from alpha''
         // (sigma_f'' left out: a start for the next step, the bracket keeps it safe)
@@ -223,16 +224,6 @@ public:
         const T phi = u * g_fbar;
         const T dphi = t.a_bar * g_fbar + u * dg_fbar;
         const T d2phi = 2.0 * t.a_bar * dg_fbar + u * d2g_fbar;
-        out_.dgamma = select(open_, dg_, out_.dgamma);
-        out_.q1 = select(open_, n.q1, out_.q1);
-        out_.q2 = select(open_, n.q2, out_.q2);
-        out_.fbar = select(open_, n.fbar, out_.fbar);
-        out_.flow_radius = select(open_, radius, out_.flow_radius);
-        out_.flow_slope = select(open_, at.slope, out_.flow_slope);
-        out_.evaluations += any_lane(open_) ? 1 : 0;
-        const MaskOf<T> done = open_ && (abs(f) < c_.tolerance * t.third_k2);
-        out_.converged = out_.converged || done;
-        open_ = open_ && !done;
         halley_in_bracket(open_, phi, dphi, d2phi, dg_, lo_, hi_);
     }
     [[nodiscard]] const Consistency<T>& result() const { return out_; }
@@ -257,8 +248,7 @@ private:
 /// from dgamma_upper_bound, bounded by the tangent y_n + sigma_f'(alpha_n) d_alpha_u (sigma_f
 /// is concave) and evaluated exactly (one power) where the increment can exceed alpha_n.
 /// Start: Halley's step from y_n (Phi, Phi' and Phi'' there from the trial state), or y_hi if
-/// less.
-/// iterate() as DgammaIteration's.
+/// less; then Halley's steps with Phi'' of eq. 7.3a-7. iterate() as DgammaIteration's.
 template <class T>
 class FlowStressIteration {
 public:
@@ -354,10 +344,6 @@ public:
         const ReturnedNorm<T> n = returned_norm(t, dg);
         const T g = n.fbar - k_sqrt23 * kappa;
         const T f = 0.5 * g * (n.fbar + k_sqrt23 * kappa);  // F of §7.3
-        // Phi f_bar and Phi' f_bar (the Newton step is their ratio)
-        const T phi = (1.0 + t.a_bar * dg) * (g * n.fbar);
-        const T dphi = t.a_bar * ddg * (g * n.fbar) +
-                       (1.0 + t.a_bar * dg) * (n.fbar_dfbar * ddg - k_sqrt23 * r_beta_ * n.fbar);
         out_.dgamma = select(open_, dg, out_.dgamma);
         out_.q1 = select(open_, n.q1, out_.q1);
         out_.q2 = select(open_, n.q2, out_.q2);
@@ -373,7 +359,27 @@ public:
         const MaskOf<T> done = open_ && (abs(f) < c_.tolerance * t.third_k2);
         out_.converged = out_.converged || done;
         open_ = open_ && !done;
-        newton_in_bracket(open_, phi, dphi, y_, lo_, hi_);
+        if (!any_lane(open_)) return;  // the usual last round: no step to take
+        // Phi f_bar, Phi' f_bar and Phi'' f_bar in y for Halley's step (eq. 7.3a-7): Phi = u g,
+        // u = 1 + a_bar dgamma, g = f_bar - sqrt(2/3) kappa, kappa'' = 0, with
+        //   alpha'' = (1/n - 1) alpha' / (y - A),  dgamma'' = (3/2 alpha'' - 2 dgamma' R beta) /
+        //   kappa, f_bar f_bar''(y) = f_bar f_bar_dd dgamma'^2 + f_bar f_bar_d dgamma'', f_bar
+        //   f_bar_dd = 3 (A1 a1^2 q1^4 + A2 a2^2 q2^4) - (f_bar f_bar_d)^2 / f_bar^2,
+        // 1 / f_bar^2 taken as 3 / (2 kappa^2), its value at the solution: Phi'' only shapes the
+        // step, and its error O(g) keeps the step's order (the bracket keeps it safe)
+        const T u = 1.0 + t.a_bar * dg;
+        const T g_fbar = g * n.fbar;
+        const T dg_fbar = n.fbar_dfbar * ddg - k_sqrt23 * r_beta_ * n.fbar;  // g' f_bar
+        const T d2alpha = select(positive, (inv_n_ - 1.0) * dalpha * (kappa * inv), T(0.0));
+        const T d2dg = (1.5 * d2alpha - 2.0 * ddg * r_beta_) * inv_kappa;
+        const T a1q1 = t.a1 * n.q1, a2q2 = t.a2 * n.q2;
+        const T fbar_dd = 3.0 * (n.c1 * a1q1 * a1q1 + n.c2 * a2q2 * a2q2) -
+                          n.fbar_dfbar * n.fbar_dfbar * (1.5 * inv_kappa * inv_kappa);
+        const T d2g_fbar = fbar_dd * ddg * ddg + n.fbar_dfbar * d2dg;  // g'' f_bar
+        const T phi = u * g_fbar;
+        const T dphi = t.a_bar * ddg * g_fbar + u * dg_fbar;
+        const T d2phi = t.a_bar * d2dg * g_fbar + 2.0 * t.a_bar * ddg * dg_fbar + u * d2g_fbar;
+        halley_in_bracket(open_, phi, dphi, d2phi, y_, lo_, hi_);
     }
     /// The solution, with sigma_f' = B n alpha^(n-1) = n (y - A) / alpha at the last
     /// evaluation (taken at FlowStress::k_slope_floor below it, as FlowStress::slope does).

@@ -24,9 +24,10 @@ struct BlockStep {
     RealPack thickness{0.0};    ///< h of every lane at the start of the step
     RealPack* state = nullptr;  ///< this block's point state, [field][point]
     std::size_t n_points = 0;   ///< points per element
-    /// The next block's state (of the same section), fetched into the cache while this block
-    /// computes: without it the loads of the stresses stalled on memory (perf: a fifth of the
-    /// block's time on the elastic 10^5 plate). nullptr: none.
+    /// The next block's state (of the same section), fetched into the cache while an elastic
+    /// block computes: without it the loads of the stresses stalled on memory (perf: a fifth of
+    /// the block's time on the elastic 10^5 plate). A J2 block does not use it (see there).
+    /// nullptr: none.
     const RealPack* next_state = nullptr;
     Real viscous_rate = 0;  ///< a_s / dt_{n-1/2} (§6.5)
     Real dt = 0;            ///< dt_{n-1/2} for rate-dependent materials

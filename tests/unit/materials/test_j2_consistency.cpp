@@ -230,3 +230,31 @@ TEST(J2Consistency, FirstYieldOfJohnsonCookTakesAFewEvaluations) {
         }
     }
 }
+
+TEST(J2Consistency, HardenedJohnsonCookStepTakesTwoEvaluations) {
+    // A crash step: a hardened point on its yield surface, strained on by a trial overshoot of
+    // 1 % to 10 % of its yield stress. Halley's steps in y (eq. 7.3a-7) converge at the second
+    // evaluation; Newton's steps (d2phi = 0) take a third on 10 of these 36 cases.
+    for (Real n : {0.1, 0.36, 0.5, 0.8}) {
+        const J2Plastic mat = johnson_cook(n, 1.0);
+        const J2ReturnConstants& c = mat.return_constants();
+        for (Real alpha_n : {0.01, 0.1, 1.0}) {
+            for (Real overshoot : {1e-2, 3e-2, 1e-1}) {
+                J2PointState<Real> old{};
+                const FlowStress::ValueSlope f = c.flow.value_and_slope(alpha_n);
+                old.plastic_strain = alpha_n;
+                old.flow_radius = f.value;
+                old.flow_slope = f.slope;
+                old.stress = {f.value, 0.0, 0.0};
+                const Real de = overshoot * f.value / k_e;
+                const std::array<Real, 3> d_eps{de, -k_nu * de, 0.0};
+                const J2Return<Real> got = j2_return_mapping(c, old, d_eps, 1.0, true);
+                ASSERT_TRUE(got.yielded);
+                EXPECT_LE(got.evaluations, 2)
+                    << "n " << n << " alpha_n " << alpha_n << " overshoot " << overshoot;
+                const Reference ref = reference_return(mat, old, d_eps, 1.0);
+                EXPECT_NEAR(got.state.stress[0], ref.stress[0], 1e-9 * f.value);
+            }
+        }
+    }
+}
