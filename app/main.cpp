@@ -1,12 +1,14 @@
-// fpmshell command line (model-format.md): run, check, --version. Exit codes: 0 success,
+// fpmshell command line (model-format.md): run, check, partition, --version. Exit codes: 0 success,
 // 1 the run failed, 2 the model or a file it names is invalid.
 #include <CLI/CLI.hpp>
 #include <filesystem>
 #include <iostream>
 
 #include "fpmshell/core/errors.hpp"
+#include "fpmshell/driver/partition_report.hpp"
 #include "fpmshell/driver/run_driver.hpp"
 #include "fpmshell/io/model_reader.hpp"
+#include "fpmshell/solver/unit_partition.hpp"
 
 namespace {
 
@@ -17,6 +19,7 @@ const char* k_footer = R"(Examples:
   fpmshell run examples/spherical_cap_elastic/model.yaml -o results/cap --set control.end_time=5e-4
   fpmshell run examples/square_tube/model.yaml -o results/tube --restart-every 600
   fpmshell run examples/square_tube/model.yaml -o results/tube --restart-every 600 --resume
+  fpmshell partition examples/square_tube/model.yaml --parts 4
 Results: history.csv, energy.csv, fields.pvd (open in ParaView), summary.json, log.txt.)";
 
 }  // namespace
@@ -55,6 +58,16 @@ int main(int argc, char** argv) {
     check->add_option("model", model_path, "model file (YAML)")->required();
     check->add_option("--set", overrides, "override a scalar of the model");
 
+    int parts = 1;
+    CLI::App* partition = app.add_subcommand(
+        "partition",
+        "cut a model into parts for a distributed run, print each part's load and halo");
+    partition->add_option("model", model_path, "model file (YAML)")->required();
+    partition->add_option("--parts", parts, "number of parts")
+        ->required()
+        ->check(CLI::Range(1, 1 << 20));
+    partition->add_option("--set", overrides, "override a scalar of the model");
+
     try {
         app.parse(argc, argv);
     } catch (const CLI::Success& e) {
@@ -68,6 +81,16 @@ int main(int argc, char** argv) {
         const fpmshell::Model model = fpmshell::read_model(model_path, overrides);
         if (check->parsed()) {
             std::cout << fpmshell::model_summary(model);
+            return 0;
+        }
+        if (partition->parsed()) {
+            if (parts > 1 && !fpmshell::partitioning_available()) {
+                std::cerr << "error: this build has no METIS (install libmetis-dev and build "
+                             "again): it cannot cut a model into "
+                          << parts << " parts\n";
+                return k_exit_invalid;
+            }
+            std::cout << fpmshell::partition_report(model, parts);
             return 0;
         }
         fpmshell::RunOptions opt;

@@ -77,6 +77,18 @@ good = write("good.yaml", BASE)
 code, out = fpm("check", good)
 check("check a valid model", code == 0 and "particles" in out and "stable time step" in out, out)
 
+# partition: a table row per part; invalid part counts and models exit 2
+code, out = fpm("partition", good, "--parts", "2")
+rows = [l for l in out.splitlines() if l.startswith("| ") and l[2:3].isdigit()]
+if "no METIS" in out:
+    check("partition without METIS exits 2", code == 2, out)
+else:
+    check("partition prints a row per part", code == 0 and len(rows) == 2 and "imbalance" in out, out)
+code, out = fpm("partition", good, "--parts", "0")
+check("partition --parts 0 exits 2", code == 2, out)
+code, out = fpm("partition", os.path.join(WORK, "does_not_exist.yaml"), "--parts", "2")
+check("partition of a missing model exits 2", code == 2 and "does_not_exist.yaml" in out, out)
+
 # Each bad model: exit 2 and one sentence naming the file, the line and the key.
 expect_invalid("unknown_key", BASE.replace("control: {end_time: 1.0e-4}", "control: {end_time: 1.0e-4, endtime: 3}"),
                ["unknown_key.yaml:11", "endtime"])

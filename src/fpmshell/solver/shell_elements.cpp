@@ -55,6 +55,11 @@ ElementBlocks make_blocks(const Model& model,
 
 }  // namespace
 
+ElementBlocks element_units(const Model& model, const ElementGroupFactory& make_group) {
+    return make_blocks(model, make_groups(model, make_group),
+                       model.control.membrane == MembraneKernel::Smoothed);
+}
+
 ShellElements::ShellElements(const Model& model, const MeshTopology& topology,
                              const ElementGroupFactory& make_group)
     : tri_(model.triangles),

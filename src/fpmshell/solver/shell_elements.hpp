@@ -22,6 +22,11 @@ namespace fpmshell {
 class RestartWriter;
 class RestartReader;
 
+/// The units of work of the element loop of `model` (its SIMD blocks and the elements computed
+/// alone, corner_assembly.hpp), as ShellElements forms them, without allocating their state.
+[[nodiscard]] ElementBlocks element_units(
+    const Model& model, const ElementGroupFactory& make_group = make_element_group);
+
 class ShellElements {
 public:
     /// topology: the model's (side neighbours, element masses); it must outlive this.
