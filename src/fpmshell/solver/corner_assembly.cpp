@@ -86,4 +86,8 @@ const SlotGatherPlan& CornerAssembly::plan(int ranges) {
     return plan_;
 }
 
+void CornerAssembly::set_ranges(const std::vector<Index>& range_begin) {
+    plan_ = make_slot_gather_plan(range_begin, csr_begin_, csr_slot_);
+}
+
 }  // namespace fpmshell

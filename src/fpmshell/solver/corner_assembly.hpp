@@ -59,8 +59,11 @@ public:
                3 * static_cast<std::size_t>(b) * k_components * static_cast<std::size_t>(k_lanes);
     }
 
-    /// The gather plan for `ranges` ranges of blocks (remade when the count changes).
+    /// The gather plan for `ranges` ranges of blocks (remade, in equal ranges, when the count
+    /// changes).
     const SlotGatherPlan& plan(int ranges);
+    /// The plan remade for the ranges of blocks that start at range_begin (slot_gather_plan.hpp).
+    void set_ranges(const std::vector<Index>& range_begin);
     /// The plan as last made.
     [[nodiscard]] const SlotGatherPlan& plan() const { return plan_; }
     /// Ring storage of range r of the plan.

@@ -1,8 +1,10 @@
 #include "fpmshell/solver/shell_elements.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 #include "fpmshell/core/chunked_loop.hpp"
 #include "fpmshell/elements/cst_membrane.hpp"
@@ -426,6 +428,9 @@ ShellElements::StepTotals ShellElements::compute(ParticleState& s, Real viscous_
     const SlotGatherPlan& plan = assembly_.plan(gather_ranges());
     constexpr Index tile = SlotGatherPlan::k_tile_blocks,
                     ring_blocks = SlotGatherPlan::k_ring_blocks;
+    // ranges of equal time rather than equal counts (range_balancer.hpp): tiles timed
+    const bool balance = parallel && plan.ranges() > 1;
+    using Clock = std::chrono::steady_clock;
 #pragma omp parallel if (parallel)
     {
         // one range per thread (any team size gives the same sums: a range is a unit of work)
@@ -436,6 +441,7 @@ ShellElements::StepTotals ShellElements::compute(ParticleState& s, Real viscous_
             const Index first = plan.range_begin[ur], end = plan.range_begin[ur + 1];
             for (Index t = plan.range_first_tile[ur]; t < plan.range_first_tile[ur + 1]; ++t) {
                 const Index from = first + (t - plan.range_first_tile[ur]) * tile;
+                const Clock::time_point start = balance ? Clock::now() : Clock::time_point{};
                 for (Index b = from; b < std::min(end, from + tile); ++b)
                     compute_block(b, s, viscous_rate, dt,
                                   ring
@@ -446,6 +452,9 @@ ShellElements::StepTotals ShellElements::compute(ParticleState& s, Real viscous_
                      k < plan.ready_begin[static_cast<std::size_t>(t) + 1]; ++k)
                     assembly_.gather_particle(
                         static_cast<std::size_t>(plan.ready[static_cast<std::size_t>(k)]), ring, s);
+                if (balance)
+                    balancer_.record(from, std::min(end, from + tile),
+                                     std::chrono::duration<double>(Clock::now() - start).count());
             }
         }
 #pragma omp for schedule(static)
@@ -459,6 +468,9 @@ ShellElements::StepTotals ShellElements::compute(ParticleState& s, Real viscous_
                 static_cast<std::size_t>(plan.after[static_cast<std::size_t>(k)]),
                 assembly_.slots(), s);
     }
+    if (balance)
+        if (std::optional<std::vector<Index>> ranges = balancer_.next_ranges(plan.range_begin))
+            assembly_.set_ranges(*ranges);  // (plan, a reference to the old one, is not read again)
     // Totals over the blocks, then the elements computed alone, in fixed chunks of them
     // (core/chunked_loop.hpp): the same for any thread count.
     const Index n_units = n_blocks + n_scalar;

@@ -16,6 +16,7 @@
 #include "fpmshell/solver/element_group.hpp"
 #include "fpmshell/solver/element_time_steps.hpp"
 #include "fpmshell/solver/particle_state.hpp"
+#include "fpmshell/solver/range_balancer.hpp"
 
 namespace fpmshell {
 
@@ -141,6 +142,7 @@ private:
     std::vector<std::unique_ptr<ElementGroup>> groups_;  ///< per section
     ElementTimeSteps time_steps_;
     CornerAssembly assembly_;
+    RangeBalancer balancer_;       ///< the threads' ranges of blocks by measured time
     std::vector<Real> thickness_;  ///< per element, current h
     bool thickness_update_ = false;
     bool smoothed_membrane_ = false;          ///< control.membrane: smoothed

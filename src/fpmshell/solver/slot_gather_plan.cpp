@@ -5,22 +5,34 @@
 
 namespace fpmshell {
 
+std::vector<Index> equal_block_ranges(Index n_blocks, int ranges) {
+    const auto n_ranges = static_cast<std::size_t>(std::max(1, ranges));
+    std::vector<Index> begin(n_ranges + 1);
+    for (std::size_t t = 0; t <= n_ranges; ++t)
+        begin[t] = static_cast<Index>(static_cast<std::size_t>(n_blocks) * t / n_ranges);
+    return begin;
+}
+
 SlotGatherPlan make_slot_gather_plan(Index n_blocks, int ranges,
+                                     const std::vector<Index>& slot_begin,
+                                     const std::vector<std::size_t>& slot_offset) {
+    return make_slot_gather_plan(equal_block_ranges(n_blocks, ranges), slot_begin, slot_offset);
+}
+
+SlotGatherPlan make_slot_gather_plan(const std::vector<Index>& range_begin,
                                      const std::vector<Index>& slot_begin,
                                      const std::vector<std::size_t>& slot_offset) {
     constexpr auto w = static_cast<std::size_t>(k_lanes);
     constexpr std::size_t group_reals = SlotGatherPlan::k_components * w;
     constexpr Index tile = SlotGatherPlan::k_tile_blocks, ring = SlotGatherPlan::k_ring_blocks;
     SlotGatherPlan plan;
-    const auto n_ranges = static_cast<std::size_t>(std::max(1, ranges));
-    plan.range_begin.resize(n_ranges + 1);
+    const Index n_blocks = range_begin.back();
+    const std::size_t n_ranges = range_begin.size() - 1;
+    plan.range_begin = range_begin;
     plan.range_first_tile.assign(n_ranges + 1, 0);
-    for (std::size_t t = 0; t <= n_ranges; ++t) {
-        plan.range_begin[t] = static_cast<Index>(static_cast<std::size_t>(n_blocks) * t / n_ranges);
-        if (t > 0) {
-            const Index blocks = plan.range_begin[t] - plan.range_begin[t - 1];
-            plan.range_first_tile[t] = plan.range_first_tile[t - 1] + (blocks + tile - 1) / tile;
-        }
+    for (std::size_t t = 1; t <= n_ranges; ++t) {
+        const Index blocks = plan.range_begin[t] - plan.range_begin[t - 1];
+        plan.range_first_tile[t] = plan.range_first_tile[t - 1] + (blocks + tile - 1) / tile;
     }
     const Index n_tiles = plan.range_first_tile[n_ranges];
     // The range of block b, its tile, and the block after the end of that tile.

@@ -59,6 +59,17 @@ struct SlotGatherPlan {
     [[nodiscard]] bool use_ring() const { return !rings.empty(); }
 };
 
+/// The first blocks of `ranges` contiguous ranges of n_blocks blocks as equal as can be, and
+/// n_blocks (ranges + 1 entries).
+[[nodiscard]] std::vector<Index> equal_block_ranges(Index n_blocks, int ranges);
+
+/// The plan for the contiguous ranges of blocks that start at range_begin (one more entry: the
+/// number of blocks), one range per thread; any ranges give the same sums. slot_begin /
+/// slot_offset: the particle -> slot map as below.
+[[nodiscard]] SlotGatherPlan make_slot_gather_plan(const std::vector<Index>& range_begin,
+                                                   const std::vector<Index>& slot_begin,
+                                                   const std::vector<std::size_t>& slot_offset);
+
 /// The plan for n_blocks blocks on `ranges` threads. slot_begin / slot_offset: the particle ->
 /// slot map into the full array, whose slot groups (k_lanes slots, 6 components each) hold
 /// corner c of block b as group 3 b + c, and slots of elements computed alone after them.

@@ -155,6 +155,25 @@ TEST(SlotGatherPlan, EveryParticleSumsExactlyItsOwnSlotsFromTheRingForAnyRangeCo
     }
 }
 
+TEST(SlotGatherPlan, UnevenRangesGiveTheSameSums) {
+    // the ranges a RangeBalancer sets: any contiguous cut, a range of a few blocks or none
+    const MeshData mesh = plate(120);
+    const auto np = static_cast<Index>(mesh.nodes.size());
+    const SlotMap m = slot_map(mesh.triangles, np, 0);
+    const std::size_t full_reals =
+        static_cast<std::size_t>(m.n_blocks) * SlotGatherPlan::k_block_reals;
+    const auto expected = expected_sums(m);
+    for (const std::vector<Index>& begin :
+         {std::vector<Index>{0, 3, m.n_blocks}, std::vector<Index>{0, m.n_blocks - 17, m.n_blocks},
+          std::vector<Index>{0, 1000, 1000, m.n_blocks},
+          std::vector<Index>{0, 333, 2900, m.n_blocks}}) {
+        SCOPED_TRACE(::testing::Message() << "second range from block " << begin[1]);
+        const SlotGatherPlan plan = make_slot_gather_plan(begin, m.begin, m.offset);
+        expect_each_particle_once(plan, static_cast<std::size_t>(np));
+        EXPECT_EQ(replay(plan, m, full_reals), expected);
+    }
+}
+
 TEST(SlotGatherPlan, AMeshWithoutLocalityGoesWithoutTheRing) {
     MeshData mesh = plate(60);
     std::mt19937 rng(7);
