@@ -67,7 +67,7 @@ std::vector<int> metis_parts(const std::vector<std::vector<Index>>& members,
     std::vector<Index> element_unit(triangles.size(), -1);
     for (std::size_t u = 0; u < n_units; ++u)
         for (const Index e : members[u]) element_unit[static_cast<std::size_t>(e)] = Index(u);
-    // particle -> units touching it (with repeats: one per corner), compressed rows
+    // particle -> the units touching it, each once, compressed rows
     std::vector<Index> begin(static_cast<std::size_t>(n_particles) + 1, 0);
     for (const auto& tri : triangles)
         for (const Index p : tri) ++begin[static_cast<std::size_t>(p) + 1];
@@ -76,6 +76,12 @@ std::vector<int> metis_parts(const std::vector<std::vector<Index>>& members,
     for (std::size_t e = 0; e < triangles.size(); ++e)
         for (const Index p : triangles[e])
             touching[static_cast<std::size_t>(at[static_cast<std::size_t>(p)]++)] = element_unit[e];
+    std::vector<Index> unique_end(static_cast<std::size_t>(n_particles));
+    for (std::size_t p = 0; p < unique_end.size(); ++p) {
+        const auto first = touching.begin() + begin[p], last = touching.begin() + begin[p + 1];
+        std::sort(first, last);
+        unique_end[p] = static_cast<Index>(std::unique(first, last) - touching.begin());
+    }
     // unit graph: a neighbour per shared particle, merged into one weighted edge
     std::vector<idx_t> xadj{0}, adjncy, adjwgt, vwgt;
     std::vector<Index> seen;
@@ -84,13 +90,10 @@ std::vector<int> metis_parts(const std::vector<std::vector<Index>>& members,
         for (const Index e : members[u])
             for (const Index p : triangles[static_cast<std::size_t>(e)]) {
                 const auto up = static_cast<std::size_t>(p);
-                std::vector<Index> units_here(touching.begin() + begin[up],
-                                              touching.begin() + begin[up + 1]);
-                std::sort(units_here.begin(), units_here.end());
-                units_here.erase(std::unique(units_here.begin(), units_here.end()),
-                                 units_here.end());
-                for (const Index v : units_here)
+                for (Index k = begin[up]; k < unique_end[up]; ++k) {
+                    const Index v = touching[static_cast<std::size_t>(k)];
                     if (v != Index(u)) seen.push_back(v);
+                }
             }
         std::sort(seen.begin(), seen.end());
         // a particle met through several of the unit's elements counts once per element

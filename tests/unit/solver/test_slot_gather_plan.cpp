@@ -50,6 +50,11 @@ SlotMap slot_map(const std::vector<std::array<Index, 3>>& tri, Index n_particles
     return m;
 }
 
+/// Reals of the full slot array of a map without elements alone: its blocks' slots.
+std::size_t block_reals(const SlotMap& m) {
+    return static_cast<std::size_t>(m.n_blocks) * SlotGatherPlan::k_block_reals;
+}
+
 /// A distinct value for component c of full-array offset `at`.
 Real slot_value(std::size_t at, std::size_t c) {
     return static_cast<Real>(at) + 0.125 * static_cast<Real>(c);
@@ -63,8 +68,7 @@ std::vector<std::array<Real, 6>> replay(const SlotGatherPlan& plan, const SlotMa
     constexpr Index tile = SlotGatherPlan::k_tile_blocks,
                     ring_blocks = SlotGatherPlan::k_ring_blocks;
     std::vector<Real> full(full_reals, -1.0);
-    for (std::size_t at = static_cast<std::size_t>(m.n_blocks) * SlotGatherPlan::k_block_reals;
-         at < full_reals; ++at)
+    for (std::size_t at = block_reals(m); at < full_reals; ++at)
         full[at] = slot_value(at / group_reals * group_reals + at % w,
                               at % group_reals / w);  // elements alone
     std::vector<std::array<Real, 6>> sums(m.begin.size() - 1, {-7, -7, -7, -7, -7, -7});
@@ -140,8 +144,6 @@ TEST(SlotGatherPlan, EveryParticleSumsExactlyItsOwnSlotsFromTheRingForAnyRangeCo
     const MeshData mesh = plate(120);
     const auto np = static_cast<Index>(mesh.nodes.size());
     const SlotMap m = slot_map(mesh.triangles, np, 0);
-    const std::size_t full_reals =
-        static_cast<std::size_t>(m.n_blocks) * SlotGatherPlan::k_block_reals;
     for (int ranges : {1, 2, 3}) {
         SCOPED_TRACE(ranges);
         const SlotGatherPlan plan = make_slot_gather_plan(m.n_blocks, ranges, m.begin, m.offset);
@@ -151,7 +153,7 @@ TEST(SlotGatherPlan, EveryParticleSumsExactlyItsOwnSlotsFromTheRingForAnyRangeCo
         // others: on the seams between ranges)
         EXPECT_LT(plan.after.size(), static_cast<std::size_t>(ranges) * 2 * 130u);
         // exact equality: the same values added in the same order
-        EXPECT_EQ(replay(plan, m, full_reals), expected_sums(m));
+        EXPECT_EQ(replay(plan, m, block_reals(m)), expected_sums(m));
     }
 }
 
@@ -160,8 +162,6 @@ TEST(SlotGatherPlan, UnevenRangesGiveTheSameSums) {
     const MeshData mesh = plate(120);
     const auto np = static_cast<Index>(mesh.nodes.size());
     const SlotMap m = slot_map(mesh.triangles, np, 0);
-    const std::size_t full_reals =
-        static_cast<std::size_t>(m.n_blocks) * SlotGatherPlan::k_block_reals;
     const auto expected = expected_sums(m);
     for (const std::vector<Index>& begin :
          {std::vector<Index>{0, 3, m.n_blocks}, std::vector<Index>{0, m.n_blocks - 17, m.n_blocks},
@@ -170,7 +170,7 @@ TEST(SlotGatherPlan, UnevenRangesGiveTheSameSums) {
         SCOPED_TRACE(::testing::Message() << "second range from block " << begin[1]);
         const SlotGatherPlan plan = make_slot_gather_plan(begin, m.begin, m.offset);
         expect_each_particle_once(plan, static_cast<std::size_t>(np));
-        EXPECT_EQ(replay(plan, m, full_reals), expected);
+        EXPECT_EQ(replay(plan, m, block_reals(m)), expected);
     }
 }
 
@@ -185,8 +185,7 @@ TEST(SlotGatherPlan, AMeshWithoutLocalityGoesWithoutTheRing) {
     EXPECT_TRUE(plan.ready.empty());
     EXPECT_EQ(plan.after.size(), static_cast<std::size_t>(np));
     EXPECT_TRUE(std::all_of(plan.keep.begin(), plan.keep.end(), [](auto k) { return k == 1; }));
-    EXPECT_EQ(replay(plan, m, static_cast<std::size_t>(m.n_blocks) * SlotGatherPlan::k_block_reals),
-              expected_sums(m));
+    EXPECT_EQ(replay(plan, m, block_reals(m)), expected_sums(m));
 }
 
 TEST(SlotGatherPlan, ParticlesOfElementsComputedAloneAreSummedAfterTheLoop) {
