@@ -105,10 +105,10 @@ template <class T>
     // q_i = 1 / (1 + a_i dgamma) with one division: the iteration is a chain of dependent
     // divisions, square roots and polynomials, whose latency sets the cost of a return
     const T u1 = 1.0 + t.a1 * dg, u2 = 1.0 + t.a2 * dg;
-    const T inv_u1u2 = 1.0 / (u1 * u2);
+    const T inv_u1u2 = pipelined_reciprocal(u1 * u2);
     const T q1 = u2 * inv_u1u2, q2 = u1 * inv_u1u2;
     const T c1 = t.a1_sq * q1 * q1, c2 = t.a2_sq * q2 * q2;
-    return {sqrt(c1 + c2), -(c1 * (t.a1 * q1) + c2 * (t.a2 * q2)), q1, q2, c1, c2};
+    return {pipelined_sqrt(c1 + c2), -(c1 * (t.a1 * q1) + c2 * (t.a2 * q2)), q1, q2, c1, c2};
 }
 
 /// An upper bound of dgamma (eq. 7.3a-2): with kappa >= kappa_n and f_bar <= f_bar_tr / (1 + a_min
@@ -116,7 +116,7 @@ template <class T>
 template <class T>
 [[nodiscard]] FPMSHELL_INLINE T dgamma_upper_bound(const TrialReturn<T>& t) {
     const T g0 = t.fbar_tr - k_sqrt23 * t.kappa_n;
-    return g0 / (k_sqrt23 * t.kappa_n * min(t.a1, t.a2));
+    return g0 * pipelined_reciprocal(k_sqrt23 * t.kappa_n * min(t.a1, t.a2));
 }
 
 /// The Johnson-Cook curve on packs: sigma_f(alpha) and sigma_f'(alpha) as
@@ -150,7 +150,8 @@ FPMSHELL_INLINE void halley_in_bracket(const MaskOf<T>& open, const T& phi, cons
     hi = select(open && !above, x, hi);
     const T two_d2 = 2.0 * dphi * dphi, phi_d2 = phi * d2phi;
     const MaskOf<T> halley = (phi_d2 < 0.5 * two_d2) && (phi_d2 > -0.5 * two_d2);
-    const T step = select(halley, 2.0 * phi * dphi, phi) / select(halley, two_d2 - phi_d2, dphi);
+    const T step = select(halley, 2.0 * phi * dphi, phi) *
+                   pipelined_reciprocal(select(halley, two_d2 - phi_d2, dphi));
     const T next = x - step;
     x = select(open, select((next > lo) && (next < hi), next, 0.5 * (lo + hi)), x);
 }
@@ -218,7 +219,7 @@ public:
         const T dg_fbar = n.fbar_dfbar - k_sqrt23 * r_beta_ * at.slope * fbar_dalpha;
         const T a1q1 = t.a1 * n.q1, a2q2 = t.a2 * n.q2;
         const T fbar_d2fbar = 3.0 * (n.c1 * a1q1 * a1q1 + n.c2 * a2q2 * a2q2) -
-                              n.fbar_dfbar * n.fbar_dfbar / (n.c1 + n.c2);
+                              n.fbar_dfbar * n.fbar_dfbar * pipelined_reciprocal(n.c1 + n.c2);
         const T fbar_d2alpha = k_sqrt23 * (2.0 * n.fbar_dfbar + dg_ * fbar_d2fbar);
         const T d2g_fbar = fbar_d2fbar - k_sqrt23 * r_beta_ * at.slope * fbar_d2alpha;
         const T phi = u * g_fbar;
@@ -279,7 +280,7 @@ public:
         const T g0 = t.fbar_tr - k_sqrt23 * t.kappa_n;
         const T s = fl.n * y_e;
         const T p1 = -k_sqrt23 * (1.5 * t.a_bar * alpha_e + r_beta_ * s);  // Phi' s
-        const T inv_kappa_n = 1.0 / t.kappa_n;
+        const T inv_kappa_n = pipelined_reciprocal(t.kappa_n);
         const T dg1 = 1.5 * alpha_e * inv_kappa_n;  // dgamma' s
         const T dg2 =
             (select(hardened, T(1.5 * (1.0 - fl.n)) * alpha_e, T(0.0)) - 2.0 * dg1 * s * r_beta_) *
@@ -288,14 +289,16 @@ public:
         const T g2 = t.fbar_tr * ((3.0 * t.m2 - t.a_bar * t.a_bar) * dg1 * dg1 - t.a_bar * dg2);
         const T p2 = t.a_bar * (dg2 * g0 + 2.0 * dg1 * g1) + g2;  // Phi'' s^2
         const MaskOf<T> halley = abs(g0 * p2) < p1 * p1;
-        const T y_newton = y_n - select(halley, 2.0 * g0 * p1, g0) * s /
-                                     select(halley, 2.0 * p1 * p1 - g0 * p2, p1);
+        const T y_newton =
+            y_n - select(halley, 2.0 * g0 * p1, g0) * s *
+                      pipelined_reciprocal(select(halley, 2.0 * p1 * p1 - g0 * p2, p1));
         // the upper end of the bracket: d_alpha <= sqrt(2/3) dgamma_upper_bound f_bar_tr, and
         // the tangent of the concave curve at alpha_n lies above it
-        const T d_alpha_u = g0 * t.fbar_tr / (t.kappa_n * min(t.a1, t.a2));
-        T y_hi =
-            select(hardened, y_n + (fl.n * y_e) * d_alpha_u / select(hardened, t.alpha_n, T(1.0)),
-                   T(infinity));
+        const T d_alpha_u = g0 * t.fbar_tr * pipelined_reciprocal(t.kappa_n * min(t.a1, t.a2));
+        T y_hi = select(hardened,
+                        y_n + (fl.n * y_e) * d_alpha_u *
+                                  pipelined_reciprocal(select(hardened, t.alpha_n, T(1.0))),
+                        T(infinity));
         const MaskOf<T> steep = lanes && (t.alpha_n < d_alpha_u);
         if (any_lane(steep)) {  // the curve itself, at the tighter bound of f_bar(dgamma_u)
             const T dg_u = dgamma_upper_bound(t);
@@ -312,7 +315,7 @@ public:
         // is alpha(y_n) to the convergence tolerance of the last step
         centre_y_ = y_n;
         centre_alpha_ = select(hardened, t.alpha_n, T(0.0));
-        centre_inv_excess_ = 1.0 / y_e;
+        centre_inv_excess_ = pipelined_reciprocal(y_e);
         centred_ = hardened;
     }
     [[nodiscard]] bool open() const { return any_lane(open_); }
@@ -335,7 +338,7 @@ public:
         const T radius = a_ + c_.beta * (y_ - a_);
         const T kappa = t.r * radius;
         // one division for 1 / kappa and 1 / (y - A)
-        const T inv = 1.0 / (select(positive, excess, T(1.0)) * kappa);
+        const T inv = pipelined_reciprocal(select(positive, excess, T(1.0)) * kappa);
         const T inv_kappa = select(positive, excess, T(1.0)) * inv;
         const T dalpha =
             select(positive, alpha * inv_n_ * (kappa * inv), T(c_.flow.n == 1.0 ? inv_b_ : 0.0));
@@ -386,9 +389,10 @@ public:
     [[nodiscard]] Consistency<T> result() const {
         Consistency<T> out = out_;
         const MaskOf<T> floor = last_alpha_ < FlowStress::k_slope_floor;
-        out.flow_slope =
-            select(lanes_ && !floor, c_.flow.n * last_excess_ / select(floor, T(1.0), last_alpha_),
-                   out.flow_slope);
+        out.flow_slope = select(
+            lanes_ && !floor,
+            c_.flow.n * last_excess_ * pipelined_reciprocal(select(floor, T(1.0), last_alpha_)),
+            out.flow_slope);
         return out;
     }
 

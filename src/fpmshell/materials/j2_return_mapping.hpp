@@ -104,8 +104,8 @@ template <class T>
     t.a1 = c.bulk_term + (2.0 / 3.0) * tr.h_k;
     t.a2 = c.two_g + (2.0 / 3.0) * tr.h_k;
     const T fbar2_tr = t.a1_sq + t.a2_sq;
-    t.fbar_tr = sqrt(fbar2_tr);
-    const T inv_fbar2_tr = 1.0 / fbar2_tr;
+    t.fbar_tr = pipelined_sqrt(fbar2_tr);
+    const T inv_fbar2_tr = pipelined_reciprocal(fbar2_tr);
     t.a_bar = (t.a1_sq * t.a1 + t.a2_sq * t.a2) * inv_fbar2_tr;
     t.m2 = (t.a1_sq * t.a1 * t.a1 + t.a2_sq * t.a2 * t.a2) * inv_fbar2_tr;
     t.alpha_n = alpha_n;
