@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <iostream>
 
+#include "fpmshell/core/communicator.hpp"
 #include "fpmshell/core/errors.hpp"
 #include "fpmshell/driver/partition_report.hpp"
 #include "fpmshell/driver/run_driver.hpp"
@@ -25,6 +26,10 @@ Results: history.csv, energy.csv, fields.pvd (open in ParaView), summary.json, l
 }  // namespace
 
 int main(int argc, char** argv) {
+    // Under mpirun, every rank runs this program; the messages come from rank 0 (every rank
+    // reads the same model and meets the same errors).
+    const fpmshell::MpiSession mpi(argc, argv);
+    const fpmshell::Communicator& comm = fpmshell::Communicator::world();
     CLI::App app{
         "fpmshell — explicit finite particle method for the nonlinear dynamics of thin shells"};
     app.footer(k_footer);
@@ -104,10 +109,15 @@ int main(int argc, char** argv) {
         opt.resume = resume;
         return fpmshell::run_model(model, opt);
     } catch (const fpmshell::InputError& e) {
-        std::cerr << "error: " << e.what() << "\n";
+        if (comm.root()) std::cerr << "error: " << e.what() << "\n";
         return k_exit_invalid;
     } catch (const std::exception& e) {
-        std::cerr << "error: " << e.what() << "\n";
+        // an error of one rank alone (a file rank 0 could not write) would leave the others
+        // waiting: it stops them all
+        std::cerr << "error";
+        if (comm.distributed()) std::cerr << " on rank " << comm.rank();
+        std::cerr << ": " << e.what() << "\n";
+        if (comm.distributed()) comm.abort(1);
         return 1;
     }
 }

@@ -8,7 +8,7 @@ set -euo pipefail
 PACKAGES=(
     build-essential cmake clang-format
     libeigen3-dev libyaml-cpp-dev libcli11-dev libfmt-dev
-    libgtest-dev libbenchmark-dev libgmsh-dev libmetis-dev
+    libgtest-dev libbenchmark-dev libgmsh-dev libmetis-dev libopenmpi-dev openmpi-bin
     python3 python3-matplotlib python3-numpy python3-yaml
 )
 

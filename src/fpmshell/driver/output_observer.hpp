@@ -52,6 +52,7 @@ struct RunEnd {
     std::string message;      ///< a log line on why the run stopped early; empty when it did not
     double wall_seconds = 0;  ///< wall time of the time loop, all segments of a run
     int threads = 1;
+    int ranks = 1;  ///< processes of a distributed run (core/communicator.hpp)
 };
 
 class OutputObserver {

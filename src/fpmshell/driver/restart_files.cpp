@@ -14,11 +14,15 @@ RestartFiles::RestartFiles(std::filesystem::path path, double every, const Outpu
 
 void RestartFiles::start(const ExplicitSolver& /*solver*/) { last_write_ = Clock::now(); }
 
+bool RestartFiles::clock_due(const StepReport& report) const {
+    return every_ > 0 &&
+           (std::chrono::duration<double>(Clock::now() - last_write_).count() >= every_ ||
+            report.outcome == StepOutcome::Ends);
+}
+
 void RestartFiles::step_done(const ExplicitSolver& solver, const StepReport& report) {
-    const bool due = every_ > 0 &&
-                     (std::chrono::duration<double>(Clock::now() - last_write_).count() >= every_ ||
-                      report.outcome == StepOutcome::Ends);
-    if (due || report.outcome == StepOutcome::Pauses) write(solver, report.wall_seconds);
+    if (clock_due(report) || report.outcome == StepOutcome::Pauses)
+        write(solver, report.wall_seconds);
 }
 
 void RestartFiles::write(const ExplicitSolver& solver, double wall_seconds) {
@@ -41,6 +45,16 @@ double RestartFiles::resume(const std::filesystem::path& path, ExplicitSolver& s
     r(schedule, wall_seconds);
     results.load(r);
     r.finish();
+    return wall_seconds;
+}
+
+double RestartFiles::resume_solver(const std::filesystem::path& path, ExplicitSolver& solver,
+                                   OutputSchedule& schedule) {
+    RestartReader r(path);
+    solver.load(r);
+    r.section("driver");
+    double wall_seconds = 0;
+    r(schedule, wall_seconds);
     return wall_seconds;
 }
 

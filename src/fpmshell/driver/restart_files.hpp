@@ -31,6 +31,14 @@ public:
     /// Throws InputError (naming the file) when it does not fit the model or is damaged.
     static double resume(const std::filesystem::path& path, ExplicitSolver& solver,
                          OutputSchedule& schedule, OutputObserver& results);
+    /// resume without the result files' state (the ranks of a distributed run other than 0,
+    /// which write no results).
+    static double resume_solver(const std::filesystem::path& path, ExplicitSolver& solver,
+                                OutputSchedule& schedule);
+    /// Whether step_done would write the restart file for this report, by the wall clock or
+    /// at the end (not counting a pause); a distributed run asks rank 0 before the step's
+    /// collective gathering of the state.
+    [[nodiscard]] bool clock_due(const StepReport& report) const;
 
 private:
     using Clock = std::chrono::steady_clock;

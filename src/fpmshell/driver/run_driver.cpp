@@ -7,12 +7,14 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <exception>
 #include <string_view>
 
 #ifdef _OPENMP
 #include <omp.h>
 #endif
 
+#include "fpmshell/core/communicator.hpp"
 #include "fpmshell/core/errors.hpp"
 #include "fpmshell/driver/energy_file.hpp"
 #include "fpmshell/driver/field_series.hpp"
@@ -52,6 +54,7 @@ struct Run {
     OutputObserver& out;
     LogFile& log;
     WallClock clock;
+    const RestartFiles* restart = nullptr;  ///< rank 0's restart observer (null: none)
 };
 
 /// How a run ended, before its wall time and threads are known.
@@ -98,14 +101,32 @@ RunEnd advance_in_time(Run& run) {
     const long stop_at_step = run.options.stop_at_step;
     const std::string restart = (run.options.output_dir / k_restart_file).string();
     const InterruptGuard interrupts;
+    const Communicator& comm = Communicator::world();
     while (solver.time() < end * (1 - 1e-12)) {
         solver.step(step_limit(solver, end));
         const Real t = solver.time();
         const bool body_stopped = body_has_stopped(run.model, solver);
         const bool at_end = t >= end * (1 - 1e-12) || body_stopped;
-        if (run.schedule.row_due(t, at_end)) run.out.sample(solver, t, std::nullopt);
-        if (run.schedule.frame_due(t, at_end)) run.out.frame(solver, t, solver.state().x);
-        const int signal = at_end ? 0 : InterruptGuard::received();
+        const bool row = run.schedule.row_due(t, at_end);
+        const bool frame = run.schedule.frame_due(t, at_end);
+        int signal = at_end ? 0 : InterruptGuard::received();
+        if (comm.distributed()) {
+            // one decision for every rank: a signal that any rank received, rank 0's restart
+            // clock; then the state of every rank on rank 0 when a result file needs it
+            const bool clock =
+                run.restart && run.restart->clock_due(
+                                   {t, std::nullopt, StepOutcome::Continues, run.clock.seconds()});
+            const long flags = comm.max(2L * signal + (clock ? 1 : 0));
+            signal = static_cast<int>(flags / 2);
+            const bool pausing =
+                signal != 0 || (!at_end && stop_at_step > 0 && solver.steps() >= stop_at_step);
+            if (frame || at_end || pausing || (flags & 1) != 0)
+                solver.gather_to_root(ExplicitSolver::Gather::Everything);
+            else if (row)
+                solver.gather_to_root(ExplicitSolver::Gather::Histories);
+        }
+        if (row) run.out.sample(solver, t, std::nullopt);
+        if (frame) run.out.frame(solver, t, solver.state().x);
         const bool pause =
             signal != 0 || (!at_end && stop_at_step > 0 && solver.steps() >= stop_at_step);
         const StepOutcome outcome = at_end  ? StepOutcome::Ends
@@ -171,18 +192,37 @@ RunEnd relax_load_levels(Run& run, std::vector<Vec3>& last_good) {
 
 /// The result files of model-format.md and the run's report, in the order they are told: the
 /// progress line first, then the files, the options' observers, and the closing log lines.
-void add_result_files(ObserverList& out, const Model& model, const RunOptions& opt, LogFile& log,
-                      const OutputSchedule& schedule) {
+const RestartFiles* add_result_files(ObserverList& out, const Model& model, const RunOptions& opt,
+                                     LogFile& log, const OutputSchedule& schedule) {
     out.add<ProgressReport>(log, model.control.end_time, opt.quiet);
     const HistoryFile& history = out.add<HistoryFile>(model, opt.output_dir);
     out.add<EnergyFile>(model, opt.output_dir);
     out.add<FieldSeries>(model, opt.output_dir, standard_fields(),
                          [&log](const std::string& line) { log.line(line); });
     out.add<SummaryFile>(model, opt.output_dir, history);
+    const RestartFiles* restart = nullptr;
     if (model.control.mode == SolutionMode::Dynamic)
-        out.add<RestartFiles>(opt.output_dir / k_restart_file, opt.restart_every, schedule, out);
+        restart = &out.add<RestartFiles>(opt.output_dir / k_restart_file, opt.restart_every,
+                                         schedule, out);
     for (OutputObserver* o : opt.observers) out.attach(*o);
     out.add<ClosingReport>(log, opt.output_dir);
+    return restart;
+}
+
+/// What a run on several ranks does not do yet, refused before it starts (exit 2).
+void check_distributable(const Model& model, int ranks) {
+    auto refuse = [&](const char* key, const char* what) {
+        throw InputError(input_error_text(
+            model.source_file, 0, key,
+            fmt::format("{} is not supported on several ranks yet ({} ranks): run it on one "
+                        "rank (with --threads)",
+                        what, ranks)));
+    };
+    if (!model.contacts.empty()) refuse("contact", "contact");
+    if (model.control.mode == SolutionMode::Relaxation) refuse("control.mode", "relaxation");
+    if (model.control.mass_scaling.time_step > 0) refuse("control.mass_scaling", "mass scaling");
+    if (model.control.membrane == MembraneKernel::Smoothed)
+        refuse("control.membrane", "the smoothed membrane");
 }
 
 /// control.mass_scaling (§6.10): the mass added (`when`: at set-up, or by the end of the run),
@@ -212,31 +252,50 @@ bool all_finite(const std::vector<Vec3>& v) {
 }  // namespace
 
 int run_model(const Model& model, const RunOptions& opt) {
+    const Communicator& comm = Communicator::world();
     const int threads = use_threads(opt.threads);
     const bool relaxation = model.control.mode == SolutionMode::Relaxation;
     if (relaxation && (opt.resume || opt.restart_every > 0 || opt.stop_at_step > 0))
         throw InputError(input_error_text(
             model.source_file, 0, "control.mode",
             "restart files (--restart-every, --resume) are for dynamic runs, not for relaxation"));
-    if (opt.resume)
-        prepare_resume_directory(opt.output_dir, model.source_file, opt.overwrite);
-    else
-        prepare_run_directory(opt.output_dir, model.source_file, opt.overwrite);
-    LogFile log(opt.output_dir / "log.txt", opt.echo);
+    if (comm.distributed()) check_distributable(model, comm.size());
+    // Rank 0 writes every result file; the others learn whether its folder is ready.
+    std::exception_ptr folder_error;
+    if (comm.root()) {
+        try {
+            if (opt.resume)
+                prepare_resume_directory(opt.output_dir, model.source_file, opt.overwrite);
+            else
+                prepare_run_directory(opt.output_dir, model.source_file, opt.overwrite);
+        } catch (...) {
+            folder_error = std::current_exception();
+        }
+    }
+    if (comm.max(folder_error ? 1 : 0) != 0) {
+        if (folder_error) std::rethrow_exception(folder_error);
+        return 2;  // rank 0 reports it
+    }
+    LogFile log(comm.root() ? opt.output_dir / "log.txt" : std::filesystem::path("/dev/null"),
+                opt.echo && comm.root());
     log.print("fpmshell {} — {}", FPMSHELL_VERSION, model.title);
     log.print("model {}, {} particles, {} elements, {} thread(s)", model.source_file,
               model.n_particles(), model.n_elements(), threads);
+    if (comm.distributed())
+        log.print("distributed over {} ranks, {} thread(s) each", comm.size(), threads);
 
     ExplicitSolver solver(model);
     report_mass_scaling(model, solver.added_mass(), "at set-up", log);
     OutputSchedule schedule(model);
     const std::filesystem::path restart_path = opt.output_dir / k_restart_file;
     ObserverList out;
-    add_result_files(out, model, opt, log, schedule);
+    const RestartFiles* restart =
+        comm.root() ? add_result_files(out, model, opt, log, schedule) : nullptr;
 
     double wall_before = 0;  // wall seconds of the earlier segments of a resumed run
     if (opt.resume) {
-        wall_before = RestartFiles::resume(restart_path, solver, schedule, out);
+        wall_before = comm.root() ? RestartFiles::resume(restart_path, solver, schedule, out)
+                                  : RestartFiles::resume_solver(restart_path, solver, schedule);
         log.print("resumed from {} at t = {:.6g}, step {}", restart_path.string(), solver.time(),
                   solver.steps());
     }
@@ -247,7 +306,7 @@ int run_model(const Model& model, const RunOptions& opt) {
         out.frame(solver, 0.0, solver.state().x);
     }
 
-    Run run{model, opt, solver, schedule, out, log, WallClock(wall_before)};
+    Run run{model, opt, solver, schedule, out, log, WallClock(wall_before), restart};
     std::vector<Vec3> last_good;  // relaxation: the positions before the failed load level
     RunEnd end;
     try {
@@ -256,6 +315,7 @@ int run_model(const Model& model, const RunOptions& opt) {
         end = run_end(1, std::string("failed: ") + failure.what());
         // The positions of a failed state that are no longer finite give way to those before
         // the failed step, which the solver keeps as x_prev, or before the load level.
+        solver.gather_to_root();
         const std::vector<Vec3>& x = solver.state().x;
         out.failure(solver, failure.what(),
                     all_finite(x) ? x
@@ -265,6 +325,7 @@ int run_model(const Model& model, const RunOptions& opt) {
     if (!relaxation) report_mass_scaling(model, solver.added_mass(), "by the end of the run", log);
     end.wall_seconds = run.clock.seconds();
     end.threads = threads;
+    end.ranks = comm.size();
     out.finish(solver, end);
     return end.exit_code;
 }

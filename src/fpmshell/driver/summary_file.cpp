@@ -126,6 +126,7 @@ void SummaryFile::finish(const ExplicitSolver& solver, const RunEnd& end) {
     j.set("element_steps_per_second",
           wall > 0 ? static_cast<double>(solver.element_steps()) / wall : 0.0);
     j.set("threads", end.threads);
+    j.set("ranks", end.ranks);
     j.set("energy_error", solver.energy().error());
     j.set("peaks", peaks_json(model_, history_));
     j.set("plastic_strain", plastic_strain_json(model_, solver));

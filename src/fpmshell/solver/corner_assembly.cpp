@@ -82,12 +82,20 @@ std::size_t CornerAssembly::slot_offset(std::size_t e, std::size_t k) const {
 
 const SlotGatherPlan& CornerAssembly::plan(int ranges) {
     if (plan_.ranges() != ranges)
-        plan_ = make_slot_gather_plan(blocks_.n_blocks(), ranges, csr_begin_, csr_slot_);
+        plan_ =
+            make_slot_gather_plan(blocks_.n_blocks(), ranges, csr_begin_, csr_slot_, gather_mode_);
     return plan_;
 }
 
 void CornerAssembly::set_ranges(const std::vector<Index>& range_begin) {
-    plan_ = make_slot_gather_plan(range_begin, csr_begin_, csr_slot_);
+    plan_ = make_slot_gather_plan(range_begin, csr_begin_, csr_slot_, gather_mode_);
+}
+
+void CornerAssembly::set_gather_modes(std::vector<GatherMode> mode) {
+    gather_mode_ = std::move(mode);
+    plan_ = make_slot_gather_plan(
+        plan_.range_begin.empty() ? equal_block_ranges(blocks_.n_blocks(), 1) : plan_.range_begin,
+        csr_begin_, csr_slot_, gather_mode_);
 }
 
 }  // namespace fpmshell

@@ -5,6 +5,7 @@
 // (slot_gather_plan.hpp).
 #pragma once
 
+#include <span>
 #include <vector>
 
 #include "fpmshell/core/simd.hpp"
@@ -64,6 +65,8 @@ public:
     const SlotGatherPlan& plan(int ranges);
     /// The plan remade for the ranges of blocks that start at range_begin (slot_gather_plan.hpp).
     void set_ranges(const std::vector<Index>& range_begin);
+    /// How each particle is summed from now on (a distributed run; slot_gather_plan.hpp).
+    void set_gather_modes(std::vector<GatherMode> mode);
     /// The plan as last made.
     [[nodiscard]] const SlotGatherPlan& plan() const { return plan_; }
     /// Ring storage of range r of the plan.
@@ -75,6 +78,24 @@ public:
         Vec3 f = Vec3::Zero(), m = Vec3::Zero();
         for (Index k = csr_begin_[p]; k < csr_begin_[p + 1]; ++k) {
             const Real* slot = base + plan_.offset[static_cast<std::size_t>(k)];
+            f += Vec3(slot[0], slot[w], slot[2 * w]);
+            m += Vec3(slot[3 * w], slot[4 * w], slot[5 * w]);
+        }
+        s.f_int[p] = f;
+        s.m_int[p] = m;
+    }
+
+    /// The full-array offsets (slot_offset, component 0) of particle p's slots, in element
+    /// order (an element alone with slots across its sides: after its corners).
+    [[nodiscard]] std::span<const std::size_t> particle_slots(std::size_t p) const {
+        return {csr_slot_.data() + csr_begin_[p], csr_slot_.data() + csr_begin_[p + 1]};
+    }
+    /// gather_particle from the full slot array (every slot of p written there).
+    void gather_particle_from_slots(std::size_t p, ParticleState& s) const {
+        constexpr auto w = static_cast<std::size_t>(k_lanes);
+        Vec3 f = Vec3::Zero(), m = Vec3::Zero();
+        for (Index k = csr_begin_[p]; k < csr_begin_[p + 1]; ++k) {
+            const Real* slot = slot_loads_.data() + csr_slot_[static_cast<std::size_t>(k)];
             f += Vec3(slot[0], slot[w], slot[2 * w]);
             m += Vec3(slot[3 * w], slot[4 * w], slot[5 * w]);
         }
@@ -96,6 +117,7 @@ private:
     std::vector<std::size_t>
         csr_slot_;  ///< slot_offset of each slot, by particle, in element order
     SlotGatherPlan plan_;
+    std::vector<GatherMode> gather_mode_;  ///< per particle (empty: every one Any)
 };
 
 }  // namespace fpmshell

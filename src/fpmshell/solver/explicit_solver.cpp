@@ -2,13 +2,16 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <sstream>
 
 #include "fpmshell/core/chunked_loop.hpp"
+#include "fpmshell/core/communicator.hpp"
 #include "fpmshell/core/errors.hpp"
 #include "fpmshell/core/rotation.hpp"
 #include "fpmshell/io/restart_archive.hpp"
+#include "fpmshell/solver/unit_partition.hpp"
 
 namespace fpmshell {
 namespace {
@@ -22,6 +25,11 @@ constexpr Index k_parallel_min_particles = 2000;
 ExplicitSolver::ExplicitSolver(const Model& model)
     : model_(model), topology_(model), elements_(model, topology_) {
     const std::size_t np = model.nodes.size();
+    const Communicator& comm = Communicator::world();
+    decomposition_ =
+        decompose(model, topology_, elements_.assembly(),
+                  element_costs(model, elements_.assembly().blocks()), comm.rank(), comm.size());
+    elements_.set_decomposition(&decomposition_);
     s_.resize(np);
     s_.x0 = model.nodes;
     s_.x = model.nodes;
@@ -78,6 +86,8 @@ ExplicitSolver::ExplicitSolver(const Model& model)
                                  0.5 * s_.inertia[p] * s_.omega[p].squaredNorm();
     }
     loads_ = std::make_unique<ExternalLoads>(model, topology_);
+    if (decomposition_.distributed())
+        loads_->set_subset(&decomposition_.near_elements, &decomposition_.held_particles);
     parallel_particles_ = static_cast<Index>(np) >= k_parallel_min_particles;
     // Rigid bodies and contact (theory.md §8).
     bodies_ = RigidBodyState::from_model(model);
@@ -139,6 +149,126 @@ void ExplicitSolver::cycle(const CyclePolicy& policy, Real load_time, Real dt_ca
     }
     book_energies(particles);    // 8 §6.8
     finish_step(dt, particles);  // 9
+    if (decomposition_.distributed()) exchange_positions();
+}
+
+void ExplicitSolver::exchange_positions() {
+    const DomainDecomposition& d = decomposition_;
+    const std::size_t n_peers = d.position_peers.size();
+    position_send_.resize(n_peers);
+    position_recv_.resize(n_peers);
+    for (std::size_t k = 0; k < n_peers; ++k) {
+        std::vector<Real>& out = position_send_[k];
+        out.resize(3 * d.position_send[k].size());
+        for (std::size_t i = 0; i < d.position_send[k].size(); ++i) {
+            const Vec3& x = s_.x[static_cast<std::size_t>(d.position_send[k][i])];
+            for (int c = 0; c < 3; ++c) out[3 * i + static_cast<std::size_t>(c)] = x[c];
+        }
+        position_recv_[k].resize(3 * d.position_recv[k].size());
+    }
+    Communicator::world().exchange(d.position_peers, position_send_, position_recv_);
+    for (std::size_t k = 0; k < n_peers; ++k)
+        for (std::size_t i = 0; i < d.position_recv[k].size(); ++i) {
+            Vec3& x = s_.x[static_cast<std::size_t>(d.position_recv[k][i])];
+            for (int c = 0; c < 3; ++c)
+                x[c] = position_recv_[k][3 * i + static_cast<std::size_t>(c)];
+        }
+}
+
+namespace {
+template <class T>
+void append(std::vector<char>& bytes, const T& v) {
+    const char* p = reinterpret_cast<const char*>(&v);
+    bytes.insert(bytes.end(), p, p + sizeof(T));
+}
+template <class T>
+void read(const std::vector<char>& bytes, std::size_t& at, T& v) {
+    std::memcpy(static_cast<void*>(&v), bytes.data() + at, sizeof(T));
+    at += sizeof(T);
+}
+/// The arrays of a particle's state that the history rows read (driver/history_sampler.cpp).
+template <class F>
+void for_each_history_field(ParticleState& s, std::size_t p, F&& f) {
+    for (std::vector<Vec3>* a :
+         {&s.x0, &s.x, &s.v, &s.v_prev, &s.f_ext, &s.reaction, &s.reaction_moment})
+        f((*a)[p]);
+    f(s.rotation[p]);
+}
+/// Every array of a particle's state, in one order for writing and reading.
+template <class F>
+void for_each_particle_field(ParticleState& s, std::size_t p, F&& f) {
+    for (std::vector<Vec3>* a : {&s.x0,
+                                 &s.x,
+                                 &s.x_prev,
+                                 &s.v,
+                                 &s.v_prev,
+                                 &s.omega,
+                                 &s.omega_prev,
+                                 &s.dtheta,
+                                 &s.normal,
+                                 &s.drill_axis,
+                                 &s.f_int,
+                                 &s.m_int,
+                                 &s.f_ext,
+                                 &s.m_ext,
+                                 &s.f_ext_prev,
+                                 &s.m_ext_prev,
+                                 &s.reaction,
+                                 &s.reaction_moment,
+                                 &s.reaction_prev,
+                                 &s.reaction_moment_prev,
+                                 &s.f_contact,
+                                 &s.f_contact_prev})
+        f((*a)[p]);
+    f(s.rotation[p]);
+    f(s.mass[p]);
+    f(s.inertia[p]);
+    f(s.full_rotation[p]);
+}
+}  // namespace
+
+void ExplicitSolver::gather_to_root(Gather what) {
+    const Communicator& comm = Communicator::world();
+    if (!decomposition_.distributed()) return;
+    const DomainDecomposition& d = decomposition_;
+    const bool all = what == Gather::Everything;
+    if (!all && history_particle_.empty()) {
+        history_particle_.assign(s_.size(), 0);
+        for (const HistoryRequest& h : model_.output.histories)
+            for (const Index p : h.nodes) history_particle_[static_cast<std::size_t>(p)] = 1;
+    }
+    std::vector<char>& bytes = gather_bytes_;
+    bytes.clear();
+    for (const Index a : d.own_atoms)
+        for (Index k = d.atom_particle_begin[static_cast<std::size_t>(a)];
+             k < d.atom_particle_begin[static_cast<std::size_t>(a) + 1]; ++k) {
+            const auto p = static_cast<std::size_t>(d.atom_particles[static_cast<std::size_t>(k)]);
+            if (!all && !history_particle_[p]) continue;
+            append(bytes, static_cast<Index>(p));
+            if (all)
+                for_each_particle_field(s_, p, [&](auto& v) { append(bytes, v); });
+            else
+                for_each_history_field(s_, p, [&](auto& v) { append(bytes, v); });
+        }
+    const std::vector<std::vector<char>> particles = comm.gather(bytes);
+    const std::vector<std::vector<char>> elements =
+        all ? comm.gather(elements_.pack_state(true)) : std::vector<std::vector<char>>{};
+    if (!comm.root()) return;
+    for (std::size_t r = 1; r < particles.size(); ++r) {
+        const std::vector<char>& b = particles[r];
+        std::size_t at = 0;
+        while (at < b.size()) {
+            Index p = 0;
+            read(b, at, p);
+            if (all)
+                for_each_particle_field(s_, static_cast<std::size_t>(p),
+                                        [&](auto& v) { read(b, at, v); });
+            else
+                for_each_history_field(s_, static_cast<std::size_t>(p),
+                                       [&](auto& v) { read(b, at, v); });
+        }
+        if (all) elements_.unpack_state(elements[r]);
+    }
 }
 
 ShellElements::StepTotals ExplicitSolver::compute_internal_loads(const CyclePolicy& policy) {
@@ -147,6 +277,7 @@ ShellElements::StepTotals ExplicitSolver::compute_internal_loads(const CyclePoli
     const ShellElements::StepTotals tot =
         elements_.compute(s_, viscous_rate, policy.rate_effects ? dt_half_ : 0.0);
     element_steps_ += elements_.size();
+    min_dt_element_ = tot.min_dt_element;
     if (tot.failed_element >= 0) report_failed_element(tot.failed_element);
     if (tot.mass_scaled > 0) add_scaled_mass();
     energy_.internal += tot.strain_work;  // includes the plastic dissipation, like LS-DYNA's
@@ -309,6 +440,18 @@ void ExplicitSolver::report_failed_element(Index e) const {
 
 void ExplicitSolver::report_non_finite_state() const {
     const std::size_t np = s_.size();
+    if (decomposition_.distributed()) {  // the first owned one over the ranks
+        Index first = -1;
+        for (std::size_t p = 0; p < np && first < 0; ++p)
+            if (decomposition_.particle_owner[p] == decomposition_.rank &&
+                !finite_state(p, s_.x[p]))
+                first = static_cast<Index>(p);
+        first = Communicator::world().min_loc(first >= 0 ? 0.0 : 1.0, first).second;
+        std::ostringstream msg;
+        msg << "the solution became NaN or infinite at step " << steps_ << " (t = " << time_
+            << ") at particle " << first + 1;
+        throw RunFailure(msg.str());
+    }
     for (std::size_t p = 0; p < np; ++p) {
         if (!finite_state(p, s_.x[p])) {
             std::ostringstream msg;
@@ -325,9 +468,11 @@ void ExplicitSolver::check_energy_balance() const {
     if (steps_ <= 10 || std::abs(err) <= model_.control.energy_error_limit) return;
     // Where: the particle with the largest kinetic energy (an instability grows fastest there)
     // and the element that sets the stable step.
+    const bool distributed = decomposition_.distributed();
     std::size_t hot = 0;
     Real hot_ke = -1;
     for (std::size_t p = 0; p < s_.size(); ++p) {
+        if (distributed && decomposition_.particle_owner[p] != decomposition_.rank) continue;
         const Real ke =
             s_.mass[p] * s_.v[p].squaredNorm() + s_.inertia[p] * s_.omega[p].squaredNorm();
         if (ke > hot_ke) {
@@ -336,7 +481,13 @@ void ExplicitSolver::check_energy_balance() const {
         }
     }
     Index critical = -1;
-    (void)elements_.min_critical_dt(s_.x, &critical);
+    if (distributed) {  // over the ranks: the largest kinetic energy, the last step's element
+        hot = static_cast<std::size_t>(
+            Communicator::world().min_loc(-hot_ke, static_cast<Index>(hot)).second);
+        critical = min_dt_element_;
+    } else {
+        (void)elements_.min_critical_dt(s_.x, &critical);
+    }
     std::ostringstream msg;
     msg << "the energy balance error reached " << err * 100 << " % at step " << steps_
         << " (t = " << time_ << "), beyond the limit of " << model_.control.energy_error_limit * 100

@@ -4,6 +4,7 @@
 // runs and for dynamic relaxation (control.mode: relaxation, §6.9), which runs the same cycle.
 #pragma once
 
+#include <array>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -15,6 +16,7 @@
 #include "fpmshell/model/model.hpp"
 #include "fpmshell/solver/boundary_conditions.hpp"
 #include "fpmshell/solver/cycle_policy.hpp"
+#include "fpmshell/solver/domain_decomposition.hpp"
 #include "fpmshell/solver/energy_balance.hpp"
 #include "fpmshell/solver/external_loads.hpp"
 #include "fpmshell/solver/mass_scaling.hpp"
@@ -69,6 +71,17 @@ public:
     [[nodiscard]] const ContactStatistics* contact_statistics() const {
         return contact_ ? &contact_->statistics() : nullptr;
     }
+
+    /// The ranks of a distributed run (core/communicator.hpp) and this one's share.
+    [[nodiscard]] const DomainDecomposition& decomposition() const { return decomposition_; }
+    /// What gather_to_root brings to rank 0: what the history rows read (the history
+    /// particles' positions, velocities, loads, reactions and rotations), or the whole state
+    /// (frames, restart files, the end of the run).
+    enum class Gather { Histories, Everything };
+    /// A distributed run: every rank sends the state of the particles it owns (and of the
+    /// elements it computes) to rank 0, which then holds it for the result and restart files
+    /// it writes. Collective; nothing to do on one rank.
+    void gather_to_root(Gather what = Gather::Everything);
 
     /// The whole state of a dynamic run at t_n, for a restart file (io/restart_archive.hpp):
     /// a solver built from the same model and loaded continues bitwise like this one.
@@ -147,6 +160,13 @@ private:
     [[nodiscard]] bool finite_state(std::size_t p, const Vec3& position) const {
         return position.allFinite() && s_.omega[p].allFinite() && s_.f_int[p].allFinite();
     }
+    /// Sums of a sweep over the particles (particle_update.cpp): body(p, sums) on every held
+    /// particle, the sums of the owned ones added atom by atom, exactly, over the ranks.
+    template <int N, class Body>
+    std::array<Real, N> atom_sums(std::vector<std::array<Real, N>>& scratch, Body&& body);
+    /// A distributed run: the positions x^{n+1} of the particles around the held ones that
+    /// other ranks hold (DomainDecomposition).
+    void exchange_positions();
     /// Throws RunFailure naming the first particle whose state is not finite.
     void report_non_finite_state() const;
     /// Throws RunFailure naming the failed element.
@@ -160,6 +180,10 @@ private:
     const Model& model_;
     MeshTopology topology_;
     ShellElements elements_;
+    DomainDecomposition decomposition_;  ///< this rank's share (all of it on one rank)
+    std::vector<std::vector<Real>> position_send_, position_recv_;  ///< exchange buffers
+    std::vector<std::uint8_t> history_particle_;  ///< per particle: in a history's node set
+    std::vector<char> gather_bytes_;              ///< gather_to_root's buffer
     AddedMass added_mass_;
     ParticleState s_;
     EnergyBalance energy_;
@@ -184,6 +208,7 @@ private:
     bool restart_ = false;  ///< next cycle restarts from rest (kinetic damping)
     long element_steps_ = 0;
     Real residual2_ = 0, reference2_ = 0;  ///< relaxation residual of the last cycle
+    Index min_dt_element_ = -1;            ///< the element of the last step's smallest step
 };
 
 }  // namespace fpmshell

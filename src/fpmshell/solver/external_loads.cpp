@@ -41,8 +41,10 @@ void ExternalLoads::update_normals_and_loads(ParticleState& s, const BoundaryCon
     // §1.3 area-weighted normal, recomputed from the current positions: the cross product of
     // every triangle, then each particle sums those of its triangles in element order (the
     // order of a serial scatter, without its write conflicts).
-    const Index ne = static_cast<Index>(model_.triangles.size());
-    parallel_for_each(ne, parallel, [&](Index e) {
+    const Index ne =
+        near_ ? static_cast<Index>(near_->size()) : static_cast<Index>(model_.triangles.size());
+    parallel_for_each(ne, parallel, [&](Index i) {
+        const Index e = near_ ? (*near_)[static_cast<std::size_t>(i)] : i;
         const auto& tri = model_.triangles[static_cast<std::size_t>(e)];
         element_cross_[static_cast<std::size_t>(e)] =
             (s.x[static_cast<std::size_t>(tri[1])] - s.x[static_cast<std::size_t>(tri[0])])
@@ -59,7 +61,10 @@ void ExternalLoads::update_normals_and_loads(ParticleState& s, const BoundaryCon
     std::swap(s.f_ext, s.f_ext_prev);
     if (has_moment_loads_) std::swap(s.m_ext, s.m_ext_prev);
     const Real fused_scale = fused_pressure_ ? pressure_scale(model_.loads[0]) : 0.0;
-    parallel_for_each(static_cast<Index>(s.size()), parallel, [&](Index ip) {
+    const Index n_particles =
+        held_ ? static_cast<Index>(held_->size()) : static_cast<Index>(s.size());
+    parallel_for_each(n_particles, parallel, [&](Index i) {
+        const Index ip = held_ ? (*held_)[static_cast<std::size_t>(i)] : i;
         const std::size_t p = static_cast<std::size_t>(ip);
         Vec3 sum = Vec3::Zero(), f = Vec3::Zero();
         for (const Index e : topology_.elements_of(ip)) {

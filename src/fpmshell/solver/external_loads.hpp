@@ -26,7 +26,12 @@ public:
     /// The tangent-plane normals and drill axes of the current positions s.x (§1.3, eq. 2.6c)
     /// and the external loads at time t into s.f_ext, s.m_ext; those of the previous call move
     /// to s.f_ext_prev, s.m_ext_prev (for the work of the step). parallel: particle loops in
-    /// parallel (bitwise the same either way).
+    /// parallel (bitwise the same either way). A distributed run (`near`: the triangles
+    /// around the held particles, `held`: those particles) computes only those.
+    void set_subset(const std::vector<Index>* near, const std::vector<Index>* held) {
+        near_ = near;
+        held_ = held;
+    }
     void update_normals_and_loads(ParticleState& s, const BoundaryConditions& bc, Real t,
                                   bool parallel);
 
@@ -41,7 +46,9 @@ private:
     std::vector<PressureGather> pressure_gather_;  ///< per load (empty unless a pressure)
     bool fused_pressure_ =
         false;  ///< load 0: a pressure on every triangle, summed with the normals
-    std::vector<Vec3> element_cross_;  ///< scratch: (x2 - x1) x (x3 - x1) per triangle
+    std::vector<Vec3> element_cross_;           ///< scratch: (x2 - x1) x (x3 - x1) per triangle
+    const std::vector<Index>* near_ = nullptr;  ///< set_subset (null: every triangle)
+    const std::vector<Index>* held_ = nullptr;  ///< set_subset (null: every particle)
 };
 
 }  // namespace fpmshell

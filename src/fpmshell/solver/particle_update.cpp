@@ -1,10 +1,11 @@
 // The sweeps of the cycle over the particles (theory.md §6.6-§6.8): the central difference for
 // translations and tangent-plane rotations with the constraints and their reactions, and the
-// energies at t_n with the new positions x^{n+1}. Every particle on its own; sums in fixed
-// chunks (core/chunked_loop.hpp), so that they do not depend on the thread count.
+// energies at t_n with the new positions x^{n+1}. Every particle on its own; sums atom by atom
+// (atom_sums), so that they depend neither on the thread count nor on the ranks.
 #include <algorithm>
 
-#include "fpmshell/core/chunked_loop.hpp"
+#include "fpmshell/core/communicator.hpp"
+#include "fpmshell/core/exact_sum.hpp"
 #include "fpmshell/core/rotation.hpp"
 #include "fpmshell/solver/explicit_solver.hpp"
 
@@ -86,19 +87,54 @@ inline void ExplicitSolver::advance_particle(std::size_t p, const StepLengths& d
     if (!finite_state(p, s_.x_prev[p])) energy[4] += 1;
 }
 
+// The sums of a sweep atom by atom (solver/domain_decomposition.hpp): each atom sums its
+// particles in their order, the atoms' sums are added exactly and, distributed, over the ranks:
+// the same bits for any number of threads and ranks. The particles held here that another rank
+// owns are updated too (their sums are that rank's).
+template <int N, class Body>
+std::array<Real, N> ExplicitSolver::atom_sums(std::vector<std::array<Real, N>>& scratch,
+                                              Body&& body) {
+    const DomainDecomposition& d = decomposition_;
+    const auto n_atoms = static_cast<Index>(d.own_atoms.size());
+    const auto n_shared = static_cast<Index>(d.held_not_owned.size());
+    scratch.resize(static_cast<std::size_t>(n_atoms));
+    [[maybe_unused]] const bool parallel = parallel_particles_;
+#pragma omp parallel if (parallel)
+    {
+#pragma omp for schedule(static) nowait
+        for (Index i = 0; i < n_atoms; ++i) {
+            const auto a = static_cast<std::size_t>(d.own_atoms[static_cast<std::size_t>(i)]);
+            std::array<Real, N> acc{};
+            for (Index k = d.atom_particle_begin[a]; k < d.atom_particle_begin[a + 1]; ++k)
+                body(d.atom_particles[static_cast<std::size_t>(k)], acc);
+            scratch[static_cast<std::size_t>(i)] = acc;
+        }
+#pragma omp for schedule(static)
+        for (Index i = 0; i < n_shared; ++i) {
+            std::array<Real, N> ignored{};
+            body(d.held_not_owned[static_cast<std::size_t>(i)], ignored);
+        }
+    }
+    std::array<ExactSum, N> exact;
+    for (const std::array<Real, N>& part : scratch)
+        for (std::size_t k = 0; k < exact.size(); ++k) exact[k].add(part[k]);
+    if (d.distributed()) Communicator::world().sum(exact);
+    std::array<Real, N> total{};
+    for (std::size_t k = 0; k < total.size(); ++k) total[k] = exact[k].value();
+    return total;
+}
+
 ExplicitSolver::ParticleSums ExplicitSolver::update_velocities_and_advance_particles(
     const CyclePolicy& policy, const StepLengths& dt) {
     // v^{n-1/2} and w^{n-1/2} become the previous half-step values by exchanging the arrays
     // (every particle's new value is written below).
     std::swap(s_.v, s_.v_prev);
     std::swap(s_.omega, s_.omega_prev);
-    const std::array<Real, 7> sums =
-        chunked_sum<7>(static_cast<Index>(s_.size()), parallel_particles_, sums7_,
-                       [&](Index ip, std::array<Real, 7>& acc) {
-                           const std::size_t p = static_cast<std::size_t>(ip);
-                           update_particle_velocity(p, policy, dt, acc.data() + 5);
-                           advance_particle(p, dt, acc.data());
-                       });
+    const std::array<Real, 7> sums = atom_sums<7>(sums7_, [&](Index ip, std::array<Real, 7>& acc) {
+        const std::size_t p = static_cast<std::size_t>(ip);
+        update_particle_velocity(p, policy, dt, acc.data() + 5);
+        advance_particle(p, dt, acc.data());
+    });
     return {sums[0], sums[1], sums[2], sums[3], sums[4], sums[5], sums[6]};
 }
 
@@ -106,9 +142,8 @@ ExplicitSolver::ParticleSums ExplicitSolver::update_velocities(const CyclePolicy
                                                                const StepLengths& dt) {
     std::swap(s_.v, s_.v_prev);
     std::swap(s_.omega, s_.omega_prev);
-    const std::array<Real, 2> residual = chunked_sum<2>(
-        static_cast<Index>(s_.size()), parallel_particles_, sums2_,
-        [&](Index ip, std::array<Real, 2>& acc) {
+    const std::array<Real, 2> residual =
+        atom_sums<2>(sums2_, [&](Index ip, std::array<Real, 2>& acc) {
             update_particle_velocity(static_cast<std::size_t>(ip), policy, dt, acc.data());
         });
     ParticleSums sums;
@@ -119,10 +154,9 @@ ExplicitSolver::ParticleSums ExplicitSolver::update_velocities(const CyclePolicy
 
 void ExplicitSolver::advance_particles(const StepLengths& dt, ParticleSums& sums) {
     const std::array<Real, 5> energy =
-        chunked_sum<5>(static_cast<Index>(s_.size()), parallel_particles_, sums5_,
-                       [&](Index ip, std::array<Real, 5>& acc) {
-                           advance_particle(static_cast<std::size_t>(ip), dt, acc.data());
-                       });
+        atom_sums<5>(sums5_, [&](Index ip, std::array<Real, 5>& acc) {
+            advance_particle(static_cast<std::size_t>(ip), dt, acc.data());
+        });
     sums.kinetic = energy[0];
     sums.external_work = energy[1];
     sums.contact_work = energy[2];

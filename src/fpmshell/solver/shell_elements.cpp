@@ -3,10 +3,14 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <optional>
+#include <tuple>
 
 #include "fpmshell/core/chunked_loop.hpp"
+#include "fpmshell/core/communicator.hpp"
+#include "fpmshell/core/exact_sum.hpp"
 #include "fpmshell/elements/cst_membrane.hpp"
 #include "fpmshell/elements/membrane_smoothing.hpp"
 #include "fpmshell/io/restart_archive.hpp"
@@ -422,8 +426,11 @@ ShellElements::StepTotals ShellElements::compute(ParticleState& s, Real viscous_
     // last block is done where the plan allows (from the ring, still in the cache), the others
     // after the loop (slot_gather_plan.hpp).
     const ElementBlocks& blocks = assembly_.blocks();
-    const Index n_blocks = blocks.n_blocks();
     const Index n_scalar = blocks.n_alone();
+    // a distributed run: this rank's units only (DomainDecomposition)
+    const bool distributed = decomposition_ && decomposition_->distributed();
+    const std::uint8_t* own = distributed ? decomposition_->own_unit.data() : nullptr;
+    const Index n_blocks = blocks.n_blocks();
     // (made at construction; remade only if the thread count has changed since)
     const SlotGatherPlan& plan = assembly_.plan(gather_ranges());
     constexpr Index tile = SlotGatherPlan::k_tile_blocks,
@@ -443,11 +450,12 @@ ShellElements::StepTotals ShellElements::compute(ParticleState& s, Real viscous_
                 const Index from = first + (t - plan.range_first_tile[ur]) * tile;
                 const Clock::time_point start = balance ? Clock::now() : Clock::time_point{};
                 for (Index b = from; b < std::min(end, from + tile); ++b)
-                    compute_block(b, s, viscous_rate, dt,
-                                  ring
-                                      ? ring + static_cast<std::size_t>((b - first) % ring_blocks) *
-                                                   SlotGatherPlan::k_block_reals
-                                      : nullptr);
+                    if (!own || own[b])
+                        compute_block(
+                            b, s, viscous_rate, dt,
+                            ring ? ring + static_cast<std::size_t>((b - first) % ring_blocks) *
+                                              SlotGatherPlan::k_block_reals
+                                 : nullptr);
                 for (Index k = plan.ready_begin[static_cast<std::size_t>(t)];
                      k < plan.ready_begin[static_cast<std::size_t>(t) + 1]; ++k)
                     assembly_.gather_particle(
@@ -459,42 +467,163 @@ ShellElements::StepTotals ShellElements::compute(ParticleState& s, Real viscous_
         }
 #pragma omp for schedule(static)
         for (Index i = 0; i < n_scalar; ++i)
-            alone_totals_[static_cast<std::size_t>(i)] = compute_element(
-                blocks.alone_elements[static_cast<std::size_t>(i)], s, viscous_rate, dt);
-            // (the barrier of the loop above: every slot is written)
-#pragma omp for schedule(static)
-        for (Index k = 0; k < static_cast<Index>(plan.after.size()); ++k)
-            assembly_.gather_particle(
-                static_cast<std::size_t>(plan.after[static_cast<std::size_t>(k)]),
-                assembly_.slots(), s);
+            if (!own || own[n_blocks + i])
+                alone_totals_[static_cast<std::size_t>(i)] = compute_element(
+                    blocks.alone_elements[static_cast<std::size_t>(i)], s, viscous_rate, dt);
     }
+    // every slot is written; in a distributed run, those of the shared particles from the
+    // other ranks too (they are summed after the loop, from the full array)
+    if (distributed) exchange_slots();
+#pragma omp parallel for schedule(static) if (parallel)
+    for (Index k = 0; k < static_cast<Index>(plan.after.size()); ++k)
+        assembly_.gather_particle(static_cast<std::size_t>(plan.after[static_cast<std::size_t>(k)]),
+                                  assembly_.slots(), s);
     if (balance)
         if (std::optional<std::vector<Index>> ranges = balancer_.next_ranges(plan.range_begin))
             assembly_.set_ranges(*ranges);  // (plan, a reference to the old one, is not read again)
-    // Totals over the blocks, then the elements computed alone, in fixed chunks of them
-    // (core/chunked_loop.hpp): the same for any thread count.
-    const Index n_units = n_blocks + n_scalar;
-    const Index n_chunks = (n_units + k_chunk_size - 1) / k_chunk_size;
-    chunk_totals_.resize(static_cast<std::size_t>(n_chunks));
-#pragma omp parallel for schedule(static) if (parallel)
-    for (Index c = 0; c < n_chunks; ++c) {
+    return step_totals();
+}
+
+void ShellElements::set_decomposition(const DomainDecomposition* d) {
+    decomposition_ = d;
+    if (!d || !d->distributed()) return;
+    // a shared particle sums after the loop (its other ranks' slots arrive in the full
+    // array), one this rank does not hold not at all
+    std::vector<GatherMode> mode(d->held.size(), GatherMode::Any);
+    for (std::size_t p = 0; p < mode.size(); ++p)
+        mode[p] = !d->held[p]    ? GatherMode::Skip
+                  : d->shared[p] ? GatherMode::After
+                                 : GatherMode::Any;
+    assembly_.set_gather_modes(std::move(mode));
+}
+
+void ShellElements::exchange_slots() {
+    const DomainDecomposition& d = *decomposition_;
+    constexpr auto w = static_cast<std::size_t>(k_lanes);
+    constexpr std::size_t nc = CornerAssembly::k_components;
+    const std::size_t n_peers = d.slot_peers.size();
+    slot_send_.resize(n_peers);
+    slot_recv_.resize(n_peers);
+    Real* slots = assembly_.slots();
+    for (std::size_t k = 0; k < n_peers; ++k) {
+        std::vector<Real>& out = slot_send_[k];
+        out.resize(nc * d.slot_send[k].size());
+        for (std::size_t i = 0; i < d.slot_send[k].size(); ++i)
+            for (std::size_t c = 0; c < nc; ++c) out[nc * i + c] = slots[d.slot_send[k][i] + c * w];
+        slot_recv_[k].resize(nc * d.slot_recv[k].size());
+    }
+    Communicator::world().exchange(d.slot_peers, slot_send_, slot_recv_);
+    for (std::size_t k = 0; k < n_peers; ++k)
+        for (std::size_t i = 0; i < d.slot_recv[k].size(); ++i)
+            for (std::size_t c = 0; c < nc; ++c)
+                slots[d.slot_recv[k][i] + c * w] = slot_recv_[k][nc * i + c];
+}
+
+// Totals atom by atom (DomainDecomposition: k_atom_units consecutive units, summed in unit
+// order), the atoms' works added exactly, then over the ranks: the same bits for any number
+// of threads and ranks.
+ShellElements::StepTotals ShellElements::step_totals() {
+    const Index n_blocks = assembly_.blocks().n_blocks();
+    const Index n_units = n_blocks + assembly_.blocks().n_alone();
+    const bool distributed = decomposition_ && decomposition_->distributed();
+    const Index n_atoms = distributed ? static_cast<Index>(decomposition_->own_atoms.size())
+                                      : (n_units + k_atom_units - 1) / k_atom_units;
+    ExactSum works[3];
+    ElementTotals least;  // the smallest step, the first failure, the scaled elements
+    for (Index i = 0; i < n_atoms; ++i) {
+        const Index a = distributed ? decomposition_->own_atoms[static_cast<std::size_t>(i)] : i;
+        if (a * k_atom_units >= n_units) continue;  // the atom of the particles of no element
         ElementTotals t;
-        for (Index u = c * k_chunk_size; u < std::min(n_units, (c + 1) * k_chunk_size); ++u)
+        for (Index u = a * k_atom_units; u < std::min(n_units, (a + 1) * k_atom_units); ++u)
             t.add(u < n_blocks ? block_totals_[static_cast<std::size_t>(u)]
                                : alone_totals_[static_cast<std::size_t>(u - n_blocks)]);
-        chunk_totals_[static_cast<std::size_t>(c)] = t;
+        works[0].add(t.strain_work);
+        works[1].add(t.damping_work);
+        works[2].add(t.plastic_work);
+        t.strain_work = t.damping_work = t.plastic_work = 0;
+        least.add(t);
     }
-    ElementTotals all;
-    for (const ElementTotals& t : chunk_totals_) all.add(t);
     StepTotals tot;
-    tot.strain_work = all.strain_work;
-    tot.damping_work = all.damping_work;
-    tot.plastic_work = all.plastic_work;
-    tot.min_dt = all.dt;
-    tot.min_dt_element = all.dt_element;
-    tot.failed_element = all.failed;
-    tot.mass_scaled = all.mass_scaled;
+    const Communicator& comm = Communicator::world();
+    if (distributed) {
+        comm.sum(works);
+        std::tie(least.dt, least.dt_element) = comm.min_loc(least.dt, least.dt_element);
+        least.failed = comm.min_loc(least.failed >= 0 ? 0.0 : 1.0, least.failed).second;
+        least.mass_scaled = static_cast<Index>(comm.max(least.mass_scaled));
+    }
+    tot.strain_work = works[0].value();
+    tot.damping_work = works[1].value();
+    tot.plastic_work = works[2].value();
+    tot.min_dt = least.dt;
+    tot.min_dt_element = least.dt_element;
+    tot.failed_element = least.failed;
+    tot.mass_scaled = least.mass_scaled;
     return tot;
+}
+
+namespace {
+template <class T>
+void put(std::vector<char>& bytes, const T& v) {
+    const char* p = reinterpret_cast<const char*>(&v);
+    bytes.insert(bytes.end(), p, p + sizeof(T));
+}
+template <class T>
+T take(const std::vector<char>& bytes, std::size_t& at) {
+    T v;
+    std::memcpy(static_cast<void*>(&v), bytes.data() + at, sizeof(T));
+    at += sizeof(T);
+    return v;
+}
+}  // namespace
+
+// Per element: its index, thickness, N, M, bending step ratio and length, then its points.
+std::vector<char> ShellElements::pack_state(bool own_only) const {
+    std::vector<Index> elements;
+    const ElementBlocks& blocks = assembly_.blocks();
+    if (own_only && decomposition_) {
+        for (const Index b : decomposition_->own_blocks)
+            for (Index l = 0; l < k_lanes; ++l)
+                elements.push_back(
+                    blocks.block_elements[static_cast<std::size_t>(b * k_lanes + l)]);
+        for (const Index i : decomposition_->own_alone)
+            elements.push_back(blocks.alone_elements[static_cast<std::size_t>(i)]);
+    } else {
+        for (Index e = 0; e < size(); ++e) elements.push_back(e);
+    }
+    std::vector<char> bytes;
+    auto& self = const_cast<ShellElements&>(*this);  // the step ratios have no const access
+    for (const Index e : elements) {
+        const auto ue = static_cast<std::size_t>(e);
+        put(bytes, e);
+        put(bytes, thickness_[ue]);
+        const Voigt3 n = resultant(ue, 0), m = resultant(ue, 3);
+        for (int c = 0; c < 3; ++c) put(bytes, n[c]);
+        for (int c = 0; c < 3; ++c) put(bytes, m[c]);
+        put(bytes, self.time_steps_.ratio()[ue]);
+        put(bytes, self.time_steps_.ratio_length()[ue]);
+        const ElementGroup& group = group_of(ue);
+        const GroupPlace place = place_of(ue);
+        for (std::size_t p = 0; p < group.n_points(); ++p) put(bytes, group.point_state(place, p));
+    }
+    return bytes;
+}
+
+void ShellElements::unpack_state(const std::vector<char>& bytes) {
+    std::size_t at = 0;
+    while (at < bytes.size()) {
+        const auto ue = static_cast<std::size_t>(take<Index>(bytes, at));
+        thickness_[ue] = take<Real>(bytes, at);
+        Voigt3 n, m;
+        for (int c = 0; c < 3; ++c) n[c] = take<Real>(bytes, at);
+        for (int c = 0; c < 3; ++c) m[c] = take<Real>(bytes, at);
+        set_resultants(ue, n, m);
+        time_steps_.ratio()[ue] = take<Real>(bytes, at);
+        time_steps_.ratio_length()[ue] = take<Real>(bytes, at);
+        ElementGroup& group = *groups_[static_cast<std::size_t>(section_[ue])];
+        const GroupPlace place = place_of(ue);
+        for (std::size_t p = 0; p < group.n_points(); ++p)
+            group.set_point_state(place, p, take<MaterialPoint>(bytes, at));
+    }
 }
 
 // The restart file holds every point with a history, then every stress-only point's stress,

@@ -13,6 +13,7 @@
 #include "fpmshell/model/mesh_topology.hpp"
 #include "fpmshell/model/model.hpp"
 #include "fpmshell/solver/corner_assembly.hpp"
+#include "fpmshell/solver/domain_decomposition.hpp"
 #include "fpmshell/solver/element_group.hpp"
 #include "fpmshell/solver/element_time_steps.hpp"
 #include "fpmshell/solver/particle_state.hpp"
@@ -63,6 +64,8 @@ public:
     [[nodiscard]] ElementTimeSteps& time_steps() { return time_steps_; }
 
     [[nodiscard]] Index size() const { return static_cast<Index>(tri_.size()); }
+    /// The units, slots and particle -> slot map of the element loop.
+    [[nodiscard]] const CornerAssembly& assembly() const { return assembly_; }
     /// Membrane force N and bending moment M of element e averaged over the element, in its
     /// local frame, at the end of the last step.
     [[nodiscard]] Voigt3 membrane_force(Index e) const {
@@ -84,6 +87,14 @@ public:
     /// resultants), for a restart file (io/restart_archive.hpp).
     void save(RestartWriter& out) const;
     void load(RestartReader& in);
+
+    /// A distributed run: compute only the units of `d` (null: all), receive the other ranks'
+    /// slots at the shared particles, sum only the held particles. d must outlive this.
+    void set_decomposition(const DomainDecomposition* d);
+    /// The state of the elements this rank computes (or of all), as bytes for
+    /// unpack_state on another rank (a distributed run's results on rank 0).
+    [[nodiscard]] std::vector<char> pack_state(bool own_only) const;
+    void unpack_state(const std::vector<char>& bytes);
 
 private:
     /// What the step totals need of a set of elements (a block, an element computed alone,
@@ -129,6 +140,10 @@ private:
     /// slot_gather_plan.hpp; nullptr: none) and, where the plan keeps the block or there is
     /// no ring, to the full slot array.
     void compute_block(Index b, ParticleState& s, Real viscous_rate, Real dt, Real* ring_slots);
+    /// The slots of the shared particles from and to the other ranks.
+    void exchange_slots();
+    /// The step's totals from the units' (and, distributed, over the ranks).
+    [[nodiscard]] StepTotals step_totals();
     /// The ranges of blocks the element loop runs: one per thread (1 for a model small enough
     /// to stay serial).
     [[nodiscard]] int gather_ranges() const;
@@ -151,12 +166,13 @@ private:
     std::vector<ElementTotals> block_totals_;  ///< per block
     std::vector<ElementTotals>
         alone_totals_;  ///< per element computed alone (alone_elements order)
-    std::vector<ElementTotals> chunk_totals_;  ///< scratch, per chunk of blocks and elements alone
     /// N and M of the elements of the blocks, 6 packs per block (N then M, component by
     /// component); those of the elements computed alone in membrane_force_, bending_moment_.
     std::vector<RealPack> block_resultants_;
     std::vector<Voigt3> membrane_force_,
         bending_moment_;  ///< per element computed alone (others: zero)
+    const DomainDecomposition* decomposition_ = nullptr;
+    std::vector<std::vector<Real>> slot_send_, slot_recv_;  ///< exchange_slots buffers
 };
 
 }  // namespace fpmshell

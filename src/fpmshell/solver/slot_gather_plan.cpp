@@ -15,13 +15,17 @@ std::vector<Index> equal_block_ranges(Index n_blocks, int ranges) {
 
 SlotGatherPlan make_slot_gather_plan(Index n_blocks, int ranges,
                                      const std::vector<Index>& slot_begin,
-                                     const std::vector<std::size_t>& slot_offset) {
-    return make_slot_gather_plan(equal_block_ranges(n_blocks, ranges), slot_begin, slot_offset);
+                                     const std::vector<std::size_t>& slot_offset,
+                                     const std::vector<GatherMode>& mode) {
+    return make_slot_gather_plan(equal_block_ranges(n_blocks, ranges), slot_begin, slot_offset,
+                                 mode);
 }
 
 SlotGatherPlan make_slot_gather_plan(const std::vector<Index>& range_begin,
                                      const std::vector<Index>& slot_begin,
-                                     const std::vector<std::size_t>& slot_offset) {
+                                     const std::vector<std::size_t>& slot_offset,
+                                     const std::vector<GatherMode>& mode) {
+    auto mode_of = [&](std::size_t p) { return mode.empty() ? GatherMode::Any : mode[p]; };
     constexpr auto w = static_cast<std::size_t>(k_lanes);
     constexpr std::size_t group_reals = SlotGatherPlan::k_components * w;
     constexpr Index tile = SlotGatherPlan::k_tile_blocks, ring = SlotGatherPlan::k_ring_blocks;
@@ -51,7 +55,11 @@ SlotGatherPlan make_slot_gather_plan(const std::vector<Index>& range_begin,
     // Slot group 3 b + c holds corner c of block b; groups past the blocks': elements alone.
     const std::size_t n_particles = slot_begin.size() - 1;
     std::vector<Index> ready_tile(n_particles, -1);  // -1: summed after the loop
+    std::size_t n_summed = 0;  // the particles this plan sums (all but the skipped)
     for (std::size_t p = 0; p < n_particles; ++p) {
+        if (mode_of(p) == GatherMode::Skip) continue;
+        ++n_summed;
+        if (mode_of(p) == GatherMode::After) continue;
         Index first = std::numeric_limits<Index>::max(), last = -1;
         bool alone = false;
         for (Index k = slot_begin[p]; k < slot_begin[p + 1]; ++k) {
@@ -70,7 +78,7 @@ SlotGatherPlan make_slot_gather_plan(const std::vector<Index>& range_begin,
     }
     const auto n_ready = static_cast<std::size_t>(
         std::count_if(ready_tile.begin(), ready_tile.end(), [](Index t) { return t >= 0; }));
-    const bool use_ring = n_particles > 0 && 2 * n_ready >= n_particles;
+    const bool use_ring = n_summed > 0 && 2 * n_ready >= n_summed;
     if (!use_ring) std::fill(ready_tile.begin(), ready_tile.end(), -1);
     // The ready particles by tile (in particle order within a tile), the others in order.
     plan.ready_begin.assign(static_cast<std::size_t>(n_tiles) + 1, 0);
@@ -84,6 +92,7 @@ SlotGatherPlan make_slot_gather_plan(const std::vector<Index>& range_begin,
     plan.offset = slot_offset;
     for (std::size_t p = 0; p < n_particles; ++p) {
         const Index t = ready_tile[p];
+        if (mode_of(p) == GatherMode::Skip) continue;
         if (t < 0) {
             plan.after.push_back(static_cast<Index>(p));
             for (Index k = slot_begin[p]; k < slot_begin[p + 1]; ++k) {

@@ -63,12 +63,18 @@ struct SlotGatherPlan {
 /// n_blocks (ranges + 1 entries).
 [[nodiscard]] std::vector<Index> equal_block_ranges(Index n_blocks, int ranges);
 
+/// How a particle is summed in a distributed run (DomainDecomposition): like any other, after
+/// the element loop from the full slot array (a particle shared with other ranks, whose slots
+/// arrive there), or not at all (a particle this rank does not hold).
+enum class GatherMode : std::uint8_t { Any = 0, After = 1, Skip = 2 };
+
 /// The plan for the contiguous ranges of blocks that start at range_begin (one more entry: the
 /// number of blocks), one range per thread; any ranges give the same sums. slot_begin /
-/// slot_offset: the particle -> slot map as below.
+/// slot_offset: the particle -> slot map as below. mode: per particle (empty: Any for all).
 [[nodiscard]] SlotGatherPlan make_slot_gather_plan(const std::vector<Index>& range_begin,
                                                    const std::vector<Index>& slot_begin,
-                                                   const std::vector<std::size_t>& slot_offset);
+                                                   const std::vector<std::size_t>& slot_offset,
+                                                   const std::vector<GatherMode>& mode = {});
 
 /// The plan for n_blocks blocks on `ranges` threads. slot_begin / slot_offset: the particle ->
 /// slot map into the full array, whose slot groups (k_lanes slots, 6 components each) hold
@@ -77,6 +83,7 @@ struct SlotGatherPlan {
 /// summed from it: a mesh numbered without locality would pay for both arrays.
 [[nodiscard]] SlotGatherPlan make_slot_gather_plan(Index n_blocks, int ranges,
                                                    const std::vector<Index>& slot_begin,
-                                                   const std::vector<std::size_t>& slot_offset);
+                                                   const std::vector<std::size_t>& slot_offset,
+                                                   const std::vector<GatherMode>& mode = {});
 
 }  // namespace fpmshell

@@ -130,8 +130,11 @@ std::vector<int> metis_parts(const std::vector<std::vector<Index>>& members,
 
 UnitPartition partition_units(const ElementBlocks& units,
                               const std::vector<std::array<Index, 3>>& triangles, Index n_particles,
-                              const std::vector<Real>& element_cost, int n_parts) {
+                              const std::vector<Real>& element_cost, int n_parts,
+                              Index units_per_atom) {
     if (n_parts < 1) throw std::invalid_argument("partition_units: n_parts must be >= 1");
+    if (units_per_atom < 1)
+        throw std::invalid_argument("partition_units: units_per_atom must be >= 1");
     const std::vector<std::vector<Index>> members = unit_elements(units);
     UnitPartition out;
     out.n_parts = n_parts;
@@ -139,8 +142,15 @@ UnitPartition partition_units(const ElementBlocks& units,
     // more parts than units: METIS leaves some empty, which the statistics show
     if (n_parts > 1) {
 #ifdef FPMSHELL_HAVE_METIS
-        out.unit_part =
-            metis_parts(members, triangles, n_particles, element_cost, n_parts, out.edge_cut);
+        // the atoms: units_per_atom consecutive units each, cut whole
+        const auto per_atom = static_cast<std::size_t>(units_per_atom);
+        std::vector<std::vector<Index>> atoms((members.size() + per_atom - 1) / per_atom);
+        for (std::size_t u = 0; u < members.size(); ++u)
+            atoms[u / per_atom].insert(atoms[u / per_atom].end(), members[u].begin(),
+                                       members[u].end());
+        const std::vector<int> atom_part =
+            metis_parts(atoms, triangles, n_particles, element_cost, n_parts, out.edge_cut);
+        for (std::size_t u = 0; u < members.size(); ++u) out.unit_part[u] = atom_part[u / per_atom];
 #else
         throw std::runtime_error(
             "this build has no METIS (libmetis-dev): it cannot cut a model into parts");

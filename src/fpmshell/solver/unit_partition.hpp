@@ -53,9 +53,12 @@ struct UnitPartition {
 
 /// Cuts `units` of a mesh of n_particles particles into n_parts parts (1 <= n_parts; the same
 /// input gives the same parts: METIS with a fixed seed). element_cost: per element.
+/// units_per_atom: the units are cut in atoms of that many consecutive units, kept whole (a
+/// distributed run sums its energies atom by atom, solver/domain_decomposition.hpp).
 [[nodiscard]] UnitPartition partition_units(const ElementBlocks& units,
                                             const std::vector<std::array<Index, 3>>& triangles,
                                             Index n_particles,
-                                            const std::vector<Real>& element_cost, int n_parts);
+                                            const std::vector<Real>& element_cost, int n_parts,
+                                            Index units_per_atom = 1);
 
 }  // namespace fpmshell

@@ -205,3 +205,27 @@ TEST(SlotGatherPlan, ParticlesOfElementsComputedAloneAreSummedAfterTheLoop) {
         (3 * n_blocked + 3 * (mesh.triangles.size() - n_blocked) + w - 1) / w * group_reals;
     EXPECT_EQ(replay(plan, m, full_reals), expected_sums(m));
 }
+
+TEST(SlotGatherPlan, ADistributedRunSumsItsSharedParticlesAfterAndSkipsTheOthers) {
+    // the modes a DomainDecomposition gives: every third particle skipped (another rank's),
+    // every fifth after the loop (shared), the rest as the plan finds
+    const MeshData mesh = plate(120);
+    const auto np = static_cast<std::size_t>(mesh.nodes.size());
+    const SlotMap m = slot_map(mesh.triangles, static_cast<Index>(np), 0);
+    std::vector<GatherMode> mode(np, GatherMode::Any);
+    for (std::size_t p = 0; p < np; ++p)
+        mode[p] = p % 3 == 0 ? GatherMode::Skip : p % 5 == 0 ? GatherMode::After : GatherMode::Any;
+    const SlotGatherPlan plan = make_slot_gather_plan(m.n_blocks, 2, m.begin, m.offset, mode);
+    ASSERT_TRUE(plan.use_ring());  // half of the summed particles from the ring still
+    std::vector<int> seen(np, 0);
+    for (const Index p : plan.ready) ++seen[static_cast<std::size_t>(p)];
+    for (const Index p : plan.after) ++seen[static_cast<std::size_t>(p)];
+    for (std::size_t p = 0; p < np; ++p) EXPECT_EQ(seen[p], mode[p] == GatherMode::Skip ? 0 : 1);
+    for (const Index p : plan.ready) EXPECT_EQ(mode[static_cast<std::size_t>(p)], GatherMode::Any);
+    // the sums of the particles it makes are those of a run without modes
+    const auto sums = replay(plan, m, block_reals(m)), expected = expected_sums(m);
+    for (std::size_t p = 0; p < np; ++p) {
+        if (mode[p] == GatherMode::Skip) continue;
+        EXPECT_EQ(sums[p], expected[p]) << "particle " << p;
+    }
+}

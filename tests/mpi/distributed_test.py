@@ -1,0 +1,93 @@
+#!/usr/bin/env python3
+"""Distributed runs (mpirun -np N fpmshell run): the same bytes as one process.
+
+usage: distributed_test.py FPMSHELL MPIEXEC WORK_DIR
+
+For each model, `fpmshell run --threads 1` and `MPIEXEC -np 2 fpmshell run --threads 1` (and, on
+the elastic cap, -np 3 with 2 threads each) must write byte-identical history.csv, energy.csv
+and last field frame; summary.json says how many ranks ran. A run stopped at t1 and resumed on 2
+ranks must equal the same on one process. A model with contact is refused (exit 2, one message).
+Exit status 0 when every check passes; each failure is printed.
+"""
+import json
+import os
+import shutil
+import subprocess
+import sys
+
+FPM, MPIEXEC, WORK = sys.argv[1], sys.argv[2], sys.argv[3]
+ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+failures = []
+
+
+def run(cmd, out_dir, *extra, ranks=1, threads=1):
+    args = [FPM, "run", cmd, "-o", out_dir, "--threads", str(threads), "--quiet", "--overwrite"]
+    args += list(extra)
+    if ranks > 1:
+        # --oversubscribe: more ranks than cores on a CI machine
+        args = [MPIEXEC, "-np", str(ranks), "--oversubscribe"] + args
+    return subprocess.run(args, capture_output=True, text=True, timeout=600)
+
+
+def same_files(a, b, label):
+    names = ["history.csv", "energy.csv"]
+    frames = sorted(os.listdir(os.path.join(a, "fields")))
+    if frames:
+        names.append(os.path.join("fields", frames[-1]))
+    for name in names:
+        with open(os.path.join(a, name), "rb") as fa, open(os.path.join(b, name), "rb") as fb:
+            if fa.read() != fb.read():
+                failures.append("%s: %s differs from the single-process run" % (label, name))
+
+
+def check(label, model, sets, ranks=2, threads=1):
+    serial = os.path.join(WORK, label + "-1")
+    dist = os.path.join(WORK, "%s-%dx%d" % (label, ranks, threads))
+    extra = [a for s in sets for a in ("--set", s)]
+    for d, r, t in ((serial, 1, 1), (dist, ranks, threads)):
+        shutil.rmtree(d, ignore_errors=True)
+        p = run(model, d, *extra, ranks=r, threads=t)
+        if p.returncode != 0:
+            failures.append("%s: %d ranks exited %d: %s" % (label, r, p.returncode,
+                                                            (p.stderr or p.stdout)[-500:]))
+            return
+    same_files(serial, dist, "%s on %d ranks x %d threads" % (label, ranks, threads))
+    with open(os.path.join(dist, "summary.json")) as f:
+        if json.load(f).get("ranks") != ranks:
+            failures.append("%s: summary.json does not say %d ranks" % (label, ranks))
+
+
+os.makedirs(WORK, exist_ok=True)
+cap = os.path.join(ROOT, "examples/spherical_cap_elastic/model.yaml")
+plastic_cap = os.path.join(ROOT, "validation/spherical_cap_plastic/model.yaml")
+panel = os.path.join(ROOT, "examples/cylindrical_panel_impulse/model.yaml")
+plate = os.path.join(ROOT, "bench/whole_run/plate_elastic.yaml")
+check("cap", cap, ["control.end_time=1e-4"])
+check("cap", cap, ["control.end_time=5e-5"], ranks=3, threads=2)
+check("plastic_cap", plastic_cap, ["control.end_time=1e-4"])
+check("plastic_panel", panel, ["control.end_time=5e-5"])
+check("plate", plate, ["mesh.nx=100", "mesh.ny=100", "control.end_time=3e-5"])
+
+# Stopped at t1 (its restart file) and resumed to t2 on 2 ranks: as on one process.
+for ranks in (1, 2):
+    d = os.path.join(WORK, "resume-%d" % ranks)
+    shutil.rmtree(d, ignore_errors=True)
+    first = run(cap, d, "--set", "control.end_time=4e-5", "--restart-every", "1000", ranks=ranks)
+    second = run(cap, d, "--set", "control.end_time=8e-5", "--resume", ranks=ranks)
+    if first.returncode or second.returncode:
+        failures.append("resume on %d ranks exited %d, %d: %s" % (
+            ranks, first.returncode, second.returncode, (second.stderr or first.stderr)[-500:]))
+if not failures:
+    same_files(os.path.join(WORK, "resume-1"), os.path.join(WORK, "resume-2"), "resumed run")
+
+# What is not distributed yet is refused before the run, with one message naming the key.
+tube = os.path.join(ROOT, "examples/square_tube/model.yaml")
+p = run(tube, os.path.join(WORK, "tube"), "--set", "control.end_time=1e-5", ranks=2)
+if p.returncode != 2 or p.stderr.count("error:") != 1 or "contact" not in p.stderr:
+    failures.append("the tube with contact on 2 ranks: exit %d, stderr %r (expected exit 2 and one "
+                    "message naming contact)" % (p.returncode, p.stderr[-400:]))
+
+for f in failures:
+    print("FAIL:", f)
+print("%d failure(s)" % len(failures))
+sys.exit(1 if failures else 0)
