@@ -6,7 +6,8 @@ usage: distributed_test.py FPMSHELL MPIEXEC WORK_DIR
 For each model, `fpmshell run --threads 1` and `MPIEXEC -np 2 fpmshell run --threads 1` (and, on
 the elastic cap, -np 3 with 2 threads each) must write byte-identical history.csv, energy.csv
 and last field frame; summary.json says how many ranks ran. A run stopped at t1 and resumed on 2
-ranks must equal the same on one process. A model with contact is refused (exit 2, one message).
+ranks must equal the same on one process; so must the tube with contact, with and without mass
+scaling. A relaxation is refused (exit 2, one message).
 Exit status 0 when every check passes; each failure is printed.
 """
 import json
@@ -80,12 +81,24 @@ for ranks in (1, 2):
 if not failures:
     same_files(os.path.join(WORK, "resume-1"), os.path.join(WORK, "resume-2"), "resumed run")
 
-# What is not distributed yet is refused before the run, with one message naming the key.
+# Contact (self and rigid) computed whole on every rank: the quick tube struck by its mass, and
+# the same with mass scaling to 6e-7 s (every element scaled at set-up, some more during the run).
 tube = os.path.join(ROOT, "examples/square_tube/model.yaml")
-p = run(tube, os.path.join(WORK, "tube"), "--set", "control.end_time=1e-5", ranks=2)
-if p.returncode != 2 or p.stderr.count("error:") != 1 or "contact" not in p.stderr:
-    failures.append("the tube with contact on 2 ranks: exit %d, stderr %r (expected exit 2 and one "
-                    "message naming contact)" % (p.returncode, p.stderr[-400:]))
+quick = ["mesh.divisions_width=15", "mesh.divisions_length=64"]
+check("tube", tube, quick + ["control.end_time=1e-3"])
+with open(tube) as f:
+    scaled = f.read().replace("\ncontrol:\n", "\ncontrol:\n  mass_scaling: {time_step: 6.0e-7}\n", 1)
+scaled_tube = os.path.join(WORK, "tube_mass_scaled.yaml")
+with open(scaled_tube, "w") as f:
+    f.write(scaled)
+check("tube_mass_scaled", scaled_tube, quick + ["control.end_time=1.5e-3"])
+
+# What is not distributed yet is refused before the run, with one message naming the key.
+relaxed = os.path.join(ROOT, "validation/pinched_cylinder/model.yaml")
+p = run(relaxed, os.path.join(WORK, "relaxation"), ranks=2)
+if p.returncode != 2 or p.stderr.count("error:") != 1 or "control.mode" not in p.stderr:
+    failures.append("a relaxation on 2 ranks: exit %d, stderr %r (expected exit 2 and one "
+                    "message naming control.mode)" % (p.returncode, p.stderr[-400:]))
 
 for f in failures:
     print("FAIL:", f)

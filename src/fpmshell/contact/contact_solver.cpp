@@ -124,6 +124,18 @@ ContactSolver::ContactSolver(const Model& model, const MeshTopology& topology,
     }
 }
 
+std::vector<Index> ContactSolver::particles() const {
+    std::vector<Index> out;
+    for (const Definition& d : definitions_) {
+        out.insert(out.end(), d.slaves.begin(), d.slaves.end());
+        for (const Index e : d.def.elements)
+            for (const Index p : model_.triangles[static_cast<std::size_t>(e)]) out.push_back(p);
+    }
+    std::sort(out.begin(), out.end());
+    out.erase(std::unique(out.begin(), out.end()), out.end());
+    return out;
+}
+
 void ContactSolver::prepare_search(Definition& d, const std::vector<Vec3>& x, Real motion) {
     // Candidates found at x within offset + margin stay complete while no two points have
     // closed in by more than the margin: relative motion <= twice the fastest particle's.

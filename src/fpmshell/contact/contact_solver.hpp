@@ -64,6 +64,9 @@ public:
     [[nodiscard]] bool empty() const { return definitions_.empty(); }
     [[nodiscard]] bool has_penalty() const { return has_penalty_; }
     [[nodiscard]] bool has_lagrange() const { return has_lagrange_; }
+    /// Every particle the contact reads (the slaves of every definition and the nodes of the
+    /// self-contact triangles), ascending: what a distributed run shares before the contact.
+    [[nodiscard]] std::vector<Index> particles() const;
 
     /// Penalty definitions: forces at t_n from the positions x^n, added to f_contact and to
     /// the bodies' force. beta_* = c1 dt_n dt_{n+1/2} (the position change per unit force

@@ -117,6 +117,26 @@ void Communicator::exchange(const std::vector<int>& peers,
     MPI_Waitall(static_cast<int>(requests.size()), requests.data(), MPI_STATUSES_IGNORE);
 }
 
+void Communicator::allgather(const std::vector<Real>& mine, const std::vector<int>& counts,
+                             std::vector<Real>& all) const {
+    if (size_ == 1) {
+        all = mine;
+        return;
+    }
+    std::vector<int> displacements(counts.size(), 0);
+    for (std::size_t r = 1; r < counts.size(); ++r)
+        displacements[r] = displacements[r - 1] + counts[r - 1];
+    all.resize(static_cast<std::size_t>(displacements.back() + counts.back()));
+    MPI_Allgatherv(mine.data(), static_cast<int>(mine.size()), MPI_DOUBLE, all.data(),
+                   counts.data(), displacements.data(), MPI_DOUBLE, MPI_COMM_WORLD);
+}
+
+std::vector<int> Communicator::allgather(int mine) const {
+    std::vector<int> all(static_cast<std::size_t>(size_), mine);
+    if (size_ > 1) MPI_Allgather(&mine, 1, MPI_INT, all.data(), 1, MPI_INT, MPI_COMM_WORLD);
+    return all;
+}
+
 std::vector<std::vector<char>> Communicator::gather(const std::vector<char>& mine) const {
     if (size_ == 1) return {mine};
     const long n = static_cast<long>(mine.size());
@@ -182,6 +202,11 @@ void Communicator::exchange(const std::vector<int>&, const std::vector<std::vect
 std::vector<std::vector<char>> Communicator::gather(const std::vector<char>& mine) const {
     return {mine};
 }
+void Communicator::allgather(const std::vector<Real>& mine, const std::vector<int>&,
+                             std::vector<Real>& all) const {
+    all = mine;
+}
+std::vector<int> Communicator::allgather(int mine) const { return {mine}; }
 void Communicator::broadcast(std::vector<char>&) const {}
 void Communicator::abort(int exit_code) const { std::exit(exit_code); }
 MpiSession::MpiSession(int&, char**&) {}

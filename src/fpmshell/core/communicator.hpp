@@ -39,6 +39,12 @@ public:
     /// sends and receives, then a wait for all): the sizes of recv[k] are agreed beforehand.
     void exchange(const std::vector<int>& peers, const std::vector<std::vector<Real>>& send,
                   std::vector<std::vector<Real>>& recv) const;
+    /// Every rank's values on every rank, in rank order: all holds counts[r] values of rank
+    /// r (the counts agreed beforehand; counts[rank()] == mine.size()).
+    void allgather(const std::vector<Real>& mine, const std::vector<int>& counts,
+                   std::vector<Real>& all) const;
+    /// Every rank's `mine` on every rank, in rank order.
+    [[nodiscard]] std::vector<int> allgather(int mine) const;
     /// Every rank's bytes on rank 0 (rank order, its own first); the others get nothing.
     [[nodiscard]] std::vector<std::vector<char>> gather(const std::vector<char>& mine) const;
     /// Rank 0's bytes on every rank.

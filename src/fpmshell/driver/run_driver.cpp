@@ -218,9 +218,7 @@ void check_distributable(const Model& model, int ranks) {
                         "rank (with --threads)",
                         what, ranks)));
     };
-    if (!model.contacts.empty()) refuse("contact", "contact");
     if (model.control.mode == SolutionMode::Relaxation) refuse("control.mode", "relaxation");
-    if (model.control.mass_scaling.time_step > 0) refuse("control.mass_scaling", "mass scaling");
     if (model.control.membrane == MembraneKernel::Smoothed)
         refuse("control.membrane", "the smoothed membrane");
 }

@@ -87,6 +87,17 @@ public:
         ar(node_mass_, node_inertia_, mass_scale_);
     }
 
+    /// Element e's share of that state: its corner mass and inertia and sqrt(f_e) (1 without
+    /// scaling), and back (a distributed run's elements on rank 0).
+    [[nodiscard]] std::array<Real, 3> mass_state(std::size_t e) const {
+        return {node_mass_[e], node_inertia_[e], mass_scale_.empty() ? 1.0 : mass_scale_[e]};
+    }
+    void set_mass_state(std::size_t e, const std::array<Real, 3>& m) {
+        node_mass_[e] = m[0];
+        node_inertia_[e] = m[1];
+        if (!mass_scale_.empty()) mass_scale_[e] = m[2];
+    }
+
     /// The state carried from step to step (restart files): per element, the bending ratio and
     /// the L_c it was evaluated at.
     std::vector<Real>& ratio() { return bend_ratio_; }

@@ -100,6 +100,13 @@ ExplicitSolver::ExplicitSolver(const Model& model)
         contact_ = std::make_unique<ContactSolver>(model, topology_,
                                                    bc_->free_inverse_mass(s_.mass), thickness);
     }
+    if (contact_ && decomposition_.distributed()) {  // the contact runs whole on every rank
+        contact_owned_.resize(static_cast<std::size_t>(decomposition_.ranks));
+        for (const Index p : contact_->particles())
+            contact_owned_[static_cast<std::size_t>(
+                               decomposition_.particle_owner[static_cast<std::size_t>(p)])]
+                .push_back(p);
+    }
     energy_.kinetic = energy_.external_work;
     // Without prescribed motions and Lagrange contact, which change v^{n+1/2} between the two,
     // the velocity update and the energy pass are one sweep over the particle arrays instead
@@ -150,6 +157,36 @@ void ExplicitSolver::cycle(const CyclePolicy& policy, Real load_time, Real dt_ca
     book_energies(particles);    // 8 §6.8
     finish_step(dt, particles);  // 9
     if (decomposition_.distributed()) exchange_positions();
+}
+
+template <class F>
+Real ExplicitSolver::max_over_particles(F&& value) const {
+    Real largest = 0;
+    const bool distributed = decomposition_.distributed();
+    for (std::size_t p = 0; p < s_.size(); ++p)
+        if (!distributed || decomposition_.particle_owner[p] == decomposition_.rank)
+            largest = std::max(largest, value(p));
+    if (distributed)  // the largest over the ranks, as the smallest of its negative
+        largest = -Communicator::world().min_loc(-largest, 0).first;
+    return largest;
+}
+
+void ExplicitSolver::share_contact_particles(std::vector<Vec3>& a, std::vector<Vec3>& b) {
+    const DomainDecomposition& d = decomposition_;
+    contact_send_.clear();
+    for (const Index p : contact_owned_[static_cast<std::size_t>(d.rank)])
+        for (const Vec3* v : {&a[static_cast<std::size_t>(p)], &b[static_cast<std::size_t>(p)]})
+            contact_send_.insert(contact_send_.end(), v->data(), v->data() + 3);
+    std::vector<int> counts;
+    for (const auto& owned : contact_owned_) counts.push_back(6 * static_cast<int>(owned.size()));
+    Communicator::world().allgather(contact_send_, counts, contact_all_);
+    std::size_t at = 0;
+    for (const auto& owned : contact_owned_)
+        for (const Index p : owned)
+            for (Vec3* v : {&a[static_cast<std::size_t>(p)], &b[static_cast<std::size_t>(p)]}) {
+                *v = Vec3(contact_all_[at], contact_all_[at + 1], contact_all_[at + 2]);
+                at += 3;
+            }
 }
 
 void ExplicitSolver::exchange_positions() {
@@ -291,18 +328,48 @@ ShellElements::StepTotals ExplicitSolver::compute_internal_loads(const CyclePoli
 // The velocity v^{n-1/2} stays; the kinetic energy 1/2 v^{n-1/2} M v^{n+1/2} of t_n then holds
 // 1/2 dm |v^{n-1/2}|^2 more than the work of the forces gives (eq. 6.10b): external work.
 void ExplicitSolver::add_scaled_mass() {
+    // Per scaled element: its index, the mass and inertia each corner gains and the work of
+    // each corner (the owner's: it holds the corners' velocities); a distributed run gathers
+    // every rank's and adds them in element order, as one process does.
+    std::vector<Real> records;
     for (const ElementTimeSteps::CornerAddition& a :
          elements_.time_steps().take_pending_scaling()) {
-        const auto ue = static_cast<std::size_t>(a.element);
-        added_mass_.added[static_cast<std::size_t>(model_.element_section[ue])] += 3.0 * a.mass;
-        for (const Index p : model_.triangles[ue]) {
+        records.insert(records.end(), {static_cast<Real>(a.element), a.mass, a.inertia});
+        for (const Index p : model_.triangles[static_cast<std::size_t>(a.element)]) {
             const auto up = static_cast<std::size_t>(p);
-            const Real work =
-                0.5 * (a.mass * s_.v[up].squaredNorm() + a.inertia * s_.omega[up].squaredNorm());
+            records.push_back(
+                0.5 * (a.mass * s_.v[up].squaredNorm() + a.inertia * s_.omega[up].squaredNorm()));
+        }
+    }
+    constexpr std::size_t k_record = 6;
+    if (decomposition_.distributed()) {
+        const Communicator& comm = Communicator::world();
+        std::vector<int> counts = comm.allgather(static_cast<int>(records.size()));
+        std::vector<Real> all;
+        comm.allgather(records, counts, all);
+        // each rank's records are in element order: sort the records of all by element
+        std::vector<std::size_t> order(all.size() / k_record);
+        for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+        std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+            return all[k_record * a] < all[k_record * b];
+        });
+        records.clear();
+        for (const std::size_t i : order)
+            records.insert(records.end(), all.begin() + static_cast<std::ptrdiff_t>(k_record * i),
+                           all.begin() + static_cast<std::ptrdiff_t>(k_record * (i + 1)));
+    }
+    for (std::size_t i = 0; i + k_record <= records.size(); i += k_record) {
+        const auto ue = static_cast<std::size_t>(records[i]);
+        const Real mass = records[i + 1], inertia = records[i + 2];
+        added_mass_.added[static_cast<std::size_t>(model_.element_section[ue])] += 3.0 * mass;
+        for (std::size_t k = 0; k < 3; ++k) {
+            const Index p = model_.triangles[ue][k];
+            const auto up = static_cast<std::size_t>(p);
+            const Real work = records[i + 3 + k];
             added_mass_.kinetic_energy += work;
             energy_.external_work += work;
-            s_.mass[up] += a.mass;
-            s_.inertia[up] += a.inertia;
+            s_.mass[up] += mass;
+            s_.inertia[up] += inertia;
             if (contact_) contact_->set_inverse_mass(p, bc_->free_inverse_mass(up, s_.mass[up]));
         }
     }
@@ -340,9 +407,9 @@ void ExplicitSolver::penalty_contact(const StepLengths& dt) {
     std::swap(s_.f_contact, s_.f_contact_prev);
     for (Vec3& f : s_.f_contact) f.setZero();
     if (!contact_->has_penalty()) return;
-    Real motion2 = 0;
-    for (std::size_t p = 0; p < s_.size(); ++p)
-        motion2 = std::max(motion2, (s_.x[p] - s_.x_prev[p]).squaredNorm());
+    const Real motion2 =
+        max_over_particles([&](std::size_t p) { return (s_.x[p] - s_.x_prev[p]).squaredNorm(); });
+    if (decomposition_.distributed()) share_contact_particles(s_.x, s_.x_prev);
     body_u_pred_.resize(bodies_.size());  // here: the bodies at t_n
     for (std::size_t b = 0; b < bodies_.size(); ++b) body_u_pred_[b] = bodies_[b].u;
     contact_->penalty_forces(s_.x, body_u_pred_, bodies_, dt.c1 * dt.dt_n * dt.dt_new,
@@ -376,13 +443,11 @@ void ExplicitSolver::lagrange_contact(const StepLengths& dt) {
     // the velocities follow: v^{n+1/2} = (x^{n+1} - x^n) / dt (§8.3).
     const std::size_t np = s_.size();
     const Real dt_new = dt.dt_new;
+    if (decomposition_.distributed()) share_contact_particles(s_.x, s_.v);
     x_pred_.resize(np);
-    Real motion2 = 0;
-    for (std::size_t p = 0; p < np; ++p) {
-        const Vec3 dx = dt_new * s_.v[p];
-        x_pred_[p] = s_.x[p] + dx;
-        motion2 = std::max(motion2, dx.squaredNorm());
-    }
+    for (std::size_t p = 0; p < np; ++p) x_pred_[p] = s_.x[p] + dt_new * s_.v[p];
+    const Real motion2 =
+        max_over_particles([&](std::size_t p) { return (dt_new * s_.v[p]).squaredNorm(); });
     body_u_pred_.resize(bodies_.size());
     for (std::size_t b = 0; b < bodies_.size(); ++b)
         body_u_pred_[b] = bodies_[b].u + dt_new * bodies_[b].v;

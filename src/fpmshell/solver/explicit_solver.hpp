@@ -167,6 +167,13 @@ private:
     /// A distributed run: the positions x^{n+1} of the particles around the held ones that
     /// other ranks hold (DomainDecomposition).
     void exchange_positions();
+    /// A distributed run: a and b (two of the particle arrays) of every particle the contact
+    /// reads, from their owners to every rank, which then computes the whole contact as one
+    /// process does.
+    void share_contact_particles(std::vector<Vec3>& a, std::vector<Vec3>& b);
+    /// The largest of value(p) over the particles (over the ranks: each over those it owns).
+    template <class F>
+    [[nodiscard]] Real max_over_particles(F&& value) const;
     /// Throws RunFailure naming the first particle whose state is not finite.
     void report_non_finite_state() const;
     /// Throws RunFailure naming the failed element.
@@ -182,8 +189,10 @@ private:
     ShellElements elements_;
     DomainDecomposition decomposition_;  ///< this rank's share (all of it on one rank)
     std::vector<std::vector<Real>> position_send_, position_recv_;  ///< exchange buffers
-    std::vector<std::uint8_t> history_particle_;  ///< per particle: in a history's node set
-    std::vector<char> gather_bytes_;              ///< gather_to_root's buffer
+    std::vector<std::uint8_t> history_particle_;     ///< per particle: in a history's node set
+    std::vector<std::vector<Index>> contact_owned_;  ///< per rank: the contact's particles it owns
+    std::vector<Real> contact_send_, contact_all_;   ///< share_contact_particles buffers
+    std::vector<char> gather_bytes_;                 ///< gather_to_root's buffer
     AddedMass added_mass_;
     ParticleState s_;
     EnergyBalance energy_;

@@ -576,7 +576,8 @@ T take(const std::vector<char>& bytes, std::size_t& at) {
 }
 }  // namespace
 
-// Per element: its index, thickness, N, M, bending step ratio and length, then its points.
+// Per element: its index, thickness, N, M, bending step ratio and length, its mass scaling
+// state (§6.10), then its points.
 std::vector<char> ShellElements::pack_state(bool own_only) const {
     std::vector<Index> elements;
     const ElementBlocks& blocks = assembly_.blocks();
@@ -601,6 +602,7 @@ std::vector<char> ShellElements::pack_state(bool own_only) const {
         for (int c = 0; c < 3; ++c) put(bytes, m[c]);
         put(bytes, self.time_steps_.ratio()[ue]);
         put(bytes, self.time_steps_.ratio_length()[ue]);
+        put(bytes, time_steps_.mass_state(ue));
         const ElementGroup& group = group_of(ue);
         const GroupPlace place = place_of(ue);
         for (std::size_t p = 0; p < group.n_points(); ++p) put(bytes, group.point_state(place, p));
@@ -619,6 +621,7 @@ void ShellElements::unpack_state(const std::vector<char>& bytes) {
         set_resultants(ue, n, m);
         time_steps_.ratio()[ue] = take<Real>(bytes, at);
         time_steps_.ratio_length()[ue] = take<Real>(bytes, at);
+        time_steps_.set_mass_state(ue, take<std::array<Real, 3>>(bytes, at));
         ElementGroup& group = *groups_[static_cast<std::size_t>(section_[ue])];
         const GroupPlace place = place_of(ue);
         for (std::size_t p = 0; p < group.n_points(); ++p)
