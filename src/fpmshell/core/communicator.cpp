@@ -14,6 +14,13 @@ namespace {
 Communicator* g_world = nullptr;  // set by MpiSession while MPI runs
 }  // namespace
 
+void Communicator::exchange(const std::vector<int>& peers,
+                            const std::vector<std::vector<Real>>& send,
+                            std::vector<std::vector<Real>>& recv) const {
+    Pending pending = start_exchange(peers, send, recv);
+    wait(pending);
+}
+
 bool mpi_available() {
 #ifdef FPMSHELL_HAVE_MPI
     return true;
@@ -103,18 +110,32 @@ void Communicator::sum(std::span<ExactSum> sums) const {
     }
 }
 
-void Communicator::exchange(const std::vector<int>& peers,
-                            const std::vector<std::vector<Real>>& send,
-                            std::vector<std::vector<Real>>& recv) const {
-    if (size_ == 1 || peers.empty()) return;
-    std::vector<MPI_Request> requests(2 * peers.size());
+struct Communicator::Pending::Requests {
+    std::vector<MPI_Request> list;
+};
+
+Communicator::Pending Communicator::start_exchange(const std::vector<int>& peers,
+                                                   const std::vector<std::vector<Real>>& send,
+                                                   std::vector<std::vector<Real>>& recv) const {
+    Pending pending;
+    if (size_ == 1 || peers.empty()) return pending;
+    pending.requests_ = std::make_unique<Pending::Requests>();
+    std::vector<MPI_Request>& requests = pending.requests_->list;
+    requests.resize(2 * peers.size());
     for (std::size_t k = 0; k < peers.size(); ++k)
         MPI_Irecv(recv[k].data(), static_cast<int>(recv[k].size()), MPI_DOUBLE, peers[k], 0,
                   MPI_COMM_WORLD, &requests[k]);
     for (std::size_t k = 0; k < peers.size(); ++k)
         MPI_Isend(send[k].data(), static_cast<int>(send[k].size()), MPI_DOUBLE, peers[k], 0,
                   MPI_COMM_WORLD, &requests[peers.size() + k]);
+    return pending;
+}
+
+void Communicator::wait(Pending& pending) const {
+    if (!pending.requests_) return;
+    std::vector<MPI_Request>& requests = pending.requests_->list;
     MPI_Waitall(static_cast<int>(requests.size()), requests.data(), MPI_STATUSES_IGNORE);
+    pending.requests_.reset();
 }
 
 void Communicator::allgather(const std::vector<Real>& mine, const std::vector<int>& counts,
@@ -197,8 +218,13 @@ std::pair<Real, Index> Communicator::min_loc(Real value, Index index) const {
 }
 long Communicator::max(long value) const { return value; }
 void Communicator::sum(std::span<ExactSum>) const {}
-void Communicator::exchange(const std::vector<int>&, const std::vector<std::vector<Real>>&,
-                            std::vector<std::vector<Real>>&) const {}
+struct Communicator::Pending::Requests {};
+Communicator::Pending Communicator::start_exchange(const std::vector<int>&,
+                                                   const std::vector<std::vector<Real>>&,
+                                                   std::vector<std::vector<Real>>&) const {
+    return {};
+}
+void Communicator::wait(Pending&) const {}
 std::vector<std::vector<char>> Communicator::gather(const std::vector<char>& mine) const {
     return {mine};
 }
@@ -213,5 +239,11 @@ MpiSession::MpiSession(int&, char**&) {}
 MpiSession::~MpiSession() = default;
 
 #endif
+
+Communicator::Pending::Pending() = default;
+Communicator::Pending::~Pending() = default;
+Communicator::Pending::Pending(Pending&&) noexcept = default;
+Communicator::Pending& Communicator::Pending::operator=(Pending&&) noexcept = default;
+bool Communicator::Pending::active() const { return requests_ != nullptr; }
 
 }  // namespace fpmshell

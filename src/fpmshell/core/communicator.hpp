@@ -5,6 +5,7 @@
 // and every operation is the identity: the serial run takes the same code path.
 #pragma once
 
+#include <memory>
 #include <span>
 #include <utility>
 #include <vector>
@@ -35,8 +36,29 @@ public:
     [[nodiscard]] long max(long value) const;
     /// The exact sums over the ranks of each of `sums` (every rank gets the totals).
     void sum(std::span<ExactSum> sums) const;
-    /// Sends send[k] to rank peers[k] and receives recv[k] from it, all at once (non-blocking
-    /// sends and receives, then a wait for all): the sizes of recv[k] are agreed beforehand.
+    /// Messages in flight between start_exchange and wait.
+    class Pending {
+    public:
+        Pending();
+        ~Pending();
+        Pending(Pending&&) noexcept;
+        Pending& operator=(Pending&&) noexcept;
+        [[nodiscard]] bool active() const;
+
+    private:
+        friend class Communicator;
+        struct Requests;
+        std::unique_ptr<Requests> requests_;
+    };
+    /// Starts sending send[k] to rank peers[k] and receiving recv[k] from it (non-blocking: the
+    /// work between this and wait overlaps the messages); the sizes of recv[k] are agreed
+    /// beforehand, and no buffer may be touched before wait.
+    [[nodiscard]] Pending start_exchange(const std::vector<int>& peers,
+                                         const std::vector<std::vector<Real>>& send,
+                                         std::vector<std::vector<Real>>& recv) const;
+    /// Waits for every message of `pending` (nothing if none).
+    void wait(Pending& pending) const;
+    /// start_exchange and wait at once.
     void exchange(const std::vector<int>& peers, const std::vector<std::vector<Real>>& send,
                   std::vector<std::vector<Real>>& recv) const;
     /// Every rank's values on every rank, in rank order: all holds counts[r] values of rank

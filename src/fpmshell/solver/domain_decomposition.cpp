@@ -107,6 +107,14 @@ DomainDecomposition decompose(const Model& model, const MeshTopology& topology,
         if (held && d.particle_owner[p] != rank && !holders[p].empty())
             d.held_not_owned.push_back(static_cast<Index>(p));
     }
+    for (const Index b : d.own_blocks) {
+        bool boundary = false;
+        for (Index l = 0; l < k_lanes && !boundary; ++l)
+            for (const Index p : model.triangles[static_cast<std::size_t>(
+                     units.block_elements[static_cast<std::size_t>(b * k_lanes + l)])])
+                boundary = boundary || d.shared[static_cast<std::size_t>(p)];
+        if (boundary) d.boundary_blocks.push_back(b);
+    }
     for (std::size_t e = 0; e < ne; ++e) {
         const auto& t = model.triangles[e];
         if (d.held[static_cast<std::size_t>(t[0])] || d.held[static_cast<std::size_t>(t[1])] ||

@@ -41,6 +41,9 @@ struct DomainDecomposition {
     /// The units this rank computes: blocks (ascending) and positions in alone_elements.
     std::vector<Index> own_blocks, own_alone;
     std::vector<std::uint8_t> own_unit;  ///< per unit: computed here
+    /// The own blocks with an element at a shared particle (ascending): computed first, their
+    /// slots sent while the others compute.
+    std::vector<Index> boundary_blocks;
     /// Particles by atom, compressed rows (atom n_atoms: the particles of no element, on rank
     /// 0), each atom's in ascending order.
     std::vector<Index> atom_particle_begin, atom_particles;

@@ -139,7 +139,8 @@ void ExplicitSolver::step(Real max_dt) {
 
 // The cycle t_n -> t_{n+1} (§6.8).
 void ExplicitSolver::cycle(const CyclePolicy& policy, Real load_time, Real dt_cap) {
-    const ShellElements::StepTotals elements = compute_internal_loads(policy);   // 1 §2-§5
+    const ShellElements::StepTotals elements = compute_internal_loads(policy);  // 1 §2-§5
+    finish_position_exchange();  // distributed: the positions step 2 reads around the held ones
     loads_->update_normals_and_loads(s_, *bc_, load_time, parallel_particles_);  // 2 §1.3, §6.7
     const StepLengths dt = next_step_lengths(policy, elements, dt_cap);          // 3 §6.4
     penalty_contact(dt);                                                         // 4 §8.2
@@ -156,8 +157,10 @@ void ExplicitSolver::cycle(const CyclePolicy& policy, Real load_time, Real dt_ca
     }
     book_energies(particles);    // 8 §6.8
     finish_step(dt, particles);  // 9
-    if (decomposition_.distributed()) exchange_positions();
+    if (decomposition_.distributed()) start_position_exchange();
 }
+
+ExplicitSolver::~ExplicitSolver() { finish_position_exchange(); }
 
 template <class F>
 Real ExplicitSolver::max_over_particles(F&& value) const {
@@ -189,7 +192,7 @@ void ExplicitSolver::share_contact_particles(std::vector<Vec3>& a, std::vector<V
             }
 }
 
-void ExplicitSolver::exchange_positions() {
+void ExplicitSolver::start_position_exchange() {
     const DomainDecomposition& d = decomposition_;
     const std::size_t n_peers = d.position_peers.size();
     position_send_.resize(n_peers);
@@ -203,8 +206,15 @@ void ExplicitSolver::exchange_positions() {
         }
         position_recv_[k].resize(3 * d.position_recv[k].size());
     }
-    Communicator::world().exchange(d.position_peers, position_send_, position_recv_);
-    for (std::size_t k = 0; k < n_peers; ++k)
+    positions_in_flight_ =
+        Communicator::world().start_exchange(d.position_peers, position_send_, position_recv_);
+}
+
+void ExplicitSolver::finish_position_exchange() {
+    if (!positions_in_flight_.active()) return;
+    const DomainDecomposition& d = decomposition_;
+    Communicator::world().wait(positions_in_flight_);
+    for (std::size_t k = 0; k < d.position_peers.size(); ++k)
         for (std::size_t i = 0; i < d.position_recv[k].size(); ++i) {
             Vec3& x = s_.x[static_cast<std::size_t>(d.position_recv[k][i])];
             for (int c = 0; c < 3; ++c)
@@ -267,6 +277,7 @@ void for_each_particle_field(ParticleState& s, std::size_t p, F&& f) {
 void ExplicitSolver::gather_to_root(Gather what) {
     const Communicator& comm = Communicator::world();
     if (!decomposition_.distributed()) return;
+    finish_position_exchange();
     const DomainDecomposition& d = decomposition_;
     const bool all = what == Gather::Everything;
     if (!all && history_particle_.empty()) {

@@ -11,6 +11,7 @@
 
 #include "fpmshell/contact/contact_solver.hpp"
 #include "fpmshell/contact/rigid_body_state.hpp"
+#include "fpmshell/core/communicator.hpp"
 #include "fpmshell/core/types.hpp"
 #include "fpmshell/model/mesh_topology.hpp"
 #include "fpmshell/model/model.hpp"
@@ -33,6 +34,9 @@ public:
     /// Sets up masses (§6.1), rotary inertia (§6.2 option B), kink particles (§1.3), boundary
     /// masks and initial velocities. The model must outlive the solver.
     explicit ExplicitSolver(const Model& model);
+    ~ExplicitSolver();
+    ExplicitSolver(const ExplicitSolver&) = delete;
+    ExplicitSolver& operator=(const ExplicitSolver&) = delete;
 
     /// One dynamic cycle t_n -> t_{n+1}; the step is the stable one, limited to max_dt.
     /// Throws RunFailure (with step, particle or element) when the state becomes invalid.
@@ -165,8 +169,10 @@ private:
     template <int N, class Body>
     std::array<Real, N> atom_sums(std::vector<std::array<Real, N>>& scratch, Body&& body);
     /// A distributed run: the positions x^{n+1} of the particles around the held ones that
-    /// other ranks hold (DomainDecomposition).
-    void exchange_positions();
+    /// other ranks hold (DomainDecomposition), sent at the end of a step and received after
+    /// the next step's element loop (which does not read them).
+    void start_position_exchange();
+    void finish_position_exchange();
     /// A distributed run: a and b (two of the particle arrays) of every particle the contact
     /// reads, from their owners to every rank, which then computes the whole contact as one
     /// process does.
@@ -189,6 +195,7 @@ private:
     ShellElements elements_;
     DomainDecomposition decomposition_;  ///< this rank's share (all of it on one rank)
     std::vector<std::vector<Real>> position_send_, position_recv_;  ///< exchange buffers
+    Communicator::Pending positions_in_flight_;      ///< start_position_exchange's messages
     std::vector<std::uint8_t> history_particle_;     ///< per particle: in a history's node set
     std::vector<std::vector<Index>> contact_owned_;  ///< per rank: the contact's particles it owns
     std::vector<Real> contact_send_, contact_all_;   ///< share_contact_particles buffers

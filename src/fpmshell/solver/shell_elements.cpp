@@ -427,12 +427,32 @@ ShellElements::StepTotals ShellElements::compute(ParticleState& s, Real viscous_
     // after the loop (slot_gather_plan.hpp).
     const ElementBlocks& blocks = assembly_.blocks();
     const Index n_scalar = blocks.n_alone();
-    // a distributed run: this rank's units only (DomainDecomposition)
+    // A distributed run (DomainDecomposition): this rank's units only. First the blocks at its
+    // shared particles and its elements alone, whose slots then travel to the other ranks
+    // while the interior blocks compute; their particles sum after the loop.
     const bool distributed = decomposition_ && decomposition_->distributed();
-    const std::uint8_t* own = distributed ? decomposition_->own_unit.data() : nullptr;
-    const Index n_blocks = blocks.n_blocks();
+    const std::uint8_t* not_in_ring_loop = distributed ? not_in_ring_loop_.data() : nullptr;
     // (made at construction; remade only if the thread count has changed since)
     const SlotGatherPlan& plan = assembly_.plan(gather_ranges());
+    Communicator::Pending slots_in_flight;
+    if (distributed) {
+        const DomainDecomposition& d = *decomposition_;
+        const auto n_first = static_cast<Index>(d.boundary_blocks.size());
+        const auto n_own_alone = static_cast<Index>(d.own_alone.size());
+#pragma omp parallel if (parallel)
+        {
+#pragma omp for schedule(static) nowait
+            for (Index i = 0; i < n_first; ++i)
+                compute_block(d.boundary_blocks[static_cast<std::size_t>(i)], s, viscous_rate, dt,
+                              nullptr);
+#pragma omp for schedule(static)
+            for (Index i = 0; i < n_own_alone; ++i) {
+                const auto at = static_cast<std::size_t>(d.own_alone[static_cast<std::size_t>(i)]);
+                alone_totals_[at] = compute_element(blocks.alone_elements[at], s, viscous_rate, dt);
+            }
+        }
+        slots_in_flight = start_slot_exchange();
+    }
     constexpr Index tile = SlotGatherPlan::k_tile_blocks,
                     ring_blocks = SlotGatherPlan::k_ring_blocks;
     // ranges of equal time rather than equal counts (range_balancer.hpp): tiles timed
@@ -450,7 +470,7 @@ ShellElements::StepTotals ShellElements::compute(ParticleState& s, Real viscous_
                 const Index from = first + (t - plan.range_first_tile[ur]) * tile;
                 const Clock::time_point start = balance ? Clock::now() : Clock::time_point{};
                 for (Index b = from; b < std::min(end, from + tile); ++b)
-                    if (!own || own[b])
+                    if (!not_in_ring_loop || !not_in_ring_loop[b])
                         compute_block(
                             b, s, viscous_rate, dt,
                             ring ? ring + static_cast<std::size_t>((b - first) % ring_blocks) *
@@ -466,14 +486,13 @@ ShellElements::StepTotals ShellElements::compute(ParticleState& s, Real viscous_
             }
         }
 #pragma omp for schedule(static)
-        for (Index i = 0; i < n_scalar; ++i)
-            if (!own || own[n_blocks + i])
-                alone_totals_[static_cast<std::size_t>(i)] = compute_element(
-                    blocks.alone_elements[static_cast<std::size_t>(i)], s, viscous_rate, dt);
+        for (Index i = 0; i < (distributed ? 0 : n_scalar); ++i)
+            alone_totals_[static_cast<std::size_t>(i)] = compute_element(
+                blocks.alone_elements[static_cast<std::size_t>(i)], s, viscous_rate, dt);
     }
     // every slot is written; in a distributed run, those of the shared particles from the
     // other ranks too (they are summed after the loop, from the full array)
-    if (distributed) exchange_slots();
+    if (distributed) finish_slot_exchange(slots_in_flight);
 #pragma omp parallel for schedule(static) if (parallel)
     for (Index k = 0; k < static_cast<Index>(plan.after.size()); ++k)
         assembly_.gather_particle(static_cast<std::size_t>(plan.after[static_cast<std::size_t>(k)]),
@@ -487,24 +506,37 @@ ShellElements::StepTotals ShellElements::compute(ParticleState& s, Real viscous_
 void ShellElements::set_decomposition(const DomainDecomposition* d) {
     decomposition_ = d;
     if (!d || !d->distributed()) return;
-    // a shared particle sums after the loop (its other ranks' slots arrive in the full
-    // array), one this rank does not hold not at all
+    // The ring loop computes the interior blocks: not another rank's, nor those computed first
+    // (at the shared particles). A particle of those sums after the loop from the full array
+    // (a shared one also receives its other ranks' slots there), one this rank does not hold
+    // not at all.
+    const ElementBlocks& blocks = assembly_.blocks();
+    not_in_ring_loop_.assign(static_cast<std::size_t>(blocks.n_blocks()), 0);
+    for (Index b = 0; b < blocks.n_blocks(); ++b)
+        not_in_ring_loop_[static_cast<std::size_t>(b)] = !d->own_unit[static_cast<std::size_t>(b)];
     std::vector<GatherMode> mode(d->held.size(), GatherMode::Any);
-    for (std::size_t p = 0; p < mode.size(); ++p)
-        mode[p] = !d->held[p]    ? GatherMode::Skip
-                  : d->shared[p] ? GatherMode::After
-                                 : GatherMode::Any;
+    for (const Index b : d->boundary_blocks) {
+        not_in_ring_loop_[static_cast<std::size_t>(b)] = 1;
+        for (Index l = 0; l < k_lanes; ++l)
+            for (const Index p : tri_[static_cast<std::size_t>(
+                     blocks.block_elements[static_cast<std::size_t>(b * k_lanes + l)])])
+                mode[static_cast<std::size_t>(p)] = GatherMode::After;
+    }
+    for (std::size_t p = 0; p < mode.size(); ++p) {
+        if (!d->held[p]) mode[p] = GatherMode::Skip;
+        if (d->shared[p]) mode[p] = GatherMode::After;
+    }
     assembly_.set_gather_modes(std::move(mode));
 }
 
-void ShellElements::exchange_slots() {
+Communicator::Pending ShellElements::start_slot_exchange() {
     const DomainDecomposition& d = *decomposition_;
     constexpr auto w = static_cast<std::size_t>(k_lanes);
     constexpr std::size_t nc = CornerAssembly::k_components;
     const std::size_t n_peers = d.slot_peers.size();
     slot_send_.resize(n_peers);
     slot_recv_.resize(n_peers);
-    Real* slots = assembly_.slots();
+    const Real* slots = assembly_.slots();
     for (std::size_t k = 0; k < n_peers; ++k) {
         std::vector<Real>& out = slot_send_[k];
         out.resize(nc * d.slot_send[k].size());
@@ -512,8 +544,16 @@ void ShellElements::exchange_slots() {
             for (std::size_t c = 0; c < nc; ++c) out[nc * i + c] = slots[d.slot_send[k][i] + c * w];
         slot_recv_[k].resize(nc * d.slot_recv[k].size());
     }
-    Communicator::world().exchange(d.slot_peers, slot_send_, slot_recv_);
-    for (std::size_t k = 0; k < n_peers; ++k)
+    return Communicator::world().start_exchange(d.slot_peers, slot_send_, slot_recv_);
+}
+
+void ShellElements::finish_slot_exchange(Communicator::Pending& pending) {
+    const DomainDecomposition& d = *decomposition_;
+    constexpr auto w = static_cast<std::size_t>(k_lanes);
+    constexpr std::size_t nc = CornerAssembly::k_components;
+    Real* slots = assembly_.slots();
+    Communicator::world().wait(pending);
+    for (std::size_t k = 0; k < d.slot_peers.size(); ++k)
         for (std::size_t i = 0; i < d.slot_recv[k].size(); ++i)
             for (std::size_t c = 0; c < nc; ++c)
                 slots[d.slot_recv[k][i] + c * w] = slot_recv_[k][nc * i + c];

@@ -8,6 +8,7 @@
 #include <memory>
 #include <vector>
 
+#include "fpmshell/core/communicator.hpp"
 #include "fpmshell/core/types.hpp"
 #include "fpmshell/elements/shell_triangle.hpp"
 #include "fpmshell/model/mesh_topology.hpp"
@@ -140,8 +141,10 @@ private:
     /// slot_gather_plan.hpp; nullptr: none) and, where the plan keeps the block or there is
     /// no ring, to the full slot array.
     void compute_block(Index b, ParticleState& s, Real viscous_rate, Real dt, Real* ring_slots);
-    /// The slots of the shared particles from and to the other ranks.
-    void exchange_slots();
+    /// The slots of the shared particles to and from the other ranks: sent (from the blocks
+    /// computed first) while the interior blocks compute, received after them.
+    [[nodiscard]] Communicator::Pending start_slot_exchange();
+    void finish_slot_exchange(Communicator::Pending& pending);
     /// The step's totals from the units' (and, distributed, over the ranks).
     [[nodiscard]] StepTotals step_totals();
     /// The ranges of blocks the element loop runs: one per thread (1 for a model small enough
@@ -172,6 +175,7 @@ private:
     std::vector<Voigt3> membrane_force_,
         bending_moment_;  ///< per element computed alone (others: zero)
     const DomainDecomposition* decomposition_ = nullptr;
+    std::vector<std::uint8_t> not_in_ring_loop_;  ///< distributed: per block, skipped there
     std::vector<std::vector<Real>> slot_send_, slot_recv_;  ///< exchange_slots buffers
 };
 
