@@ -3,6 +3,7 @@
 // conditions, loads and initial velocities.
 #pragma once
 
+#include "fpmshell/mesh/generators.hpp"
 #include "fpmshell/mesh/mesh_data.hpp"
 #include "fpmshell/model/model.hpp"
 
@@ -19,6 +20,15 @@ inline Model one_section_model(const MeshData& mesh, Real thickness, Real poisso
     m.sections.push_back({0, thickness, thickness_points, inplane_points});
     m.element_section.assign(m.triangles.size(), 0);
     return m;
+}
+
+/// A square plate of n x n squares, each cut into two triangles with alternating diagonals, in
+/// one section of thickness h.
+inline Model alternate_plate(Index n, Real thickness = 0.002) {
+    PlateParams pp;
+    pp.nx = pp.ny = n;
+    pp.pattern = DiagonalPattern::Alternate;
+    return one_section_model(generate_plate(pp), thickness);
 }
 
 }  // namespace fpmshell::test

@@ -2,10 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstring>
 #include <limits>
 #include <sstream>
 
+#include "fpmshell/core/byte_buffer.hpp"
 #include "fpmshell/core/chunked_loop.hpp"
 #include "fpmshell/core/communicator.hpp"
 #include "fpmshell/core/errors.hpp"
@@ -223,16 +223,6 @@ void ExplicitSolver::finish_position_exchange() {
 }
 
 namespace {
-template <class T>
-void append(std::vector<char>& bytes, const T& v) {
-    const char* p = reinterpret_cast<const char*>(&v);
-    bytes.insert(bytes.end(), p, p + sizeof(T));
-}
-template <class T>
-void read(const std::vector<char>& bytes, std::size_t& at, T& v) {
-    std::memcpy(static_cast<void*>(&v), bytes.data() + at, sizeof(T));
-    at += sizeof(T);
-}
 /// The arrays of a particle's state that the history rows read (driver/history_sampler.cpp).
 template <class F>
 void for_each_history_field(ParticleState& s, std::size_t p, F&& f) {
@@ -292,11 +282,11 @@ void ExplicitSolver::gather_to_root(Gather what) {
              k < d.atom_particle_begin[static_cast<std::size_t>(a) + 1]; ++k) {
             const auto p = static_cast<std::size_t>(d.atom_particles[static_cast<std::size_t>(k)]);
             if (!all && !history_particle_[p]) continue;
-            append(bytes, static_cast<Index>(p));
+            append_bytes(bytes, static_cast<Index>(p));
             if (all)
-                for_each_particle_field(s_, p, [&](auto& v) { append(bytes, v); });
+                for_each_particle_field(s_, p, [&](auto& v) { append_bytes(bytes, v); });
             else
-                for_each_history_field(s_, p, [&](auto& v) { append(bytes, v); });
+                for_each_history_field(s_, p, [&](auto& v) { append_bytes(bytes, v); });
         }
     const std::vector<std::vector<char>> particles = comm.gather(bytes);
     const std::vector<std::vector<char>> elements =
@@ -307,13 +297,13 @@ void ExplicitSolver::gather_to_root(Gather what) {
         std::size_t at = 0;
         while (at < b.size()) {
             Index p = 0;
-            read(b, at, p);
+            read_bytes(b, at, p);
             if (all)
                 for_each_particle_field(s_, static_cast<std::size_t>(p),
-                                        [&](auto& v) { read(b, at, v); });
+                                        [&](auto& v) { read_bytes(b, at, v); });
             else
                 for_each_history_field(s_, static_cast<std::size_t>(p),
-                                       [&](auto& v) { read(b, at, v); });
+                                       [&](auto& v) { read_bytes(b, at, v); });
         }
         if (all) elements_.unpack_state(elements[r]);
     }

@@ -3,11 +3,11 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <cstring>
 #include <limits>
 #include <optional>
 #include <tuple>
 
+#include "fpmshell/core/byte_buffer.hpp"
 #include "fpmshell/core/chunked_loop.hpp"
 #include "fpmshell/core/communicator.hpp"
 #include "fpmshell/core/exact_sum.hpp"
@@ -603,15 +603,9 @@ ShellElements::StepTotals ShellElements::step_totals() {
 
 namespace {
 template <class T>
-void put(std::vector<char>& bytes, const T& v) {
-    const char* p = reinterpret_cast<const char*>(&v);
-    bytes.insert(bytes.end(), p, p + sizeof(T));
-}
-template <class T>
 T take(const std::vector<char>& bytes, std::size_t& at) {
     T v;
-    std::memcpy(static_cast<void*>(&v), bytes.data() + at, sizeof(T));
-    at += sizeof(T);
+    read_bytes(bytes, at, v);
     return v;
 }
 }  // namespace
@@ -635,17 +629,18 @@ std::vector<char> ShellElements::pack_state(bool own_only) const {
     auto& self = const_cast<ShellElements&>(*this);  // the step ratios have no const access
     for (const Index e : elements) {
         const auto ue = static_cast<std::size_t>(e);
-        put(bytes, e);
-        put(bytes, thickness_[ue]);
+        append_bytes(bytes, e);
+        append_bytes(bytes, thickness_[ue]);
         const Voigt3 n = resultant(ue, 0), m = resultant(ue, 3);
-        for (int c = 0; c < 3; ++c) put(bytes, n[c]);
-        for (int c = 0; c < 3; ++c) put(bytes, m[c]);
-        put(bytes, self.time_steps_.ratio()[ue]);
-        put(bytes, self.time_steps_.ratio_length()[ue]);
-        put(bytes, time_steps_.mass_state(ue));
+        for (int c = 0; c < 3; ++c) append_bytes(bytes, n[c]);
+        for (int c = 0; c < 3; ++c) append_bytes(bytes, m[c]);
+        append_bytes(bytes, self.time_steps_.ratio()[ue]);
+        append_bytes(bytes, self.time_steps_.ratio_length()[ue]);
+        append_bytes(bytes, time_steps_.mass_state(ue));
         const ElementGroup& group = group_of(ue);
         const GroupPlace place = place_of(ue);
-        for (std::size_t p = 0; p < group.n_points(); ++p) put(bytes, group.point_state(place, p));
+        for (std::size_t p = 0; p < group.n_points(); ++p)
+            append_bytes(bytes, group.point_state(place, p));
     }
     return bytes;
 }

@@ -8,17 +8,13 @@
 #include <random>
 
 #include "fpmshell/core/simd.hpp"
+#include "ulps.hpp"
 
 using namespace fpmshell;
 
 namespace {
 
-/// |a - b| in units of the last place of b.
-Real ulps(Real a, Real b) {
-    const Real ulp =
-        std::nextafter(std::abs(b), std::numeric_limits<Real>::infinity()) - std::abs(b);
-    return std::abs(a - b) / ulp;
-}
+using test::ulps;
 
 /// 2^-1000 ... 2^1000 times [1, 2), either sign when `negative`.
 template <class Check>

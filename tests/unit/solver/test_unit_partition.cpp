@@ -16,12 +16,7 @@ using namespace fpmshell;
 
 namespace {
 
-Model plate(Index n) {
-    PlateParams pp;
-    pp.nx = pp.ny = n;
-    pp.pattern = DiagonalPattern::Alternate;
-    return test::one_section_model(generate_plate(pp), 0.002);
-}
+Model plate(Index n) { return test::alternate_plate(n); }
 
 UnitPartition cut(const Model& m, int parts) {
     const ElementBlocks units = element_units(m);

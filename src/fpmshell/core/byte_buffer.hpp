@@ -1,0 +1,27 @@
+// Values of fixed size copied into and out of a byte buffer: what one rank of a distributed run
+// sends to another (ExplicitSolver::gather_to_root, ShellElements::pack_state). Both ranks run the
+// same build, so the layout is that of memory, without conversion.
+#pragma once
+
+#include <cstddef>
+#include <cstring>
+#include <type_traits>
+#include <vector>
+
+namespace fpmshell {
+
+/// Appends the bytes of v.
+template <class T>
+void append_bytes(std::vector<char>& bytes, const T& v) {
+    const char* p = reinterpret_cast<const char*>(&v);
+    bytes.insert(bytes.end(), p, p + sizeof(T));
+}
+
+/// Copies the bytes at `at` into v and moves `at` past them.
+template <class T>
+void read_bytes(const std::vector<char>& bytes, std::size_t& at, T& v) {
+    std::memcpy(static_cast<void*>(&v), bytes.data() + at, sizeof(T));
+    at += sizeof(T);
+}
+
+}  // namespace fpmshell
