@@ -779,6 +779,7 @@ void ContactSolver::warm_start(std::vector<Vec3>& x_pred, std::vector<Vec3>& bod
                                Real beta_body) {
     if (memory_.size() == 0) return;
     for (Constraint& c : constraints_) {
+        if (!memory_.has_slave(c.slave)) continue;
         const Real lambda = memory_.recall(key_of(c));
         if (lambda == 0) continue;
         c.lambda = lambda;

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cstdint>
 #include <utility>
 #include <vector>
 
@@ -32,6 +33,13 @@ public:
                       entries.end());
         entries_.swap(entries);
         entries.clear();
+        mark_slaves();
+    }
+    /// Whether a multiplier is kept for a constraint of slave `s` (most constraints have none:
+    /// this spares them the search of recall).
+    [[nodiscard]] bool has_slave(Index s) const {
+        const auto us = static_cast<std::size_t>(s);
+        return us < slave_kept_.size() && slave_kept_[us] != 0;
     }
     /// The multiplier kept for `key` (0: none).
     [[nodiscard]] Real recall(const Key& key) const {
@@ -45,10 +53,25 @@ public:
     template <class Archive>
     void transfer(Archive& ar) {
         ar(entries_);
+        mark_slaves();
     }
 
 private:
+    /// slave_kept_ from entries_ (the flags of the last entries cleared first).
+    void mark_slaves() {
+        for (const Index s : marked_) slave_kept_[static_cast<std::size_t>(s)] = 0;
+        marked_.clear();
+        for (const auto& e : entries_) {
+            const auto s = static_cast<std::size_t>(e.first[0]);
+            if (s >= slave_kept_.size()) slave_kept_.resize(s + 1, 0);
+            if (!slave_kept_[s]) marked_.push_back(e.first[0]);
+            slave_kept_[s] = 1;
+        }
+    }
+
     std::vector<std::pair<Key, Real>> entries_;  ///< sorted by key, unique
+    std::vector<std::uint8_t> slave_kept_;       ///< per particle: a slave of an entry
+    std::vector<Index> marked_;                  ///< the particles flagged in slave_kept_
 };
 
 }  // namespace fpmshell
