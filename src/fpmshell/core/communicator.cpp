@@ -14,13 +14,6 @@ namespace {
 Communicator* g_world = nullptr;  // set by MpiSession while MPI runs
 }  // namespace
 
-void Communicator::exchange(const std::vector<int>& peers,
-                            const std::vector<std::vector<Real>>& send,
-                            std::vector<std::vector<Real>>& recv) const {
-    Pending pending = start_exchange(peers, send, recv);
-    wait(pending);
-}
-
 bool mpi_available() {
 #ifdef FPMSHELL_HAVE_MPI
     return true;
@@ -37,14 +30,15 @@ const Communicator& Communicator::world() {
 #ifdef FPMSHELL_HAVE_MPI
 
 namespace {
+/// A value and its index, as min_loc reduces them.
+struct ValueIndex {
+    double value;
+    long index;
+};
 /// (value, index) pairs: the smaller value, then the lower index; NaN below every number.
 void min_loc_op(void* in, void* inout, int* len, MPI_Datatype*) {
-    struct Pair {
-        double value;
-        long index;
-    };
-    auto* a = static_cast<Pair*>(in);
-    auto* b = static_cast<Pair*>(inout);
+    auto* a = static_cast<ValueIndex*>(in);
+    auto* b = static_cast<ValueIndex*>(inout);
     for (int i = 0; i < *len; ++i) {
         const bool a_nan = std::isnan(a[i].value), b_nan = std::isnan(b[i].value);
         const bool a_first = a_nan != b_nan
@@ -54,22 +48,16 @@ void min_loc_op(void* in, void* inout, int* len, MPI_Datatype*) {
         if (a_first) b[i] = a[i];
     }
 }
+// made once by MpiSession: min_loc runs several times a step
+MPI_Datatype g_value_index_type = MPI_DATATYPE_NULL;
+MPI_Op g_min_loc_op = MPI_OP_NULL;
 }  // namespace
 
 std::pair<Real, Index> Communicator::min_loc(Real value, Index index) const {
     if (size_ == 1) return {value, index};
-    struct Pair {
-        double value;
-        long index;
-    } mine{value, index < 0 ? std::numeric_limits<long>::max() : index}, all{};
-    MPI_Datatype type;
-    MPI_Type_contiguous(sizeof(Pair), MPI_BYTE, &type);
-    MPI_Type_commit(&type);
-    MPI_Op op;
-    MPI_Op_create(min_loc_op, 1, &op);
-    MPI_Allreduce(&mine, &all, 1, type, op, MPI_COMM_WORLD);
-    MPI_Op_free(&op);
-    MPI_Type_free(&type);
+    const ValueIndex mine{value, index < 0 ? std::numeric_limits<long>::max() : index};
+    ValueIndex all{};
+    MPI_Allreduce(&mine, &all, 1, g_value_index_type, g_min_loc_op, MPI_COMM_WORLD);
     return {all.value, all.index == std::numeric_limits<long>::max()
                            ? Index{-1}
                            : static_cast<Index>(all.index)};
@@ -178,14 +166,6 @@ std::vector<std::vector<char>> Communicator::gather(const std::vector<char>& min
     return out;
 }
 
-void Communicator::broadcast(std::vector<char>& bytes) const {
-    if (size_ == 1) return;
-    long n = static_cast<long>(bytes.size());
-    MPI_Bcast(&n, 1, MPI_LONG, 0, MPI_COMM_WORLD);
-    bytes.resize(static_cast<std::size_t>(n));
-    MPI_Bcast(bytes.data(), static_cast<int>(n), MPI_CHAR, 0, MPI_COMM_WORLD);
-}
-
 void Communicator::abort(int exit_code) const {
     if (size_ > 1) MPI_Abort(MPI_COMM_WORLD, exit_code);
     std::exit(exit_code);
@@ -201,6 +181,9 @@ MpiSession::MpiSession(int& argc, char**& argv) {
     int rank = 0, size = 1;
     MPI_Comm_rank(MPI_COMM_WORLD, &rank);
     MPI_Comm_size(MPI_COMM_WORLD, &size);
+    MPI_Type_contiguous(sizeof(ValueIndex), MPI_BYTE, &g_value_index_type);
+    MPI_Type_commit(&g_value_index_type);
+    MPI_Op_create(min_loc_op, 1, &g_min_loc_op);
     g_world = new Communicator(rank, size);
 }
 
@@ -208,6 +191,8 @@ MpiSession::~MpiSession() {
     if (!g_world) return;
     delete g_world;
     g_world = nullptr;
+    MPI_Op_free(&g_min_loc_op);
+    MPI_Type_free(&g_value_index_type);
     MPI_Finalize();
 }
 
@@ -233,7 +218,6 @@ void Communicator::allgather(const std::vector<Real>& mine, const std::vector<in
     all = mine;
 }
 std::vector<int> Communicator::allgather(int mine) const { return {mine}; }
-void Communicator::broadcast(std::vector<char>&) const {}
 void Communicator::abort(int exit_code) const { std::exit(exit_code); }
 MpiSession::MpiSession(int&, char**&) {}
 MpiSession::~MpiSession() = default;

@@ -58,9 +58,6 @@ public:
                                          std::vector<std::vector<Real>>& recv) const;
     /// Waits for every message of `pending` (nothing if none).
     void wait(Pending& pending) const;
-    /// start_exchange and wait at once.
-    void exchange(const std::vector<int>& peers, const std::vector<std::vector<Real>>& send,
-                  std::vector<std::vector<Real>>& recv) const;
     /// Every rank's values on every rank, in rank order: all holds counts[r] values of rank
     /// r (the counts agreed beforehand; counts[rank()] == mine.size()).
     void allgather(const std::vector<Real>& mine, const std::vector<int>& counts,
@@ -69,8 +66,6 @@ public:
     [[nodiscard]] std::vector<int> allgather(int mine) const;
     /// Every rank's bytes on rank 0 (rank order, its own first); the others get nothing.
     [[nodiscard]] std::vector<std::vector<char>> gather(const std::vector<char>& mine) const;
-    /// Rank 0's bytes on every rank.
-    void broadcast(std::vector<char>& bytes) const;
     /// Stops every rank (an error that only some ranks met: the others would wait forever).
     [[noreturn]] void abort(int exit_code) const;
 

@@ -90,18 +90,6 @@ public:
     [[nodiscard]] std::span<const std::size_t> particle_slots(std::size_t p) const {
         return {csr_slot_.data() + csr_begin_[p], csr_slot_.data() + csr_begin_[p + 1]};
     }
-    /// gather_particle from the full slot array (every slot of p written there).
-    void gather_particle_from_slots(std::size_t p, ParticleState& s) const {
-        constexpr auto w = static_cast<std::size_t>(k_lanes);
-        Vec3 f = Vec3::Zero(), m = Vec3::Zero();
-        for (Index k = csr_begin_[p]; k < csr_begin_[p + 1]; ++k) {
-            const Real* slot = slot_loads_.data() + csr_slot_[static_cast<std::size_t>(k)];
-            f += Vec3(slot[0], slot[w], slot[2 * w]);
-            m += Vec3(slot[3 * w], slot[4 * w], slot[5 * w]);
-        }
-        s.f_int[p] = f;
-        s.m_int[p] = m;
-    }
 
 private:
     ElementBlocks blocks_;

@@ -31,6 +31,22 @@ std::vector<DomainDecomposition> decompose_all(const Model& m, const MeshTopolog
     return out;
 }
 
+/// Every message of one exchange (peers, sends, receives: members of DomainDecomposition) is
+/// what its peer expects: r's send to s is s's receive from r, and the other way.
+template <class Peers, class Lists>
+void expect_matched(const std::vector<DomainDecomposition>& d, Peers peers, Lists send,
+                    Lists recv) {
+    for (const DomainDecomposition& r : d)
+        for (std::size_t k = 0; k < (r.*peers).size(); ++k) {
+            const DomainDecomposition& s = d[static_cast<std::size_t>((r.*peers)[k])];
+            const auto it = std::find((s.*peers).begin(), (s.*peers).end(), r.rank);
+            ASSERT_NE(it, (s.*peers).end());
+            const auto j = static_cast<std::size_t>(it - (s.*peers).begin());
+            EXPECT_EQ((r.*send)[k], (s.*recv)[j]);
+            EXPECT_EQ((r.*recv)[k], (s.*send)[j]);
+        }
+}
+
 }  // namespace
 
 TEST(DomainDecomposition, OneRankHoldsAndOwnsEverythingAndExchangesNothing) {
@@ -96,23 +112,10 @@ TEST(DomainDecomposition, RanksShareTheWorkAndMatchTheirExchanges) {
                 EXPECT_TRUE(d[static_cast<std::size_t>(r)].held[static_cast<std::size_t>(p)]);
         }
         // the exchanges: what r sends to s is what s receives from r, in the same order
-        for (const DomainDecomposition& r : d)
-            for (std::size_t k = 0; k < r.slot_peers.size(); ++k) {
-                const DomainDecomposition& s = d[static_cast<std::size_t>(r.slot_peers[k])];
-                const auto it = std::find(s.slot_peers.begin(), s.slot_peers.end(), r.rank);
-                ASSERT_NE(it, s.slot_peers.end());
-                const auto j = static_cast<std::size_t>(it - s.slot_peers.begin());
-                EXPECT_EQ(r.slot_send[k], s.slot_recv[j]);
-                EXPECT_EQ(r.slot_recv[k], s.slot_send[j]);
-            }
-        for (const DomainDecomposition& r : d)
-            for (std::size_t k = 0; k < r.position_peers.size(); ++k) {
-                const DomainDecomposition& s = d[static_cast<std::size_t>(r.position_peers[k])];
-                const auto it = std::find(s.position_peers.begin(), s.position_peers.end(), r.rank);
-                ASSERT_NE(it, s.position_peers.end());
-                const auto j = static_cast<std::size_t>(it - s.position_peers.begin());
-                EXPECT_EQ(r.position_send[k], s.position_recv[j]);
-            }
+        expect_matched(d, &DomainDecomposition::slot_peers, &DomainDecomposition::slot_send,
+                       &DomainDecomposition::slot_recv);
+        expect_matched(d, &DomainDecomposition::position_peers, &DomainDecomposition::position_send,
+                       &DomainDecomposition::position_recv);
         // a held particle receives every slot it does not compute: its slots = own + received
         for (const DomainDecomposition& r : d) {
             std::multiset<std::size_t> received;
