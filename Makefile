@@ -3,6 +3,8 @@
 #   make test      install missing Debian packages, build, run the tests (slow validation excluded)
 #   make validate  build, run the slow validation problems, write the validation report
 #   make bench     build with benchmarks and run them
+#   make fuzz      fuzz every reader for FUZZ_SECONDS (default 60) each, sanitizers on (clang)
+#   make sanitize  build with AddressSanitizer + UBSan, run the unit and io tests and the examples
 #   make format    lay out every C++ file as .clang-format says (make test checks it)
 #   make clean     remove the build folder
 
@@ -16,7 +18,7 @@ RESULTS ?= results/spherical_cap_elastic
 
 # Prerequisites run in the order written (dependencies, then configure, then build).
 .NOTPARALLEL:
-.PHONY: run test validate bench format clean deps configure build
+.PHONY: run test validate bench fuzz sanitize format clean deps configure build
 
 run: deps build
 	./$(BUILD)/fpmshell run $(EXAMPLE)/model.yaml -o $(RESULTS) --overwrite
@@ -40,8 +42,14 @@ bench: deps
 	cmake --build $(BUILD) -j$(JOBS)
 	./$(BUILD)/bench/fpmshell_bench
 
+fuzz: deps
+	FUZZ_SECONDS=$(or $(FUZZ_SECONDS),60) FUZZ_JOBS=$(JOBS) scripts/fuzz.sh
+
+sanitize: deps
+	JOBS=$(JOBS) scripts/sanitize.sh
+
 format: deps
-	git ls-files '*.cpp' '*.hpp' | grep -E '^(src|app|tests|bench)/' | xargs clang-format -i
+	git ls-files '*.cpp' '*.hpp' | grep -E '^(src|app|tests|bench|fuzz)/' | xargs clang-format -i
 
 deps:
 	@scripts/install-deps.sh

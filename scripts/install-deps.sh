@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Installs the Debian packages fpmshell needs to build, test and plot (README "Dependencies").
+# Installs the Debian packages fpmshell needs to build, test and plot (README "Dependencies"),
+# and those named as arguments.
 # Checks each package with dpkg; as root installs the missing ones with apt-get, otherwise
 # prints the exact command to run and exits 1. FPMSHELL_SKIP_DEPS=1 skips the check (for
 # machines where the libraries come from elsewhere).
@@ -8,9 +9,12 @@ set -euo pipefail
 PACKAGES=(
     build-essential cmake clang-format
     libeigen3-dev libyaml-cpp-dev libcli11-dev libfmt-dev
-    libgtest-dev libbenchmark-dev libgmsh-dev libmetis-dev libopenmpi-dev openmpi-bin
+    libgtest-dev libbenchmark-dev zlib1g-dev libgmsh-dev libmetis-dev libopenmpi-dev openmpi-bin
     python3 python3-matplotlib python3-numpy python3-yaml
 )
+
+# Packages named on the command line are needed too (make fuzz: clang and its libFuzzer).
+PACKAGES+=("$@")
 
 if [[ "${FPMSHELL_SKIP_DEPS:-0}" == "1" ]]; then
     exit 0

@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <string>
 
 #include "fpmshell/contact/closest_point.hpp"
 #include "fpmshell/io/restart_archive.hpp"
@@ -823,7 +824,34 @@ void ContactSolver::load(RestartReader& in) {
     in(n);
     if (n != definitions_.size()) in.fail("restart file of a model with other contact definitions");
     transfer_state(in);
-    for (Definition& d : definitions_) d.candidate_triangles.clear();  // of the loaded candidates
+    // the loaded lists index this model's particles, triangles and bodies (section "contact")
+    const auto n_particles = static_cast<Index>(model_.nodes.size());
+    const auto n_triangles = static_cast<Index>(model_.triangles.size());
+    const auto n_bodies = static_cast<Index>(model_.rigid_bodies.size());
+    auto fail = [&in](const char* what) {
+        in.fail(std::string("restart file of another model or damaged: its contact ") + what +
+                " do not fit this model");
+    };
+    for (Definition& d : definitions_) {
+        d.candidate_triangles.clear();  // of the loaded candidates
+        if (!(std::isfinite(d.travelled) && d.travelled >= 0)) fail("search distances");
+        if (!d.searched) {
+            d.candidate_start.clear();
+            d.candidates.clear();
+            continue;
+        }
+        const std::vector<std::int64_t>& start = d.candidate_start;
+        bool valid = start.size() == d.slaves.size() + 1 && start.front() == 0 &&
+                     start.back() == static_cast<std::int64_t>(d.candidates.size());
+        for (std::size_t i = 1; i < start.size() && valid; ++i) valid = start[i - 1] <= start[i];
+        for (const Index e : d.candidates) valid = valid && e >= 0 && e < n_triangles;
+        if (!valid) fail("candidate lists");
+    }
+    const ContactStatistics& st = stats_;
+    if (st.max_penetration_particle < -1 || st.max_penetration_particle >= n_particles ||
+        st.max_penetration_element < -1 || st.max_penetration_element >= n_triangles)
+        fail("statistics");
+    if (!memory_.restored(n_particles, n_bodies)) fail("multipliers");
 }
 
 }  // namespace fpmshell

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <utility>
 #include <vector>
@@ -49,11 +50,29 @@ public:
     }
     [[nodiscard]] std::size_t size() const { return entries_.size(); }
 
-    /// The state carried from step to step (restart files).
+    /// The state carried from step to step (restart files). A loaded state is used once
+    /// `restored` has accepted it.
     template <class Archive>
     void transfer(Archive& ar) {
         ar(entries_);
+    }
+    /// Whether the entries (as loaded from a restart file) are a memory of a model with
+    /// `n_particles` particles and `n_bodies` rigid bodies: keys sorted and unique, a slave
+    /// particle, master particles or -1, a body or -1, and finite positive multipliers. Then
+    /// they are kept as the memory; otherwise it is emptied.
+    [[nodiscard]] bool restored(Index n_particles, Index n_bodies) {
+        auto within = [](Index i, Index lo, Index n) { return i >= lo && i < n; };
+        bool valid = true;
+        for (std::size_t k = 0; k < entries_.size() && valid; ++k) {
+            const auto& [key, lambda] = entries_[k];
+            valid = within(key[0], 0, n_particles) && within(key[1], -1, n_particles) &&
+                    within(key[2], -1, n_particles) && within(key[3], -1, n_particles) &&
+                    within(key[4], -1, n_bodies) && std::isfinite(lambda) && lambda > 0 &&
+                    (k == 0 || entries_[k - 1].first < key);
+        }
+        if (!valid) entries_.clear();
         mark_slaves();
+        return valid;
     }
 
 private:

@@ -82,11 +82,15 @@ using std::sqrt;
 }
 // GCC 12 warns of an uninitialised variable inside its own AVX-512 sqrt intrinsic once inlined
 // (GCC bug 105593, fixed in GCC 13); the pragma at this call site silences that false report.
+#if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wuninitialized"
 #pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+#endif
 [[nodiscard]] inline RealPack sqrt(const RealPack& a) { return stdx::sqrt(a); }
+#if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC diagnostic pop
+#endif
 
 // 1 / x and sqrt(x) on the FMA units instead of the divider, for the return mapping: its
 // iterations are chains of divisions and square roots, and the divider takes an 8-lane

@@ -1,6 +1,8 @@
 // Output times of a run; the rules are in output_schedule.hpp.
 #include "fpmshell/driver/output_schedule.hpp"
 
+#include <cmath>
+
 #include "fpmshell/model/model.hpp"
 
 namespace fpmshell {
@@ -24,6 +26,15 @@ bool OutputSchedule::frame_due(Real t, bool last) {
     if (!(t >= next_frame_ * (1 - 1e-12) || last)) return false;
     while (next_frame_ <= t * (1 + 1e-12)) next_frame_ += fields_every_;
     return true;
+}
+
+bool OutputSchedule::fits_time(Real t) const {
+    constexpr Real k_most_intervals_behind = 1e6;
+    auto fits = [t](Real next, Real interval) {
+        return std::isfinite(next) &&
+               (interval <= 0 || t - next <= k_most_intervals_behind * interval);
+    };
+    return std::isfinite(t) && fits(next_row_, every_) && fits(next_frame_, fields_every_);
 }
 
 }  // namespace fpmshell

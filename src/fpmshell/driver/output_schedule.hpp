@@ -19,6 +19,11 @@ public:
     /// True when a field frame is due at time t; moves the next frame time past t.
     [[nodiscard]] bool frame_due(Real t, bool last);
 
+    /// Whether the next row and frame times fit a run at time t: finite, and fewer than a
+    /// million intervals behind it (a restart file's times, which a damaged file could set to
+    /// make row_due and frame_due loop for ever).
+    [[nodiscard]] bool fits_time(Real t) const;
+
     /// The restart file holds the next row and frame times (a resumed run may have other
     /// intervals: the next times were set by the first segment's).
     template <class Archive>

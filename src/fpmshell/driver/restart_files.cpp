@@ -43,6 +43,8 @@ double RestartFiles::resume(const std::filesystem::path& path, ExplicitSolver& s
     r.section("driver");
     double wall_seconds = 0;
     r(schedule, wall_seconds);
+    if (!schedule.fits_time(solver.time()))
+        r.fail("restart file is damaged: its next output times do not fit its time");
     results.load(r);
     r.finish();
     return wall_seconds;
@@ -55,6 +57,8 @@ double RestartFiles::resume_solver(const std::filesystem::path& path, ExplicitSo
     r.section("driver");
     double wall_seconds = 0;
     r(schedule, wall_seconds);
+    if (!schedule.fits_time(solver.time()))
+        r.fail("restart file is damaged: its next output times do not fit its time");
     return wall_seconds;
 }
 

@@ -1,5 +1,8 @@
 #include "fpmshell/io/restart_archive.hpp"
 
+#include <zlib.h>
+
+#include <algorithm>
 #include <fstream>
 #include <sstream>
 
@@ -12,9 +15,29 @@ namespace {
 constexpr char k_magic[8] = {'F', 'P', 'M', 'S', 'H', 'R', 'S', 'T'};
 // Raised whenever the content of a restart file changes. A file of another format is refused:
 // the sections of the solver, the elements and the result files are read only in the layout
-// this build writes (format 5: the solver's section "mass_scaling", the masses mass scaling has
-// added during the run; one section per result file, "history", "energy" and "fields").
-constexpr std::uint32_t k_format_version = 5;
+// this build writes (format 6: the CRC-32 of the file's content at its end; the solver's
+// section "mass_scaling", the masses mass scaling has added during the run; one section per
+// result file, "history", "energy" and "fields").
+constexpr std::uint32_t k_format_version = 6;
+
+/// Bytes of the checksum at the end of the file: the CRC-32 (zlib's, little-endian) of every
+/// byte before it. It turns a file damaged after it was written (cut short, a flipped bit, an
+/// edit) into a refusal, where the sections' names and lengths alone would let a changed number
+/// through.
+constexpr std::size_t k_checksum_bytes = 4;
+
+std::uint32_t checksum(std::string_view bytes) {
+    uLong crc = ::crc32_z(0L, nullptr, 0);
+    return static_cast<std::uint32_t>(
+        ::crc32_z(crc, reinterpret_cast<const Bytef*>(bytes.data()), bytes.size()));
+}
+
+std::string checksum_bytes(std::uint32_t crc) {
+    std::string out(k_checksum_bytes, '\0');
+    for (std::size_t i = 0; i < k_checksum_bytes; ++i)
+        out[i] = static_cast<char>((crc >> (8 * i)) & 0xffu);
+    return out;
+}
 
 }  // namespace
 
@@ -28,7 +51,11 @@ RestartWriter::RestartWriter() {
 }
 
 void RestartWriter::save(const std::filesystem::path& path) const {
-    write_file_atomic(path, bytes_);
+    write_file_atomic(path, bytes_ + checksum_bytes(checksum(bytes_)));
+}
+
+std::string RestartWriter::with_checksum(std::string_view content) {
+    return std::string(content) + checksum_bytes(checksum(content));
 }
 
 RestartReader::RestartReader(const std::filesystem::path& path) : path_(path) {
@@ -56,6 +83,14 @@ RestartReader::RestartReader(const std::filesystem::path& path) : path_(path) {
              std::to_string(version) + ", this version reads format " +
              std::to_string(k_format_version) + ")");
     format_ = version;
+    const std::string_view checked(bytes_.data(),
+                                   bytes_.size() - std::min(bytes_.size(), k_checksum_bytes));
+    if (bytes_.size() < pos_ + k_checksum_bytes ||
+        bytes_.compare(checked.size(), k_checksum_bytes, checksum_bytes(checksum(checked))) != 0)
+        fail(
+            "restart file is damaged: its checksum does not match its content (it was cut short "
+            "or changed after it was written)");
+    bytes_.resize(checked.size());
     std::uint8_t size_double = 0, size_long = 0, size_int = 0;
     get(size_double);
     get(size_long);
@@ -70,10 +105,18 @@ void RestartReader::raw(void* data, std::size_t n) {
     pos_ += n;
 }
 
-std::size_t RestartReader::length() {
+void RestartReader::flag(bool& v) {
+    std::uint8_t byte = 0;
+    raw(&byte, 1);
+    if (byte > 1)
+        fail("restart file is corrupt: a flag is neither 0 nor 1 (in section '" + section_ + "')");
+    v = byte == 1;
+}
+
+std::size_t RestartReader::length(std::size_t item_bytes) {
     std::uint64_t n = 0;
     get(n);
-    if (n > bytes_.size() - pos_)
+    if (n > (bytes_.size() - pos_) / std::max<std::size_t>(item_bytes, 1))
         fail("restart file is truncated or corrupt (in section '" + section_ + "')");
     return static_cast<std::size_t>(n);
 }

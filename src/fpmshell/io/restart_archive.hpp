@@ -52,6 +52,29 @@ template <class T>
 struct is_quaternion : std::false_type {};
 template <class S, int O>
 struct is_quaternion<Eigen::Quaternion<S, O>> : std::true_type {};
+
+/// The fewest bytes one item of type T takes in a file: a stored length of n items is refused
+/// when n times this exceeds the bytes left, so that a damaged length cannot ask for more memory
+/// than a few times the file's size.
+template <class T>
+constexpr std::size_t least_stored_bytes() {
+    if constexpr (is_raw<T>) {
+        return sizeof(T);
+    } else if constexpr (is_fixed_eigen<T>) {
+        return sizeof(typename T::Scalar) * static_cast<std::size_t>(T::SizeAtCompileTime);
+    } else if constexpr (is_quaternion<T>::value) {
+        return 4 * sizeof(typename T::Scalar);
+    } else if constexpr (std::is_same_v<T, std::string> || is_vector<T>::value) {
+        return sizeof(std::uint64_t);  // the length
+    } else if constexpr (is_std_array<T>::value) {
+        return std::tuple_size_v<T> * least_stored_bytes<typename T::value_type>();
+    } else if constexpr (is_pair<T>::value) {
+        return least_stored_bytes<typename T::first_type>() +
+               least_stored_bytes<typename T::second_type>();
+    } else {
+        return 1;
+    }
+}
 }  // namespace restart_detail
 
 template <class Archive, class T>
@@ -74,9 +97,13 @@ public:
     /// Writes the file atomically (write_file_atomic). Throws std::runtime_error on failure.
     void save(const std::filesystem::path& path) const;
     [[nodiscard]] std::size_t size() const { return bytes_.size(); }
+    /// The file whose content (magic word and sections) is `content`: the content and its
+    /// checksum (for tools and tests that make restart files of their own).
+    [[nodiscard]] static std::string with_checksum(std::string_view content);
 
 private:
     void raw(const void* data, std::size_t n) { bytes_.append(static_cast<const char*>(data), n); }
+    void flag(bool v) { bytes_.push_back(v ? '\1' : '\0'); }
 
     template <class Archive, class T>
     friend void transfer_value(Archive& archive, T& value);
@@ -117,6 +144,8 @@ public:
 
 private:
     void raw(void* data, std::size_t n);
+    /// A bool: a byte 0 or 1 (another value fails as a corrupt file).
+    void flag(bool& v);
 
     template <class Archive, class T>
     friend void transfer_value(Archive& archive, T& value);
@@ -127,10 +156,11 @@ private:
     /// Reads the length of a string or vector and gives it that many items.
     template <class Sequence>
     void transfer_length(Sequence& v) {
-        v.resize(length());
+        v.resize(length(restart_detail::least_stored_bytes<typename Sequence::value_type>()));
     }
-    /// A stored length, checked against the bytes left (a corrupt length fails cleanly).
-    std::size_t length();
+    /// A stored length of items of at least `item_bytes` bytes each, checked against the bytes
+    /// left (a corrupt length fails cleanly, before anything is allocated).
+    std::size_t length(std::size_t item_bytes);
 
     std::filesystem::path path_;
     std::string bytes_;
@@ -139,6 +169,33 @@ private:
     std::uint32_t format_ = 0;
 };
 
+/// The lengths of the strings and vectors of values, in the order transfer_value lays them out:
+/// where the model fixes them (one entry per particle, per element), a loaded state must have
+/// the lengths that a state built for the model has.
+class LengthRecorder {
+public:
+    template <class... T>
+    void operator()(const T&... values) {
+        (transfer_value(*this, const_cast<T&>(values)), ...);  // only the lengths are read
+    }
+    void section(std::string_view /*name*/) {}
+    void raw(const void* /*data*/, std::size_t /*n*/) {}
+    void flag(bool /*v*/) {}
+    template <class Sequence>
+    void transfer_length(const Sequence& v) {
+        lengths.push_back(v.size());
+    }
+    std::vector<std::size_t> lengths;
+};
+
+/// LengthRecorder's lengths of `values`.
+template <class... T>
+[[nodiscard]] std::vector<std::size_t> stored_lengths(const T&... values) {
+    LengthRecorder r;
+    r(values...);
+    return r.lengths;
+}
+
 /// The bytes of one value, in the same order for both directions: a RestartWriter stores them,
 /// a RestartReader fills the value. Raw values and fixed-size Eigen matrices are copied as they
 /// are in memory; a string or a vector is its length and then its items; any other type is the
@@ -146,7 +203,9 @@ private:
 template <class Archive, class T>
 void transfer_value(Archive& archive, T& v) {
     using namespace restart_detail;
-    if constexpr (is_raw<T>) {
+    if constexpr (std::is_same_v<T, bool>) {
+        archive.flag(v);  // one byte, 0 or 1: any other byte is not a bool
+    } else if constexpr (is_raw<T>) {
         archive.raw(&v, sizeof(T));
     } else if constexpr (is_fixed_eigen<T>) {
         archive.raw(v.data(),

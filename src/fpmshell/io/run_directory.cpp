@@ -79,19 +79,28 @@ void remove_file(const fs::path& dir, const fs::path& file) {
     }
 }
 
-/// Deletes the previous results of a run in DIR: our named files, their temporaries and the
-/// VTU frames. Nothing else is touched.
-void clean_results(const fs::path& dir) {
+/// Deletes our files in DIR (not in its fields folder): the temporaries of our named files (left
+/// by a process killed while it wrote one, write_file_atomic), and with `results` the named
+/// files themselves. Nothing else is touched.
+void remove_our_files(const fs::path& dir, bool results) {
     std::error_code ec;
     for (const auto& entry : fs::directory_iterator(dir, ec)) {
         const std::string name = entry.path().filename().string();
         bool ours = false;
         for (const char* result : k_result_files) {
-            if (name == result || starts_with(name, std::string(result) + ".tmp.")) ours = true;
+            if ((results && name == result) || starts_with(name, std::string(result) + ".tmp."))
+                ours = true;
         }
         if (starts_with(name, std::string(k_model_marker) + ".tmp.")) ours = true;
         if (ours && !entry.is_directory(ec)) remove_file(dir, entry.path());
     }
+}
+
+/// Deletes the previous results of a run in DIR: our named files, their temporaries and the
+/// VTU frames. Nothing else is touched.
+void clean_results(const fs::path& dir) {
+    std::error_code ec;
+    remove_our_files(dir, true);
     const fs::path fields = dir / k_fields_folder;
     if (fs::is_directory(fields, ec)) {
         for (const auto& entry : fs::directory_iterator(fields, ec)) {
@@ -163,6 +172,7 @@ void prepare_resume_directory(const fs::path& dir, const fs::path& model_file, b
         dir_error(dir, "the restart file belongs to " + other +
                            "; use --overwrite to resume it with this model file.");
     }
+    remove_our_files(dir, false);  // the frames' temporaries go with the frames after the restart
     fs::create_directories(dir / k_fields_folder, ec);
     if (ec)
         dir_error(dir, "cannot create the folder '" + (dir / k_fields_folder).string() + "' (" +

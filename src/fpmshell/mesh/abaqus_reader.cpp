@@ -2,6 +2,7 @@
 #include "fpmshell/mesh/abaqus_reader.hpp"
 
 #include <algorithm>
+#include <filesystem>
 #include <fstream>
 #include <map>
 
@@ -59,6 +60,8 @@ public:
     MeshData read() {
         std::ifstream in(raw_.path, std::ios::binary);
         if (!in) raw_.fail(0, "cannot open the mesh file");
+        std::error_code size_error;
+        raw_.file_bytes = std::filesystem::file_size(raw_.path, size_error);
         std::string text;
         int number = 0;
         std::string pending;  // an element card continued on the next line
@@ -187,11 +190,11 @@ private:
                     const long long last = id(fields[1], line, "last");
                     const long long step =
                         fields.size() == 3 ? id(fields[2], line, "increment") : 1;
-                    if (step <= 0 || last < first || (last - first) / step > 100'000'000)
-                        raw_.fail(line,
-                                  "GENERATE needs first <= last and an increment >= 1 "
-                                  "(at most 1e8 members)");
-                    for (long long v = first; v <= last; v += step) members.push_back(v);
+                    if (step <= 0 || first < 0 || last < first)
+                        raw_.fail(line, "GENERATE needs 0 <= first <= last and an increment >= 1");
+                    const long long count = (last - first) / step + 1;
+                    raw_.add_generated(count, line);
+                    for (long long k = 0; k < count; ++k) members.push_back(first + k * step);
                     return;
                 }
                 for (const std::string& f : fields) {

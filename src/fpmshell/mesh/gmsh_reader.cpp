@@ -14,13 +14,18 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <charconv>
 #include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <map>
+#include <sstream>
 #include <string>
 #include <unordered_map>
+#include <vector>
 
 #include "fpmshell/core/errors.hpp"
 #include "fpmshell/mesh/gmsh_library.hpp"
@@ -48,6 +53,42 @@ private:
     throw InputError(input_error_text(path, 0, "", msg));
 }
 
+/// Refuses a file that declares more nodes, elements or entity blocks than it has bytes, before
+/// Gmsh allocates for them: the counts after "$Nodes" and "$Elements" (format 2: the count;
+/// format 4: blocks, count, lowest and highest tag, as text or, in a binary file of format 4,
+/// as four 8-byte integers). `in` is after the format line.
+void check_declared_sizes(std::ifstream& in, const std::string& path, bool binary4,
+                          std::uintmax_t file_bytes) {
+    std::string line;
+    while (std::getline(in, line)) {
+        while (!line.empty() && (line.back() == '\r' || line.back() == ' ')) line.pop_back();
+        if (line != "$Nodes" && line != "$Elements") continue;
+        std::vector<unsigned long long> counts;
+        if (binary4) {
+            std::uint64_t header[4] = {};
+            if (!in.read(reinterpret_cast<char*>(header), sizeof header)) return;
+            counts.assign(header, header + 2);
+        } else {
+            std::string numbers;
+            if (!std::getline(in, numbers)) return;
+            std::istringstream values(numbers);
+            for (std::string token; values >> token && counts.size() < 2;) {
+                unsigned long long v = 0;
+                const auto [end, error] =
+                    std::from_chars(token.data(), token.data() + token.size(), v);
+                if (error != std::errc() || end != token.data() + token.size()) break;
+                counts.push_back(v);
+            }
+        }
+        for (const unsigned long long n : counts)
+            if (n > file_bytes)
+                fail(path, "the file declares " + std::to_string(n) + " " +
+                               (line == "$Nodes" ? "nodes" : "elements") +
+                               " (or blocks of them) after " + line + ", more than its " +
+                               std::to_string(file_bytes) + " bytes can hold");
+    }
+}
+
 /// Refuses what Gmsh would not read as a mesh: Gmsh falls back to interpreting unknown content
 /// as a .geo script, which can run for ever or call the shell, so only files that start like
 /// a .msh file are handed to it.
@@ -62,6 +103,15 @@ void check_msh_header(const std::string& path) {
         fail(path,
              "this is not a Gmsh mesh file (it does not start with $MeshFormat); "
              "expected a .msh file of format 2 or 4");
+    std::string format;
+    std::getline(in, format);
+    std::istringstream fields(format);
+    double version = 0;
+    int file_type = 0, data_size = 0;
+    fields >> version >> file_type >> data_size;
+    std::error_code size_error;
+    check_declared_sizes(in, path, version >= 4 && file_type == 1 && data_size == 8,
+                         std::filesystem::file_size(path, size_error));
 }
 
 /// Reads the mesh with Gmsh in this process.

@@ -2,6 +2,7 @@
 #include "fpmshell/mesh/lsdyna_reader.hpp"
 
 #include <algorithm>
+#include <filesystem>
 #include <fstream>
 #include <set>
 
@@ -58,6 +59,8 @@ public:
     MeshData read() {
         std::ifstream in(raw_.path, std::ios::binary);
         if (!in) raw_.fail(0, "cannot open the mesh file");
+        std::error_code size_error;
+        raw_.file_bytes = std::filesystem::file_size(raw_.path, size_error);
         std::string text;
         int number = 0;
         while (std::getline(in, text)) {
@@ -232,11 +235,11 @@ private:
                     const long long first = ids[k];
                     const long long last = ids[k + 1];
                     if (first == 0 && last == 0) continue;
-                    if (first <= 0 || last < first || last - first > 100'000'000)
-                        raw_.fail(number,
-                                  "a GENERATE range needs 0 < first <= last (at most 1e8 "
-                                  "members)");
-                    for (long long v = first; v <= last; ++v) members.push_back(v);
+                    if (first <= 0 || last < first)
+                        raw_.fail(number, "a GENERATE range needs 0 < first <= last");
+                    const long long count = last - first + 1;
+                    raw_.add_generated(count, number);
+                    for (long long m = 0; m < count; ++m) members.push_back(first + m);
                 }
                 return;
             }

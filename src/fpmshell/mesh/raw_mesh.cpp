@@ -71,6 +71,14 @@ void RawMesh::fail(int line, const std::string& message) const {
     throw InputError(input_error_text(path, line, "", message));
 }
 
+void RawMesh::add_generated(long long count, int line) {
+    if (count > static_cast<long long>(file_bytes) - generated)
+        fail(line, "the GENERATE ranges list more ids (" + std::to_string(generated + count) +
+                       " so far) than a file of " + std::to_string(file_bytes) +
+                       " bytes can define: every member must be a node or element of the file");
+    generated += count;
+}
+
 void RawMesh::add_node(long long id, const Vec3& x, int line) {
     const auto [it, inserted] = nodes.try_emplace(id, Node{x, line});
     if (!inserted)

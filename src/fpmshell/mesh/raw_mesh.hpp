@@ -2,6 +2,7 @@
 // node and element numbers; finish_raw_mesh turns it into a MeshData with compact indices.
 #pragma once
 
+#include <cstdint>
 #include <map>
 #include <string>
 #include <unordered_map>
@@ -32,11 +33,18 @@ struct RawMesh {
     std::map<std::string, std::vector<long long>> node_sets;               ///< name -> node ids
     std::map<std::string, std::vector<long long>> element_sets;            ///< name -> element ids
     std::map<std::string, int> set_lines;                                  ///< name -> first line
+    std::uintmax_t file_bytes = 0;  ///< the size of the file (bounds what GENERATE may list)
+    long long generated = 0;        ///< the members listed by GENERATE ranges so far
 
     /// Adds a node; a second definition of the same id is an InputError.
     void add_node(long long id, const Vec3& x, int line);
     /// Adds a 3- or 4-node shell element (duplicate ids are reported by finish_raw_mesh).
     void add_shell(long long id, std::vector<long long> node_ids, int line);
+    /// Counts the `count` members of a GENERATE range on `line` before they are stored. Every
+    /// member must be a node or element the file defines, each on a line of its own, so ranges
+    /// that list more ids in all than the file has bytes are refused (an absurd range in a small
+    /// file would otherwise ask for any amount of memory).
+    void add_generated(long long count, int line);
     /// Throws InputError "PATH:LINE: message".
     [[noreturn]] void fail(int line, const std::string& message) const;
 };

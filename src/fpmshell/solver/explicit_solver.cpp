@@ -644,19 +644,35 @@ void ExplicitSolver::save(RestartWriter& out) const {
 }
 
 void ExplicitSolver::load(RestartReader& in) {
+    // Every list of the state has one entry per particle, rigid body, element or section of the
+    // model: a file whose lists have other lengths is of another model (or damaged), and is
+    // refused before any of them is used as the model's.
+    LengthRecorder model_lengths;
+    transfer_state(model_lengths);
     in.section("solver");
     const std::size_t n_bodies = bodies_.size();
     transfer_state(in);
+    if (bodies_.size() != n_bodies) in.fail("restart file of a model with other rigid bodies");
+    LengthRecorder loaded_lengths;
+    transfer_state(loaded_lengths);
+    if (loaded_lengths.lengths != model_lengths.lengths)
+        in.fail("restart file of another model: its particle fields do not fit this mesh");
     // The model's initial positions must be those the run started from, bit for bit.
     if (s_.x0 != model_.nodes)
         in.fail("restart file of another model: its particles are not those of this mesh");
-    if (bodies_.size() != n_bodies) in.fail("restart file of a model with other rigid bodies");
     for (std::size_t p = 0; p < s_.size(); ++p) s_.drill_axis[p] = bc_->drill_axis(p, s_.normal[p]);
     in.section("elements");
     elements_.load(in);
     in.section("mass_scaling");
+    const std::vector<std::size_t> mass_lengths = stored_lengths(added_mass_);
+    LengthRecorder masses;
+    elements_.time_steps().transfer_masses(masses);
     elements_.time_steps().transfer_masses(in);
     in(added_mass_);
+    LengthRecorder loaded_masses;
+    elements_.time_steps().transfer_masses(loaded_masses);
+    if (loaded_masses.lengths != masses.lengths || stored_lengths(added_mass_) != mass_lengths)
+        in.fail("restart file of another model: its element masses do not fit this mesh");
     // the contact's inverse masses follow the masses the run had reached (§6.10)
     if (contact_)
         for (std::size_t p = 0; p < s_.size(); ++p)

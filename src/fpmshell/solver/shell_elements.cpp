@@ -696,9 +696,12 @@ void ShellElements::load(RestartReader& in) {
         (group_of(e).stress_only() ? n_stress_only : n_history) += group_of(e).n_points();
     std::vector<MaterialPoint> points;
     std::vector<Voigt3> stresses, n, m;  // the resultants N, M of every element
+    const std::vector<std::size_t> ratio_lengths =
+        stored_lengths(time_steps_.ratio(), time_steps_.ratio_length());
     in(points, stresses, thickness_, time_steps_.ratio(), time_steps_.ratio_length(), n, m);
     if (points.size() != n_history || stresses.size() != n_stress_only ||
-        thickness_.size() != n_elements || n.size() != n_elements || m.size() != n_elements)
+        thickness_.size() != n_elements || n.size() != n_elements || m.size() != n_elements ||
+        stored_lengths(time_steps_.ratio(), time_steps_.ratio_length()) != ratio_lengths)
         in.fail("restart file of a model with other elements or integration rules");
     for (std::size_t e = 0; e < n_elements; ++e) set_resultants(e, n[e], m[e]);
     std::size_t i = 0, j = 0;

@@ -97,7 +97,18 @@ TEST(RestartArchive, RefusesTruncatedForeignAndReorderedFiles) {
         w.save(dir / "good.bin");
     }
     const std::string good = bytes_of(dir / "good.bin");
+    const std::string content = good.substr(0, good.size() - 4);  // without the CRC-32
     std::ofstream(dir / "short.bin", std::ios::binary) << good.substr(0, good.size() - 8);
+    std::string flipped = good;
+    flipped[flipped.size() / 2] ^= 0x10;  // one bit of one of the numbers
+    std::ofstream(dir / "flipped.bin", std::ios::binary) << flipped;
+    // content cut short or with a damaged length, behind a checksum that matches it
+    std::ofstream(dir / "cut.bin", std::ios::binary)
+        << RestartWriter::with_checksum(content.substr(0, content.size() - 8));
+    std::string long_vector = content;
+    const std::size_t length_at = content.size() - 100 * sizeof(Real) - sizeof(std::uint64_t);
+    for (std::size_t i = 0; i < sizeof(std::uint64_t); ++i) long_vector[length_at + i] = '\xff';
+    std::ofstream(dir / "long.bin", std::ios::binary) << RestartWriter::with_checksum(long_vector);
     std::ofstream(dir / "text.bin", std::ios::binary) << "title: not a restart file\n";
     auto message = [](auto&& f) {
         try {
@@ -114,7 +125,22 @@ TEST(RestartArchive, RefusesTruncatedForeignAndReorderedFiles) {
         r(v);
     });
     EXPECT_NE(truncated.find("short.bin"), std::string::npos) << truncated;
-    EXPECT_NE(truncated.find("truncated"), std::string::npos) << truncated;
+    EXPECT_NE(truncated.find("damaged"), std::string::npos) << truncated;
+    const std::string bit = message([&] { RestartReader r(dir / "flipped.bin"); });
+    EXPECT_NE(bit.find("checksum does not match"), std::string::npos) << bit;
+    auto read_vector = [&](const char* name) {
+        return message([&] {
+            RestartReader r(dir / name);
+            r.section("solver");
+            std::vector<Real> v;
+            r(v);
+        });
+    };
+    const std::string cut = read_vector("cut.bin");
+    EXPECT_NE(cut.find("truncated"), std::string::npos) << cut;
+    // 2^64 - 1 items: refused from the bytes left, before anything is allocated
+    const std::string huge = read_vector("long.bin");
+    EXPECT_NE(huge.find("truncated or corrupt (in section 'solver')"), std::string::npos) << huge;
     const std::string foreign = message([&] { RestartReader r(dir / "text.bin"); });
     EXPECT_NE(foreign.find("not an fpmshell restart file"), std::string::npos) << foreign;
     const std::string reordered = message([&] {

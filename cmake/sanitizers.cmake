@@ -1,0 +1,23 @@
+# Instrumented builds (README "Reliability"), each in a build folder of its own:
+#   FPMSHELL_SANITIZE=ON  AddressSanitizer + UndefinedBehaviorSanitizer on everything (make
+#                         sanitize runs the unit and io tests and the examples in such a build)
+#   FPMSHELL_FUZZ=ON      the same with libFuzzer's coverage instrumentation, and the fuzz targets
+#                         linked with libFuzzer (make fuzz); needs clang
+# A sanitizer's report ends the process with an error: -fno-sanitize-recover makes undefined
+# behaviour as fatal as a bad memory access, so that no test passes over it.
+option(FPMSHELL_SANITIZE "Build with AddressSanitizer and UndefinedBehaviorSanitizer" OFF)
+option(FPMSHELL_FUZZ "Build the fuzz targets with libFuzzer (clang), sanitizers on" OFF)
+
+set(_fpmshell_sanitizers -fsanitize=address,undefined -fno-sanitize-recover=undefined
+    -fno-omit-frame-pointer)
+if(FPMSHELL_FUZZ)
+  if(NOT CMAKE_CXX_COMPILER_ID STREQUAL "Clang")
+    message(FATAL_ERROR "FPMSHELL_FUZZ needs clang (libFuzzer): configure with "
+                        "-DCMAKE_CXX_COMPILER=clang++")
+  endif()
+  add_compile_options(${_fpmshell_sanitizers} -fsanitize=fuzzer-no-link)
+  add_link_options(-fsanitize=address,undefined)
+elseif(FPMSHELL_SANITIZE)
+  add_compile_options(${_fpmshell_sanitizers})
+  add_link_options(-fsanitize=address,undefined)
+endif()
