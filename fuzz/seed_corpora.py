@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """Writes the seed corpus of every fuzz target (fuzz/README.md) into OUT/<target>/:
 
-  model_yaml     every model file of examples/, validation/, bench/ and fuzz/models/
+  model_yaml     every model file of examples/, validation/, bench/ and fuzz/models/, with its
+                 generated mesh made coarse (a few dozen triangles)
   set_overrides  fuzz/seeds/set_overrides/ (one override per line)
   gmsh_msh       the .msh files of the repository and the Gmsh meshes written in the unit tests
   abaqus_inp     the .inp files of the repository and those written in the unit tests
@@ -22,6 +23,7 @@ import tempfile
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 TARGETS = ["model_yaml", "set_overrides", "gmsh_msh", "abaqus_inp", "lsdyna_k", "restart_file"]
+MESH_DIVISIONS = 4  # the seeds' generated meshes: a few dozen triangles (coarse())
 CHECKSUM_BYTES = 4  # the CRC-32 at the end of a restart file (io/restart_archive.cpp)
 
 
@@ -40,6 +42,14 @@ def test_literals(start):
             if text.lstrip().upper().startswith(start.upper()):
                 found.append(text)
     return found
+
+
+def coarse(model):
+    """The model with at most MESH_DIVISIONS divisions in each direction of a generated mesh: the
+    fuzzer explores the keys, not the mesh size, and a seed of 10^5 elements would make every
+    input it derives take a second."""
+    return re.sub(r"\b(nx|ny|n|divisions\w*)(\s*:\s*)(\d+)\b(?!\.)",
+                  lambda m: m.group(1) + m.group(2) + str(min(int(m.group(3)), MESH_DIVISIONS)), model)
 
 
 def restart_seeds(fpmshell, work):
@@ -72,7 +82,7 @@ def main():
 
     for f in repository_files("examples/**/*.yaml", "validation/**/*.yaml", "bench/**/*.yaml",
                               "fuzz/models/*.yaml"):
-        put("model_yaml", os.path.relpath(f, ROOT).replace("/", "_"), open(f).read())
+        put("model_yaml", os.path.relpath(f, ROOT).replace("/", "_"), coarse(open(f).read()))
     for f in repository_files("fuzz/seeds/set_overrides/*"):
         put("set_overrides", os.path.basename(f), open(f).read())
     for target, ext, start in (("gmsh_msh", "msh", "$MeshFormat"), ("abaqus_inp", "inp", "*"),

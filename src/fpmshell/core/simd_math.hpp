@@ -49,7 +49,9 @@ template <class T>
     using namespace simd_math_detail;
     using I = IntOf<T>;
     const I bits = bits_of(x);
-    I exponent = (bits >> 52) - 1023;
+    // shifts by a pack of counts: libstdc++'s shift of a simd by a scalar count gives garbage
+    // when clang 14 compiles it (-O2); by a pack it is right with both compilers
+    I exponent = (bits >> I(52)) - 1023;
     T m = real_of(I((bits & k_mantissa_bits) | k_exponent_one));  // [1, 2)
     const auto high = m > 1.4142135623730951;
     m = select(high, 0.5 * m, m);
@@ -92,7 +94,7 @@ template <class T>
     const T q6 = 1.0 / 479001600.0 + r * (1.0 / 6227020800.0);
     const T p = ((q0 + r2 * q1) + r4 * (q2 + r2 * q3)) + r8 * ((q4 + r2 * q5) + r4 * q6);
     const I k_int = bits_of(shifted) - bits_of(T(shifter));
-    const T two_k = real_of(I((k_int + 1023) << 52));
+    const T two_k = real_of(I((k_int + 1023) << I(52)));  // a pack count, as in vector_log
     return select(x < -708.0, T(0.0), p * two_k);
 }
 
