@@ -5,6 +5,7 @@
 #   make bench     build with benchmarks and run them
 #   make fuzz      fuzz every reader for FUZZ_SECONDS (default 60) each, sanitizers on (clang)
 #   make sanitize  build with AddressSanitizer + UBSan, run the unit and io tests and the examples
+#   make tsan      build with ThreadSanitizer (clang), run the unit tests and the examples on 2 threads
 #   make format    lay out every C++ file as .clang-format says (make test checks it)
 #   make clean     remove the build folder
 
@@ -18,7 +19,7 @@ RESULTS ?= results/spherical_cap_elastic
 
 # Prerequisites run in the order written (dependencies, then configure, then build).
 .NOTPARALLEL:
-.PHONY: run test validate bench fuzz sanitize format clean deps configure build
+.PHONY: run test validate bench fuzz sanitize tsan format clean deps configure build
 
 run: deps build
 	./$(BUILD)/fpmshell run $(EXAMPLE)/model.yaml -o $(RESULTS) --overwrite
@@ -47,6 +48,9 @@ fuzz: deps
 
 sanitize: deps
 	JOBS=$(JOBS) scripts/sanitize.sh
+
+tsan: deps
+	JOBS=$(JOBS) scripts/tsan.sh
 
 format: deps
 	git ls-files '*.cpp' '*.hpp' | grep -E '^(src|app|tests|bench|fuzz)/' | xargs clang-format -i

@@ -3,10 +3,14 @@
 #                         sanitize runs the unit and io tests and the examples in such a build)
 #   FPMSHELL_FUZZ=ON      the same with libFuzzer's coverage instrumentation, and the fuzz targets
 #                         linked with libFuzzer (make fuzz); needs clang
+#   FPMSHELL_TSAN=ON      ThreadSanitizer (make tsan); needs clang, whose OpenMP runtime (libomp)
+#                         tells ThreadSanitizer about its barriers and tasks through libarcher;
+#                         g++'s libgomp does not, and every parallel loop would be a false report
 # A sanitizer's report ends the process with an error: -fno-sanitize-recover makes undefined
 # behaviour as fatal as a bad memory access, so that no test passes over it.
 option(FPMSHELL_SANITIZE "Build with AddressSanitizer and UndefinedBehaviorSanitizer" OFF)
 option(FPMSHELL_FUZZ "Build the fuzz targets with libFuzzer (clang), sanitizers on" OFF)
+option(FPMSHELL_TSAN "Build with ThreadSanitizer (clang)" OFF)
 
 set(_fpmshell_sanitizers -fsanitize=address,undefined -fno-sanitize-recover=undefined
     -fno-omit-frame-pointer)
@@ -17,6 +21,13 @@ if(FPMSHELL_FUZZ)
   endif()
   add_compile_options(${_fpmshell_sanitizers} -fsanitize=fuzzer-no-link)
   add_link_options(-fsanitize=address,undefined)
+elseif(FPMSHELL_TSAN)
+  if(NOT CMAKE_CXX_COMPILER_ID STREQUAL "Clang")
+    message(FATAL_ERROR "FPMSHELL_TSAN needs clang (libomp and libarcher): configure with "
+                        "-DCMAKE_CXX_COMPILER=clang++")
+  endif()
+  add_compile_options(-fsanitize=thread -fno-omit-frame-pointer)
+  add_link_options(-fsanitize=thread)
 elseif(FPMSHELL_SANITIZE)
   add_compile_options(${_fpmshell_sanitizers})
   add_link_options(-fsanitize=address,undefined)

@@ -27,6 +27,18 @@ function(fpmshell_select_simd out)
   elseif(NOT FPMSHELL_SIMD STREQUAL "off")
     set(level ${FPMSHELL_SIMD})
   endif()
+  # libstdc++'s <experimental/simd> is written for g++: compiled by clang (14) for AVX-512, its
+  # masked assignment (where(m, x) = y) and shifts give wrong lanes even at -O0
+  # (test SimdMath.EveryLaneEqualsItsScalar). Its AVX2 code is right under clang.
+  if(CMAKE_CXX_COMPILER_ID STREQUAL "Clang" AND level STREQUAL "x86-64-v4")
+    if(NOT FPMSHELL_SIMD STREQUAL "auto")
+      message(FATAL_ERROR "FPMSHELL_SIMD=x86-64-v4 needs g++: libstdc++'s SIMD library computes "
+                          "wrong AVX-512 lanes when clang compiles it; use x86-64-v3 with clang")
+    endif()
+    set(level x86-64-v3)
+    message(STATUS "fpmshell: clang: AVX2 (x86-64-v3), as libstdc++'s SIMD is wrong on AVX-512 "
+                   "under clang")
+  endif()
   if(level)
     message(STATUS "fpmshell: instruction set -march=${level}")
   else()

@@ -17,18 +17,6 @@ cmake -S . -B "$SANITIZE_BUILD" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DFPMSHELL_SAN
 cmake --build "$SANITIZE_BUILD" -j "$JOBS"
 ctest --test-dir "$SANITIZE_BUILD" -L '^(unit|io|fuzz)$' --output-on-failure -j "$JOBS"
 
-# A short run of every example: set-up, element and contact loops, output and the restart file
-# of its first steps, 40 stable steps long (check prints the stable step).
-out="$SANITIZE_BUILD/sanitize_runs"
-rm -rf "$out"
-for model in examples/*/model.yaml; do
-    name=$(basename "$(dirname "$model")")
-    dt=$("$SANITIZE_BUILD/fpmshell" check "$model" | sed -n 's/.*stable time step *\([0-9.eE+-]*\).*/\1/p' | head -1)
-    [[ -n "$dt" ]] || { echo "sanitize: no stable step in the summary of $model" >&2; exit 1; }
-    end=$(python3 -c "print(40 * $dt)")
-    echo "sanitize: $name, 40 steps (end_time $end)"
-    "$SANITIZE_BUILD/fpmshell" run "$model" -o "$out/$name" --quiet --threads 2 \
-        --restart-every 1e9 --set "control.end_time=$end" --set "output.every=0" >/dev/null 2>"$out.$name.err" ||
-        { cat "$out.$name.err" >&2; echo "sanitize: the run of $model failed" >&2; exit 1; }
-done
+# A short run of every example (40 steps, 2 threads)
+scripts/short_example_runs.sh "$SANITIZE_BUILD/fpmshell" "$SANITIZE_BUILD/sanitize_runs"
 echo "sanitize: every test and example run passed under AddressSanitizer and UBSan"

@@ -710,7 +710,8 @@ TEST(ModelReader, MalformedFilesGiveInputErrors) {
     expect_error("title: x\n  bad indentation: 1\n", 2, "", "not valid YAML");
     expect_error("- 1\n- 2\n", 1, "", "must be a map");
     expect_error("hello\n", 1, "", "must be a map");
-    expect_error(std::string("\0\x01\xff\xfe garbage \x80", 16), -1, "", "");
+    constexpr char binary[] = "\0\x01\xff\xfe garbage \x80";  // with a NUL inside
+    expect_error(std::string(binary, sizeof binary - 1), -1, "", "");
     expect_error(std::string(20000, '['), -1, "", "");
     expect_error(k_base + "damping: &d {mass: *d}\n", 9, "damping.mass", "expected a number");
     expect_error(replaced(k_base, "control:\n  end_time: 1.0e-3\n", ""), 1, "control",

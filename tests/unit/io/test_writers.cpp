@@ -134,7 +134,7 @@ std::vector<T> decode_array(const std::string& body) {
     std::memcpy(&n, bytes.data(), sizeof(n));
     EXPECT_EQ(bytes.size(), sizeof(n) + n);
     std::vector<T> values(n / sizeof(T));
-    std::memcpy(values.data(), bytes.data() + sizeof(n), n);
+    if (n > 0) std::memcpy(values.data(), bytes.data() + sizeof(n), n);  // data() may be null
     return values;
 }
 
