@@ -346,27 +346,52 @@ def save_figure(fig, path, title, dpi=110):
 
 
 def read_vtu(path):
-    """Arrays of one fields/frame_NNNNN.vtu (fpmshell's base64 binary VTK XML, UInt64 headers):
+    """Arrays of one fields/frame_NNNNN.vtu as fpmshell writes it (io/vtu_writer.hpp: raw
+    appended data, zlib-compressed or not, base64 or ascii; UInt64 headers, little endian):
     dict name -> list of tuples (or of floats for one component), plus 'points'."""
     import base64
     import re
     import struct
-    text = open(path).read()
+    import zlib
+    data = open(path, "rb").read()
+    start = data.find(b'<AppendedData encoding="raw">')
+    head = (data if start < 0 else data[:start]).decode()
+    appended = data.index(b"_", start) + 1 if start >= 0 else -1
+    zlib_blocks = 'compressor="vtkZLibDataCompressor"' in head
+    codes = {"Float64": "d", "Int64": "q", "UInt8": "B", "Int32": "i"}
+
+    def unpack(typ, raw):
+        code = codes[typ]
+        return list(struct.unpack("<%d%s" % (len(raw) // struct.calcsize(code), code), raw))
+
+    def appended_bytes(offset):
+        at = appended + offset
+        if not zlib_blocks:
+            n = struct.unpack("<Q", data[at:at + 8])[0]
+            return data[at + 8:at + 8 + n]
+        blocks = struct.unpack("<Q", data[at:at + 8])[0]
+        sizes = struct.unpack("<%dQ" % blocks, data[at + 24:at + 24 + 8 * blocks])
+        at += 24 + 8 * blocks
+        raw = b""
+        for size in sizes:
+            raw += zlib.decompress(data[at:at + size])
+            at += size
+        return raw
+
     out = {}
     pattern = (r'<DataArray type="(\w+)" Name="(\w+)"(?: NumberOfComponents="(\d+)")? '
-               r'format="binary">\s*([A-Za-z0-9+/=]+)\s*</DataArray>')
-    codes = {"Float64": "d", "Int64": "q", "UInt8": "B", "Int32": "i"}
-    for typ, name, nc, data in re.findall(pattern, text):
-        raw = base64.b64decode(data)
-        nbytes = struct.unpack("<Q", raw[:8])[0]
-        code = codes[typ]
-        size = struct.calcsize(code)
-        vals = list(struct.unpack("<%d%s" % (nbytes // size, code), raw[8:8 + nbytes]))
+               r'format="(\w+)"(?: offset="(\d+)"/>|>([^<]*)</DataArray>)')
+    for typ, name, nc, form, offset, body in re.findall(pattern, head):
+        if name == "TimeValue":
+            continue
+        if form == "appended":
+            vals = unpack(typ, appended_bytes(int(offset)))
+        elif form == "binary":
+            raw = base64.b64decode(body.strip())
+            vals = unpack(typ, raw[8:8 + struct.unpack("<Q", raw[:8])[0]])
+        else:
+            vals = [float(v) if typ == "Float64" else int(v) for v in body.split()]
         k = int(nc) if nc else 1
-        out[name] = vals if k == 1 else [tuple(vals[i:i + k]) for i in range(0, len(vals), k)]
-    m = re.search(r'<Points>\s*<DataArray[^>]*format="binary">\s*([A-Za-z0-9+/=]+)', text)
-    raw = base64.b64decode(m.group(1))
-    nbytes = struct.unpack("<Q", raw[:8])[0]
-    vals = struct.unpack("<%dd" % (nbytes // 8), raw[8:8 + nbytes])
-    out["points"] = [tuple(vals[i:i + 3]) for i in range(0, len(vals), 3)]
+        rows = vals if k == 1 else [tuple(vals[i:i + k]) for i in range(0, len(vals), k)]
+        out["points" if name == "Points" else name] = rows
     return out

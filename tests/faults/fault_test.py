@@ -30,6 +30,8 @@ import time
 import xml.etree.ElementTree as ET
 
 FPM, PRELOAD, WORK = [os.path.abspath(a) for a in sys.argv[1:4]]
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools"))
+import fpmv  # noqa: E402  (the frames' reader of the validation scripts)
 failures = []
 passed = 0
 
@@ -98,11 +100,15 @@ def unreadable_results(folder):
             ok = False
         if not ok:
             bad.append(csv)
-    for xml in glob.glob(os.path.join(folder, "fields", "*.vtu")) + glob.glob(os.path.join(folder, "*.pvd")):
+    for pvd in glob.glob(os.path.join(folder, "*.pvd")):
         try:
-            ET.parse(xml)
+            ET.parse(pvd)
         except ET.ParseError as e:
-            bad.append("%s (%s)" % (os.path.relpath(xml, folder), e))
+            bad.append("%s (%s)" % (os.path.relpath(pvd, folder), e))
+    for vtu in glob.glob(os.path.join(folder, "fields", "*.vtu")):
+        problem = frame_problem(vtu)
+        if problem:
+            bad.append("%s (%s)" % (os.path.relpath(vtu, folder), problem))
     summary = os.path.join(folder, "summary.json")
     if os.path.exists(summary):
         try:
@@ -111,6 +117,29 @@ def unreadable_results(folder):
             bad.append("summary.json")
     bad += [os.path.relpath(t, folder) for t in glob.glob(os.path.join(folder, "**", "*.tmp.*"), recursive=True)]
     return bad
+
+
+def frame_problem(path):
+    """Why the frame at `path` is not whole ("" when it is): its XML part must parse (the raw
+    appended bytes follow it), and every array must hold as many values as the piece declares."""
+    data = open(path, "rb").read()
+    head = data.split(b"<AppendedData", 1)[0]
+    if b"<AppendedData" in data:
+        head += b"</VTKFile>"
+    try:
+        piece = ET.fromstring(head).find("UnstructuredGrid/Piece")
+        points, cells = int(piece.get("NumberOfPoints")), int(piece.get("NumberOfCells"))
+        arrays = fpmv.read_vtu(path)
+    except Exception as e:  # any failure to read is the finding
+        return "%s: %s" % (type(e).__name__, e)
+    expected = {"points": points, "connectivity": 3 * cells, "offsets": cells, "types": cells}
+    for name, values in arrays.items():
+        if len(values) != expected.get(name, points if name in POINT_ARRAYS else cells):
+            return "array %s holds %d values" % (name, len(values))
+    return ""
+
+
+POINT_ARRAYS = ("displacement", "velocity", "rotation")
 
 
 def snapshot(folder):

@@ -30,7 +30,13 @@ void FieldSeries::start(const ExplicitSolver& /*solver*/) {
 void FieldSeries::frame(const ExplicitSolver& solver, Real time,
                         const std::vector<Vec3>& positions) {
     const std::string file = fmt::format("{}/frame_{:05d}.vtu", k_fields_folder, frames_.size());
-    write_vtu(dir_ / file, field_frame(fields_, {model_, solver, positions}, time));
+    const OutputControl& output = model_.output;
+    const VtuFormat format(output.fields_encoding == FieldsEncoding::Base64  ? VtuEncoding::Base64
+                           : output.fields_encoding == FieldsEncoding::Ascii ? VtuEncoding::Ascii
+                                                                             : VtuEncoding::Raw,
+                           output.fields_zlib ? VtuCompression::Zlib : VtuCompression::None);
+    field_frame(fields_, {model_, solver, positions}, time, frame_);
+    write_vtu(dir_ / file, frame_, format);
     frames_.emplace_back(time, file);
     pvd_->add(time, file);
 }

@@ -44,6 +44,7 @@ private:
     std::vector<std::pair<Real, std::string>> frames_;
     bool resumed_ = false;
     std::optional<PvdSeries> pvd_;  ///< created at start, so that a refused resume writes nothing
+    FieldFrame frame_;              ///< the last frame, its memory reused by the next
 };
 
 }  // namespace fpmshell

@@ -59,22 +59,38 @@ std::vector<OutputField> standard_fields() {
     };
 }
 
-FieldFrame field_frame(const std::vector<OutputField>& fields, const FieldSource& source,
-                       Real time) {
-    FieldFrame frame;
+void field_frame(const std::vector<OutputField>& fields, const FieldSource& source, Real time,
+                 FieldFrame& frame) {
     frame.time = time;
     frame.points = source.positions;
     frame.triangles = source.model.triangles;
+    std::size_t n_point_arrays = 0, n_cell_arrays = 0;
+    for (const OutputField& field : fields)
+        ++(field.location == FieldLocation::Point ? n_point_arrays : n_cell_arrays);
+    frame.point_data.resize(n_point_arrays);
+    frame.cell_data.resize(n_cell_arrays);
+    std::size_t next_point_array = 0, next_cell_array = 0;
     for (const OutputField& field : fields) {
         const bool on_points = field.location == FieldLocation::Point;
         const std::size_t n = on_points ? frame.points.size() : frame.triangles.size();
         const std::size_t width = at(field.components);
-        FieldArray array{field.name, field.components, std::vector<Real>(n * width)};
+        FieldArray& array =
+            on_points ? frame.point_data[next_point_array++] : frame.cell_data[next_cell_array++];
+        array.name = field.name;
+        array.components = field.components;
+        array.values.resize(n * width);
+        Real* values = array.values.data();
+        // every item writes its own values: the same bytes on any number of threads
+#pragma omp parallel for schedule(static) if (n >= 10000)
         for (std::size_t i = 0; i < n; ++i)
-            field.value(source, static_cast<Index>(i),
-                        std::span<Real>(&array.values[i * width], width));
-        (on_points ? frame.point_data : frame.cell_data).push_back(std::move(array));
+            field.value(source, static_cast<Index>(i), std::span<Real>(values + i * width, width));
     }
+}
+
+FieldFrame field_frame(const std::vector<OutputField>& fields, const FieldSource& source,
+                       Real time) {
+    FieldFrame frame;
+    field_frame(fields, source, time, frame);
     return frame;
 }
 

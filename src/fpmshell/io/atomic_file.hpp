@@ -3,6 +3,7 @@
 #pragma once
 
 #include <filesystem>
+#include <span>
 #include <string_view>
 
 namespace fpmshell {
@@ -13,6 +14,10 @@ namespace fpmshell {
 /// a half-written file. The folder must exist. Throws std::runtime_error with one sentence
 /// naming the file and the system's reason on failure; the temporary file is removed then.
 void write_file_atomic(const std::filesystem::path& path, std::string_view content);
+
+/// The same with the content given as pieces written one after the other (a file assembled from
+/// buffers that lie elsewhere, without copying them into one).
+void write_file_atomic(const std::filesystem::path& path, std::span<const std::string_view> pieces);
 
 /// Name of the temporary file write_file_atomic uses for `path` in this process.
 [[nodiscard]] std::filesystem::path atomic_temp_path(const std::filesystem::path& path);

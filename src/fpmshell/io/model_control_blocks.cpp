@@ -115,9 +115,18 @@ void read_output(const std::optional<YamlValue>& v, Model& model) {
     o.every = model.control.end_time / 200;
     o.fields_every = model.control.end_time / 20;
     if (!v) return;
-    const YamlMap m = v->map({"every", "fields_every", "histories"});
+    const YamlMap m =
+        v->map({"every", "fields_every", "fields_encoding", "fields_compression", "histories"});
     o.every = m.non_negative_or("every", o.every);
     o.fields_every = m.non_negative_or("fields_every", o.fields_every);
+    const std::string encoding = m.choice_or("fields_encoding", {"raw", "base64", "ascii"}, "raw");
+    o.fields_encoding = encoding == "base64"  ? FieldsEncoding::Base64
+                        : encoding == "ascii" ? FieldsEncoding::Ascii
+                                              : FieldsEncoding::Raw;
+    o.fields_zlib = m.choice_or("fields_compression", {"none", "zlib"}, "none") == "zlib";
+    if (o.fields_zlib && o.fields_encoding != FieldsEncoding::Raw)
+        m.at("fields_compression")
+            .fail("zlib compression needs fields_encoding: raw (VTK compresses appended data)");
     const auto h = m.find("histories");
     if (!h) return;
     static const std::vector<std::pair<std::string, Quantity>> quantities = {

@@ -4,12 +4,21 @@
 // File layout written here (VTK XML format version 1.0, header_type UInt64):
 //  - Points: Float64 x 3. Cells: connectivity Int32, offsets Int64 (end of each cell), types
 //    UInt8 = 5 (VTK_TRIANGLE). Point and cell arrays: Float64 with NumberOfComponents.
-//  - FieldData "TimeValue" (Float64, 1 tuple) holds the frame time, so a lone .vtu knows it too.
-//  - Encoding Base64 (default): each DataArray is format="binary": base64 of one stream made of
-//    an 8-byte UInt64 byte count followed by the raw values, in the machine's byte order (stated
-//    in byte_order). This is what vtkXMLWriter writes for uncompressed inline data, and the file
-//    stays well-formed XML. Encoding Ascii writes format="ascii" values (shortest round-trip
-//    decimal form): larger, slower, for debugging and diffing.
+//  - FieldData "TimeValue" (Float64, 1 tuple, ascii) holds the frame time, so a lone .vtu knows
+//    it too.
+//  - Encoding Raw (default): every DataArray is format="appended" with its offset into one
+//    <AppendedData encoding="raw"> block after the XML: '_', then per array an 8-byte UInt64
+//    byte count and the values as they lie in memory (byte order stated in byte_order). The
+//    arrays are written from the frame's memory without a copy: a frame of 10^6 triangles is
+//    ~150 MB and must not cost more than the steps between two frames. The file is not
+//    well-formed XML (raw bytes), as VTK's own appended files.
+//  - Compression Zlib (Raw only): each array's bytes cut into blocks of 32 768, each compressed
+//    by zlib; the array starts with VTK's compression header (UInt64 number of blocks, block
+//    size, size of the last block if partial or 0, then every block's compressed size) and
+//    <VTKFile compressor="vtkZLibDataCompressor">, as vtkXMLWriter writes it.
+//  - Encoding Base64: format="binary", base64 of [UInt64 byte count][values] inline: the file
+//    stays well-formed XML. Encoding Ascii: format="ascii" values (shortest round-trip decimal
+//    form): larger, slower, for debugging and diffing.
 // Every file is replaced atomically (io/atomic_file.hpp).
 #pragma once
 
@@ -23,18 +32,27 @@
 
 namespace fpmshell {
 
-enum class VtuEncoding { Base64, Ascii };
+enum class VtuEncoding { Raw, Base64, Ascii };
+enum class VtuCompression { None, Zlib };
 
-/// The text of the .vtu file for `frame`. Throws std::invalid_argument when an array's size is
-/// not n * components or a triangle names a point that does not exist.
-[[nodiscard]] std::string vtu_text(const FieldFrame& frame,
-                                   VtuEncoding encoding = VtuEncoding::Base64);
+/// How the arrays of a .vtu file are stored (output.fields_encoding, output.fields_compression).
+struct VtuFormat {
+    VtuFormat() = default;
+    VtuFormat(VtuEncoding e, VtuCompression c = VtuCompression::None)  // NOLINT: implicit
+        : encoding(e), compression(c) {}
+    VtuEncoding encoding = VtuEncoding::Raw;
+    VtuCompression compression = VtuCompression::None;  ///< Zlib needs encoding Raw
+};
+
+/// The bytes of the .vtu file for `frame`. Throws std::invalid_argument when an array's size is
+/// not n * components, a triangle names a point that does not exist, or the format asks for
+/// compression with another encoding than Raw.
+[[nodiscard]] std::string vtu_text(const FieldFrame& frame, VtuFormat format = {});
 
 /// Writes `frame` to `path` (atomically; the folder must exist). Throws std::invalid_argument
 /// for an inconsistent frame (see vtu_text) and std::runtime_error when the file cannot be
 /// written.
-void write_vtu(const std::filesystem::path& path, const FieldFrame& frame,
-               VtuEncoding encoding = VtuEncoding::Base64);
+void write_vtu(const std::filesystem::path& path, const FieldFrame& frame, VtuFormat format = {});
 
 /// A ParaView time series (.pvd). Every add() rewrites the whole file atomically, so the file
 /// on disk always lists exactly the frames written so far.

@@ -212,9 +212,14 @@ struct HistoryRequest {
     Reduce reduce = Reduce::Single;  ///< Single only when the set has one node
 };
 
+/// How the arrays of the VTU frames are stored (io/vtu_writer.hpp).
+enum class FieldsEncoding { Raw, Base64, Ascii };
+
 struct OutputControl {
     Real every = 0;         ///< history sampling interval (0 = every step)
     Real fields_every = 0;  ///< VTU frame interval (0 = first and last only)
+    FieldsEncoding fields_encoding = FieldsEncoding::Raw;
+    bool fields_zlib = false;  ///< zlib-compressed arrays (raw encoding only)
     std::vector<HistoryRequest> histories;
 };
 

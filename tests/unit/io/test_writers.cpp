@@ -2,6 +2,7 @@
 // VTU/PVD structure, CSV round trip, JSON text, the output-folder rules, log and progress.
 #include <gtest/gtest.h>
 #include <unistd.h>
+#include <zlib.h>
 
 #include <atomic>
 #include <cmath>
@@ -13,6 +14,7 @@
 #include <regex>
 #include <sstream>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "fpmshell/core/errors.hpp"
@@ -138,6 +140,56 @@ std::vector<T> decode_array(const std::string& body) {
     return values;
 }
 
+/// The bytes at `offset` of the AppendedData block of a raw .vtu text.
+std::string_view appended_bytes(const std::string& text, const std::string& name) {
+    const std::size_t at = text.find("Name=\"" + name + "\"");
+    if (at == std::string::npos) return {};
+    const std::size_t offset_at = text.find("offset=\"", at) + 8;
+    const std::size_t offset = std::stoul(text.substr(offset_at, 20));
+    const std::size_t data = text.find('_', text.find("<AppendedData encoding=\"raw\">")) + 1;
+    return std::string_view(text).substr(data + offset);
+}
+
+/// The UInt64 compression header of array `name` in a zlib-compressed raw .vtu text.
+std::vector<std::uint64_t> zlib_header(const std::string& text, const std::string& name) {
+    const std::string_view bytes = appended_bytes(text, name);
+    std::uint64_t blocks = 0;
+    std::memcpy(&blocks, bytes.data(), sizeof blocks);
+    std::vector<std::uint64_t> header(3 + blocks);
+    std::memcpy(header.data(), bytes.data(), header.size() * sizeof(std::uint64_t));
+    return header;
+}
+
+/// The values of array `name` of a raw .vtu text: [UInt64 byte count][values] at its offset, or
+/// (zlib) the header of zlib_header and the blocks, inflated.
+template <class T>
+std::vector<T> appended_array(const std::string& text, const std::string& name, bool zlib = false) {
+    const std::string_view bytes = appended_bytes(text, name);
+    std::string values;
+    if (!zlib) {
+        std::uint64_t n = 0;
+        std::memcpy(&n, bytes.data(), sizeof n);
+        values = bytes.substr(sizeof n, n);
+    } else {
+        const std::vector<std::uint64_t> header = zlib_header(text, name);
+        std::size_t at = header.size() * sizeof(std::uint64_t);
+        for (std::size_t b = 0; b < header[0]; ++b) {
+            const bool last = b + 1 == header[0] && header[2] != 0;
+            uLongf size = last ? header[2] : header[1];
+            std::string block(size, '\0');
+            EXPECT_EQ(
+                ::uncompress(reinterpret_cast<Bytef*>(block.data()), &size,
+                             reinterpret_cast<const Bytef*>(bytes.data() + at), header[3 + b]),
+                Z_OK);
+            values += block.substr(0, size);
+            at += header[3 + b];
+        }
+    }
+    std::vector<T> out(values.size() / sizeof(T));
+    if (!out.empty()) std::memcpy(out.data(), values.data(), values.size());
+    return out;
+}
+
 FieldFrame two_triangle_frame() {
     FieldFrame f;
     f.time = 2.5e-4;
@@ -175,13 +227,13 @@ TEST(AtomicFile, FailureNamesTheFile) {
     EXPECT_TRUE(files_in(tmp.path()).empty());
 }
 
-// Proves the VTU text is well-formed XML with the right counts, triangle cells (type 5), and
-// base64 arrays that decode back to the frame's numbers.
+// Proves the base64 VTU text is well-formed XML with the right counts, triangle cells (type 5),
+// and arrays that decode back to the frame's numbers.
 TEST(VtuWriter, WellFormedWithRightCountsAndValues) {
     TempDir tmp;
     const FieldFrame f = two_triangle_frame();
     const fs::path file = tmp.path() / "frame_00000.vtu";
-    write_vtu(file, f);
+    write_vtu(file, f, VtuEncoding::Base64);
     const std::string xml = read_text(file);
 
     EXPECT_EQ(check_xml(xml), "");
@@ -224,11 +276,72 @@ TEST(VtuWriter, RejectsInconsistentFrames) {
     EXPECT_THROW((void)vtu_text(f), std::invalid_argument);
 }
 
-// Proves an empty frame still gives a valid file (a model with no elements cannot crash output).
+// Proves the default (raw appended) file: every array format="appended" at an offset into the
+// AppendedData block, where its byte count and the frame's values lie, in the order of the XML;
+// the file written is the text.
+TEST(VtuWriter, RawAppendedArraysLieAtTheirOffsets) {
+    TempDir tmp;
+    const FieldFrame f = two_triangle_frame();
+    const std::string text = vtu_text(f);
+    write_vtu(tmp.path() / "frame.vtu", f);
+    EXPECT_EQ(read_text(tmp.path() / "frame.vtu"), text);
+    EXPECT_EQ(text.find("format=\"binary\""), std::string::npos);
+    EXPECT_EQ(check_xml(text.substr(0, text.find("<AppendedData")) + "</VTKFile>\n"), "");
+    EXPECT_TRUE(text.ends_with("\n  </AppendedData>\n</VTKFile>\n"));
+
+    EXPECT_EQ(appended_array<double>(text, "Points")[8], 0.5);
+    EXPECT_EQ(appended_array<std::int32_t>(text, "connectivity"),
+              (std::vector<std::int32_t>{0, 1, 2, 0, 2, 3}));
+    EXPECT_EQ(appended_array<std::int64_t>(text, "offsets"), (std::vector<std::int64_t>{3, 6}));
+    EXPECT_EQ(appended_array<std::uint8_t>(text, "types"), (std::vector<std::uint8_t>{5, 5}));
+    EXPECT_EQ(appended_array<double>(text, "displacement"), f.point_data[0].values);
+    EXPECT_EQ(appended_array<double>(text, "thickness"), f.point_data[1].values);
+    EXPECT_EQ(appended_array<double>(text, "plastic_strain_top"), f.cell_data[0].values);
+}
+
+// Proves zlib compression: VTK's block header (blocks of 32 768 bytes, the last one partial) and
+// blocks that inflate back to the raw file's bytes, for an array of several blocks, one of one
+// block and an empty frame.
+TEST(VtuWriter, ZlibBlocksInflateToTheRawArrays) {
+    FieldFrame f = two_triangle_frame();
+    f.points.resize(10000, Vec3(0.25, 0.5, 0.75));  // 240 000 bytes: 8 blocks
+    f.point_data[0].values.resize(3 * 10000, 1.0);
+    f.point_data[1].values.resize(10000, 0.2);
+    std::vector<Real> ramp(10000);  // 80 000 bytes: 3 blocks, the last one partial
+    for (std::size_t i = 0; i < ramp.size(); ++i) ramp[i] = 1e-3 * static_cast<Real>(i);
+    f.point_data.push_back({"long", 1, ramp});
+    const std::string raw = vtu_text(f);
+    const std::string zlib = vtu_text(f, {VtuEncoding::Raw, VtuCompression::Zlib});
+    EXPECT_NE(zlib.find("compressor=\"vtkZLibDataCompressor\""), std::string::npos);
+    EXPECT_LT(zlib.size(), raw.size() / 2);  // the constant arrays compress to almost nothing
+    const std::vector<std::uint64_t> header = zlib_header(zlib, "long");
+    ASSERT_EQ(header.size(), 6u);
+    EXPECT_EQ(header[0], 3u);
+    EXPECT_EQ(header[1], 32768u);
+    EXPECT_EQ(header[2], 80000u - 2 * 32768u);
+    for (const char* name : {"Points", "displacement", "thickness", "long", "plastic_strain_top"})
+        EXPECT_EQ(appended_array<double>(zlib, name, true), appended_array<double>(raw, name))
+            << name;
+    EXPECT_EQ(appended_array<std::int32_t>(zlib, "connectivity", true),
+              (std::vector<std::int32_t>{0, 1, 2, 0, 2, 3}));
+
+    const std::string empty = vtu_text(FieldFrame{}, {VtuEncoding::Raw, VtuCompression::Zlib});
+    EXPECT_EQ(zlib_header(empty, "Points"), (std::vector<std::uint64_t>{0, 32768, 0}));
+    EXPECT_TRUE(appended_array<double>(empty, "Points", true).empty());
+    EXPECT_THROW((void)vtu_text(f, {VtuEncoding::Base64, VtuCompression::Zlib}),
+                 std::invalid_argument);
+}
+
+// Proves an empty frame still gives a valid file in every encoding (a model with no elements
+// cannot crash output).
 TEST(VtuWriter, EmptyFrame) {
-    const std::string xml = vtu_text(FieldFrame{});
+    const std::string xml = vtu_text(FieldFrame{}, VtuEncoding::Base64);
     EXPECT_EQ(check_xml(xml), "");
     EXPECT_TRUE(decode_array<double>(data_array_body(xml, "Points")).empty());
+    EXPECT_EQ(check_xml(vtu_text(FieldFrame{}, VtuEncoding::Ascii)), "");
+    const std::string raw = vtu_text(FieldFrame{});
+    EXPECT_TRUE(appended_array<double>(raw, "Points").empty());
+    EXPECT_TRUE(appended_array<std::uint8_t>(raw, "types").empty());
 }
 
 // Proves the PVD lists every frame added, in order, with its time, and is valid XML each time.
