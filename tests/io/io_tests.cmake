@@ -1,10 +1,11 @@
+math(EXPR _timeout_300s "300 * ${FPMSHELL_TIMEOUT_SCALE}")
 add_test(NAME io.command_line
          COMMAND ${FPMSHELL_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/io/cli_test.py
                  $<TARGET_FILE:fpmshell> ${CMAKE_BINARY_DIR}/io_test_work)
-set_tests_properties(io.command_line PROPERTIES LABELS io TIMEOUT 300)
+set_tests_properties(io.command_line PROPERTIES LABELS io TIMEOUT ${_timeout_300s})
 
 # The VTU frames loaded by VTK's own reader (python3-vtk9): an implementation independent of ours.
 add_test(NAME io.vtu_reader
          COMMAND ${FPMSHELL_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/io/vtu_reader_test.py
                  $<TARGET_FILE:fpmshell> ${CMAKE_BINARY_DIR}/vtu_reader_test_work)
-set_tests_properties(io.vtu_reader PROPERTIES LABELS io TIMEOUT 300)
+set_tests_properties(io.vtu_reader PROPERTIES LABELS io TIMEOUT ${_timeout_300s})
