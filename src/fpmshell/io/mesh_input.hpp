@@ -10,7 +10,12 @@
 namespace fpmshell {
 
 /// Largest mesh accepted (triangles); bigger requests are refused before any allocation.
-inline constexpr double k_max_mesh_elements = 20.0e6;
+/// Fuzz builds (cmake/sanitizers.cmake) lower it: a generated mesh of millions of elements is
+/// read correctly but takes minutes under the sanitizers, which the fuzzer would report as a hang.
+#ifndef FPMSHELL_MAX_MESH_ELEMENTS
+#define FPMSHELL_MAX_MESH_ELEMENTS 20.0e6
+#endif
+inline constexpr double k_max_mesh_elements = FPMSHELL_MAX_MESH_ELEMENTS;
 
 /// Builds the mesh of `mesh: {generator: ...}` or `mesh: {file: ...}`. A relative file path is
 /// taken relative to `base_dir` (the folder of the model file). Validates every generator key
