@@ -10,6 +10,10 @@
 //   jc-n0.1   Johnson-Cook n = 0.1 (a flow curve steep at small plastic strain)
 //   bilinear  J2, sigma_y = 250 MPa, E_t = E / 21 (the plate of `fpmshell_bench --table`)
 //   elastic   the same section linear elastic: the cost of everything but the return mapping
+//   tab       tabulated: the jc curve sampled at 21 points to a plastic strain of 0.5 (how a
+//             user's LS-DYNA *MAT_024 curve looks; not in the default list, which an older
+//             build must run too)
+//   tab-rate  three such curves at 0.001, 1 and 1000 /s, 1, 1.1 and 1.2 times the jc curve
 // The stretch rate is set from the stable step so that the points reach the yield surface
 // after 10 steps; the samples start after 14. A sample times ShellElements::compute on a twin
 // of the solver's elements, given the solver's current path element (an untimed copy),
@@ -19,8 +23,8 @@
 // The source uses only the library's model and solver interface, so that the same file builds
 // against another build of the library (tools/interleaved_kernels.py compares two builds).
 //
-// usage: fpmshell_crash_kernels [--models jc,jc-rate,jc-n0.1,bilinear,elastic] [--n 71] [--samples
-// 7]
+// usage: fpmshell_crash_kernels [--models jc,jc-rate,jc-n0.1,bilinear,elastic,tab,tab-rate] [--n
+// 71] [--samples 7]
 //                               [--batch 10]
 #include <algorithm>
 #include <cmath>
@@ -91,6 +95,21 @@ Case make_case(const std::string& name) {
         m.tangent_modulus = 1e10;
         return {name, m, m.yield_stress};
     }
+    if (name == "tab" || name == "tab-rate") {
+        m.type = MaterialType::Tabulated;
+        for (Real scale :
+             name == "tab" ? std::vector<Real>{1.0} : std::vector<Real>{1.0, 1.1, 1.2}) {
+            FlowCurvePoints c;
+            c.strain_rate = scale == 1.0 ? 1e-3 : scale == 1.1 ? 1.0 : 1e3;
+            for (int i = 0; i <= 20; ++i) {
+                const Real alpha = 0.5 * (i / 20.0) * (i / 20.0);  // denser at small strains
+                c.strain.push_back(alpha);
+                c.stress.push_back(scale * (180e6 + 450e6 * std::sqrt(alpha)));
+            }
+            m.flow_curves.push_back(c);
+        }
+        return {name, m, 180e6};
+    }
     m.type = MaterialType::JohnsonCook;
     m.jc_a = 180e6;
     m.jc_b = 450e6;
@@ -99,7 +118,8 @@ Case make_case(const std::string& name) {
         m.jc_c = 0.02;
         m.reference_strain_rate = 1;
     } else if (name != "jc" && name != "jc-n0.1") {
-        std::fprintf(stderr, "unknown model %s (jc, jc-rate, jc-n0.1, bilinear, elastic)\n",
+        std::fprintf(stderr,
+                     "unknown model %s (jc, jc-rate, jc-n0.1, bilinear, elastic, tab, tab-rate)\n",
                      name.c_str());
         std::exit(2);
     }

@@ -49,8 +49,10 @@ struct ElasticSectionConstants {
 /// The yield surfaces of the points of a J2 section at the start of the step, [g][k].
 /// A rate-dependent section's yield radius is R(rate) kappa_n with R >= 1 (§7.4): the check
 /// first uses R = 1, a surface inside the true one, which a point well inside passes without
-/// any logarithm or power; only the lanes outside it evaluate their R. The filtered strain
-/// rate, part of the point's state, is updated.
+/// any logarithm or power; only the lanes outside it evaluate their R. A table of flow curves
+/// at increasing rates (eq. 7.2-5) works alike: kappa_n is the first curve's, and a lane outside
+/// it is checked against the curve of its rate. The filtered strain rate, part of the point's
+/// state, is updated.
 template <class T>
 struct YieldSurfaces {
     const T* back_stress;              ///< b, 3 components per point (§7.2)
@@ -61,6 +63,9 @@ struct YieldSurfaces {
     T* new_strain_rate = nullptr;      ///< and new (§7.4 option a)
     Real dt = 0;                       ///< duration of the path element (0: no rate)
     Real rate_filter = 0;              ///< J2Plastic::k_rate_filter
+    /// a rate table (RateFactor::selects_curve): its curves, and alpha_n per point
+    const FlowTable* table = nullptr;
+    const T* plastic_strain = nullptr;
 };
 
 /// No return mapping: a lane with a yielding point is reported invalid instead.
@@ -209,7 +214,15 @@ template <class T, class ReturnMapping = NoReturnMapping, class PointUpdate = El
                 if (any_lane(outside)) {
                     rate_factor[point] =
                         select(outside, yield->rate->value(new_rate), rate_factor[point]);
-                    const T k2_rate = rate_factor[point] * rate_factor[point] * k2;
+                    T k2_rate;
+                    if (yield->table) {  // the radius of the curve at the rate's position
+                        const T kappa = table_flow(*yield->table, yield->plastic_strain[point],
+                                                   rate_factor[point])
+                                            .value;
+                        k2_rate = kappa * kappa * (1.0 / 3.0);
+                    } else {
+                        k2_rate = rate_factor[point] * rate_factor[point] * k2;
+                    }
                     inside = inside || (half_p2 - k2_rate <= yield->tolerance * k2_rate);
                 }
             }

@@ -1,16 +1,110 @@
 // The `materials` and `sections` blocks of the model file (see model_blocks.hpp).
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "fpmshell/io/model_blocks.hpp"
 #include "fpmshell/io/model_names.hpp"
+#include "fpmshell/materials/flow_table.hpp"
 
 namespace fpmshell {
 namespace {
 
+std::string fmt_real(Real x) { return fmt::format("{:g}", x); }
+
 std::string not_supported(const std::string& what) {
     return what + " is not supported yet in this version of fpmshell";
+}
+
+/// `[[plastic strain, flow stress], ...]`: two points at least, from plastic strain 0, the
+/// strains increasing, the stresses > 0 and not decreasing (the return mapping brackets its
+/// solution on a curve that does not soften, theory.md §7.3a).
+FlowCurvePoints read_flow_curve(const YamlValue& v) {
+    FlowCurvePoints curve;
+    const auto points = v.list("[plastic strain, flow stress] pairs");
+    if (points.size() < 2)
+        v.fail(
+            "a flow curve needs at least two [plastic strain, flow stress] pairs, e.g. [[0, "
+            "250e6], [0.2, 400e6]]");
+    std::string previous_strain, previous_stress;
+    for (const YamlValue& p : points) {
+        const auto es = p.list_of(2, "two numbers [plastic strain, flow stress]",
+                                  "a pair [plastic strain, flow stress]");
+        const Real strain = es[0].real(), stress = es[1].real();
+        if (curve.strain.empty()) {
+            if (strain != 0.0)
+                es[0].fail("the first point of a flow curve must be at plastic strain 0, got " +
+                           es[0].describe());
+            if (!(stress > 0.0))
+                es[1].fail(
+                    "the initial yield stress (the flow stress at plastic strain 0) must "
+                    "be > 0, got " +
+                    es[1].describe());
+        } else {
+            if (!(strain > curve.strain.back()))
+                es[0].fail("the plastic strains of a flow curve must increase strictly, but " +
+                           es[0].describe() + " follows " + previous_strain);
+            if (!(stress >= curve.stress.back()))
+                es[1].fail(
+                    "the flow stress must not decrease along the curve (softening is not "
+                    "supported), but " +
+                    es[1].describe() + " follows " + previous_stress);
+        }
+        previous_strain = es[0].describe();
+        previous_stress = es[1].describe();
+        curve.strain.push_back(strain);
+        curve.stress.push_back(stress);
+    }
+    return curve;
+}
+
+/// The first point where curve `high` lies below curve `low` (eq. 7.2-4: piecewise linear,
+/// each extended past its last point), or a negative strain where it never does: the
+/// difference is piecewise linear, so its breakpoints and its slope past the last decide.
+Real first_crossing(const FlowCurvePoints& low, const FlowCurvePoints& high) {
+    const PiecewiseLinearCurve a(low.strain, low.stress), b(high.strain, high.stress);
+    std::vector<Real> at = low.strain;
+    at.insert(at.end(), high.strain.begin(), high.strain.end());
+    std::sort(at.begin(), at.end());
+    for (Real alpha : at)
+        if (b.at(alpha).value < a.at(alpha).value) return alpha;
+    if (b.at(at.back()).slope < a.at(at.back()).slope) return at.back() + 1.0;  // past both
+    return -1.0;
+}
+
+/// `flow_curves: [{strain_rate: r, points: [...]}, ...]`: the rates >= 0 and increasing, each
+/// curve on or above the one before it (the element's trial check takes the first curve's
+/// radius as a lower bound of every other, elements/elastic_triangle_block.hpp).
+void read_flow_curves(const YamlValue& v, Material& mat) {
+    const auto items = v.list("flow curves at increasing strain rates");
+    if (items.empty())
+        v.fail(
+            "expected at least one {strain_rate: ..., points: [[plastic strain, flow stress], "
+            "...]}");
+    for (const YamlValue& item : items) {
+        const YamlMap m = item.map({"strain_rate", "points"});
+        const YamlValue rate = m.at("strain_rate", "the strain rate of this curve, a number >= 0");
+        FlowCurvePoints curve =
+            read_flow_curve(m.at("points", "[plastic strain, flow stress] pairs"));
+        curve.strain_rate = rate.non_negative();
+        if (!mat.flow_curves.empty()) {
+            const FlowCurvePoints& below = mat.flow_curves.back();
+            if (!(curve.strain_rate > below.strain_rate))
+                rate.fail("the strain rates of the flow curves must increase, but " +
+                          rate.describe() + " follows " + fmt_real(below.strain_rate));
+            const Real crossing = first_crossing(below, curve);
+            if (crossing >= 0.0)
+                item.fail("the curve at strain rate " + rate.describe() +
+                          " lies below the one at strain rate " + fmt_real(below.strain_rate) +
+                          " near plastic strain " + fmt_real(crossing) +
+                          "; the curves must not cross (a higher rate, a flow stress at least "
+                          "as high)");
+        }
+        mat.flow_curves.push_back(std::move(curve));
+    }
 }
 
 }  // namespace
@@ -29,21 +123,24 @@ void read_materials(const YamlValue& v, Model& model) {
                 def.describe());
         const YamlMap any = def.open_map("material constants");
         const YamlValue type = any.at("type", "elastic");
-        const std::string t = type.choice({"elastic", "j2_plastic", "johnson_cook"});
+        const std::string t = type.choice({"elastic", "j2_plastic", "johnson_cook", "tabulated"});
         std::vector<std::string> keys{"type", "density", "youngs_modulus", "poisson_ratio"};
         if (t == "elastic") {
             for (const auto& [key, value] : any.entries())
                 for (const char* plastic :
                      {"yield_stress", "tangent_modulus", "hardening_mix", "cowper_symonds", "A",
                       "B", "n", "C", "reference_strain_rate", "m", "room_temperature",
-                      "melt_temperature"})
+                      "melt_temperature", "flow_curve", "flow_curves"})
                     if (key == plastic)
                         value.fail(
-                            "belongs to plastic materials (type: j2_plastic or johnson_cook); "
-                            "remove it or change the type");
+                            "belongs to plastic materials (type: j2_plastic, johnson_cook or "
+                            "tabulated); remove it or change the type");
         } else if (t == "j2_plastic") {
             keys.insert(keys.end(),
                         {"yield_stress", "tangent_modulus", "hardening_mix", "cowper_symonds"});
+        } else if (t == "tabulated") {
+            keys.insert(keys.end(),
+                        {"flow_curve", "flow_curves", "hardening_mix", "cowper_symonds"});
         } else {
             for (const char* thermal : {"m", "room_temperature", "melt_temperature"})
                 if (const auto th = any.find(thermal))
@@ -58,6 +155,7 @@ void read_materials(const YamlValue& v, Model& model) {
         mat.name = name;
         mat.type = t == "elastic"      ? MaterialType::Elastic
                    : t == "j2_plastic" ? MaterialType::J2Plastic
+                   : t == "tabulated"  ? MaterialType::Tabulated
                                        : MaterialType::JohnsonCook;
         mat.density = m.at("density", "a number > 0").positive();
         mat.youngs_modulus = m.at("youngs_modulus", "a number > 0").positive();
@@ -84,6 +182,32 @@ void read_materials(const YamlValue& v, Model& model) {
                         "yield; 0 = perfectly plastic), got " +
                         et->describe());
             }
+        }
+        if (mat.type == MaterialType::Tabulated) {
+            const auto one = m.find("flow_curve"), table = m.find("flow_curves");
+            if (one && table)
+                table->fail(
+                    "give either flow_curve (one curve) or flow_curves (one per strain "
+                    "rate), not both");
+            if (table) {
+                read_flow_curves(*table, mat);
+                if (mat.flow_curves.size() > 1) {
+                    if (const auto cs = m.find("cowper_symonds"))
+                        cs->fail(
+                            "cannot be combined with flow_curves: the curves at their "
+                            "strain rates give the rate dependence");
+                    if (const auto mix = m.find("hardening_mix"); mix && mat.hardening_mix != 1.0)
+                        mix->fail(
+                            "must be 1 (isotropic) with flow_curves at several strain "
+                            "rates, as in LS-DYNA's *MAT_024");
+                }
+            } else {
+                mat.flow_curves.push_back(read_flow_curve(
+                    m.at("flow_curve",
+                         "a list of [plastic strain, flow stress] pairs (or flow_curves)")));
+            }
+        }
+        if (mat.type == MaterialType::J2Plastic || mat.type == MaterialType::Tabulated) {
             if (const auto cs = m.find("cowper_symonds")) {
                 const YamlMap c = cs->map({"D", "q"});
                 mat.cowper_symonds = true;

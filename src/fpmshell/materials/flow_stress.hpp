@@ -1,34 +1,49 @@
 // Flow stress of the plastic materials and their strain-rate factor (theory.md §7.2, §7.4):
 // sigma_f(alpha) is the uniaxial yield stress after the equivalent plastic strain alpha, at the
-// reference rate; the rate factor R(rate) >= 1 multiplies it.
+// reference rate; the rate factor R(rate) >= 1 multiplies it, or selects the curve of a table.
 #pragma once
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
+#include <vector>
 
 #include "fpmshell/core/simd.hpp"
 #include "fpmshell/core/simd_math.hpp"
 #include "fpmshell/core/types.hpp"
+#include "fpmshell/materials/flow_table.hpp"
 
 namespace fpmshell {
 
-/// sigma_f and sigma_f' at one plastic strain per lane of T (core/simd.hpp).
-template <class T>
-struct FlowValue {
-    T value, slope;
-};
-
 struct FlowStress {
-    enum class Kind { Linear, JohnsonCook };
+    enum class Kind { Linear, JohnsonCook, Tabulated };
     /// Johnson-Cook with n < 1: below this plastic strain the slope is taken at it.
     static constexpr Real k_slope_floor = 1e-6;
     Kind kind = Kind::Linear;
     Real yield_stress = 0;  ///< linear: sigma_y0
     Real hardening = 0;  ///< linear: plastic modulus H = E E_t / (E - E_t); 0 = perfectly plastic
     Real a = 0, b = 0, n = 1;  ///< Johnson-Cook A + B alpha^n
+    /// Tabulated (theory.md §7.2, eqs. 7.2-4, 7.2-5): sigma_f(alpha) is the first (lowest-rate)
+    /// curve of the table; a rate-dependent table's other curves come in through the point's
+    /// position among the rates (RateFactor::Kind::Table).
+    FlowTable table;
+
+    /// A tabulated curve (two points at least, checked by the model reader).
+    [[nodiscard]] static FlowStress tabulated(std::vector<PiecewiseLinearCurve> curves,
+                                              std::vector<Real> rates = {0.0}) {
+        FlowStress f;
+        f.kind = Kind::Tabulated;
+        f.table.curves = std::move(curves);
+        f.table.rates = std::move(rates);
+        return f;
+    }
+    [[nodiscard]] static FlowStress tabulated(std::vector<Real> strain, std::vector<Real> stress) {
+        return tabulated({PiecewiseLinearCurve(std::move(strain), std::move(stress))});
+    }
 
     [[nodiscard]] Real value(Real alpha) const {
         if (kind == Kind::Linear) return yield_stress + hardening * alpha;
+        if (kind == Kind::Tabulated) return table.curves.front().at(alpha).value;
         return a + (alpha > 0 ? b * std::pow(alpha, n) : 0.0);
     }
     /// d sigma_f / d alpha; for Johnson-Cook with n < 1 the slope is infinite at alpha = 0:
@@ -36,6 +51,7 @@ struct FlowStress {
     /// stress there and does not rely on this slope, theory.md §7.3a).
     [[nodiscard]] Real slope(Real alpha) const {
         if (kind == Kind::Linear) return hardening;
+        if (kind == Kind::Tabulated) return table.curves.front().at(alpha).slope;
         const Real at = std::max(alpha, k_slope_floor);
         return b * n * std::pow(at, n - 1.0);
     }
@@ -46,25 +62,36 @@ struct FlowStress {
     /// loop needs both at every iterate). Equal to value() and slope() to rounding.
     [[nodiscard]] ValueSlope value_and_slope(Real alpha) const {
         if (kind == Kind::Linear) return {yield_stress + hardening * alpha, hardening};
+        if (kind == Kind::Tabulated) {
+            const FlowValue<Real> v = table.curves.front().at(alpha);
+            return {v.value, v.slope};
+        }
         if (!(alpha >= k_slope_floor)) return {value(alpha), slope(alpha)};
         const Real p = std::pow(alpha, n - 1.0);  // alpha^n = alpha alpha^(n-1)
         return {a + b * alpha * p, b * n * p};
     }
 };
 
+/// The rate dependence of a plastic material: a factor R(rate) >= 1 on the yield radius
+/// (Cowper-Symonds, Johnson-Cook), or, for a table of flow curves (Kind::Table), the position
+/// of the rate among the table's rates, which selects the curve (FlowTable::position).
 struct RateFactor {
-    enum class Kind { None, CowperSymonds, JohnsonCook };
+    enum class Kind { None, CowperSymonds, JohnsonCook, Table };
     Kind kind = Kind::None;
     Real d = 0, q = 1;               ///< Cowper-Symonds: 1 + (rate / D)^(1/q)
     Real c = 0, reference_rate = 1;  ///< Johnson-Cook: 1 + C ln(max(rate / rate_0, 1))
+    std::vector<Real> table_rates;   ///< Table: the rates of its curves (FlowTable::rates)
 
     [[nodiscard]] bool active() const { return kind != Kind::None; }
-    /// R(rate) on every lane of T (core/simd.hpp), with the logarithm and power of
-    /// core/simd_math.hpp: the element blocks take a pack of rates at once, and a point computed
-    /// alone gets the same factor as its lane would.
+    [[nodiscard]] bool selects_curve() const { return kind == Kind::Table; }
+    /// R(rate) (the curve's position for a table) on every lane of T (core/simd.hpp), with the
+    /// logarithm and power of core/simd_math.hpp: the element blocks take a pack of rates at
+    /// once, and a point computed alone gets the same factor as its lane would.
     template <class T>
     [[nodiscard]] T value(const T& rate) const {
         switch (kind) {
+            case Kind::Table:
+                return rate_position(table_rates, rate);
             case Kind::CowperSymonds: {
                 const MaskOf<T> moving = rate > 0.0;
                 const T ratio = select(moving, max(rate * (1.0 / d), T(1e-300)), T(1.0));

@@ -2,7 +2,8 @@
 // f_bar(dgamma) = sqrt(2/3) kappa(alpha(dgamma)) solved for the plastic multiplier dgamma on the
 // lanes of a scalar type T (core/simd.hpp), by a bracketed Halley iteration on one of two
 // unknowns (§7.3a):
-// - dgamma itself, for a linear flow curve (and a Johnson-Cook one with n > 1 or without
+// - dgamma itself, for a linear or tabulated flow curve (and a Johnson-Cook one with n > 1 or
+// without
 //   isotropic hardening, beta = 0);
 // - the flow stress y = sigma_f(alpha_{n+1}), for a Johnson-Cook curve with n <= 1 and
 //   beta > 0, where sigma_f'(alpha) = B n alpha^(n-1) is infinite at alpha = 0 but the inverse
@@ -35,6 +36,9 @@ struct J2ReturnConstants {
     Real beta = 1;       ///< hardening mix of §7.2: 1 isotropic, 0 kinematic
     Real tolerance = 0;  ///< J2Plastic::k_yield_tolerance
     FlowStress flow;
+    /// the rate selects a curve of flow.table (RateFactor::Kind::Table): the r of a point is its
+    /// position among the rates, its yield radius that curve's (isotropic hardening only)
+    bool rate_table = false;
     Real flow_radius0 = 0;  ///< sigma_f(0)
     Real flow_slope0 = 0;   ///< FlowStress::slope(0) (Johnson-Cook: the slope at alpha = 1e-6)
     /// Johnson-Cook: the binomial coefficients C(1/n, k), k = 0 ... 12, of (1 + d)^(1/n), and

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 
 namespace fpmshell {
 
@@ -17,7 +18,13 @@ J2Plastic::J2Plastic(Real youngs_modulus, Real poisson_ratio, const FlowStress& 
     constants_.two_g = 2.0 * (e_ / (2.0 * (1.0 + nu_)));
     constants_.beta = beta_;
     constants_.tolerance = k_yield_tolerance;
+    if (rate_.selects_curve() && (flow_.kind != FlowStress::Kind::Tabulated || beta_ != 1.0 ||
+                                  rate_.table_rates.size() != flow_.table.curves.size()))
+        throw std::invalid_argument(
+            "J2Plastic: a rate table needs a tabulated flow curve per rate and isotropic "
+            "hardening");
     constants_.flow = flow_;
+    constants_.rate_table = rate_.selects_curve();
     constants_.flow_radius0 = flow_.value(0);
     constants_.flow_slope0 = flow_.slope(0);
     if (flow_.kind == FlowStress::Kind::JohnsonCook && flow_.n > 0.0)
@@ -27,6 +34,7 @@ J2Plastic::J2Plastic(Real youngs_modulus, Real poisson_ratio, const FlowStress& 
 Real J2Plastic::yield_radius(Real alpha, Real r) const {
     // §7.4 mixed hardening with a nonlinear curve: kappa = sigma_f(0) + beta (sigma_f(alpha) -
     // sigma_f(0))
+    if (rate_.selects_curve()) return flow_.table.at(alpha, r).value;  // r: the position
     const Real f0 = flow_.value(0);
     return r * (f0 + beta_ * (flow_.value(alpha) - f0));
 }

@@ -1,5 +1,6 @@
 // Elastic-plastic material in plane stress: von Mises yield with mixed isotropic / kinematic
-// hardening, a linear or Johnson-Cook flow curve and an optional strain-rate factor; return
+// hardening, a linear, Johnson-Cook or tabulated flow curve and an optional strain-rate factor
+// (or a table of curves at increasing rates); return
 // mapping in the plane-stress subspace (theory.md §7, Simo & Taylor 1986).
 #pragma once
 
@@ -77,7 +78,8 @@ public:
         return k == k_flow_radius ? initial_flow_radius() : 0;
     }
 
-    /// Radius kappa(alpha) of the yield surface (uniaxial yield stress) at the rate factor r.
+    /// Radius kappa(alpha) of the yield surface (uniaxial yield stress) at the rate factor r
+    /// (for a rate table: at the position r among its rates, FlowTable::position).
     [[nodiscard]] Real yield_radius(Real alpha, Real r) const;
     /// kappa / R before any plastic strain: the flow curve at alpha = 0.
     [[nodiscard]] Real initial_flow_radius() const { return flow_.value(0); }

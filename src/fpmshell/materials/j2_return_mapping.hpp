@@ -76,7 +76,9 @@ template <class T>
                                     old.stress[2] + c.c33 * d_eps[2]};
     tr.xi_tr = {sigma_tr[0] - old.back_stress[0], sigma_tr[1] - old.back_stress[1],
                 sigma_tr[2] - old.back_stress[2]};
-    const T kappa_n = r * flow_radius_n;
+    // the yield radius at alpha_n: R times the stored one, or on a table the curve of the
+    // point's rate (the stored radius is the first curve's, the smallest)
+    const T kappa_n = c.rate_table ? table_flow(c.flow.table, alpha_n, r).value : r * flow_radius_n;
     const T third_k2 = kappa_n * kappa_n * (1.0 / 3.0);
     const T f_tr = 0.5 * p_norm2(tr.xi_tr) - third_k2;
     // member by member: an aggregate assignment copies the mask through an 8-byte load of the
@@ -109,7 +111,7 @@ template <class T>
     t.a_bar = (t.a1_sq * t.a1 + t.a2_sq * t.a2) * inv_fbar2_tr;
     t.m2 = (t.a1_sq * t.a1 * t.a1 + t.a2_sq * t.a2 * t.a2) * inv_fbar2_tr;
     t.alpha_n = alpha_n;
-    t.r = r;
+    t.r = c.rate_table ? T(1.0) : r;  // a table's curve is the point's flow curve
     t.kappa_n = kappa_n;
     t.third_k2 = third_k2;
     t.flow_radius_n = flow_radius_n;
@@ -118,7 +120,8 @@ template <class T>
 
 /// Step 4 from the solution of step 3.
 template <class T>
-[[nodiscard]] FPMSHELL_INLINE J2Return<T> returned_state(const J2PointState<T>& old,
+[[nodiscard]] FPMSHELL_INLINE J2Return<T> returned_state(const J2ReturnConstants& c,
+                                                         const J2PointState<T>& old,
                                                          const Trial<T>& tr,
                                                          const Consistency<T>& solution) {
     J2Return<T> out = tr.out;
@@ -136,7 +139,9 @@ template <class T>
         next.stress[k] = next.back_stress[k] + xi[k];
     }
     next.plastic_strain = tr.t.alpha_n + k_sqrt23 * dg * solution.fbar;
-    next.flow_radius = solution.flow_radius;
+    // kappa / R; on a table the first curve's radius, that the next step's check reads
+    next.flow_radius = c.rate_table ? table_flow(c.flow.table, next.plastic_strain, T(0.0)).value
+                                    : solution.flow_radius;
     next.flow_slope = solution.flow_slope;
     // d_eps_p = dgamma P xi (engineering shear). Dissipation by the trapezoidal rule, like the
     // element's strain work: then strain work - plastic work = the exact change of the elastic
@@ -202,6 +207,12 @@ template <class T, std::size_t K>
             return DgammaIteration<T, decltype(linear)>(c, tr[k].t, tr[k].slope_n, tr[k].yielding,
                                                         linear);
         });
+    } else if (fl.kind == FlowStress::Kind::Tabulated) {
+        solve([&](std::size_t k) {  // the curve of the point's rate (the first without a table)
+            return DgammaIteration<T, TableCurveAt<T>>(
+                c, tr[k].t, tr[k].slope_n, tr[k].yielding,
+                TableCurveAt<T>{&fl.table, c.rate_table ? r[k] : T(0.0)});
+        });
     } else if (fl.n <= 1.0 && c.beta > 0.0) {
         solve([&](std::size_t k) { return FlowStressIteration<T>(c, tr[k].t, tr[k].yielding); });
     } else {
@@ -211,7 +222,8 @@ template <class T, std::size_t K>
                                                        curve);
         });
     }
-    return array_of<K>([&](std::size_t k) { return returned_state(old[k], tr[k], solution[k]); });
+    return array_of<K>(
+        [&](std::size_t k) { return returned_state(c, old[k], tr[k], solution[k]); });
 }
 
 /// §7.3 on one point per lane (j2_return_mapping_points with K = 1).

@@ -1,8 +1,10 @@
 // The material model of a section, built from the model's material constants: elastic, or
-// J2 plastic with a bilinear or Johnson-Cook flow curve and an optional rate factor.
+// J2 plastic with a bilinear, Johnson-Cook or tabulated flow curve and an optional rate factor.
 #pragma once
 
+#include <utility>
 #include <variant>
+#include <vector>
 
 #include "fpmshell/materials/j2_plastic.hpp"
 #include "fpmshell/materials/linear_elastic.hpp"
@@ -26,6 +28,18 @@ using SectionMaterial = std::variant<LinearElastic, J2Plastic>;
             rate.c = m.jc_c;
             rate.reference_rate = m.reference_strain_rate;
         }
+    } else if (m.type == MaterialType::Tabulated) {
+        std::vector<PiecewiseLinearCurve> curves;
+        std::vector<Real> rates;
+        for (const FlowCurvePoints& c : m.flow_curves) {
+            curves.emplace_back(c.strain, c.stress);
+            rates.push_back(c.strain_rate);
+        }
+        if (curves.size() > 1) {  // the rate selects the curve (eq. 7.2-5)
+            rate.kind = RateFactor::Kind::Table;
+            rate.table_rates = rates;
+        }
+        flow = FlowStress::tabulated(std::move(curves), std::move(rates));
     } else {
         flow.yield_stress = m.yield_stress;
         // bilinear curve: sigma = sigma_y + E_t eps_total beyond yield <=> plastic modulus

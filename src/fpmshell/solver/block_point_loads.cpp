@@ -28,7 +28,7 @@ ElasticTriangleLoads<RealPack> block_point_loads(const J2Plastic& material, cons
         for (std::size_t r = 0; r < 3; ++r) stress[3 * p + r] = field(p, J2::k_stress + r);
     // the yield surfaces of the points, kappa_n = flow radius at alpha_n (§7.3)
     std::array<RealPack, 3 * k_max_block_points> back_stress;
-    std::array<RealPack, k_max_block_points> third_k2, strain_rate, new_strain_rate;
+    std::array<RealPack, k_max_block_points> third_k2, strain_rate, new_strain_rate, plastic_strain;
     YieldSurfaces<RealPack> yield{back_stress.data(), third_k2.data(), J2::k_yield_tolerance};
     for (std::size_t p = 0; p < n_points; ++p) {
         for (std::size_t r = 0; r < 3; ++r)
@@ -44,6 +44,12 @@ ElasticTriangleLoads<RealPack> block_point_loads(const J2Plastic& material, cons
         yield.dt = step.dt;
         yield.rate_filter = J2::k_rate_filter;
         for (std::size_t p = 0; p < n_points; ++p) strain_rate[p] = field(p, J2::k_strain_rate);
+        if (material.rate_factor().selects_curve()) {
+            yield.table = &material.return_constants().flow.table;
+            yield.plastic_strain = plastic_strain.data();
+            for (std::size_t p = 0; p < n_points; ++p)
+                plastic_strain[p] = field(p, J2::k_plastic_strain);
+        }
     }
     // The yielding points: the return mapping of §7.3 on the yielding (point, lane) pairs of
     // the block, in place in the block's state (a lane that takes this path never falls back,

@@ -317,16 +317,35 @@ TEST(ElasticTriangleBlock, LanesOutsideTheBoundsAreReportedInvalid) {
 
 namespace {
 
-/// rate: the section's rate factor; dt: duration of the path element (for the strain rate).
-/// with_return_mapping: the yielding point of lane 1 goes to a return mapping (the general
-/// J2 update on a copy of the lane's points) and the lane stays valid; without, it is invalid.
-void check_j2_lanes(const RateFactor& rate, Real dt, bool with_return_mapping) {
+/// The section's material: yield stress 1e9, far above the random stresses (~1e8) and their
+/// increments (~2e8), hardening slope 2e9, mixed hardening, and the rate factor `rate`.
+J2Plastic bilinear_j2(const RateFactor& rate) {
+    FlowStress flow;
+    flow.yield_stress = 1e9;
+    flow.hardening = 2e9;
+    return J2Plastic(k_young, k_poisson, flow, rate, 0.5);
+}
+
+/// The same yield stress and slope at rate 0 in a table of two curves (eq. 7.2-5), the second
+/// at 1e4 /s 10 % higher: at the ~1e3 /s of these elements a lane sits a tenth of the way.
+J2Plastic rate_table_j2() {
+    const std::vector<Real> rates{0.0, 1e4};
+    FlowStress flow = FlowStress::tabulated({PiecewiseLinearCurve({0.0, 1.0}, {1e9, 3e9}),
+                                             PiecewiseLinearCurve({0.0, 1.0}, {1.1e9, 3.3e9})},
+                                            rates);
+    RateFactor rate;
+    rate.kind = RateFactor::Kind::Table;
+    rate.table_rates = rates;
+    return J2Plastic(k_young, k_poisson, flow, rate, 1.0);
+}
+
+/// mat: the section's material (bilinear_j2 or rate_table_j2); dt: duration of the path
+/// element (for the strain rate). with_return_mapping: the yielding point of lane 1 goes to a
+/// return mapping (the general J2 update on a copy of the lane's points) and the lane stays
+/// valid; without, it is invalid.
+void check_j2_lanes(const J2Plastic& mat, Real dt, bool with_return_mapping) {
     std::mt19937 rng(23);
     const ShellRule rule = make_rule(3, 5);
-    FlowStress flow;
-    flow.yield_stress = 1e9;  // far above the random stresses (~1e8) and their increments (~2e8)
-    flow.hardening = 2e9;
-    const J2Plastic mat(k_young, k_poisson, flow, rate, 0.5);
     const LinearElastic elastic(k_young, k_poisson);
     ElasticSectionConstants constants = constants_of(elastic, rule);
     const int n_points = rule.n_points();
@@ -345,9 +364,10 @@ void check_j2_lanes(const RateFactor& rate, Real dt, bool with_return_mapping) {
             mp.back_stress = 0.1 * mp.stress;
             if (l == 1 && p == 4) mp.stress(2) = -1.2e9;
             mp.strain_rate = 50.0 * (1 + p);
-            if (l == 0) {
+            if (l == 0) {  // kappa / R, or a table's first curve
                 mp.plastic_strain = 0.01;
-                mp.flow_radius = 1e9 + 0.5 * (2e9 * 0.01);  // f0 + beta (sigma_f(alpha) - f0)
+                mp.flow_radius =
+                    mat.yield_radius(0.01, mat.rate_factor().selects_curve() ? 0.0 : 1.0);
                 mp.flow_slope = 2e9;
             }
             old_points[static_cast<std::size_t>(l)].push_back(mp);
@@ -380,6 +400,14 @@ void check_j2_lanes(const RateFactor& rate, Real dt, bool with_return_mapping) {
         yield.new_strain_rate = new_strain_rate.data();
         yield.dt = dt;
         yield.rate_filter = J2Plastic::k_rate_filter;
+    }
+    std::vector<RealPack> plastic_strain(static_cast<std::size_t>(n_points));
+    if (mat.rate_factor().selects_curve()) {
+        for (int p = 0; p < n_points; ++p)
+            plastic_strain[static_cast<std::size_t>(p)] = RealPack(
+                [&](auto l) { return old_points[l][static_cast<std::size_t>(p)].plastic_strain; });
+        yield.table = &mat.return_constants().flow.table;
+        yield.plastic_strain = plastic_strain.data();
     }
     std::array<const PathElement*, k_lanes> lanes;
     for (int l = 0; l < k_lanes; ++l)
@@ -477,16 +505,17 @@ void check_j2_lanes(const RateFactor& rate, Real dt, bool with_return_mapping) {
 }  // namespace
 
 TEST(ElasticTriangleBlock, J2LanesStayValidOnlyWhileEveryPointIsElastic) {
-    check_j2_lanes(RateFactor{}, 0.0, false);
+    check_j2_lanes(bilinear_j2(RateFactor{}), 0.0, false);
 }
 
 TEST(ElasticTriangleBlock, J2YieldingPointsGoToTheReturnMapping) {
-    check_j2_lanes(RateFactor{}, 0.0, true);
+    check_j2_lanes(bilinear_j2(RateFactor{}), 0.0, true);
     RateFactor jc;  // R ~ 1.14: the 1.2e9 shear of lane 1's point 4 still yields
     jc.kind = RateFactor::Kind::JohnsonCook;
     jc.c = 0.02;
     jc.reference_rate = 1.0;
-    check_j2_lanes(jc, 1e-6, true);
+    check_j2_lanes(bilinear_j2(jc), 1e-6, true);
+    check_j2_lanes(rate_table_j2(), 1e-6, true);  // the curve of the lane's rate
 }
 
 TEST(ElasticTriangleBlock, RateDependentJ2LanesUpdateTheFilteredStrainRate) {
@@ -494,5 +523,6 @@ TEST(ElasticTriangleBlock, RateDependentJ2LanesUpdateTheFilteredStrainRate) {
     jc.kind = RateFactor::Kind::JohnsonCook;
     jc.c = 0.02;
     jc.reference_rate = 1.0;
-    check_j2_lanes(jc, 1e-6, false);
+    check_j2_lanes(bilinear_j2(jc), 1e-6, false);
+    check_j2_lanes(rate_table_j2(), 1e-6, false);
 }

@@ -310,6 +310,35 @@ TEST(ModelReader, ReadsPlasticMaterials) {
     EXPECT_EQ(c.hardening_mix, 0.5);
     EXPECT_EQ(jc.sections[0].thickness_points, 3);
     EXPECT_EQ(jc.sections[0].inplane_points, 3);
+
+    const Model tab = read_model(dir.write(
+        "tab.yaml", replaced(k_base, steel,
+                             "steel: {type: tabulated, density: 7.8e-9, youngs_modulus: 210000, "
+                             "poisson_ratio: 0.3, flow_curve: [[0, 250], [0.02, 300], [0.3, "
+                             "300]], hardening_mix: 0.5, cowper_symonds: {D: 40.4, q: 5}}")));
+    const Material& t = tab.materials[0];
+    EXPECT_EQ(t.type, MaterialType::Tabulated);
+    ASSERT_EQ(t.flow_curves.size(), 1U);
+    EXPECT_EQ(t.flow_curves[0].strain, (std::vector<Real>{0, 0.02, 0.3}));
+    EXPECT_EQ(t.flow_curves[0].stress, (std::vector<Real>{250, 300, 300}));
+    EXPECT_EQ(t.hardening_mix, 0.5);
+    EXPECT_TRUE(t.cowper_symonds);
+    EXPECT_EQ(t.cs_q, 5);
+    EXPECT_EQ(tab.sections[0].thickness_points, 5);
+
+    const Model rates = read_model(dir.write(
+        "rates.yaml",
+        replaced(k_base, steel,
+                 "steel: {type: tabulated, density: 7.8e-9, youngs_modulus: 210000, "
+                 "poisson_ratio: 0.3, flow_curves: [{strain_rate: 0, points: [[0, 250], [0.2, "
+                 "300]]}, {strain_rate: 100, points: [[0, 300], [0.1, 330], [0.3, 380]]}]}")));
+    const Material& r = rates.materials[0];
+    ASSERT_EQ(r.flow_curves.size(), 2U);
+    EXPECT_EQ(r.flow_curves[0].strain_rate, 0);
+    EXPECT_EQ(r.flow_curves[1].strain_rate, 100);
+    EXPECT_EQ(r.flow_curves[1].strain, (std::vector<Real>{0, 0.1, 0.3}));
+    EXPECT_EQ(r.flow_curves[1].stress, (std::vector<Real>{300, 330, 380}));
+    EXPECT_EQ(r.hardening_mix, 1);
 }
 
 // Each generator is reachable from the model file with its keys, and its sets are usable.
@@ -487,6 +516,63 @@ TEST(ModelReader, EveryErrorNamesFileLineAndKey) {
          4, "materials.steel.cowper_symonds.q", "is required but missing"},
         {replaced(k_base, steel, "poisson_ratio: 0.3, cowper_symonds: {D: 6500, q: 4}}"), 4,
          "materials.steel.cowper_symonds", "belongs to plastic materials"},
+        // tabulated flow curves
+        {replaced(k_base, "type: elastic", "type: tabulated"), 4, "materials.steel.flow_curve",
+         "is required but missing"},
+        {replaced(replaced(k_base, "type: elastic", "type: tabulated"), steel,
+                  "poisson_ratio: 0.3, flow_curve: [[0, 200]]}"),
+         4, "materials.steel.flow_curve", "at least two"},
+        {replaced(replaced(k_base, "type: elastic", "type: tabulated"), steel,
+                  "poisson_ratio: 0.3, flow_curve: [[0.01, 200], [0.1, 300]]}"),
+         4, "materials.steel.flow_curve.0.0", "must be at plastic strain 0"},
+        {replaced(replaced(k_base, "type: elastic", "type: tabulated"), steel,
+                  "poisson_ratio: 0.3, flow_curve: [[0, 0], [0.1, 300]]}"),
+         4, "materials.steel.flow_curve.0.1", "must be > 0"},
+        {replaced(replaced(k_base, "type: elastic", "type: tabulated"), steel,
+                  "poisson_ratio: 0.3, flow_curve: [[0, 200], [0.1, 300], [0.1, 310]]}"),
+         4, "materials.steel.flow_curve.2.0", "must increase strictly, but '0.1' follows '0.1'"},
+        {replaced(replaced(k_base, "type: elastic", "type: tabulated"), steel,
+                  "poisson_ratio: 0.3, flow_curve: [[0, 200], [0.1, 300], [0.2, 290]]}"),
+         4, "materials.steel.flow_curve.2.1", "softening is not supported"},
+        {replaced(replaced(k_base, "type: elastic", "type: tabulated"), steel,
+                  "poisson_ratio: 0.3, flow_curve: [[0, 200], [0.1, .nan]]}"),
+         4, "materials.steel.flow_curve.1.1", "finite number"},
+        {replaced(replaced(k_base, "type: elastic", "type: tabulated"), steel,
+                  "poisson_ratio: 0.3, flow_curve: [[0, 200], 0.1]}"),
+         4, "materials.steel.flow_curve.1", "two numbers [plastic strain, flow stress], got '0.1'"},
+        {replaced(replaced(k_base, "type: elastic", "type: tabulated"), steel,
+                  "poisson_ratio: 0.3, flow_curve: [[0, 200], [1, 300]], yield_stress: 200}"),
+         4, "materials.steel.yield_stress",
+         "unknown key; valid keys under 'materials.steel' are "
+         "type, density, youngs_modulus, poisson_ratio, flow_curve"},
+        {replaced(k_base, steel, "poisson_ratio: 0.3, flow_curve: [[0, 200], [1, 300]]}"), 4,
+         "materials.steel.flow_curve", "belongs to plastic materials"},
+        {replaced(replaced(k_base, "type: elastic", "type: tabulated"), steel,
+                  "poisson_ratio: 0.3, flow_curve: [[0, 200], [1, 300]], flow_curves: []}"),
+         4, "materials.steel.flow_curves", "either flow_curve"},
+        {replaced(replaced(k_base, "type: elastic", "type: tabulated"), steel,
+                  "poisson_ratio: 0.3, flow_curves: [{strain_rate: 10, points: [[0, 200], [1, "
+                  "300]]}, {strain_rate: 10, points: [[0, 250], [1, 350]]}]}"),
+         4, "materials.steel.flow_curves.1.strain_rate", "must increase, but '10' follows 10"},
+        {replaced(replaced(k_base, "type: elastic", "type: tabulated"), steel,
+                  "poisson_ratio: 0.3, flow_curves: [{strain_rate: 0, points: [[0, 200], [1, "
+                  "300]]}, {strain_rate: 10, points: [[0, 250], [0.5, 260], [1, 280]]}]}"),
+         4, "materials.steel.flow_curves.1",
+         "lies below the one at strain rate 0 near plastic strain 1; the curves must not cross"},
+        {replaced(replaced(k_base, "type: elastic", "type: tabulated"), steel,
+                  "poisson_ratio: 0.3, flow_curves: [{strain_rate: 0, points: [[0, 200], [1, "
+                  "300]]}, {strain_rate: 10, points: [[0, 250], [1, 350]]}], cowper_symonds: "
+                  "{D: 40, q: 5}}"),
+         4, "materials.steel.cowper_symonds", "cannot be combined with flow_curves"},
+        {replaced(replaced(k_base, "type: elastic", "type: tabulated"), steel,
+                  "poisson_ratio: 0.3, flow_curves: [{strain_rate: 0, points: [[0, 200], [1, "
+                  "300]]}, {strain_rate: 10, points: [[0, 250], [1, 350]]}], hardening_mix: "
+                  "0.5}"),
+         4, "materials.steel.hardening_mix", "must be 1 (isotropic) with flow_curves"},
+        {replaced(replaced(k_base, "type: elastic", "type: tabulated"), steel,
+                  "poisson_ratio: 0.3, flow_curves: [{strain_rate: -1, points: [[0, 200], [1, "
+                  "300]]}]}"),
+         4, "materials.steel.flow_curves.0.strain_rate", "must be 0 or more, got '-1'"},
         {replaced(k_base, steel, "poisson_ratio: 0.3, yield_stress: 200}"), 4,
          "materials.steel.yield_stress", "belongs to plastic materials"},
         {replaced(replaced(replaced(k_base, "type: elastic", "type: j2_plastic"), steel,

@@ -9,9 +9,13 @@
 //   sigma_max - 2 sigma_y (Bauschinger);
 // - non-proportional paths converge as the increments shrink;
 // - Johnson-Cook flow curve; Cowper-Symonds and Johnson-Cook rate factors against their formulas;
+// - a tabulated flow curve: equibiaxial paths against the curve in every segment, past its
+//   last point and across several points in one increment; a tabulated straight line is the
+//   bilinear material on a random path;
 // - plastic work = integral of sigma . d eps_p.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <random>
@@ -309,6 +313,93 @@ TEST(J2Plastic, JohnsonCookFlowCurveOnMonotonicPath) {
         const MaterialPoint p = apply(m, MaterialPoint{}, Voigt3(eps, eps, 0), 40);
         EXPECT_NEAR(p.plastic_strain, alpha, 1e-8 * (1 + alpha)) << "alpha " << alpha;
         EXPECT_NEAR(p.stress(0), s, 1e-8 * s);
+    }
+}
+
+// Equibiaxial with sigma = sigma_f(alpha) piecewise linear: eps = s (1 - nu) / E + alpha / 2,
+// exact for any number of increments (proportional path), in every kind of segment: hardening,
+// flat (perfectly plastic), past the last point (its last segment extended), and reached in one
+// increment across several points.
+TEST(J2Plastic, TabulatedFlowCurveOnMonotonicPath) {
+    const FlowStress f = FlowStress::tabulated({0.0, 0.002, 0.01, 0.05, 0.08, 0.2},
+                                               {250.0, 290.0, 330.0, 380.0, 380.0, 430.0});
+    const J2Plastic m(k_e, k_nu, f, RateFactor{}, 1.0);
+    for (Real alpha : {0.001, 0.006, 0.03, 0.06, 0.15, 0.3}) {
+        const Real s = f.value(alpha);
+        const Real eps = s * (1 - k_nu) / k_e + 0.5 * alpha;
+        for (int n : {1, 7, 400}) {
+            const MaterialPoint p = apply(m, MaterialPoint{}, Voigt3(eps, eps, 0), n);
+            // the Newton tolerance |F| < 1e-10 kappa^2 / 3: 1e-10 relative in the stress
+            EXPECT_NEAR(p.plastic_strain, alpha, 1e-8 * (1 + alpha))
+                << "alpha " << alpha << ", " << n << " increments";
+            EXPECT_NEAR(p.stress(0), s, 1e-8 * s);
+            EXPECT_NEAR(p.stress(1), s, 1e-8 * s);
+            // the stored radius and slope are the curve's at the new plastic strain
+            EXPECT_NEAR(p.flow_radius, s, 1e-8 * s);
+            EXPECT_EQ(p.flow_slope, f.slope(p.plastic_strain));
+        }
+    }
+    // the last segment, extended (to rounding: the slope is stored, not the two points)
+    EXPECT_NEAR(f.value(0.3), 430.0 + (430.0 - 380.0) / 0.12 * 0.1, 1e-12 * 430.0);
+    EXPECT_EQ(f.slope(0.06), 0.0);
+    EXPECT_EQ(f.slope(0.0), 40.0 / 0.002);
+}
+
+// A tabulated straight line is the bilinear curve: the same states along a random
+// non-proportional path with unloading, for isotropic, mixed and kinematic hardening.
+TEST(J2Plastic, TabulatedStraightLineIsTheBilinearMaterial) {
+    const Real h = 2000.0;
+    for (Real beta : {1.0, 0.5, 0.0}) {
+        const J2Plastic lin = bilinear(h, beta);
+        const J2Plastic tab(k_e, k_nu, FlowStress::tabulated({0.0, 1.0}, {k_sy, k_sy + h}),
+                            RateFactor{}, beta);
+        std::mt19937 rng(3);
+        std::uniform_real_distribution<Real> u(-1.0, 1.0);
+        MaterialPoint a, b;
+        for (int i = 0; i < 200; ++i) {
+            const Voigt3 d(2e-3 * u(rng), 2e-3 * u(rng), 2e-3 * u(rng));
+            lin.update(a, d, 0.0, a);
+            tab.update(b, d, 0.0, b);
+            // the same operations but for the curve's evaluation (one segment, exact slope h):
+            // the iterates agree to the Newton tolerance, 1e-10 relative
+            for (Eigen::Index k = 0; k < 3; ++k) ASSERT_NEAR(a.stress(k), b.stress(k), 1e-8 * k_sy);
+            ASSERT_NEAR(a.plastic_strain, b.plastic_strain, 1e-10 + 1e-8 * a.plastic_strain);
+        }
+        EXPECT_GT(a.plastic_strain, 0.05) << "the path must go well past yield";
+    }
+}
+
+// A table of two curves (eq. 7.2-5), equibiaxial at a constant rate (the filter settled): the
+// stress lies on the curve interpolated between them at the rate's position, the first curve
+// below their rates and the last above.
+TEST(J2Plastic, RateTableGivesTheCurveOfTheRate) {
+    const std::vector<Real> rates{10.0, 1000.0};
+    // sigma = 250 + 1000 alpha at 10 /s, 300 + 2000 alpha (to 0.05, then flat) at 1000 /s
+    RateFactor table;
+    table.kind = RateFactor::Kind::Table;
+    table.table_rates = rates;
+    const J2Plastic m(
+        k_e, k_nu,
+        FlowStress::tabulated({PiecewiseLinearCurve({0.0, 1.0}, {250.0, 1250.0}),
+                               PiecewiseLinearCurve({0.0, 0.05, 1.0}, {300.0, 400.0, 400.0})},
+                              rates),
+        table, 1.0);
+    const Real dt = 1e-6;
+    for (Real eps_dot : {2.0, 100.0, 250.0, 5000.0}) {
+        const Real rate = 2.0 * eps_dot;  // the effective rate of equibiaxial straining
+        const int n = 1000;               // 0.02 x eps_dot / 100 total strain; filter settled
+        const Real eps = eps_dot * dt * n;
+        const MaterialPoint p = apply(m, MaterialPoint{}, Voigt3(eps, eps, 0), n, dt);
+        ASSERT_NEAR(p.strain_rate, rate, 1e-9 * rate);
+        const Real w = std::clamp((rate - 10.0) / 990.0, 0.0, 1.0);
+        const Real a = p.plastic_strain;
+        ASSERT_GT(a, 0.0) << "rate " << rate;
+        const Real expected =
+            (1 - w) * (250.0 + 1000.0 * a) + w * (a < 0.05 ? 300.0 + 2000.0 * a : 400.0);
+        EXPECT_NEAR(p.stress(0), expected, 1e-8 * expected) << "rate " << rate;
+        EXPECT_NEAR(p.stress(1), expected, 1e-8 * expected);
+        // the stored radius: the first curve's, which the element's trial check reads
+        EXPECT_NEAR(p.flow_radius, 250.0 + 1000.0 * a, 1e-9 * expected);
     }
 }
 

@@ -2,8 +2,8 @@
 // T = RealPack) against the same points one by one (T = Real, what J2Plastic::update runs and
 // test_j2_plastic.cpp checks against closed forms and an independent 3-D algorithm):
 // - every lane equals its scalar return, for lanes that stay elastic, yield for the first time,
-//   yield again, need many Newton steps or few, with a linear or a Johnson-Cook flow curve and
-//   a rate factor of their own;
+//   yield again, need many Newton steps or few, with a linear, a Johnson-Cook or a tabulated
+//   flow curve and a rate factor of their own;
 // - a lane outside the mask returns its trial state and no plastic work, even outside the
 //   yield surface;
 // - J2Plastic::update is the scalar return with the filtered rate's factor.
@@ -42,6 +42,37 @@ J2Plastic johnson_cook(Real beta, Real n = 0.4) {  // the tube's steel (benchmar
     return J2Plastic(k_e, k_nu, f, rate, beta);
 }
 
+/// A tabulated curve whose points lie within the random states' plastic strains (up to 0.05)
+/// and the increments' reach: lanes cross points during a return, some end on its flat part or
+/// past its last point.
+J2Plastic tabulated(Real beta) {
+    const FlowStress f =
+        FlowStress::tabulated({0.0, 0.004, 0.015, 0.03, 0.045, 0.07},
+                              {k_sy, 1.2 * k_sy, 1.4 * k_sy, 1.5 * k_sy, 1.5 * k_sy, 1.55 * k_sy});
+    RateFactor rate;
+    rate.kind = RateFactor::Kind::CowperSymonds;
+    rate.d = 40.4;
+    rate.q = 5.0;
+    return J2Plastic(k_e, k_nu, f, rate, beta);
+}
+
+/// Three tabulated curves at 0, 10 and 1000 /s, the higher ones on or above the lower and with
+/// points of their own (theory.md eq. 7.2-5).
+J2Plastic rate_table() {
+    const std::vector<Real> rates{0.0, 10.0, 1000.0};
+    const FlowStress f = FlowStress::tabulated(
+        {PiecewiseLinearCurve({0.0, 0.004, 0.015, 0.07},
+                              {k_sy, 1.2 * k_sy, 1.4 * k_sy, 1.5 * k_sy}),
+         PiecewiseLinearCurve({0.0, 0.01, 0.03}, {1.1 * k_sy, 1.35 * k_sy, 1.6 * k_sy}),
+         PiecewiseLinearCurve({0.0, 0.002, 0.02, 0.05},
+                              {1.3 * k_sy, 1.4 * k_sy, 1.7 * k_sy, 1.8 * k_sy})},
+        rates);
+    RateFactor rate;
+    rate.kind = RateFactor::Kind::Table;
+    rate.table_rates = rates;
+    return J2Plastic(k_e, k_nu, f, rate, 1.0);
+}
+
 /// A random history of one point: on or inside its yield surface, some never yielded.
 J2PointState<Real> random_state(std::mt19937& rng, const J2ReturnConstants& c) {
     std::uniform_real_distribution<Real> u(-1.0, 1.0), v(0.0, 1.0);
@@ -72,7 +103,10 @@ std::array<Real, 3> random_increment(std::mt19937& rng) {
 }
 
 /// The same comparison for every lane of `trials` random packs; returns how many lanes yielded.
-int check_lanes_against_scalar(const J2ReturnConstants& c, bool rate_factors, int trials) {
+/// rate_factors: each lane's r in [1, 1.3] (a rate factor R), or with rate_positions its
+/// position in a rate table, in [0, rate_positions].
+int check_lanes_against_scalar(const J2ReturnConstants& c, bool rate_factors, int trials,
+                               Real rate_positions = 0.0) {
     std::mt19937 rng(7);
     std::uniform_real_distribution<Real> v(0.0, 1.0);
     int n_yielded = 0;
@@ -84,7 +118,9 @@ int check_lanes_against_scalar(const J2ReturnConstants& c, bool rate_factors, in
         for (std::size_t l = 0; l < k_lanes; ++l) {
             old[l] = random_state(rng, c);
             d_eps[l] = random_increment(rng);
-            r[l] = rate_factors ? 1.0 + 0.3 * v(rng) : 1.0;
+            r[l] = rate_positions > 0 ? rate_positions * v(rng)
+                   : rate_factors     ? 1.0 + 0.3 * v(rng)
+                                      : 1.0;
         }
         auto pack = [&](auto&& f) {
             return RealPack([&](auto l) { return f(static_cast<std::size_t>(l)); });
@@ -149,6 +185,20 @@ TEST(J2ReturnMapping, EveryLaneEqualsItsScalarReturnJohnsonCookWithRateFactors) 
     // dgamma iteration with the curve on packs (n > 1)
     for (Real n : {0.1, 1.0, 1.5})
         check_lanes_against_scalar(johnson_cook(1.0, n).return_constants(), true, 100);
+}
+
+TEST(J2ReturnMapping, EveryLaneEqualsItsScalarReturnTabulatedWithRateFactors) {
+    for (Real beta : {1.0, 0.3}) {
+        const int yielded =
+            check_lanes_against_scalar(tabulated(beta).return_constants(), true, 400);
+        EXPECT_GT(yielded, 400) << "beta " << beta;  // enough yielding lanes to mean something
+    }
+}
+
+TEST(J2ReturnMapping, EveryLaneEqualsItsScalarReturnOnTheCurveOfItsRate) {
+    const int yielded =
+        check_lanes_against_scalar(rate_table().return_constants(), false, 400, 2.0);
+    EXPECT_GT(yielded, 400);
 }
 
 TEST(J2ReturnMapping, LanesOutsideTheMaskKeepTheirTrialState) {
