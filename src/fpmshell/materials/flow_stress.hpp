@@ -33,8 +33,7 @@ struct FlowStress {
                                               std::vector<Real> rates = {0.0}) {
         FlowStress f;
         f.kind = Kind::Tabulated;
-        f.table.curves = std::move(curves);
-        f.table.rates = std::move(rates);
+        f.table = FlowTable(curves, std::move(rates));
         return f;
     }
     [[nodiscard]] static FlowStress tabulated(std::vector<Real> strain, std::vector<Real> stress) {
@@ -43,7 +42,7 @@ struct FlowStress {
 
     [[nodiscard]] Real value(Real alpha) const {
         if (kind == Kind::Linear) return yield_stress + hardening * alpha;
-        if (kind == Kind::Tabulated) return table.curves.front().at(alpha).value;
+        if (kind == Kind::Tabulated) return table.at(alpha, 0.0).value;
         return a + (alpha > 0 ? b * std::pow(alpha, n) : 0.0);
     }
     /// d sigma_f / d alpha; for Johnson-Cook with n < 1 the slope is infinite at alpha = 0:
@@ -51,7 +50,7 @@ struct FlowStress {
     /// stress there and does not rely on this slope, theory.md §7.3a).
     [[nodiscard]] Real slope(Real alpha) const {
         if (kind == Kind::Linear) return hardening;
-        if (kind == Kind::Tabulated) return table.curves.front().at(alpha).slope;
+        if (kind == Kind::Tabulated) return table.at(alpha, 0.0).slope;
         const Real at = std::max(alpha, k_slope_floor);
         return b * n * std::pow(at, n - 1.0);
     }
@@ -63,7 +62,7 @@ struct FlowStress {
     [[nodiscard]] ValueSlope value_and_slope(Real alpha) const {
         if (kind == Kind::Linear) return {yield_stress + hardening * alpha, hardening};
         if (kind == Kind::Tabulated) {
-            const FlowValue<Real> v = table.curves.front().at(alpha);
+            const FlowValue<Real> v = table.at(alpha, 0.0);
             return {v.value, v.slope};
         }
         if (!(alpha >= k_slope_floor)) return {value(alpha), slope(alpha)};
@@ -80,7 +79,7 @@ struct RateFactor {
     Kind kind = Kind::None;
     Real d = 0, q = 1;               ///< Cowper-Symonds: 1 + (rate / D)^(1/q)
     Real c = 0, reference_rate = 1;  ///< Johnson-Cook: 1 + C ln(max(rate / rate_0, 1))
-    std::vector<Real> table_rates;   ///< Table: the rates of its curves (FlowTable::rates)
+    std::vector<Real> table_rates;   ///< Table: the rates of its curves (FlowTable::rates())
 
     [[nodiscard]] bool active() const { return kind != Kind::None; }
     [[nodiscard]] bool selects_curve() const { return kind == Kind::Table; }

@@ -64,25 +64,53 @@ private:
 /// the first or the last curve outside their range (eq. 7.2-5). The position of a rate,
 /// u = k + (rate - rate_k) / (rate_{k+1} - rate_k) in [0, curves - 1], is what a point carries
 /// through its return (the rate is frozen during it, §7.4).
-struct FlowTable {
-    std::vector<PiecewiseLinearCurve> curves;
-    std::vector<Real> rates;  ///< strictly increasing, one per curve
-
-    [[nodiscard]] Real position(Real rate) const { return rate_position(rates, rate); }
-    /// sigma_f and sigma_f' at the plastic strain alpha on the curve at position u.
-    [[nodiscard]] FlowValue<Real> at(Real alpha, Real u) const {
-        const FlowValue<Real> low = curves.front().at(alpha);
-        if (!(u > 0.0)) return low;
-        const std::size_t k =
-            std::min(static_cast<std::size_t>(u), curves.size() - 2);  // u = last: k + 1 = last
-        const Real w = u - static_cast<Real>(k);
-        const FlowValue<Real> a = k == 0 ? low : curves[k].at(alpha), b = curves[k + 1].at(alpha);
-        return {(1.0 - w) * a.value + w * b.value, (1.0 - w) * a.slope + w * b.slope};
+///
+/// The curves are held on the union of their points (each exact there: piecewise linear, the
+/// last segment extended), so that one search finds a plastic strain's segment on every curve.
+class FlowTable {
+public:
+    FlowTable() = default;
+    /// rates: strictly increasing, one per curve.
+    FlowTable(const std::vector<PiecewiseLinearCurve>& curves, std::vector<Real> rates)
+        : rates_(std::move(rates)), n_curves_(curves.size()) {
+        for (const PiecewiseLinearCurve& c : curves)
+            grid_.insert(grid_.end(), c.strain().begin(), c.strain().end());
+        std::sort(grid_.begin(), grid_.end());
+        grid_.erase(std::unique(grid_.begin(), grid_.end()), grid_.end());
+        for (const PiecewiseLinearCurve& c : curves) {
+            for (Real alpha : grid_) stress_.push_back(c.at(alpha).value);
+            for (std::size_t i = 0; i + 1 < grid_.size(); ++i)
+                slope_.push_back(c.at(grid_[i]).slope);
+        }
     }
+    [[nodiscard]] std::size_t size() const { return n_curves_; }
+    [[nodiscard]] const std::vector<Real>& rates() const { return rates_; }
+    [[nodiscard]] Real position(Real rate) const { return rate_position(rates_, rate); }
+    /// sigma_f and sigma_f' at the plastic strain alpha on the curve at position u (eq. 7.2-5).
+    [[nodiscard]] FlowValue<Real> at(Real alpha, Real u) const {
+        const std::size_t n = grid_.size();
+        const auto above = std::upper_bound(grid_.begin() + 1, grid_.end() - 1, alpha);
+        const auto i = static_cast<std::size_t>(above - grid_.begin()) - 1;
+        const Real d = alpha - grid_[i];
+        if (!(u > 0.0)) return {stress_[i] + slope_[i] * d, slope_[i]};
+        const std::size_t k =
+            std::min(static_cast<std::size_t>(u), n_curves_ - 2);  // u = last: k + 1 = last
+        const Real w = u - static_cast<Real>(k);
+        const Real* s = stress_.data() + k * n;       // curve k at the points, then curve k + 1
+        const Real* m = slope_.data() + k * (n - 1);  // its segments' slopes, then k + 1's
+        const Real slope = (1.0 - w) * m[i] + w * m[n - 1 + i];
+        return {(1.0 - w) * s[i] + w * s[n + i] + slope * d, slope};
+    }
+
+private:
+    std::vector<Real> grid_;            // the points of every curve, increasing
+    std::vector<Real> stress_, slope_;  // [curve][point] and [curve][segment]
+    std::vector<Real> rates_;
+    std::size_t n_curves_ = 0;
 };
 
 /// FlowTable::at on every lane of T, each lane with its own position (a binary search over the
-/// points per lane and curve: the return mapping calls it once per evaluation).
+/// points per lane: the return mapping calls it once per evaluation).
 template <class T>
 [[nodiscard]] inline FlowValue<T> table_flow(const FlowTable& table, const T& alpha, const T& u) {
     if constexpr (std::is_same_v<T, Real>) {

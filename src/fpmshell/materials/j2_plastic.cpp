@@ -19,7 +19,7 @@ J2Plastic::J2Plastic(Real youngs_modulus, Real poisson_ratio, const FlowStress& 
     constants_.beta = beta_;
     constants_.tolerance = k_yield_tolerance;
     if (rate_.selects_curve() && (flow_.kind != FlowStress::Kind::Tabulated || beta_ != 1.0 ||
-                                  rate_.table_rates.size() != flow_.table.curves.size()))
+                                  rate_.table_rates.size() != flow_.table.size()))
         throw std::invalid_argument(
             "J2Plastic: a rate table needs a tabulated flow curve per rate and isotropic "
             "hardening");
