@@ -101,21 +101,29 @@ using std::sqrt;
 // to it. The same operations on a scalar and on every lane of a pack, so a lane equals its
 // scalar. Without AVX-512: the division and the square root.
 namespace simd_detail {
+/// a b + c rounded once: the residuals below need it (1 - x y rounded after the product loses
+/// the bits the step corrects), whatever the compiler's contraction (sanitizer and clang builds
+/// turn it off)
+[[nodiscard]] FPMSHELL_INLINE Real fused(Real a, Real b, Real c) { return std::fma(a, b, c); }
+[[nodiscard]] FPMSHELL_INLINE RealPack fused(const RealPack& a, const RealPack& b,
+                                             const RealPack& c) {
+    return stdx::fma(a, b, c);
+}
 template <class T>
 [[nodiscard]] FPMSHELL_INLINE T refined_reciprocal(const T& x, const T& y0) {
     T y = y0;
-    for (int i = 0; i < 2; ++i) y = y + y * (1.0 - x * y);  // e = 1 - x y -> e^2
+    for (int i = 0; i < 2; ++i) y = fused(y, fused(-x, y, T(1.0)), y);  // e = 1 - x y -> e^2
     return y;
 }
 /// Goldschmidt's iteration on g ~ sqrt(x), h ~ 1 / (2 sqrt(x)) from y0 ~ 1 / sqrt(x)
 template <class T>
 [[nodiscard]] FPMSHELL_INLINE T refined_sqrt(const T& x, const T& y0) {
     T g = x * y0, h = 0.5 * y0;
-    T r = 0.5 - g * h;
-    g = g + g * r;
-    h = h + h * r;
-    r = 0.5 - g * h;
-    return g + g * r;
+    T r = fused(-g, h, T(0.5));
+    g = fused(g, r, g);
+    h = fused(h, r, h);
+    r = fused(-g, h, T(0.5));
+    return fused(g, r, g);
 }
 }  // namespace simd_detail
 /// 1 / x for x finite, normal and nonzero (else unspecified), within 2 ulp.
