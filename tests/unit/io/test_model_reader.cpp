@@ -434,6 +434,10 @@ TEST(ModelReader, EveryErrorNamesFileLineAndKey) {
     const std::string plate = "mesh: {generator: plate, length_x: 2, length_y: 1, nx: 4, ny: 2}";
     const std::string steel = "poisson_ratio: 0.3}";
     const std::string section = "  - {elements: all, material: steel, thickness: 0.1}";
+    // the base model with its material tabulated and `keys` in place of its poisson_ratio
+    auto tabulated = [&](const std::string& keys) {
+        return replaced(replaced(k_base, "type: elastic", "type: tabulated"), steel, keys);
+    };
     const std::vector<Case> cases = {
         // unknown keys, with a suggestion and the valid keys
         {k_base + "contorl: 1\n", 9, "contorl",
@@ -519,59 +523,45 @@ TEST(ModelReader, EveryErrorNamesFileLineAndKey) {
         // tabulated flow curves
         {replaced(k_base, "type: elastic", "type: tabulated"), 4, "materials.steel.flow_curve",
          "is required but missing"},
-        {replaced(replaced(k_base, "type: elastic", "type: tabulated"), steel,
-                  "poisson_ratio: 0.3, flow_curve: [[0, 200]]}"),
-         4, "materials.steel.flow_curve", "at least two"},
-        {replaced(replaced(k_base, "type: elastic", "type: tabulated"), steel,
-                  "poisson_ratio: 0.3, flow_curve: [[0.01, 200], [0.1, 300]]}"),
-         4, "materials.steel.flow_curve.0.0", "must be at plastic strain 0"},
-        {replaced(replaced(k_base, "type: elastic", "type: tabulated"), steel,
-                  "poisson_ratio: 0.3, flow_curve: [[0, 0], [0.1, 300]]}"),
-         4, "materials.steel.flow_curve.0.1", "must be > 0"},
-        {replaced(replaced(k_base, "type: elastic", "type: tabulated"), steel,
-                  "poisson_ratio: 0.3, flow_curve: [[0, 200], [0.1, 300], [0.1, 310]]}"),
-         4, "materials.steel.flow_curve.2.0", "must increase strictly, but '0.1' follows '0.1'"},
-        {replaced(replaced(k_base, "type: elastic", "type: tabulated"), steel,
-                  "poisson_ratio: 0.3, flow_curve: [[0, 200], [0.1, 300], [0.2, 290]]}"),
-         4, "materials.steel.flow_curve.2.1", "softening is not supported"},
-        {replaced(replaced(k_base, "type: elastic", "type: tabulated"), steel,
-                  "poisson_ratio: 0.3, flow_curve: [[0, 200], [0.1, .nan]]}"),
-         4, "materials.steel.flow_curve.1.1", "finite number"},
-        {replaced(replaced(k_base, "type: elastic", "type: tabulated"), steel,
-                  "poisson_ratio: 0.3, flow_curve: [[0, 200], 0.1]}"),
-         4, "materials.steel.flow_curve.1", "two numbers [plastic strain, flow stress], got '0.1'"},
-        {replaced(replaced(k_base, "type: elastic", "type: tabulated"), steel,
-                  "poisson_ratio: 0.3, flow_curve: [[0, 200], [1, 300]], yield_stress: 200}"),
-         4, "materials.steel.yield_stress",
+        {tabulated("poisson_ratio: 0.3, flow_curve: [[0, 200]]}"), 4, "materials.steel.flow_curve",
+         "at least two"},
+        {tabulated("poisson_ratio: 0.3, flow_curve: [[0.01, 200], [0.1, 300]]}"), 4,
+         "materials.steel.flow_curve.0.0", "must be at plastic strain 0"},
+        {tabulated("poisson_ratio: 0.3, flow_curve: [[0, 0], [0.1, 300]]}"), 4,
+         "materials.steel.flow_curve.0.1", "must be > 0"},
+        {tabulated("poisson_ratio: 0.3, flow_curve: [[0, 200], [0.1, 300], [0.1, 310]]}"), 4,
+         "materials.steel.flow_curve.2.0", "must increase strictly, but '0.1' follows '0.1'"},
+        {tabulated("poisson_ratio: 0.3, flow_curve: [[0, 200], [0.1, 300], [0.2, 290]]}"), 4,
+         "materials.steel.flow_curve.2.1", "softening is not supported"},
+        {tabulated("poisson_ratio: 0.3, flow_curve: [[0, 200], [0.1, .nan]]}"), 4,
+         "materials.steel.flow_curve.1.1", "finite number"},
+        {tabulated("poisson_ratio: 0.3, flow_curve: [[0, 200], 0.1]}"), 4,
+         "materials.steel.flow_curve.1", "two numbers [plastic strain, flow stress], got '0.1'"},
+        {tabulated("poisson_ratio: 0.3, flow_curve: [[0, 200], [1, 300]], yield_stress: 200}"), 4,
+         "materials.steel.yield_stress",
          "unknown key; valid keys under 'materials.steel' are "
          "type, density, youngs_modulus, poisson_ratio, flow_curve"},
         {replaced(k_base, steel, "poisson_ratio: 0.3, flow_curve: [[0, 200], [1, 300]]}"), 4,
          "materials.steel.flow_curve", "belongs to plastic materials"},
-        {replaced(replaced(k_base, "type: elastic", "type: tabulated"), steel,
-                  "poisson_ratio: 0.3, flow_curve: [[0, 200], [1, 300]], flow_curves: []}"),
-         4, "materials.steel.flow_curves", "either flow_curve"},
-        {replaced(replaced(k_base, "type: elastic", "type: tabulated"), steel,
-                  "poisson_ratio: 0.3, flow_curves: [{strain_rate: 10, points: [[0, 200], [1, "
-                  "300]]}, {strain_rate: 10, points: [[0, 250], [1, 350]]}]}"),
+        {tabulated("poisson_ratio: 0.3, flow_curve: [[0, 200], [1, 300]], flow_curves: []}"), 4,
+         "materials.steel.flow_curves", "either flow_curve"},
+        {tabulated("poisson_ratio: 0.3, flow_curves: [{strain_rate: 10, points: [[0, 200], [1, "
+                   "300]]}, {strain_rate: 10, points: [[0, 250], [1, 350]]}]}"),
          4, "materials.steel.flow_curves.1.strain_rate", "must increase, but '10' follows 10"},
-        {replaced(replaced(k_base, "type: elastic", "type: tabulated"), steel,
-                  "poisson_ratio: 0.3, flow_curves: [{strain_rate: 0, points: [[0, 200], [1, "
-                  "300]]}, {strain_rate: 10, points: [[0, 250], [0.5, 260], [1, 280]]}]}"),
+        {tabulated("poisson_ratio: 0.3, flow_curves: [{strain_rate: 0, points: [[0, 200], [1, "
+                   "300]]}, {strain_rate: 10, points: [[0, 250], [0.5, 260], [1, 280]]}]}"),
          4, "materials.steel.flow_curves.1",
          "lies below the one at strain rate 0 near plastic strain 1; the curves must not cross"},
-        {replaced(replaced(k_base, "type: elastic", "type: tabulated"), steel,
-                  "poisson_ratio: 0.3, flow_curves: [{strain_rate: 0, points: [[0, 200], [1, "
-                  "300]]}, {strain_rate: 10, points: [[0, 250], [1, 350]]}], cowper_symonds: "
-                  "{D: 40, q: 5}}"),
+        {tabulated("poisson_ratio: 0.3, flow_curves: [{strain_rate: 0, points: [[0, 200], [1, "
+                   "300]]}, {strain_rate: 10, points: [[0, 250], [1, 350]]}], cowper_symonds: "
+                   "{D: 40, q: 5}}"),
          4, "materials.steel.cowper_symonds", "cannot be combined with flow_curves"},
-        {replaced(replaced(k_base, "type: elastic", "type: tabulated"), steel,
-                  "poisson_ratio: 0.3, flow_curves: [{strain_rate: 0, points: [[0, 200], [1, "
-                  "300]]}, {strain_rate: 10, points: [[0, 250], [1, 350]]}], hardening_mix: "
-                  "0.5}"),
+        {tabulated("poisson_ratio: 0.3, flow_curves: [{strain_rate: 0, points: [[0, 200], [1, "
+                   "300]]}, {strain_rate: 10, points: [[0, 250], [1, 350]]}], hardening_mix: "
+                   "0.5}"),
          4, "materials.steel.hardening_mix", "must be 1 (isotropic) with flow_curves"},
-        {replaced(replaced(k_base, "type: elastic", "type: tabulated"), steel,
-                  "poisson_ratio: 0.3, flow_curves: [{strain_rate: -1, points: [[0, 200], [1, "
-                  "300]]}]}"),
+        {tabulated("poisson_ratio: 0.3, flow_curves: [{strain_rate: -1, points: [[0, 200], [1, "
+                   "300]]}]}"),
          4, "materials.steel.flow_curves.0.strain_rate", "must be 0 or more, got '-1'"},
         {replaced(k_base, steel, "poisson_ratio: 0.3, yield_stress: 200}"), 4,
          "materials.steel.yield_stress", "belongs to plastic materials"},
