@@ -9,3 +9,10 @@ add_test(NAME io.vtu_reader
          COMMAND ${FPMSHELL_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/io/vtu_reader_test.py
                  $<TARGET_FILE:fpmshell> ${CMAKE_BINARY_DIR}/vtu_reader_test_work)
 set_tests_properties(io.vtu_reader PROPERTIES LABELS io TIMEOUT ${_timeout_300s})
+
+# LS-DYNA keyword decks run as they are: each test deck of examples/decks against its YAML twin,
+# `fpmshell convert`, `check`, refused and ignored cards (tests/io/deck_test.py).
+add_test(NAME io.lsdyna_decks
+         COMMAND ${FPMSHELL_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/io/deck_test.py
+                 $<TARGET_FILE:fpmshell> ${CMAKE_BINARY_DIR}/deck_test_work)
+set_tests_properties(io.lsdyna_decks PROPERTIES LABELS io TIMEOUT ${_timeout_300s})

@@ -24,6 +24,13 @@ inline std::string input_error_text(const std::string& file, int line, const std
     return where + ": " + message;
 }
 
+/// A place in an input file, for messages (line <= 0: none).
+struct SourceLine {
+    std::string file;
+    int line = 0;
+    std::string card;  ///< what is written there, when it is not a model key ("*MAT_ELASTIC")
+};
+
 /// A run that cannot continue (NaN, instability, energy blow-up, inverted element).
 class RunFailure : public std::runtime_error {
 public:

@@ -27,6 +27,23 @@ std::string model_summary(const Model& model) {
     out += "\nelement sets";
     for (const auto& [name, elems] : model.element_sets)
         out += fmt::format(" {}({})", name, elems.size());
+    static const char* type_names[] = {"elastic", "j2_plastic", "johnson_cook", "tabulated"};
+    for (const Material& mat : model.materials)
+        out += fmt::format("\nmaterial {}: {}, density {:.6g}, E {:.6g}, nu {:.6g}", mat.name,
+                           type_names[static_cast<int>(mat.type)], mat.density, mat.youngs_modulus,
+                           mat.poisson_ratio);
+    std::vector<std::size_t> section_elements(model.sections.size(), 0);
+    for (const Index s : model.element_section) ++section_elements[static_cast<std::size_t>(s)];
+    for (std::size_t s = 0; s < model.sections.size(); ++s) {
+        const Section& sec = model.sections[s];
+        out += fmt::format(
+            "\nsection {}: {} elements, material {}, thickness {:.6g}, {} x {} points", s,
+            section_elements[s], model.materials[static_cast<std::size_t>(sec.material)].name,
+            sec.thickness, sec.thickness_points, sec.inplane_points);
+    }
+    out += fmt::format("\nconditions {} boundary, {} loads, {} initial velocities, {} curves",
+                       model.boundary.size(), model.loads.size(), model.initial_conditions.size(),
+                       model.curves.size());
     for (const RigidBody& b : model.rigid_bodies)
         out += fmt::format(
             "\nrigid body {}: plane through ({:.6g}, {:.6g}, {:.6g}), normal ({:.4g}, {:.4g}, "
@@ -54,6 +71,7 @@ std::string model_summary(const Model& model) {
             fmt::format("relaxation {:.0f} load levels to load parameter {}\n",
                         std::ceil(model.control.end_time / every - 1e-9), model.control.end_time);
     }
+    for (const std::string& note : model.notes) out += "note: " + note + "\n";
     return out;
 }
 

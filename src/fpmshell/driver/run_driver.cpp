@@ -281,6 +281,7 @@ int run_model(const Model& model, const RunOptions& opt) {
               model.n_particles(), model.n_elements(), threads);
     if (comm.distributed())
         log.print("distributed over {} ranks, {} thread(s) each", comm.size(), threads);
+    for (const std::string& note : model.notes) log.print("note: {}", note);
 
     ExplicitSolver solver(model);
     report_mass_scaling(model, solver.added_mass(), "at set-up", log);

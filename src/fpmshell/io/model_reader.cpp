@@ -63,11 +63,10 @@ YAML::Node load_yaml(const std::string& path) {
     }
 }
 
-}  // namespace
-
-Model read_model(const std::string& path, const std::vector<std::string>& set_overrides) {
-    YamlContext ctx(path);
-    YAML::Node root = load_yaml(path);
+/// The model of the tree `root`: `path` names the model (its title by default, messages),
+/// mesh files are relative to `base_dir`.
+Model read_model_tree(YamlContext& ctx, YAML::Node root, const std::string& path,
+                      const std::string& base_dir, const std::vector<std::string>& set_overrides) {
     if (!root.IsDefined() || root.IsNull())
         throw InputError(input_error_text(path, 0, "",
                                           "the model file is empty; expected a map "
@@ -97,7 +96,7 @@ Model read_model(const std::string& path, const std::vector<std::string>& set_ov
 
     // Mesh and sets.
     const YamlValue mesh_key = top.at("mesh");
-    MeshData mesh = read_mesh_block(mesh_key, std::filesystem::path(path).parent_path().string());
+    MeshData mesh = read_mesh_block(mesh_key, base_dir);
     if (mesh.node_sets.count("all") != 0 || mesh.element_sets.count("all") != 0)
         mesh_key.fail(
             "the mesh defines a set named 'all', which is reserved for the set of every "
@@ -153,6 +152,31 @@ Model read_model(const std::string& path, const std::vector<std::string>& set_ov
     if (const auto d = top.find("damping")) read_damping(*d, model);
     read_output(top.find("output"), model);
     return model;
+}
+
+}  // namespace
+
+Model read_model(const std::string& path, const std::vector<std::string>& set_overrides) {
+    YamlContext ctx(path);
+    YAML::Node root = load_yaml(path);
+    return read_model_tree(ctx, root, path, std::filesystem::path(path).parent_path().string(),
+                           set_overrides);
+}
+
+Model read_model_text(const std::string& yaml, std::vector<SourceLine> origins,
+                      const std::string& source, const std::vector<std::string>& set_overrides) {
+    YamlContext ctx(source);
+    ctx.set_line_origins(std::move(origins));
+    YAML::Node root;
+    try {
+        root = YAML::Load(yaml);
+    } catch (const YAML::Exception& e) {
+        throw InputError(input_error_text(
+            source, 0, "",
+            "the translated model is not valid YAML (" + e.msg + "); please report this deck"));
+    }
+    return read_model_tree(ctx, root, source, std::filesystem::path(source).parent_path().string(),
+                           set_overrides);
 }
 
 }  // namespace fpmshell

@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "fpmshell/core/errors.hpp"
 #include "fpmshell/model/model.hpp"
 
 namespace fpmshell {
@@ -24,5 +25,12 @@ namespace fpmshell {
 /// or hangs on malformed input.
 [[nodiscard]] Model read_model(const std::string& path,
                                const std::vector<std::string>& set_overrides = {});
+
+/// As read_model, for a model file generated from `source` (a keyword deck, io/lsdyna_deck.hpp):
+/// `yaml` is its text, origins[k] the place in the deck that line k + 1 comes from (messages
+/// name it), mesh files are relative to the folder of `source`, and the model is named after it.
+[[nodiscard]] Model read_model_text(const std::string& yaml, std::vector<SourceLine> origins,
+                                    const std::string& source,
+                                    const std::vector<std::string>& set_overrides = {});
 
 }  // namespace fpmshell

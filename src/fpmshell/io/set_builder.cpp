@@ -94,6 +94,31 @@ std::vector<Index> elements_in_box(const std::vector<Vec3>& nodes,
     return out;
 }
 
+namespace {
+
+/// The nodes of the mesh file's numbers `ids` (MeshData::node_tag), sorted.
+std::vector<Index> nodes_numbered(const MeshData& mesh, const YamlValue& ids) {
+    if (mesh.node_tag.empty())
+        ids.fail(
+            "node_ids needs a mesh file with node numbers (.inp or .k); this mesh has none: use "
+            "near, plane or box");
+    std::vector<Index> nodes;
+    for (const YamlValue& id : ids.list("node numbers")) {
+        const long long number = id.integer(1, std::numeric_limits<long long>::max());
+        const auto it = std::lower_bound(mesh.node_tag.begin(), mesh.node_tag.end(), number);
+        if (it == mesh.node_tag.end() || *it != number)
+            id.fail("node " + std::to_string(number) +
+                    " is not a node of the mesh's shells (the mesh file does not define it, or "
+                    "no shell element uses it)");
+        nodes.push_back(static_cast<Index>(it - mesh.node_tag.begin()));
+    }
+    std::sort(nodes.begin(), nodes.end());
+    nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
+    return nodes;
+}
+
+}  // namespace
+
 void add_user_sets(const YamlValue& sets, MeshData& mesh) {
     const YamlMap map = sets.open_map("set names to set definitions");
     const Real size = model_size(mesh.nodes);
@@ -109,18 +134,23 @@ void add_user_sets(const YamlValue& sets, MeshData& mesh) {
         if (std::find(mesh_names.begin(), mesh_names.end(), name) != mesh_names.end())
             value.fail("a set named '" + name +
                        "' is already defined by the mesh; choose another name");
-        const YamlMap def = value.map({"near", "plane", "box", "tolerance"});
-        if (def.count({"near", "plane", "box"}) != 1)
+        const YamlMap def = value.map({"near", "plane", "box", "node_ids", "tolerance"});
+        if (def.count({"near", "plane", "box", "node_ids"}) != 1)
             value.fail(
-                "a set needs exactly one of near: [x, y, z], plane: {point, normal} or "
-                "box: [[xmin, ymin, zmin], [xmax, ymax, zmax]]");
+                "a set needs exactly one of near: [x, y, z], plane: {point, normal}, "
+                "box: [[xmin, ymin, zmin], [xmax, ymax, zmax]] or node_ids: [n1, n2, ...]");
         std::optional<Real> tolerance;
         if (const auto t = def.find("tolerance")) tolerance = t->non_negative();
 
         std::vector<Index> nodes;
         std::vector<Index> elements;
         std::string how;
-        if (const auto near = def.find("near")) {
+        if (const auto ids = def.find("node_ids")) {
+            if (tolerance) def.at("tolerance").fail("a set of node_ids takes no tolerance");
+            nodes = nodes_numbered(mesh, *ids);
+            elements = elements_within(mesh.triangles, nodes, mesh.nodes.size());
+            how = "node_ids lists no node";
+        } else if (const auto near = def.find("near")) {
             const Vec3 point = near->vec3();
             nodes = nodes_near(mesh.nodes, point, tolerance);
             elements = elements_within(mesh.triangles, nodes, mesh.nodes.size());

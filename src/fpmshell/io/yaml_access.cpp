@@ -131,6 +131,13 @@ void YamlContext::fail(const YAML::Node& node, const std::string& path,
 
 void YamlContext::fail_at(int line, const std::string& path, const std::string& message) const {
     if (is_overridden(path)) throw InputError(input_error_text("--set", 0, path, message));
+    if (line > 0 && static_cast<std::size_t>(line) <= origins_.size()) {
+        const SourceLine& o = origins_[static_cast<std::size_t>(line - 1)];
+        if (o.card.empty()) throw InputError(input_error_text(o.file, o.line, path, message));
+        throw InputError(input_error_text(o.file, o.line, "",
+                                          o.card + " (model key '" + path + "'): " + message));
+    }
+    if (!origins_.empty()) line = 0;  // a line of the generated file means nothing to the user
     throw InputError(input_error_text(file_, line, path, message));
 }
 

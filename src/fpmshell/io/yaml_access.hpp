@@ -13,6 +13,7 @@
 #include <utility>
 #include <vector>
 
+#include "fpmshell/core/errors.hpp"
 #include "fpmshell/core/types.hpp"
 
 namespace fpmshell {
@@ -34,8 +35,13 @@ public:
     /// Same with an explicit 1-based line (<= 0: none).
     [[noreturn]] void fail_at(int line, const std::string& path, const std::string& message) const;
 
+    /// Where each line of a generated model file comes from (a translated keyword deck): the
+    /// messages then name that file and line instead.
+    void set_line_origins(std::vector<SourceLine> origins) { origins_ = std::move(origins); }
+
 private:
     std::string file_;
+    std::vector<SourceLine> origins_;
     std::vector<std::string> overrides_;
 };
 

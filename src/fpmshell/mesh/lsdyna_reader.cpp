@@ -3,11 +3,12 @@
 
 #include <algorithm>
 #include <filesystem>
-#include <fstream>
+#include <map>
 #include <set>
 
 #include "fpmshell/core/errors.hpp"
 #include "fpmshell/core/text.hpp"
+#include "fpmshell/mesh/keyword_deck.hpp"
 #include "fpmshell/mesh/raw_mesh.hpp"
 
 namespace fpmshell {
@@ -50,28 +51,28 @@ std::vector<std::string> card_fields(const std::string& line,
     return split_blanks(line);
 }
 
-enum class Block { Skip, Node, Shell, NodeSet, ShellSet };
+enum class Block { Skip, Node, Shell, NodeSet, ShellSet, PartSet };
 
 class LsDynaReader {
 public:
-    explicit LsDynaReader(const std::string& path) { raw_.path = path; }
+    explicit LsDynaReader(const std::string& path) : main_path_(path) { raw_.path = path; }
 
     MeshData read() {
-        std::ifstream in(raw_.path, std::ios::binary);
-        if (!in) raw_.fail(0, "cannot open the mesh file");
-        std::error_code size_error;
-        raw_.file_bytes = std::filesystem::file_size(raw_.path, size_error);
-        std::string text;
-        int number = 0;
-        while (std::getline(in, text)) {
-            ++number;
-            if (!text.empty() && text.back() == '\r') text.pop_back();
-            if (trim(text).empty() || text.front() == '$') continue;
-            if (text.front() == '*') {
-                start(text, number);
-                continue;
+        const KeywordDeck deck = read_keyword_deck(raw_.path);
+        raw_.file_bytes = deck.bytes;
+        for (const DeckBlock& block : deck.blocks) {
+            raw_.path = block.file;
+            start(block);
+            for (const DeckCard& c : block.cards) card(c.text, c.line);
+        }
+        raw_.path = main_path_;
+        for (const auto& [name, parts] : part_sets_) {  // the parts' elements, known by now
+            auto& members = raw_.element_sets[name];
+            for (const long long pid : parts) {
+                const auto it = raw_.element_sets.find("part_" + std::to_string(pid));
+                if (it != raw_.element_sets.end())
+                    members.insert(members.end(), it->second.begin(), it->second.end());
             }
-            card(text, number);
         }
         return finish_raw_mesh(raw_);
     }
@@ -83,17 +84,14 @@ private:
         return standard;
     }
 
-    void start(const std::string& line, int number) {
-        std::string name = upper(trim(line.substr(1)));
-        format_ = Format::Standard;
-        if (!name.empty() && (name.back() == '+' || name.back() == '%')) {
-            format_ = name.back() == '+' ? Format::Long : Format::WideId;
-            name = trim(name.substr(0, name.size() - 1));
-        }
+    void start(const DeckBlock& block) {
+        const std::string& name = block.keyword;
+        const int number = block.line;
+        format_ = block.format == DeckFormat::Long     ? Format::Long
+                  : block.format == DeckFormat::WideId ? Format::WideId
+                                                       : Format::Standard;
         block_ = Block::Skip;
         card_ = 0;
-        if (name.rfind("INCLUDE", 0) == 0)
-            raw_.fail(number, "*INCLUDE is not supported; put the whole mesh in one file");
         std::vector<std::string> parts;
         for (std::size_t start = 0;;) {
             const auto u = name.find('_', start);
@@ -116,8 +114,11 @@ private:
                     raw_.fail(number, "*" + name +
                                           " is not supported; use *ELEMENT_SHELL "
                                           "(optionally _THICKNESS, _BETA, _MCID, _OFFSET)");
-        } else if (name.rfind("SET_NODE", 0) == 0 || name.rfind("SET_SHELL", 0) == 0) {
-            block_ = parts[1] == "NODE" ? Block::NodeSet : Block::ShellSet;
+        } else if (name.rfind("SET_NODE", 0) == 0 || name.rfind("SET_SHELL", 0) == 0 ||
+                   name.rfind("SET_PART", 0) == 0) {
+            block_ = parts[1] == "NODE"    ? Block::NodeSet
+                     : parts[1] == "SHELL" ? Block::ShellSet
+                                           : Block::PartSet;
             title_ = generate_ = false;
             for (std::size_t k = 2; k < parts.size(); ++k) {
                 if (parts[k] == "TITLE") {
@@ -126,9 +127,9 @@ private:
                     generate_ = true;
                 } else if (parts[k] != "LIST") {
                     raw_.fail(number, "*" + name +
-                                          " is not supported; use *SET_NODE_LIST or "
-                                          "*SET_SHELL_LIST (optionally _TITLE, "
-                                          "_GENERATE)");
+                                          " is not supported; use *SET_NODE_LIST, "
+                                          "*SET_SHELL_LIST or *SET_PART_LIST (optionally "
+                                          "_TITLE, _GENERATE)");
                 }
             }
             set_title_.clear();
@@ -193,7 +194,8 @@ private:
                 return;
             }
             case Block::NodeSet:
-            case Block::ShellSet: {
+            case Block::ShellSet:
+            case Block::PartSet: {
                 if (title_ && index == 0) {
                     set_title_ = trim(line);
                     return;
@@ -207,14 +209,18 @@ private:
                     const bool nodes = block_ == Block::NodeSet;
                     set_ = !set_title_.empty()
                                ? set_title_
-                               : (nodes ? "node_set_" : "shell_set_") + std::to_string(sid);
+                               : lsdyna_set_name(block_ == Block::NodeSet    ? "node"
+                                                 : block_ == Block::ShellSet ? "shell"
+                                                                             : "part",
+                                                 sid);
                     auto& sets = nodes ? raw_.node_sets : raw_.element_sets;
                     (void)sets[set_];
                     raw_.set_lines.try_emplace(set_, number);
                     return;
                 }
-                auto& members =
-                    block_ == Block::NodeSet ? raw_.node_sets[set_] : raw_.element_sets[set_];
+                auto& members = block_ == Block::NodeSet    ? raw_.node_sets[set_]
+                                : block_ == Block::ShellSet ? raw_.element_sets[set_]
+                                                            : part_sets_[set_];
                 std::vector<long long> ids;
                 for (const std::string& s : f) {
                     long long v = 0;
@@ -255,10 +261,16 @@ private:
     bool generate_ = false;
     std::string set_title_;
     std::string set_;
+    std::string main_path_;
+    std::map<std::string, std::vector<long long>> part_sets_;  // name -> part ids
 };
 
 }  // namespace
 
 MeshData read_lsdyna(const std::string& path) { return LsDynaReader(path).read(); }
+
+std::string lsdyna_set_name(const std::string& kind, long long sid) {
+    return kind + "_set_" + std::to_string(sid);
+}
 
 }  // namespace fpmshell

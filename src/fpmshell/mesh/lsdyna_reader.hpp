@@ -8,13 +8,18 @@
 namespace fpmshell {
 
 /// Reads *NODE, *ELEMENT_SHELL (also _THICKNESS, _BETA, _MCID, _OFFSET: the extra cards are
-/// skipped), *SET_NODE_LIST and *SET_SHELL_LIST (also _TITLE and _GENERATE variants). Cards
-/// are fixed-width (standard, '+' long or '%' wide-id format) or comma-separated; a card that
-/// does not parse in columns is also tried split at blanks. Shells with n3 = n4 are triangles,
-/// the others quadrangles (split into two triangles). Sets are named by their title
-/// (_TITLE variants), else "node_set_<SID>" / "shell_set_<SID>"; every part gives the element
-/// and node set "part_<PID>". Every other keyword is skipped; *INCLUDE is refused.
+/// skipped), *SET_NODE_LIST, *SET_SHELL_LIST and *SET_PART_LIST (also _TITLE and _GENERATE
+/// variants), through *INCLUDE files (mesh/keyword_deck.hpp). Cards are fixed-width (standard,
+/// '+' long or '%' wide-id format) or comma-separated; a card that does not parse in columns
+/// is also tried split at blanks. Shells with n3 = n4 are triangles, the others quadrangles
+/// (split into two triangles). Sets are named by their title (_TITLE variants), else
+/// lsdyna_set_name; every part gives the element and node set "part_<PID>", a part set the
+/// element and node set of its parts' elements. Every other keyword is skipped.
 /// Throws InputError "PATH:LINE: ..." on error.
 [[nodiscard]] MeshData read_lsdyna(const std::string& path);
+
+/// The name of an untitled set: "node_set_<SID>", "shell_set_<SID>" or "part_set_<SID>" for
+/// `kind` node, shell or part.
+[[nodiscard]] std::string lsdyna_set_name(const std::string& kind, long long sid);
 
 }  // namespace fpmshell

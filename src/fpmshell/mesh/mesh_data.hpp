@@ -22,6 +22,9 @@ struct MeshData {
     /// For meshes read from a file: the element number (tag/id) in the file of each triangle,
     /// for messages (both halves of a split quadrangle carry its number). Empty for generators.
     std::vector<std::int64_t> element_tag;
+    /// For meshes read from an Abaqus or LS-DYNA file: the node number in the file of each node,
+    /// increasing (sets of `node_ids` refer to them). Empty for generators and Gmsh files.
+    std::vector<std::int64_t> node_tag;
 };
 
 }  // namespace fpmshell

@@ -121,6 +121,7 @@ MeshData finish_raw_mesh(const RawMesh& raw) {
     for (const long long id : used) {
         index_of[id] = static_cast<Index>(mesh.nodes.size());
         mesh.nodes.push_back(raw.nodes.at(id).x);
+        mesh.node_tag.push_back(static_cast<std::int64_t>(id));
     }
 
     // Triangles; shell k gives the triangles first_triangle[k] .. first_triangle[k+1]-1.

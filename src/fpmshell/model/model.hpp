@@ -236,6 +236,9 @@ struct OutputControl {
 struct Model {
     std::string title;
     std::string source_file;  ///< path of the YAML file, for messages
+    /// What the reader of a keyword deck ignored or mapped approximately, one sentence each
+    /// (io/lsdyna_deck.hpp); printed by `check` and at the start of a run
+    std::vector<std::string> notes;
 
     std::vector<Vec3> nodes;                                 ///< initial particle positions
     std::vector<std::array<Index, 3>> triangles;             ///< counter-clockwise about the normal

@@ -423,6 +423,36 @@ $EndElements
         2, "mesh", "element 2 (number 3 in the mesh file) is degenerate");
 }
 
+// Sets of node_ids: the mesh file's node numbers (an LS-DYNA file here); a number the mesh
+// does not have, a tolerance, and a generated mesh (no numbers) are refused.
+TEST(ModelReader, ReadsSetsOfNodeNumbers) {
+    const TempDir dir;
+    const std::string k_file = dir.write("plate.k", R"(*NODE
+      10             0.0             0.0             0.0
+      20             1.0             0.0             0.0
+      30             1.0             1.0             0.0
+      40             0.0             1.0             0.0
+      50             5.0             5.0             0.0
+*ELEMENT_SHELL
+       1       1      10      20      30      40
+)");
+    const std::string mesh_line =
+        "mesh: {generator: plate, length_x: 2, length_y: 1, nx: 4, ny: 2}";
+    const std::string yaml = replaced(
+        k_base, mesh_line, "mesh: {file: " + k_file + "}\nsets:\n  corners: {node_ids: [40, 10]}");
+    const Model m = read_model(dir.write("model.yaml", yaml));
+    EXPECT_EQ(m.node_sets.at("corners"), (std::vector<Index>{0, 3}));
+    EXPECT_TRUE(m.element_sets.at("corners").empty());
+    expect_error(replaced(yaml, "[40, 10]", "[40, 11]"), 4, "sets.corners.node_ids.1",
+                 "node 11 is not a node of the mesh's shells");
+    expect_error(replaced(yaml, "[40, 10]", "[50]"), 4, "sets.corners.node_ids.0",
+                 "node 50 is not a node of the mesh's shells");
+    expect_error(replaced(yaml, "[40, 10]}", "[40], tolerance: 1}"), 4, "sets.corners.tolerance",
+                 "takes no tolerance");
+    expect_error(replaced(k_base, mesh_line, mesh_line + "\nsets:\n  a: {node_ids: [1]}"), 4,
+                 "sets.a.node_ids", "needs a mesh file with node numbers");
+}
+
 // Every error category names the file, the line and the key in one sentence.
 TEST(ModelReader, EveryErrorNamesFileLineAndKey) {
     struct Case {

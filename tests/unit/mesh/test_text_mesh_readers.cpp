@@ -30,6 +30,7 @@ public:
     }
     TempDir(const TempDir&) = delete;
     TempDir& operator=(const TempDir&) = delete;
+    [[nodiscard]] const std::filesystem::path& folder() const { return path_; }
     [[nodiscard]] std::string write(const std::string& name, const std::string& text) const {
         const auto p = path_ / name;
         std::ofstream(p, std::ios::binary) << text;
@@ -189,13 +190,67 @@ clamp
     EXPECT_EQ(m.element_sets.at("part_2"), (V{2, 3}));
 }
 
+// *INCLUDE files (relative to the including file, nested, each with its own line numbers in the
+// messages), the long format, *END inside an include, and *SET_PART_LIST as the element and
+// node set of its parts; node numbers kept in MeshData::node_tag.
+TEST(LsDynaReader, FollowsIncludesAndReadsPartSets) {
+    const TempDir dir;
+    std::filesystem::create_directories(dir.folder() / "mesh");
+    (void)dir.write("mesh/nodes.k", R"(*NODE +
+                  11                 0.0                 0.0                 0.0
+                  12                 1.0                 0.0                 0.0
+*END
+*NODE
+this line is after *END: never read
+)");
+    (void)dir.write("mesh/shells.k", R"(*INCLUDE
+nodes.k
+*NODE
+      13             0.0             1.0             0.0
+      14             1.0             1.0             0.0
+*ELEMENT_SHELL
+       1       1      11      12      14      14
+       2       2      11      14      13      13
+)");
+    const std::string path = dir.write("deck.k", R"(*KEYWORD
+*INCLUDE
+mesh/shells.k
+*SET_PART_LIST
+         5
+         2         1
+*END
+)");
+    const MeshData m = read_lsdyna(path);
+    using V = std::vector<Index>;
+    ASSERT_EQ(m.triangles.size(), 2U);
+    EXPECT_EQ(m.node_tag, (std::vector<std::int64_t>{11, 12, 13, 14}));
+    EXPECT_EQ(m.element_sets.at("part_set_5"), (V{0, 1}));
+    EXPECT_EQ(m.node_sets.at("part_set_5"), (V{0, 1, 2, 3}));
+    const std::string bad = dir.write("mesh/bad.k", "*NODE\n1,0,0,x\n");
+    expect_error(read_lsdyna, bad, ":2: ", "not a finite number");
+    try {  // an error in an included file names that file
+        (void)read_lsdyna(dir.write("main.k", "*KEYWORD\n*INCLUDE\nmesh/bad.k\n"));
+        ADD_FAILURE() << "no error";
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("mesh/bad.k:2: coordinate 'x'"), std::string::npos)
+            << e.what();
+    }
+}
+
 // LS-DYNA errors name the file and the line.
 TEST(LsDynaReader, ReportsErrorsWithLines) {
     const TempDir dir;
     const std::string nodes = "*NODE\n1,0,0,0\n2,1,0,0\n3,0,1,0\n";
     expect_error(read_lsdyna, dir.write("a.k", nodes + "*ELEMENT_SHELL\n1,1,1,2,7,7\n"),
                  ":6: ", "refers to node 7");
-    expect_error(read_lsdyna, dir.write("b.k", "*INCLUDE\nother.k\n"), ":1: ", "not supported");
+    expect_error(read_lsdyna, dir.write("b.k", "*INCLUDE\nother.k\n"),
+                 ":2: ", "*INCLUDE: cannot open");
+    expect_error(read_lsdyna, dir.write("b2.k", "*INCLUDE\nb2.k\n"), ":2: ", "includes itself");
+    expect_error(read_lsdyna, dir.write("b3.k", "*INCLUDE\n.\n"), ":2: ", "not a regular file");
+    expect_error(read_lsdyna, dir.write("b4.k", "*PARAMETER\nX thick   1.0\n"),
+                 ":2: ", "type R, I or C");
+    expect_error(read_lsdyna, dir.write("b5.k", "*PARAMETER_EXPRESSION\nR a 1+2\n"),
+                 ":1: ", "not supported");
     expect_error(read_lsdyna, dir.write("c.k", nodes + "*SET_NODE_LIST\n1\n1,2,x\n"),
                  ":7: ", "expected a number");
     expect_error(read_lsdyna, dir.write("d.k", nodes + "*SET_NODE_ADD\n1\n"),

@@ -1,0 +1,190 @@
+"""LS-DYNA keyword decks run as they are (README, "LS-DYNA decks"):
+
+- every test deck of examples/decks gives the same history.csv as its YAML twin (written by
+  hand), byte for byte: the same model through two readers;
+- `fpmshell convert` writes a YAML model that runs to the same history.csv again;
+- `fpmshell check DECK` prints the deck as understood (materials, sections, conditions, bodies)
+  and the notes on what was ignored;
+- a card fpmshell cannot honour fails with exit 2 and one sentence naming file, line and card;
+  a card that cannot change the physics gives a note; errors in a card name its line and field,
+  also inside an *INCLUDE and for values the model reader refuses.
+
+usage: deck_test.py FPMSHELL WORKDIR
+"""
+import os
+import shutil
+import subprocess
+import sys
+
+FPM, WORK = sys.argv[1], sys.argv[2]
+ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+DECKS = os.path.join(ROOT, "examples", "decks")
+failures = []
+passed = 0
+
+
+def check(name, ok, detail=""):
+    global passed
+    if ok:
+        passed += 1
+    else:
+        failures.append(f"{name}: {detail}")
+
+
+def fpmshell(*args):
+    return subprocess.run([FPM, *args], capture_output=True, text=True, timeout=600)
+
+
+def run(model, out):
+    r = fpmshell("run", model, "-o", out, "--quiet", "--threads", "1", "--overwrite")
+    return r, os.path.join(out, "history.csv")
+
+
+def read(path):
+    with open(path) as f:
+        return f.read()
+
+
+shutil.rmtree(WORK, ignore_errors=True)
+os.makedirs(WORK)
+
+# ---- the test decks against their twins, and through convert
+for name in sorted(os.listdir(DECKS)):
+    deck = os.path.join(DECKS, name, name + ".k")
+    twin = os.path.join(DECKS, name, name + ".yaml")
+    r_deck, h_deck = run(deck, os.path.join(WORK, name, "deck"))
+    check(f"{name}: the deck runs", r_deck.returncode == 0, r_deck.stderr)
+    r_twin, h_twin = run(twin, os.path.join(WORK, name, "twin"))
+    check(f"{name}: the twin runs", r_twin.returncode == 0, r_twin.stderr)
+    if r_deck.returncode or r_twin.returncode:
+        continue
+    check(f"{name}: deck and twin give the same history.csv", read(h_deck) == read(h_twin),
+          "the files differ")
+    lines = read(h_deck).splitlines()
+    check(f"{name}: the history has rows and moves", len(lines) > 10 and
+          any(float(v) != 0 for v in lines[-1].split(",")[1:]), lines[-1])
+    converted = os.path.join(WORK, name, "converted.yaml")
+    c = fpmshell("convert", deck, "-o", converted)
+    check(f"{name}: convert", c.returncode == 0 and os.path.exists(converted), c.stderr)
+    r_conv, h_conv = run(converted, os.path.join(WORK, name, "converted"))
+    check(f"{name}: the converted model gives the same history.csv",
+          r_conv.returncode == 0 and read(h_conv) == read(h_deck), r_conv.stderr)
+    again = fpmshell("convert", deck, "-o", converted)
+    check(f"{name}: convert does not replace a file without --overwrite",
+          again.returncode == 2 and "--overwrite" in again.stderr, again.stderr)
+
+# ---- check prints the deck as understood
+c = fpmshell("check", os.path.join(DECKS, "tube_crush", "tube_crush.k"))
+out = c.stdout
+check("check: exit 0", c.returncode == 0, c.stderr)
+for expected in ("material mat_1: johnson_cook", "section 0: 384 elements, material mat_1, "
+                 "thickness 0.001, 5 x 3 points", "rigid body rigidwall1", "contact self over 384",
+                 "note: ", "*HOURGLASS: ignored", "192 quadrangles split", "*MAT_JOHNSON_COOK"):
+    check(f"check prints '{expected}'", expected in out, out)
+
+# ---- refusals, notes and messages
+BASE = """*KEYWORD
+*NODE
+       1             0.0             0.0             0.0
+       2             1.0             0.0             0.0
+       3             0.0             1.0             0.0
+*ELEMENT_SHELL
+       1       1       1       2       3       3
+*PART
+part
+         1         1         1
+*SECTION_SHELL
+         1         2         0         2
+      0.01
+*MAT_ELASTIC
+         1    7800.0   2.1e+11       0.3
+*CONTROL_TERMINATION
+     0.001
+"""
+
+
+def deck_case(name, extra, base=BASE, files=None):
+    folder = os.path.join(WORK, "cases", name)
+    os.makedirs(folder, exist_ok=True)
+    for file, text in (files or {}).items():
+        with open(os.path.join(folder, file), "w") as f:
+            f.write(text)
+    path = os.path.join(folder, "deck.k")
+    with open(path, "w") as f:
+        f.write(base + extra + "*END\n")
+    return path, fpmshell("check", path)
+
+
+def line_of(path, text):
+    with open(path) as f:
+        for k, line in enumerate(f, 1):
+            if line.startswith(text):
+                return k
+    return -1
+
+
+path, r = deck_case("valid", "")
+check("a minimal deck is valid", r.returncode == 0, r.stderr)
+
+REFUSED = {  # card: what its message must say
+    "*MAT_RIGID\n         2    7800.0   2.1e+11       0.3\n": "rigid parts are not supported",
+    "*CONSTRAINED_SPOTWELD\n         1         2\n": "constraints between nodes are not supported",
+    "*ELEMENT_SOLID\n         1         1         1         2         3\n": "shells only",
+    "*CONTACT_AUTOMATIC_SURFACE_TO_SURFACE\n         1         1\n": "only *CONTACT_AUTOMATIC_SINGLE_SURFACE",
+    "*MAT_HONEYCOMB\n         2\n": "this material is not supported",
+    "*BOUNDARY_PRESCRIBED_MOTION_NODE\n         1         3         0         1\n": "prescribed nodal motion",
+    "*RIGIDWALL_GEOMETRIC_CYLINDER\n         0\n": "not supported",
+    "*FREQUENCY_DOMAIN_SSD\n         1\n": "could change the model",
+}
+for k, (card, words) in enumerate(REFUSED.items()):
+    path, r = deck_case(f"refused{k}", card)
+    keyword = card.split("\n")[0]
+    where = f"{path}:{line_of(path, keyword)}: {keyword}:"
+    check(f"{keyword} is refused with exit 2", r.returncode == 2, r.stdout + r.stderr)
+    check(f"{keyword}: the message names file, line and card and says why",
+          r.stderr.startswith("error: " + where) and words in r.stderr and
+          r.stderr.count("\n") == 1, r.stderr)
+
+NOTED = ["*DATABASE_MATSUM\n1.0e-4\n", "*CONTROL_HOURGLASS\n         1\n", "*HOURGLASS\n         1\n",
+         "*SENSOR_DEFINE_NODE\n         1\n", "*EOS_GRUNEISEN\n         1\n"]
+for k, card in enumerate(NOTED):
+    path, r = deck_case(f"noted{k}", card)
+    keyword = card.split("\n")[0]
+    check(f"{keyword} is ignored with a note",
+          r.returncode == 0 and f"note: {path}:{line_of(path, keyword)}: {keyword}: ignored" in r.stdout,
+          r.stdout + r.stderr)
+
+ERRORS = [  # (name, extra cards, other files, the line's start, words of the message)
+    ("bad number", "*INITIAL_VELOCITY\n         0\n       1.0      abc\n", None,
+     "       1.0      abc", "VY 'abc' is not a finite number"),
+    ("undefined parameter", "*INITIAL_VELOCITY\n         0\n     &fast\n", None, "     &fast",
+     "parameter 'FAST' is not defined"),
+    ("undefined set", "*BOUNDARY_SPC_SET\n         4         0         1\n", None,
+     "         4         0         1", "no *SET_NODE_LIST defines set 4"),
+    ("friction", "*RIGIDWALL_PLANAR\n         0\n       0.0       0.0      -1.0       0.0       0.0       0.0       0.3\n",
+     None, "       0.0       0.0      -1.0", "friction on rigid walls is not modelled"),
+    ("value the model refuses", "*MAT_ELASTIC\n         2    7800.0   2.1e+11       0.7\n"
+     "*PART\nsecond\n         2         1         2\n*ELEMENT_SHELL\n       2       2       1       2       3       3\n",
+     None, "         2    7800.0   2.1e+11       0.7",
+     "*MAT_ELASTIC (model key 'materials.mat_2.poisson_ratio'): must be greater than -1"),
+    ("include", "*INCLUDE\nmore.k\n", {"more.k": "*KEYWORD\n*CONTROL_TIMESTEP\n       0.0      zero\n*END\n"},
+     None, "more.k:3: *CONTROL_TIMESTEP: TSSFAC 'zero' is not a finite number"),
+    ("include cycle", "*INCLUDE\nloop.k\n", {"loop.k": "*INCLUDE\nloop.k\n"}, None, "includes itself"),
+    ("missing include", "*INCLUDE\nabsent.k\n", None, "absent.k", "cannot open"),
+]
+for name, extra, files, start, words in ERRORS:
+    path, r = deck_case(name.replace(" ", "_"), extra, files=files)
+    where = f"{path}:{line_of(path, start)}:" if start else ""
+    check(f"{name}: exit 2, one sentence", r.returncode == 2 and r.stderr.count("\n") == 1,
+          r.stdout + r.stderr)
+    check(f"{name}: the message names the place and says what", words in r.stderr and
+          (not where or r.stderr.startswith("error: " + where)), r.stderr)
+
+path, r = deck_case("no termination", "", base=BASE.replace("*CONTROL_TERMINATION\n     0.001\n", ""))
+check("a deck without *CONTROL_TERMINATION is refused", r.returncode == 2 and
+      "CONTROL_TERMINATION" in r.stderr, r.stderr)
+
+print(f"{passed} checks passed, {len(failures)} failed")
+for f in failures:
+    print("FAILED:", f)
+sys.exit(1 if failures else 0)

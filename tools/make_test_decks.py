@@ -1,0 +1,121 @@
+#!/usr/bin/env python3
+"""Writes the meshes of the test decks in examples/decks (NAME/NAME_mesh.k, included by
+NAME/NAME.k): *NODE and *ELEMENT_SHELL cards in LS-DYNA's fixed columns, and the node sets
+the decks name. The decks themselves and their YAML twins are written by hand.
+
+    python3 tools/make_test_decks.py   # rewrites examples/decks/*/*_mesh.k
+"""
+import math
+import pathlib
+
+ROOT = pathlib.Path(__file__).resolve().parent.parent / "examples" / "decks"
+
+
+def node_card(nid, x, y, z):
+    return f"{nid:8d}{x:16.9g}{y:16.9g}{z:16.9g}{0:8d}{0:8d}"
+
+
+def shell_card(eid, pid, n):
+    return f"{eid:8d}{pid:8d}" + "".join(f"{k:8d}" for k in n)
+
+
+def grid(nx, ny, point, first_node=1):
+    """Nodes of an (nx+1) x (ny+1) grid, point(i, j) -> (x, y, z); ids row by row."""
+    nodes, ids = [], {}
+    nid = first_node
+    for j in range(ny + 1):
+        for i in range(nx + 1):
+            ids[i, j] = nid
+            nodes.append(node_card(nid, *point(i, j)))
+            nid += 1
+    return nodes, ids
+
+
+def quads(nx, ny, ids, pid, first_element=1, wrap=False):
+    cards, eid = [], first_element
+    for j in range(ny):
+        for i in range(nx):
+            i1 = (i + 1) % nx if wrap else i + 1
+            cards.append(shell_card(eid, pid, [ids[i, j], ids[i1, j], ids[i1, j + 1], ids[i, j + 1]]))
+            eid += 1
+    return cards
+
+
+def node_set(sid, title, members):
+    lines = ["*SET_NODE_LIST_TITLE", title, f"{sid:10d}"]
+    for k in range(0, len(members), 8):
+        lines.append("".join(f"{m:10d}" for m in members[k:k + 8]))
+    return lines
+
+
+def write(name, lines):
+    path = ROOT / name / f"{name}_mesh.k"
+    path.parent.mkdir(parents=True, exist_ok=True)
+    head = ["*KEYWORD", f"$ mesh of {name}.k, written by tools/make_test_decks.py"]
+    path.write_text("\n".join(head + lines + ["*END", ""]))
+
+
+def plate_drop():
+    # 100 x 100 mm plate, 8 x 8 quadrangles, tilted 10 degrees about x, lowest edge 3 mm above
+    # the wall z = 0
+    n, a, tilt = 8, 0.1, math.radians(10.0)
+    nodes, ids = grid(n, n, lambda i, j: (a * i / n, a * j / n * math.cos(tilt),
+                                          0.003 + a * j / n * math.sin(tilt)))
+    write("plate_drop", ["*NODE"] + nodes + ["*ELEMENT_SHELL"] + quads(n, n, ids, 1))
+
+
+def clamped_beam():
+    # 200 x 20 mm strip, 20 x 2 quadrangles in the plane z = 0; the sets: both ends (clamped)
+    # and the middle fifth (the impulse)
+    nx, ny, lx, ly = 20, 2, 0.2, 0.02
+    nodes, ids = grid(nx, ny, lambda i, j: (lx * i / nx, ly * j / ny, 0.0))
+    ends = sorted(ids[i, j] for j in range(ny + 1) for i in (0, nx))
+    middle = sorted(ids[i, j] for j in range(ny + 1) for i in range(8, 13))
+    write("clamped_beam", ["*NODE"] + nodes + ["*ELEMENT_SHELL"] + quads(nx, ny, ids, 1) +
+          node_set(1, "ends", ends) + node_set(2, "impulse", middle))
+
+
+def tube_crush():
+    # square tube 40 x 40 mm, 120 mm long along z, 4 quadrangles per face, 12 along; the
+    # bottom ring is clamped node by node in the deck
+    per_face, nz, w, length = 4, 12, 0.04, 0.12
+    around = 4 * per_face
+
+    def ring(k):
+        face, s = divmod(k, per_face)
+        t = -w / 2 + w * s / per_face
+        return [(t, -w / 2), (w / 2, t), (-t, w / 2), (-w / 2, -t)][face]
+
+    nodes, ids = [], {}
+    nid = 1
+    for j in range(nz + 1):
+        for i in range(around):
+            ids[i, j] = nid
+            x, y = ring(i)
+            nodes.append(node_card(nid, x, y, length * j / nz))
+            nid += 1
+    write("tube_crush", ["*NODE"] + nodes + ["*ELEMENT_SHELL"] +
+          quads(around, nz, ids, 1, wrap=True))
+    return [ids[i, 0] for i in range(around)]
+
+
+def pressure_panel():
+    # 300 x 300 mm panel, 10 x 10 quadrangles, clamped edges (a node set), loaded by a pressure
+    # on all its shells (a shell set) and a point force at the centre
+    n, a = 10, 0.3
+    nodes, ids = grid(n, n, lambda i, j: (a * i / n, a * j / n, 0.0))
+    edge = sorted({ids[i, j] for i in range(n + 1) for j in range(n + 1)
+                   if i in (0, n) or j in (0, n)})
+    shells = list(range(1, n * n + 1))
+    lines = ["*NODE"] + nodes + ["*ELEMENT_SHELL"] + quads(n, n, ids, 1) + node_set(1, "edge", edge)
+    lines += ["*SET_SHELL_LIST", f"{7:10d}"]
+    for k in range(0, len(shells), 8):
+        lines.append("".join(f"{m:10d}" for m in shells[k:k + 8]))
+    write("pressure_panel", lines)
+
+
+if __name__ == "__main__":
+    plate_drop()
+    clamped_beam()
+    print("tube bottom ring:", tube_crush())
+    pressure_panel()
