@@ -114,8 +114,18 @@ def pressure_panel():
     write("pressure_panel", lines)
 
 
+def strip_pull():
+    # 100 x 10 mm strip, 20 x 2 quadrangles in the plane z = 0; node sets of its two ends
+    nx, ny, lx, ly = 20, 2, 0.1, 0.01
+    nodes, ids = grid(nx, ny, lambda i, j: (lx * i / nx, ly * j / ny, 0.0))
+    write("strip_pull", ["*NODE"] + nodes + ["*ELEMENT_SHELL"] + quads(nx, ny, ids, 1) +
+          node_set(1, "fixed_end", [ids[0, j] for j in range(ny + 1)]) +
+          node_set(2, "pulled_end", [ids[nx, j] for j in range(ny + 1)]))
+
+
 if __name__ == "__main__":
     plate_drop()
     clamped_beam()
     print("tube bottom ring:", tube_crush())
     pressure_panel()
+    strip_pull()

@@ -132,7 +132,7 @@ REFUSED = {  # card: what its message must say
     "*ELEMENT_SOLID\n         1         1         1         2         3\n": "shells only",
     "*CONTACT_AUTOMATIC_SURFACE_TO_SURFACE\n         1         1\n": "only *CONTACT_AUTOMATIC_SINGLE_SURFACE",
     "*MAT_HONEYCOMB\n         2\n": "this material is not supported",
-    "*BOUNDARY_PRESCRIBED_MOTION_NODE\n         1         3         0         1\n": "prescribed nodal motion",
+    "*BOUNDARY_PRESCRIBED_MOTION_RIGID\n         1         3         0         1\n": "rigid parts are not supported",
     "*RIGIDWALL_GEOMETRIC_CYLINDER\n         0\n": "not supported",
     "*FREQUENCY_DOMAIN_SSD\n         1\n": "could change the model",
 }

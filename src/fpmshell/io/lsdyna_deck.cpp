@@ -229,6 +229,8 @@ private:
             define_table(b);
         } else if (starts_with(k, "BOUNDARY_SPC_")) {
             spc(b);
+        } else if (starts_with(k, "BOUNDARY_PRESCRIBED_MOTION_")) {
+            prescribed_motion(b);
         } else if (starts_with(k, "INITIAL_VELOCITY")) {
             initial_velocity(b);
         } else if (starts_with(k, "LOAD_NODE_") || starts_with(k, "LOAD_SHELL_SET")) {
@@ -276,9 +278,8 @@ private:
         if (starts_with(k, "CONSTRAINED_"))
             return "constraints between nodes are not supported; they would change the model";
         if (starts_with(k, "BOUNDARY_PRESCRIBED_MOTION"))
-            return "prescribed nodal motion is not supported in decks yet; fix the nodes with "
-                   "*BOUNDARY_SPC and move a *RIGIDWALL_PLANAR_MOVING instead, or write the "
-                   "model in YAML (boundary.prescribe)";
+            return "fpmshell reads *BOUNDARY_PRESCRIBED_MOTION_NODE and _SET (with _ID); rigid "
+                   "parts are not supported";
         if (starts_with(k, "CONTACT_"))
             return "only *CONTACT_AUTOMATIC_SINGLE_SURFACE is supported (fpmshell's shell "
                    "self-contact)";
@@ -623,6 +624,51 @@ private:
         }
     }
 
+    /// *BOUNDARY_PRESCRIBED_MOTION_NODE / _SET: a velocity (VAD 0) or a displacement (VAD 2)
+    /// along x, y or z (DOF 1, 2, 3), the curve times SF; the node's other directions stay free.
+    void prescribed_motion(const DeckBlock& b) {
+        const std::set<std::string> opt = options_of(b.keyword, 3);
+        const bool single = opt.count("NODE") != 0;
+        if (!single && !opt.count("SET")) refuse(b, unsupported_reason(b.keyword));
+        for (const std::string& o : opt)
+            if (o != "NODE" && o != "SET" && o != "ID")
+                refuse(b, "*BOUNDARY_PRESCRIBED_MOTION_..._" + o + " is not supported");
+        for (std::size_t c = first_data_card(opt); c < b.cards.size(); ++c) {
+            const Card f = card(b, c);
+            const long long id = f.id(0, single ? "NID" : "NSID");
+            const long long dof = f.id(1, "DOF");
+            const long long vad = f.id(2, "VAD");
+            const Real sf = f.real(4, "SF", 1.0);
+            if (dof < 1 || dof > 3)
+                f.fail("DOF " + std::to_string(dof) +
+                       ": fpmshell prescribes the translations along x, y or z (1, 2, 3)");
+            if (vad != 0 && vad != 2)
+                f.fail("VAD " + std::to_string(vad) +
+                       ": fpmshell prescribes a velocity (0) or a displacement (2)");
+            if (f.id(5, "VID") != 0) f.fail("VID: a direction vector is not supported (0 only)");
+            const Real death = f.real(6, "DEATH");
+            if (f.real(7, "BIRTH") != 0 || (death != 0 && death < 1e20))
+                f.fail("BIRTH and DEATH are not supported (the motion is prescribed throughout)");
+            const std::size_t axis = static_cast<std::size_t>(dof - 1);
+            const std::string value =
+                vec(axis == 0 ? sf : 0.0, axis == 1 ? sf : 0.0, axis == 2 ? sf : 0.0);
+            static const char* names[3] = {"ux", "uy", "uz"};
+            const std::string text = std::string("{nodes: NODES, prescribe: {") +
+                                     (vad == 0 ? "velocity: " : "displacement: ") + value +
+                                     ", curve: " + curve_ref(b, f, f.id(3, "LCID")) +
+                                     ", components: [" + names[axis] + "]}}";
+            if (single) {
+                auto& group = node_group_of_text_[text];
+                if (group.empty())
+                    group = "prescribed_nodes_" + std::to_string(node_group_of_text_.size());
+                add_node_to_group(group, id, text, {&b, f.line()}, boundary_);
+            } else {
+                boundary_.push_back(
+                    {"  - " + replace_nodes(text, set_name(f, "node", id)), {&b, f.line()}});
+            }
+        }
+    }
+
     static std::string replace_nodes(std::string text, const std::string& set) {
         text.replace(text.find("NODES"), 5, yaml_name(set));
         return text;
@@ -720,8 +766,9 @@ private:
                                      ", nodes: NODES, value: " + value +
                                      ", curve: " + curve_ref(b, f, lcid) + "}";
             if (single) {
-                auto& group = load_groups_[text];  // the nodes of one load and curve
-                if (group.empty()) group = "load_nodes_" + std::to_string(load_groups_.size());
+                auto& group = node_group_of_text_[text];  // the nodes of one load and curve
+                if (group.empty())
+                    group = "load_nodes_" + std::to_string(node_group_of_text_.size());
                 add_node_to_group(group, id, text, {&b, f.line()}, loads_);
             } else
                 loads_.push_back(
@@ -1167,7 +1214,8 @@ private:
     std::size_t table_waiting_ = 0;
     std::vector<std::pair<long long, Origin>> used_curves_;
     std::map<std::string, NodeGroup> node_groups_;
-    std::map<std::string, std::string> load_groups_;  // load text -> its node group
+    /// the model line of a load or prescribed motion on single nodes -> the set of its nodes
+    std::map<std::string, std::string> node_group_of_text_;
     std::vector<Line> boundary_, loads_, initial_, contact_, control_;
     std::vector<WallDef> walls_;
     std::optional<Line> end_time_, damping_, every_, fields_every_;

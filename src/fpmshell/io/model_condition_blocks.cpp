@@ -66,7 +66,8 @@ void read_boundary(const YamlValue& v, Model& model) {
                 if (r != a) bc.fixed[3 + r] = true;
         }
         if (const auto pre = m.find("prescribe")) {
-            const YamlMap p = pre->map({"displacement", "velocity", "angular_velocity", "curve"});
+            const YamlMap p =
+                pre->map({"displacement", "velocity", "angular_velocity", "curve", "components"});
             if (p.count({"displacement", "velocity", "angular_velocity"}) != 1)
                 pre->fail(
                     "needs exactly one of displacement, velocity or angular_velocity "
@@ -82,6 +83,19 @@ void read_boundary(const YamlValue& v, Model& model) {
                 bc.value = p.at("angular_velocity").vec3();
             }
             bc.curve = optional_curve(model, p);
+            if (const auto comps = p.find("components")) {
+                if (bc.prescribed == PrescribedKind::AngularVelocity)
+                    comps->fail(
+                        "an angular velocity is prescribed about all three axes; "
+                        "`components` is for a displacement or a velocity");
+                const auto list = comps->list("translation components");
+                if (list.empty()) comps->fail("expected a non-empty list of ux, uy, uz");
+                bc.components = {false, false, false};
+                for (const YamlValue& c : list) {
+                    const std::string name = c.choice({"ux", "uy", "uz"});
+                    bc.components[static_cast<std::size_t>(name[1] - 'x')] = true;
+                }
+            }
         }
         model.boundary.push_back(bc);
     }

@@ -78,6 +78,9 @@ struct BoundaryCondition {
     PrescribedKind prescribed = PrescribedKind::None;
     Vec3 value = Vec3::Zero();  ///< displacement, velocity or angular velocity, times the curve
     Index curve = -1;           ///< index into Model::curves; -1 = factor 1 at all times
+    /// the prescribed translation components (x, y, z); the others stay free (a prescribed
+    /// angular velocity takes all three)
+    std::array<bool, 3> components{true, true, true};
 };
 
 enum class LoadType { Pressure, Force, Moment };

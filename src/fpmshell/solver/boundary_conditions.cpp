@@ -16,11 +16,14 @@ BoundaryConditions::BoundaryConditions(const Model& model,
             const std::size_t up = static_cast<std::size_t>(p);
             for (std::size_t d = 0; d < 6; ++d) fixed_[up][d] = fixed_[up][d] || bc.fixed[d];
             if (bc.prescribed != PrescribedKind::None) {
-                prescribed_.push_back({p, bc.prescribed, bc.value, bc.curve});
+                std::uint8_t components = 0;
+                for (std::size_t d = 0; d < 3; ++d)
+                    if (bc.components[d]) components |= static_cast<std::uint8_t>(1U << d);
+                prescribed_.push_back({p, bc.prescribed, bc.value, bc.curve, components});
                 if (bc.prescribed == PrescribedKind::AngularVelocity)
                     prescribed_rotation_[up] = 1;
                 else
-                    prescribed_translation_[up] = 1;
+                    prescribed_translation_[up] |= components;
             }
         }
     }
@@ -56,9 +59,10 @@ std::vector<Vec3> BoundaryConditions::free_inverse_mass(const std::vector<Real>&
 
 Vec3 BoundaryConditions::free_inverse_mass(std::size_t p, Real mass) const {
     Vec3 inv_mass = Vec3::Zero();
-    if (prescribed_translation_[p] || !(mass > 0)) return inv_mass;
-    for (std::size_t d = 0; d < 3; ++d)
-        if (!fixed_[p][d]) inv_mass[static_cast<Eigen::Index>(d)] = 1.0 / mass;
+    if (!(mass > 0)) return inv_mass;
+    for (Eigen::Index d = 0; d < 3; ++d)
+        if (!fixed_[p][static_cast<std::size_t>(d)] && !prescribed_component(p, d))
+            inv_mass[d] = 1.0 / mass;
     return inv_mass;
 }
 
@@ -83,15 +87,18 @@ void BoundaryConditions::impose_prescribed_motions(ParticleState& s,
             continue;
         }
         const Vec3 v_before = s.v[p];
+        Vec3 v_imposed;
         if (pr.kind == PrescribedKind::Velocity && !at.relaxation) {
-            s.v[p] = curve_factor(curves, pr.curve, at.t_half) * pr.value;
+            v_imposed = curve_factor(curves, pr.curve, at.t_half) * pr.value;
         } else {  // a displacement, or in relaxation the integral of a velocity
             const Real factor = pr.kind == PrescribedKind::Velocity
                                     ? curve_factor_integral(curves, pr.curve, at.load_time)
                                     : curve_factor(curves, pr.curve, at.t_next);
             const Vec3 target = s.x0[p] + factor * pr.value;
-            s.v[p] = (target - s.x[p]) / at.dt_new;
+            v_imposed = (target - s.x[p]) / at.dt_new;
         }
+        for (Eigen::Index d = 0; d < 3; ++d)  // only the entry's components
+            if (((pr.components >> d) & 1U) != 0) s.v[p][d] = v_imposed[d];
         s.reaction[p] += (s.mass[p] / (at.c1 * at.dt_n)) * (s.v[p] - v_before);
     }
 }

@@ -30,8 +30,22 @@ public:
     BoundaryConditions(const Model& model, const std::vector<std::uint8_t>& full_rotation);
 
     [[nodiscard]] const std::array<bool, 6>& fixed(std::size_t p) const { return fixed_[p]; }
+    /// Whether some translation component of particle p is prescribed.
     [[nodiscard]] bool prescribed_translation(std::size_t p) const {
-        return prescribed_translation_[p];
+        return prescribed_translation_[p] != 0;
+    }
+    /// u with the fixed and prescribed translation components of particle p set to zero.
+    [[nodiscard]] Vec3 without_constrained_translation(std::size_t p, Vec3 u) const {
+        for (Eigen::Index d = 0; d < 3; ++d)
+            if (fixed_[p][static_cast<std::size_t>(d)] || prescribed_component(p, d)) u[d] = 0;
+        return u;
+    }
+    /// `free` in the translation components of particle p that are not prescribed, `kept` in
+    /// those that are.
+    [[nodiscard]] Vec3 where_not_prescribed(std::size_t p, const Vec3& free, Vec3 kept) const {
+        for (Eigen::Index d = 0; d < 3; ++d)
+            if (!prescribed_component(p, d)) kept[d] = free[d];
+        return kept;
     }
     [[nodiscard]] bool prescribed_rotation(std::size_t p) const { return prescribed_rotation_[p]; }
     /// A fixed or prescribed component: the only particles with reactions.
@@ -123,7 +137,11 @@ private:
         PrescribedKind kind;
         Vec3 value;
         Index curve;
+        std::uint8_t components;  ///< bit d: translation component d is prescribed
     };
+    [[nodiscard]] bool prescribed_component(std::size_t p, Eigen::Index d) const {
+        return ((prescribed_translation_[p] >> d) & 1U) != 0;
+    }
     /// What a particle's rotation increment lacks (eq. 2.6c): nothing (a kink, a prescribed
     /// rotation, a clamp), the rotation about its normal (tangent-plane rotations), or, on a
     /// symmetry plane that leaves one rotation free, the rotation about its normal turned into

@@ -576,7 +576,7 @@ void ExplicitSolver::move_to_kinetic_energy_peak(Real ke_before, Real ke_peak, R
         curvature > 0 ? std::clamp(0.5 * (ke_after - ke_before) / curvature, -0.5, 0.5) : 0.5;
     const Real back = (tau - 0.5) * dt_half_prev_;
     for (std::size_t p = 0; p < s_.size(); ++p) {
-        if (!bc_->prescribed_translation(p)) s_.x[p] = s_.x_prev[p] + back * s_.v_prev[p];
+        s_.x[p] = bc_->where_not_prescribed(p, s_.x_prev[p] + back * s_.v_prev[p], s_.x[p]);
         if (!bc_->prescribed_rotation(p)) {
             // undo the last increment, apply the one to the peak; the next path element goes
             // from x_n to the peak state
@@ -607,7 +607,7 @@ ExplicitSolver::RelaxResult ExplicitSolver::relax(Real load_time) {
             energy_.damping += energy_.kinetic;
             energy_.kinetic = 0;
             for (std::size_t p = 0; p < s_.size(); ++p) {
-                if (!bc_->prescribed_translation(p)) s_.v[p].setZero();
+                s_.v[p] = bc_->where_not_prescribed(p, Vec3::Zero(), s_.v[p]);
                 if (!bc_->prescribed_rotation(p)) s_.omega[p].setZero();
             }
             ke = 0;

@@ -40,8 +40,7 @@ inline void ExplicitSolver::update_particle_velocity(std::size_t p, const CycleP
     if (!policy.residual) return;
 
     // Out-of-balance force and moment on the free directions, against the applied ones.
-    const Vec3 force_free =
-        bc.prescribed_translation(p) ? Vec3::Zero() : bc.without_fixed_translation(p, force);
+    const Vec3 force_free = bc.without_constrained_translation(p, force);
     residual[0] += force_free.squaredNorm();
     residual[1] += s_.f_ext[p].squaredNorm() + (force - force_free).squaredNorm();
     const Vec3 moment_free = bc.prescribed_rotation(p)

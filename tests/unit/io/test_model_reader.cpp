@@ -453,6 +453,22 @@ TEST(ModelReader, ReadsSetsOfNodeNumbers) {
                  "sets.a.node_ids", "needs a mesh file with node numbers");
 }
 
+// prescribe.components: the translation components a displacement or velocity prescribes.
+TEST(ModelReader, ReadsPrescribedComponents) {
+    const std::string yaml =
+        k_base +
+        "boundary:\n  - {nodes: xmax, prescribe: {velocity: [1, 0, 0], components: [ux, uz]}}\n";
+    const TempDir dir;
+    const Model m = read_model(dir.write("model.yaml", yaml));
+    EXPECT_EQ(m.boundary[0].components, (std::array<bool, 3>{true, false, true}));
+    expect_error(replaced(yaml, "[ux, uz]", "[ux, rz]"), 10, "boundary.0.prescribe.components.1",
+                 "rz");
+    expect_error(replaced(yaml, "[ux, uz]", "[]"), 10, "boundary.0.prescribe.components",
+                 "non-empty list");
+    expect_error(replaced(yaml, "velocity: [1, 0, 0]", "angular_velocity: [1, 0, 0]"), 10,
+                 "boundary.0.prescribe.components", "about all three axes");
+}
+
 // Every error category names the file, the line and the key in one sentence.
 TEST(ModelReader, EveryErrorNamesFileLineAndKey) {
     struct Case {

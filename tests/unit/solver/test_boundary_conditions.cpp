@@ -121,3 +121,51 @@ TEST(BoundaryConditions, PrescribedMotionsReachTheirTargetsWithTheirReactions) {
     bc.impose_prescribed_motions(r, m.curves, at);
     EXPECT_NEAR(r.x[0].z() + at.dt_new * r.v[0].z(), 0.125 * 2.0, 1e-15);
 }
+
+// A prescription of some translation components (boundary.prescribe.components, LS-DYNA's
+// *BOUNDARY_PRESCRIBED_MOTION of one DOF) sets only those: the other components keep the
+// particle's own velocity, move it freely (inverse mass 1 / m there), carry no reaction, and stay
+// in the out-of-balance force; two entries on one particle prescribe both their components.
+TEST(BoundaryConditions, PrescribedComponentsLeaveTheOthersFree) {
+    Model m = four_particles();
+    BoundaryCondition along_x;
+    along_x.nodes = {0, 1};
+    along_x.prescribed = PrescribedKind::Velocity;
+    along_x.value = Vec3(2.0, 5.0, 5.0);  // only x is prescribed: y and z are ignored
+    along_x.components = {true, false, false};
+    BoundaryCondition along_z;
+    along_z.nodes = {1};
+    along_z.prescribed = PrescribedKind::Displacement;
+    along_z.value = Vec3(0, 0, 0.3);
+    along_z.components = {false, false, true};
+    m.boundary = {along_x, along_z};
+    BoundaryConditions bc(m, std::vector<std::uint8_t>(4, 0));
+    EXPECT_TRUE(bc.prescribed_translation(0));
+    EXPECT_FALSE(bc.prescribed_translation(2));
+    EXPECT_EQ(bc.free_inverse_mass(0, 2.0), Vec3(0.0, 0.5, 0.5));
+    EXPECT_EQ(bc.free_inverse_mass(1, 2.0), Vec3(0.0, 0.5, 0.0));
+    EXPECT_EQ(bc.without_constrained_translation(0, Vec3(1, 2, 3)), Vec3(0, 2, 3));
+    EXPECT_EQ(bc.without_constrained_translation(1, Vec3(1, 2, 3)), Vec3(0, 2, 0));
+    EXPECT_EQ(bc.where_not_prescribed(1, Vec3(7, 8, 9), Vec3(1, 2, 3)), Vec3(1, 8, 3));
+
+    ParticleState s;
+    s.resize(4);
+    s.x0 = m.nodes;
+    s.x = m.nodes;
+    s.mass.assign(4, 2.0);
+    s.inertia.assign(4, 0.5);
+    s.v[0] = Vec3(-1.0, 0.25, -0.5);
+    s.v[1] = Vec3(-1.0, 0.25, -0.5);
+    PrescribedMotionTimes at;
+    at.t_half = 0.05;
+    at.t_next = 0.1;
+    at.dt_n = 0.1;
+    at.dt_new = 0.1;
+    bc.impose_prescribed_motions(s, m.curves, at);
+    EXPECT_EQ(s.v[0], Vec3(2.0, 0.25, -0.5));
+    EXPECT_EQ(s.reaction[0], Vec3(2.0 / 0.1 * 3.0, 0, 0));
+    EXPECT_DOUBLE_EQ(s.v[1].x(), 2.0);
+    EXPECT_DOUBLE_EQ(s.v[1].y(), 0.25);
+    EXPECT_NEAR(s.x[1].z() + at.dt_new * s.v[1].z(), 0.3, 1e-15);  // reaches its displacement
+    EXPECT_DOUBLE_EQ(s.reaction[1].y(), 0.0);
+}
