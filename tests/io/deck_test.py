@@ -73,6 +73,68 @@ for name in sorted(os.listdir(DECKS)):
     check(f"{name}: convert does not replace a file without --overwrite",
           again.returncode == 2 and "--overwrite" in again.stderr, again.stderr)
 
+# ---- pressures on segments: the shells' own pressure, whichever way each segment runs round
+# its shell (a segment against the shell's normal pushes the other way)
+PANEL = os.path.join(DECKS, "pressure_panel")
+panel_deck = read(os.path.join(PANEL, "pressure_panel.k"))
+shell_load = "*LOAD_SHELL_SET\n$#    ssid      lcid        sf        at\n         7         1   20000.0\n"
+mesh_lines = read(os.path.join(PANEL, "pressure_panel_mesh.k")).splitlines()
+first = mesh_lines.index("*ELEMENT_SHELL") + 1
+shells = []
+for line in mesh_lines[first:]:
+    if line.startswith("*"):
+        break
+    shells.append([int(line[8 * k:8 * k + 8]) for k in (0, 2, 3, 4, 5)])
+
+
+def segment_card(nodes):
+    return "".join(f"{n:10d}" for n in nodes) + "\n"
+
+
+def panel_variant(name, load_cards):
+    folder = os.path.join(WORK, "segments", name)
+    os.makedirs(folder, exist_ok=True)
+    shutil.copy(os.path.join(PANEL, "pressure_panel_mesh.k"), folder)
+    assert shell_load in panel_deck
+    path = os.path.join(folder, "pressure_panel.k")
+    with open(path, "w") as f:
+        f.write(panel_deck.replace(shell_load, load_cards))
+    return path
+
+
+def history_columns(path):
+    rows = [line.split(",") for line in read(path).splitlines()[1:]]
+    return list(zip(*[[float(v) for v in row] for row in rows]))
+
+
+reference = os.path.join(WORK, "pressure_panel", "deck", "history.csv")
+aligned = "*SET_SEGMENT\n         3\n" + "".join(segment_card(e[1:]) for e in shells)
+reversed_ = "*SET_SEGMENT_TITLE\nback faces\n         4\n" + "".join(
+    segment_card(e[1:][::-1]) for e in shells)
+VARIANTS = {  # name: (load cards, equal to the shell-set load bit for bit)
+    "segment set": (aligned + "*LOAD_SEGMENT_SET\n         3         1   20000.0\n", True),
+    "reversed segment set": (reversed_ + "*LOAD_SEGMENT_SET\n         4         1  -20000.0\n", True),
+    "single segments, half reversed": ("*LOAD_SEGMENT\n" + "".join(
+        f"{1:10d}{(20000.0 if k % 2 else -20000.0):10.1f}{0:10d}" +
+        segment_card(e[1:] if k % 2 else e[1:][::-1])[:40] + "\n" for k, e in enumerate(shells)),
+        False),
+}
+for name, (cards, exact) in VARIANTS.items():
+    path = panel_variant(name.replace(" ", "_").replace(",", ""), cards)
+    r, h = run(path, os.path.join(os.path.dirname(path), "out"))
+    check(f"{name}: runs", r.returncode == 0, r.stderr)
+    if r.returncode:
+        continue
+    if exact:
+        check(f"{name}: the history of the shell-set pressure, bit for bit",
+              read(h) == read(reference), "the files differ")
+    else:  # two loads add the same element forces in another order: equal to rounding
+        got, want = history_columns(h), history_columns(reference)
+        worst = max(abs(a - b) / (max(abs(x) for x in w) or 1.0)
+                    for g, w in zip(got, want) for a, b in zip(g, w))
+        check(f"{name}: the history of the shell-set pressure to rounding", worst < 1e-9,
+              f"largest difference {worst:.3g} of a column's largest value")
+
 # ---- check prints the deck as understood
 c = fpmshell("check", os.path.join(DECKS, "tube_crush", "tube_crush.k"))
 out = c.stdout

@@ -161,6 +161,20 @@ struct PartDef {
     long long section = 0, material = 0;
 };
 
+struct Segment {
+    std::array<long long, 4> nodes{};  ///< N1 ... N4 (N4 = N3 or 0 for a triangle)
+    Origin at;
+};
+
+struct SegmentLoad {
+    std::string name;  ///< the segment set, or a name for a *LOAD_SEGMENT card
+    std::vector<Segment> segments;
+    Real sf = 1;
+    std::string curve;
+    Origin at;
+    std::size_t slot = 0;  ///< its place among the loads (loads add up in the deck's order)
+};
+
 struct WallDef {
     Origin at;
     long long id = 0;
@@ -233,6 +247,10 @@ private:
             prescribed_motion(b);
         } else if (starts_with(k, "INITIAL_VELOCITY")) {
             initial_velocity(b);
+        } else if (starts_with(k, "SET_SEGMENT")) {
+            segment_set(b);
+        } else if (starts_with(k, "LOAD_SEGMENT")) {
+            segment_load(b);
         } else if (starts_with(k, "LOAD_NODE_") || starts_with(k, "LOAD_SHELL_SET")) {
             load(b);
         } else if (starts_with(k, "RIGIDWALL_PLANAR")) {
@@ -284,7 +302,8 @@ private:
             return "only *CONTACT_AUTOMATIC_SINGLE_SURFACE is supported (fpmshell's shell "
                    "self-contact)";
         if (starts_with(k, "LOAD_"))
-            return "fpmshell reads *LOAD_NODE_POINT, *LOAD_NODE_SET and *LOAD_SHELL_SET";
+            return "fpmshell reads *LOAD_NODE_POINT, *LOAD_NODE_SET, *LOAD_SHELL_SET, "
+                   "*LOAD_SEGMENT and *LOAD_SEGMENT_SET";
         return "this card is not supported by fpmshell, and ignoring it could change the model";
     }
 
@@ -308,11 +327,17 @@ private:
                 ids.resize(std::max<std::size_t>(ids.size(), 6));
                 if (!text_mesh::parse_id(ids[1], pid)) continue;  // the mesh reader says why
             }
-            long long n3 = 0, n4 = 0;
-            if (text_mesh::parse_id(ids[4], n3) && text_mesh::parse_id(ids[5], n4) && n4 != 0 &&
-                n4 != n3) {
-                if (quadrangles_ == 0) first_quadrangle_ = {&b, b.cards[c].line};
-                ++quadrangles_;
+            std::array<long long, 4> n{};
+            bool numbered = true;
+            for (std::size_t k = 0; k < 4; ++k)
+                numbered =
+                    numbered && (ids[2 + k].empty() || text_mesh::parse_id(ids[2 + k], n[k]));
+            if (numbered) {
+                if (n[3] != 0 && n[3] != n[2]) {
+                    if (quadrangles_ == 0) first_quadrangle_ = {&b, b.cards[c].line};
+                    ++quadrangles_;
+                }
+                shells_.push_back({eid, n});
             }
             auto& p = element_parts_[pid];
             if (p.count == 0) p.first = {&b, b.cards[c].line};
@@ -669,6 +694,127 @@ private:
         }
     }
 
+    // -- segments: sets of element faces given by their nodes, and pressures on them
+
+    /// *SET_SEGMENT(_TITLE): a header card (SID), then one card per segment (N1 ... N4).
+    void segment_set(const DeckBlock& b) {
+        const std::set<std::string> opt = options_of(b.keyword, 2);
+        for (const std::string& o : opt)
+            if (o != "TITLE") refuse(b, "*SET_SEGMENT_" + o + " is not supported");
+        const bool titled = opt.count("TITLE") != 0;
+        const Card head = required_card(b, titled ? 1 : 0, "SID");
+        const long long sid = head.id(0, "SID");
+        const std::string name = titled ? trim(b.cards[0].text) : lsdyna_set_name("segment", sid);
+        set_names_["segment"][sid] = name;
+        auto& segments = segment_sets_[name];
+        for (std::size_t c = titled ? 2 : 1; c < b.cards.size(); ++c)
+            segments.push_back(segment(Card(deck_, b, b.cards[c], k_ten), 0, b));
+    }
+
+    /// The segment of nodes in fields first ... first + 3 of `f`.
+    static Segment segment(const Card& f, std::size_t first, const DeckBlock& b) {
+        Segment s{{}, {&b, f.line()}};
+        for (std::size_t k = 0; k < 4; ++k) s.nodes[k] = f.id(first + k, "N1..N4");
+        if (s.nodes[0] <= 0 || s.nodes[1] <= 0 || s.nodes[2] <= 0)
+            f.fail("a segment needs at least three node numbers N1, N2, N3");
+        return s;
+    }
+
+    /// *LOAD_SEGMENT_SET (SSID, LCID, SF, AT) and *LOAD_SEGMENT (LCID, SF, AT, N1 ... N4): a
+    /// pressure along each segment's normal (by its node order), on the shell it covers.
+    void segment_load(const DeckBlock& b) {
+        const std::string& k = b.keyword;
+        const bool set = k == "LOAD_SEGMENT_SET";
+        if (!set && k != "LOAD_SEGMENT") refuse(b, unsupported_reason(k));
+        for (const DeckCard& dc : b.cards) {
+            const Card f(deck_, b, dc, k_ten);
+            const std::size_t at = set ? 3 : 2;
+            if (f.real(at, "AT") != 0) f.fail("AT (an arrival time) is not supported");
+            SegmentLoad load;
+            load.at = {&b, f.line()};
+            load.sf = f.real(set ? 2 : 1, "SF", 1.0);
+            load.curve = curve_ref(b, f, f.id(set ? 1 : 0, "LCID"));
+            if (set) {
+                load.name = set_name(f, "segment", f.id(0, "SSID"));
+                load.segments = segment_sets_.at(load.name);
+                if (load.segments.empty())
+                    f.fail("segment set '" + load.name + "' lists no segment");
+            } else {
+                load.name = "load_segments_" + std::to_string(segment_loads_.size() + 1);
+                load.segments.push_back(segment(f, 3, b));
+            }
+            load.slot = loads_.size();  // its pressures take this place among the loads
+            loads_.push_back({"", load.at});
+            segment_loads_.push_back(std::move(load));
+        }
+    }
+
+    /// The element sets and pressures of the segment loads: each segment's shell (the one with
+    /// its nodes), in a set of the shells whose normal the segment's node order follows and one
+    /// (`<name>_reversed`, the pressure negated) of those it opposes.
+    void write_segment_loads() {
+        if (segment_loads_.empty()) return;
+        std::vector<std::pair<std::array<long long, 4>, std::size_t>> by_nodes;
+        by_nodes.reserve(shells_.size());
+        for (std::size_t k = 0; k < shells_.size(); ++k)
+            by_nodes.emplace_back(node_key(shells_[k].nodes), k);
+        std::sort(by_nodes.begin(), by_nodes.end());
+        std::map<std::size_t, std::vector<Line>> pressures;  // by the slot of their card
+        for (const SegmentLoad& load : segment_loads_) {
+            std::vector<long long> aligned, reversed;
+            for (const Segment& seg : load.segments) {
+                const auto key = node_key(seg.nodes);
+                const auto it = std::lower_bound(by_nodes.begin(), by_nodes.end(),
+                                                 std::make_pair(key, std::size_t{0}));
+                if (it == by_nodes.end() || it->first != key)
+                    deck_fail(*seg.at.block, seg.at.line,
+                              "no shell element has the nodes of this segment; fpmshell loads "
+                              "segments of its shells");
+                const Shell& shell = shells_[it->second];
+                (same_order(shell.nodes, seg.nodes) ? aligned : reversed).push_back(shell.id);
+            }
+            for (const bool flip : {false, true}) {
+                const auto& ids = flip ? reversed : aligned;
+                if (ids.empty()) continue;
+                const std::string name = load.name + (flip ? "_reversed" : "");
+                auto& group = element_groups_[name];
+                if (group.ids.empty()) {
+                    group.at = load.at;
+                    group.ids = ids;
+                }
+                pressures[load.slot].push_back(
+                    {"  - {type: pressure, elements: " + yaml_name(name) + ", value: " +
+                         num(flip ? -load.sf : load.sf) + ", curve: " + load.curve + "}",
+                     load.at});
+            }
+        }
+        std::vector<Line> loads;
+        for (std::size_t k = 0; k < loads_.size(); ++k) {
+            const auto p = pressures.find(k);
+            if (p == pressures.end())
+                loads.push_back(loads_[k]);
+            else
+                loads.insert(loads.end(), p->second.begin(), p->second.end());
+        }
+        loads_ = std::move(loads);
+    }
+
+    /// The distinct node numbers of a shell or segment, sorted (a triangle's fourth is 0).
+    static std::array<long long, 4> node_key(const std::array<long long, 4>& n) {
+        std::array<long long, 4> key = n;
+        if (key[3] == key[2]) key[3] = 0;
+        std::sort(key.begin(), key.end());
+        return key;
+    }
+    /// Whether segment s runs round its shell in the shell's own direction.
+    static bool same_order(const std::array<long long, 4>& shell,
+                           const std::array<long long, 4>& s) {
+        const std::size_t count = (shell[3] == 0 || shell[3] == shell[2]) ? 3 : 4;
+        const auto first = std::find(shell.begin(), shell.begin() + static_cast<long>(count), s[0]);
+        const std::size_t at = static_cast<std::size_t>(first - shell.begin());
+        return shell[(at + 1) % count] == s[1];
+    }
+
     static std::string replace_nodes(std::string text, const std::string& set) {
         text.replace(text.find("NODES"), 5, yaml_name(set));
         return text;
@@ -959,6 +1105,7 @@ private:
     }
 
     DeckTranslation write() {
+        write_segment_loads();
         std::vector<Line> out;
         const Origin top{deck_.blocks.empty() ? nullptr : &deck_.blocks.front(), 0};
         const std::string title =
@@ -1008,13 +1155,21 @@ private:
                 g.ids.push_back(id);
             }
         }
-        if (node_groups_.empty()) return;
-        add(out, "sets:", node_groups_.begin()->second.at);
-        for (const auto& [name, g] : node_groups_) {
-            std::string ids;
-            for (const long long id : g.ids) ids += (ids.empty() ? "" : ", ") + std::to_string(id);
-            add(out, "  " + yaml_name(name) + ": {node_ids: [" + ids + "]}", g.at);
-        }
+        if (node_groups_.empty() && element_groups_.empty()) return;
+        add(out, "sets:",
+            node_groups_.empty() ? element_groups_.begin()->second.at
+                                 : node_groups_.begin()->second.at);
+        for (const auto* groups : {&node_groups_, &element_groups_})
+            for (const auto& [name, g] : *groups) {
+                std::string ids;
+                for (const long long id : g.ids)
+                    ids += (ids.empty() ? "" : ", ") + std::to_string(id);
+                add(out,
+                    "  " + yaml_name(name) +
+                        (groups == &node_groups_ ? ": {node_ids: [" : ": {element_ids: [") + ids +
+                        "]}",
+                    g.at);
+            }
     }
 
     void write_materials(std::vector<Line>& out) {
@@ -1214,6 +1369,14 @@ private:
     std::size_t table_waiting_ = 0;
     std::vector<std::pair<long long, Origin>> used_curves_;
     std::map<std::string, NodeGroup> node_groups_;
+    std::map<std::string, NodeGroup> element_groups_;  // element sets by number (segment loads)
+    struct Shell {
+        long long id = 0;
+        std::array<long long, 4> nodes{};
+    };
+    std::vector<Shell> shells_;  // every shell's number and nodes (for segments)
+    std::map<std::string, std::vector<Segment>> segment_sets_;
+    std::vector<SegmentLoad> segment_loads_;
     /// the model line of a load or prescribed motion on single nodes -> the set of its nodes
     std::map<std::string, std::string> node_group_of_text_;
     std::vector<Line> boundary_, loads_, initial_, contact_, control_;

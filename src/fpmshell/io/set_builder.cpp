@@ -2,8 +2,10 @@
 #include "fpmshell/io/set_builder.hpp"
 
 #include <algorithm>
+#include <cstdint>
 #include <limits>
 #include <string>
+#include <utility>
 
 namespace fpmshell {
 
@@ -117,6 +119,32 @@ std::vector<Index> nodes_numbered(const MeshData& mesh, const YamlValue& ids) {
     return nodes;
 }
 
+/// The triangles of the mesh file's element numbers `ids` (MeshData::element_tag: both halves of
+/// a split quadrangle), sorted.
+std::vector<Index> elements_numbered(const MeshData& mesh, const YamlValue& ids) {
+    if (mesh.element_tag.empty() || mesh.node_tag.empty())
+        ids.fail(
+            "element_ids needs a mesh file with element numbers (.inp or .k); this mesh has none: "
+            "use near, plane or box");
+    std::vector<std::pair<std::int64_t, Index>> by_number;
+    by_number.reserve(mesh.element_tag.size());
+    for (std::size_t t = 0; t < mesh.element_tag.size(); ++t)
+        by_number.emplace_back(mesh.element_tag[t], static_cast<Index>(t));
+    std::sort(by_number.begin(), by_number.end());
+    std::vector<Index> elements;
+    for (const YamlValue& id : ids.list("element numbers")) {
+        const long long number = id.integer(1, std::numeric_limits<long long>::max());
+        auto it = std::lower_bound(by_number.begin(), by_number.end(),
+                                   std::pair<std::int64_t, Index>{number, -1});
+        if (it == by_number.end() || it->first != number)
+            id.fail("element " + std::to_string(number) + " is not a shell element of the mesh");
+        for (; it != by_number.end() && it->first == number; ++it) elements.push_back(it->second);
+    }
+    std::sort(elements.begin(), elements.end());
+    elements.erase(std::unique(elements.begin(), elements.end()), elements.end());
+    return elements;
+}
+
 }  // namespace
 
 void add_user_sets(const YamlValue& sets, MeshData& mesh) {
@@ -134,11 +162,13 @@ void add_user_sets(const YamlValue& sets, MeshData& mesh) {
         if (std::find(mesh_names.begin(), mesh_names.end(), name) != mesh_names.end())
             value.fail("a set named '" + name +
                        "' is already defined by the mesh; choose another name");
-        const YamlMap def = value.map({"near", "plane", "box", "node_ids", "tolerance"});
-        if (def.count({"near", "plane", "box", "node_ids"}) != 1)
+        const YamlMap def =
+            value.map({"near", "plane", "box", "node_ids", "element_ids", "tolerance"});
+        if (def.count({"near", "plane", "box", "node_ids", "element_ids"}) != 1)
             value.fail(
                 "a set needs exactly one of near: [x, y, z], plane: {point, normal}, "
-                "box: [[xmin, ymin, zmin], [xmax, ymax, zmax]] or node_ids: [n1, n2, ...]");
+                "box: [[xmin, ymin, zmin], [xmax, ymax, zmax]], node_ids: [n1, n2, ...] or "
+                "element_ids: [e1, e2, ...]");
         std::optional<Real> tolerance;
         if (const auto t = def.find("tolerance")) tolerance = t->non_negative();
 
@@ -150,6 +180,15 @@ void add_user_sets(const YamlValue& sets, MeshData& mesh) {
             nodes = nodes_numbered(mesh, *ids);
             elements = elements_within(mesh.triangles, nodes, mesh.nodes.size());
             how = "node_ids lists no node";
+        } else if (const auto eids = def.find("element_ids")) {
+            if (tolerance) def.at("tolerance").fail("a set of element_ids takes no tolerance");
+            elements = elements_numbered(mesh, *eids);
+            for (const Index e : elements)
+                for (const Index n : mesh.triangles[static_cast<std::size_t>(e)])
+                    nodes.push_back(n);
+            std::sort(nodes.begin(), nodes.end());
+            nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
+            how = "element_ids lists no element";
         } else if (const auto near = def.find("near")) {
             const Vec3 point = near->vec3();
             nodes = nodes_near(mesh.nodes, point, tolerance);

@@ -18,8 +18,8 @@ namespace fpmshell {
 /// Throws InputError "PATH:LINE: ..." on error.
 [[nodiscard]] MeshData read_lsdyna(const std::string& path);
 
-/// The name of an untitled set: "node_set_<SID>", "shell_set_<SID>" or "part_set_<SID>" for
-/// `kind` node, shell or part.
+/// The name of an untitled set: "<kind>_set_<SID>" for `kind` node, shell, part (or segment:
+/// the deck translator's sets of segments).
 [[nodiscard]] std::string lsdyna_set_name(const std::string& kind, long long sid);
 
 }  // namespace fpmshell

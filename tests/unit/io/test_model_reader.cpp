@@ -423,8 +423,8 @@ $EndElements
         2, "mesh", "element 2 (number 3 in the mesh file) is degenerate");
 }
 
-// Sets of node_ids: the mesh file's node numbers (an LS-DYNA file here); a number the mesh
-// does not have, a tolerance, and a generated mesh (no numbers) are refused.
+// Sets of node_ids and element_ids: the mesh file's numbers (an LS-DYNA file here); a number
+// the mesh does not have, a tolerance, and a generated mesh (no numbers) are refused.
 TEST(ModelReader, ReadsSetsOfNodeNumbers) {
     const TempDir dir;
     const std::string k_file = dir.write("plate.k", R"(*NODE
@@ -451,6 +451,12 @@ TEST(ModelReader, ReadsSetsOfNodeNumbers) {
                  "takes no tolerance");
     expect_error(replaced(k_base, mesh_line, mesh_line + "\nsets:\n  a: {node_ids: [1]}"), 4,
                  "sets.a.node_ids", "needs a mesh file with node numbers");
+    const Model e = read_model(
+        dir.write("model.yaml", replaced(yaml, "node_ids: [40, 10]", "element_ids: [1]")));
+    EXPECT_EQ(e.element_sets.at("corners"), (std::vector<Index>{0, 1}));  // both halves
+    EXPECT_EQ(e.node_sets.at("corners"), (std::vector<Index>{0, 1, 2, 3}));
+    expect_error(replaced(yaml, "node_ids: [40, 10]", "element_ids: [2]"), 4,
+                 "sets.corners.element_ids.0", "element 2 is not a shell element");
 }
 
 // prescribe.components: the translation components a displacement or velocity prescribes.
