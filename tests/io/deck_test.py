@@ -192,7 +192,7 @@ REFUSED = {  # card: what its message must say
     "*MAT_RIGID\n         2    7800.0   2.1e+11       0.3\n": "rigid parts are not supported",
     "*CONSTRAINED_SPOTWELD\n         1         2\n": "constraints between nodes are not supported",
     "*ELEMENT_SOLID\n         1         1         1         2         3\n": "shells only",
-    "*CONTACT_AUTOMATIC_SURFACE_TO_SURFACE\n         1         1\n": "only *CONTACT_AUTOMATIC_SINGLE_SURFACE",
+    "*CONTACT_TIED_SURFACE_TO_SURFACE\n         1         1\n": "fpmshell reads *CONTACT_AUTOMATIC_SINGLE_SURFACE",
     "*MAT_HONEYCOMB\n         2\n": "this material is not supported",
     "*BOUNDARY_PRESCRIBED_MOTION_RIGID\n         1         3         0         1\n": "rigid parts are not supported",
     "*RIGIDWALL_GEOMETRIC_CYLINDER\n         0\n": "not supported",
@@ -241,6 +241,22 @@ for name, extra, files, start, words in ERRORS:
           r.stdout + r.stderr)
     check(f"{name}: the message names the place and says what", words in r.stderr and
           (not where or r.stderr.startswith("error: " + where)), r.stderr)
+
+# a surface-to-surface contact between two parts: self-contact over both
+two_parts = BASE.replace("*ELEMENT_SHELL\n       1       1       1       2       3       3\n",
+                         "*NODE\n       4             1.0             1.0             0.0\n"
+                         "*ELEMENT_SHELL\n       1       1       1       2       3       3\n"
+                         "       2       2       2       4       3       3\n"
+                         "*PART\nother\n         2         1         1\n")
+path, r = deck_case("surface to surface", "*CONTACT_AUTOMATIC_SURFACE_TO_SURFACE_ID\n"
+                    "         1 s2s\n         1         2         3         3\n", base=two_parts)
+check("surface to surface: self-contact over both parts", r.returncode == 0 and
+      "contact self over 2 elements" in r.stdout and "over both sides together" in r.stdout,
+      r.stdout + r.stderr)
+path, r = deck_case("nodes to surface", "*CONTACT_AUTOMATIC_NODES_TO_SURFACE\n"
+                    "         1         2         4         3\n", base=two_parts)
+check("nodes to surface with a node set: refused", r.returncode == 2 and "SSTYP 4" in r.stderr,
+      r.stderr)
 
 path, r = deck_case("no termination", "", base=BASE.replace("*CONTROL_TERMINATION\n     0.001\n", ""))
 check("a deck without *CONTROL_TERMINATION is refused", r.returncode == 2 and

@@ -255,7 +255,9 @@ private:
             load(b);
         } else if (starts_with(k, "RIGIDWALL_PLANAR")) {
             rigid_wall(b);
-        } else if (starts_with(k, "CONTACT_AUTOMATIC_SINGLE_SURFACE")) {
+        } else if (starts_with(k, "CONTACT_AUTOMATIC_SINGLE_SURFACE") ||
+                   starts_with(k, "CONTACT_AUTOMATIC_SURFACE_TO_SURFACE") ||
+                   starts_with(k, "CONTACT_AUTOMATIC_NODES_TO_SURFACE")) {
             contact(b);
         } else if (starts_with(k, "CONTROL_") || k == "DAMPING_GLOBAL") {
             control(b);
@@ -299,8 +301,8 @@ private:
             return "fpmshell reads *BOUNDARY_PRESCRIBED_MOTION_NODE and _SET (with _ID); rigid "
                    "parts are not supported";
         if (starts_with(k, "CONTACT_"))
-            return "only *CONTACT_AUTOMATIC_SINGLE_SURFACE is supported (fpmshell's shell "
-                   "self-contact)";
+            return "fpmshell reads *CONTACT_AUTOMATIC_SINGLE_SURFACE, _SURFACE_TO_SURFACE and "
+                   "_NODES_TO_SURFACE (as its shell self-contact)";
         if (starts_with(k, "LOAD_"))
             return "fpmshell reads *LOAD_NODE_POINT, *LOAD_NODE_SET, *LOAD_SHELL_SET, "
                    "*LOAD_SEGMENT and *LOAD_SEGMENT_SET";
@@ -967,11 +969,15 @@ private:
         walls_.push_back(w);
     }
 
+    /// *CONTACT_AUTOMATIC_SINGLE_SURFACE: self-contact over its side; _SURFACE_TO_SURFACE and
+    /// _NODES_TO_SURFACE: self-contact over the union of both sides, which keeps the two
+    /// apart (and each side from itself too: noted).
     void contact(const DeckBlock& b) {
-        const std::set<std::string> opt = options_of(b.keyword, 4);
+        const bool single = starts_with(b.keyword, "CONTACT_AUTOMATIC_SINGLE_SURFACE");
+        const std::set<std::string> opt = options_of(b.keyword, single ? 4 : 5);
         for (const std::string& o : opt)
             if (o != "ID" && o != "MPP" && o != "TITLE")
-                refuse(b, "*CONTACT_AUTOMATIC_SINGLE_SURFACE_" + o + " is not supported");
+                refuse(b, "*" + b.keyword + ": the option _" + o + " is not supported");
         std::size_t c = (opt.count("ID") || opt.count("TITLE")) ? 1 : 0;
         if (opt.count("MPP")) {
             ++c;
@@ -979,8 +985,8 @@ private:
         }
         const Card f = required_card(b, c, "SSID, MSID, SSTYP, MSTYP");
         const Card g = card(b, c + 1);
-        const long long ssid = f.id(0, "SSID"), sstyp = f.id(2, "SSTYP");
-        if (f.id(4, "SBOXID") != 0) f.fail("SBOXID is not supported (0 only)");
+        if (f.id(4, "SBOXID") != 0 || f.id(5, "MBOXID") != 0)
+            f.fail("SBOXID and MBOXID are not supported (0 only)");
         if (g.real(0, "FS") != 0 || g.real(1, "FD") != 0)
             g.fail(
                 "FS, FD: friction is not modelled by fpmshell's contact; set them to 0 to run "
@@ -991,24 +997,34 @@ private:
             note(b, g.line(),
                  "VDC ignored: the contact is enforced by Lagrange multipliers, without "
                  "viscous damping");
-        std::string elements = "all";
-        if (sstyp == 5 || ssid == 0) {
+        std::vector<std::string> sides{contact_side(f, f.id(0, "SSID"), f.id(2, "SSTYP"), "SSTYP")};
+        if (!single) sides.push_back(contact_side(f, f.id(1, "MSID"), f.id(3, "MSTYP"), "MSTYP"));
+        std::string elements;
+        if (std::find(sides.begin(), sides.end(), "all") != sides.end()) {
             elements = "all";
-        } else if (sstyp == 1) {
-            elements = set_name(f, "shell", ssid);
-        } else if (sstyp == 2) {
-            elements = set_name(f, "part", ssid);
-        } else if (sstyp == 3) {
-            elements = "part_" + std::to_string(ssid);
+        } else if (sides.size() == 1 || sides[0] == sides[1]) {
+            elements = yaml_name(sides[0]);
         } else {
-            f.fail("SSTYP " + std::to_string(sstyp) +
-                   " is not supported: 1 (shell set), 2 (part set), 3 (part) or 5 (all)");
+            elements = "[" + yaml_name(sides[0]) + ", " + yaml_name(sides[1]) + "]";
         }
-        contact_.push_back(
-            {"  - {type: self, elements: " + yaml_name(elements) + "}", {&b, f.line()}});
+        contact_.push_back({"  - {type: self, elements: " + elements + "}", {&b, f.line()}});
         note(b, f.line(),
-             "as fpmshell's shell self-contact (Lagrange multipliers, each shell's thickness as "
-             "its contact thickness)");
+             std::string(single ? "as fpmshell's shell self-contact"
+                                : "as fpmshell's shell self-contact over both sides together "
+                                  "(each side is kept from itself too)") +
+                 " (Lagrange multipliers, each shell's thickness as its contact thickness)");
+    }
+
+    /// The element set of one side of a contact: SID of type TYP (1 shell set, 2 part set,
+    /// 3 part, 5 all; SID 0 is all).
+    std::string contact_side(const Card& f, long long sid, long long typ, const char* name) {
+        if (typ == 5 || sid == 0) return "all";
+        if (typ == 1) return set_name(f, "shell", sid);
+        if (typ == 2) return set_name(f, "part", sid);
+        if (typ == 3) return "part_" + std::to_string(sid);
+        f.fail(std::string(name) + " " + std::to_string(typ) +
+               " is not supported: 1 (shell set), 2 (part set), 3 (part) or 5 (all); give a node "
+               "set's shells as a part or shell set");
     }
 
     void control(const DeckBlock& b) {

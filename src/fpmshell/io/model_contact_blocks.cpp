@@ -1,4 +1,5 @@
 // The `rigid_bodies` and `contact` blocks of the model file (see model_blocks.hpp).
+#include <algorithm>
 #include <string>
 #include <vector>
 
@@ -78,8 +79,23 @@ void read_contact(const YamlValue& v, Model& model) {
             const YamlMap m = item.map({"type", "elements", "method", "exclusion_radius",
                                         "penalty_scale", "max_iterations"});
             c.type = ContactType::Self;
-            c.elements = m.find("elements") ? named_element_set(model, *m.find("elements"))
-                                            : model.element_sets.at("all");
+            c.elements = model.element_sets.at("all");
+            if (const auto e = m.find("elements"); e && e->is_list()) {
+                // several sets: their union (the two sides of LS-DYNA's surface-to-surface)
+                const auto names = e->list("element set names");
+                if (names.empty())
+                    e->fail("expected an element set name or a non-empty list of them");
+                c.elements.clear();
+                for (const YamlValue& name : names) {
+                    const auto& set = named_element_set(model, name);
+                    c.elements.insert(c.elements.end(), set.begin(), set.end());
+                }
+                std::sort(c.elements.begin(), c.elements.end());
+                c.elements.erase(std::unique(c.elements.begin(), c.elements.end()),
+                                 c.elements.end());
+            } else if (e) {
+                c.elements = named_element_set(model, *e);
+            }
             c.exclusion_radius = m.non_negative_or("exclusion_radius", 0.0);
             read_contact_method(m, c);
         } else {

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -473,6 +474,23 @@ TEST(ModelReader, ReadsPrescribedComponents) {
                  "non-empty list");
     expect_error(replaced(yaml, "velocity: [1, 0, 0]", "angular_velocity: [1, 0, 0]"), 10,
                  "boundary.0.prescribe.components", "about all three axes");
+}
+
+// contact.elements of a self-contact: one set, or a list of sets (their union).
+TEST(ModelReader, ReadsSelfContactOverSeveralSets) {
+    const std::string yaml =
+        k_base +
+        "sets:\n  a: {box: [[0, 0, -1], [0.6, 1, 1]]}\n  b: {box: [[1.4, 0, -1], [2, 1, 1]]}\n"
+        "contact:\n  - {type: self, elements: [a, b]}\n";
+    const TempDir dir;
+    const Model m = read_model(dir.write("model.yaml", yaml));
+    std::vector<Index> both = m.element_sets.at("a");
+    both.insert(both.end(), m.element_sets.at("b").begin(), m.element_sets.at("b").end());
+    std::sort(both.begin(), both.end());
+    ASSERT_FALSE(m.element_sets.at("a").empty());
+    EXPECT_EQ(m.contacts[0].elements, both);
+    expect_error(replaced(yaml, "[a, b]", "[]"), 13, "contact.0.elements", "non-empty list");
+    expect_error(replaced(yaml, "[a, b]", "[a, c]"), 13, "contact.0.elements.1", "c");
 }
 
 // Every error category names the file, the line and the key in one sentence.
