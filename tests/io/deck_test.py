@@ -135,6 +135,34 @@ for name, (cards, exact) in VARIANTS.items():
         check(f"{name}: the history of the shell-set pressure to rounding", worst < 1e-9,
               f"largest difference {worst:.3g} of a column's largest value")
 
+# ---- *MAT_POWER_LAW_PLASTICITY: the strip of strip_pull.k in a power-law steel, against the
+# twin with the same material written in YAML
+STRIP = os.path.join(DECKS, "strip_pull")
+strip_deck, strip_twin = read(os.path.join(STRIP, "strip_pull.k")), read(os.path.join(STRIP, "strip_pull.yaml"))
+mat_024 = strip_deck[strip_deck.index("*MAT_PIECEWISE_LINEAR_PLASTICITY"):strip_deck.index("*DEFINE_TABLE")]
+mat_018 = ("*MAT_POWER_LAW_PLASTICITY\n"
+           "         1    7850.0   2.1e+11       0.3   9.0e+08      0.25     40.40       5.0\n"
+           "   3.0e+08\n")
+yaml_024 = strip_twin[strip_twin.index("  steel:"):strip_twin.index("sections:")]
+yaml_018 = ("  steel: {type: power_law, density: 7850, youngs_modulus: 2.1e11, poisson_ratio: 0.3,\n"
+            "          k: 9.0e8, n: 0.25, yield_stress: 3.0e8, cowper_symonds: {D: 40.4, q: 5}}\n\n")
+folder = os.path.join(WORK, "power_law")
+os.makedirs(folder, exist_ok=True)
+shutil.copy(os.path.join(STRIP, "strip_pull_mesh.k"), folder)
+with open(os.path.join(folder, "strip.k"), "w") as f:
+    f.write(strip_deck.replace(mat_024, mat_018))
+with open(os.path.join(folder, "strip.yaml"), "w") as f:
+    f.write(strip_twin.replace(yaml_024, yaml_018))
+r_deck, h_deck = run(os.path.join(folder, "strip.k"), os.path.join(folder, "deck"))
+r_twin, h_twin = run(os.path.join(folder, "strip.yaml"), os.path.join(folder, "twin"))
+check("power law: deck and twin run", r_deck.returncode == 0 and r_twin.returncode == 0,
+      r_deck.stderr + r_twin.stderr)
+if r_deck.returncode == 0 and r_twin.returncode == 0:
+    check("power law: the same history.csv", read(h_deck) == read(h_twin), "the files differ")
+    summary = read(os.path.join(folder, "deck", "summary.json"))
+    check("power law: the strip yields", '"plastic_work"' in summary and
+          float(summary.split('"plastic_work"')[1].split(":")[1].split(",")[0]) > 0, summary[:400])
+
 # ---- check prints the deck as understood
 c = fpmshell("check", os.path.join(DECKS, "tube_crush", "tube_crush.k"))
 out = c.stdout

@@ -27,7 +27,8 @@ std::string model_summary(const Model& model) {
     out += "\nelement sets";
     for (const auto& [name, elems] : model.element_sets)
         out += fmt::format(" {}({})", name, elems.size());
-    static const char* type_names[] = {"elastic", "j2_plastic", "johnson_cook", "tabulated"};
+    static const char* type_names[] = {"elastic", "j2_plastic", "johnson_cook", "tabulated",
+                                       "power_law"};
     for (const Material& mat : model.materials)
         out += fmt::format("\nmaterial {}: {}, density {:.6g}, E {:.6g}, nu {:.6g}", mat.name,
                            type_names[static_cast<int>(mat.type)], mat.density, mat.youngs_modulus,

@@ -290,8 +290,8 @@ private:
                    "*RIGIDWALL_PLANAR_MOVING";
         if (starts_with(k, "MAT_"))
             return "this material is not supported; fpmshell reads *MAT_ELASTIC (001), "
-                   "*MAT_PLASTIC_KINEMATIC (003), *MAT_JOHNSON_COOK (015) and "
-                   "*MAT_PIECEWISE_LINEAR_PLASTICITY (024)";
+                   "*MAT_PLASTIC_KINEMATIC (003), *MAT_JOHNSON_COOK (015), "
+                   "*MAT_POWER_LAW_PLASTICITY (018) and *MAT_PIECEWISE_LINEAR_PLASTICITY (024)";
         if (starts_with(k, "ELEMENT_"))
             return "fpmshell models shells only (*ELEMENT_SHELL); this element kind would change "
                    "the model";
@@ -441,6 +441,7 @@ private:
             {"MAT_001", "MAT_ELASTIC"},
             {"MAT_003", "MAT_PLASTIC_KINEMATIC"},
             {"MAT_015", "MAT_JOHNSON_COOK"},
+            {"MAT_018", "MAT_POWER_LAW_PLASTICITY"},
             {"MAT_024", "MAT_PIECEWISE_LINEAR_PLASTICITY"}};
         std::string name = b.keyword;
         bool titled = false;
@@ -519,6 +520,27 @@ private:
             if (damage)
                 note(b, h.line(), "D1..D5: failure is not modelled (no element is deleted)");
             note(b, f.line(), "its *EOS is irrelevant: a shell is in plane stress");
+            m.at = {&b, f.line()};
+        } else if (name == "MAT_POWER_LAW_PLASTICITY") {
+            const Card f = required_card(b, first, "MID, RO, E, PR, K, N, SRC, SRP");
+            const Card g = card(b, first + 1);
+            mid = f.id(0, "MID");
+            m.plastic = true;
+            m.keys.push_back("type: power_law");
+            elastic(f, f.real(2, "E"), f.real(3, "PR"));
+            m.keys.push_back("k: " + num(f.real(4, "K")));
+            m.keys.push_back("n: " + num(f.real(5, "N")));
+            const Real src = f.real(6, "SRC"), srp = f.real(7, "SRP");
+            if (src > 0 || srp > 0)
+                m.keys.push_back("cowper_symonds: {D: " + num(src) + ", q: " + num(srp) + "}");
+            // LS-DYNA takes SIGY as the initial yield stress only above 0.02, else the strain
+            // at yield from the elastic line
+            const Real sigy = g.real(0, "SIGY");
+            if (sigy > 0.02) m.keys.push_back("yield_stress: " + num(sigy));
+            if (g.real(1, "VP") != 0)
+                note(b, g.line(), "VP = 1 read as the scaled yield stress (VP = 0)");
+            if (g.real(2, "EPSF") != 0)
+                note(b, g.line(), "EPSF: failure is not modelled (no element is deleted)");
             m.at = {&b, f.line()};
         } else if (name == "MAT_PIECEWISE_LINEAR_PLASTICITY") {
             const Card f = required_card(b, first, "MID, RO, E, PR, SIGY, ETAN, FAIL, TDEL");

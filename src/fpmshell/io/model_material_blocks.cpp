@@ -2,6 +2,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cmath>
 #include <string>
 #include <utility>
 #include <vector>
@@ -107,6 +108,30 @@ void read_flow_curves(const YamlValue& v, Material& mat) {
     }
 }
 
+/// power_law (eq. 7.2-6): sigma = k (eps_0 + eps_p)^n; eps_0 from the yield stress,
+/// (sigma_y / k)^(1/n), or without it where the elastic line E eps meets k eps^n (n < 1), as
+/// LS-DYNA's *MAT_POWER_LAW_PLASTICITY.
+void read_power_law(const YamlMap& m, Material& mat) {
+    mat.power_k = m.at("k", "the strength coefficient k, a number > 0").positive();
+    const YamlValue n = m.at("n", "the hardening exponent n, a number > 0");
+    mat.power_n = n.positive();
+    if (const auto sy = m.find("yield_stress")) {
+        mat.yield_stress = sy->positive();
+        mat.power_strain_offset = std::pow(mat.yield_stress / mat.power_k, 1.0 / mat.power_n);
+    } else {
+        if (!(mat.power_n < 1))
+            n.fail(
+                "must be below 1 without a yield_stress (the elastic line E eps meets k eps^n "
+                "only then); give yield_stress, got " +
+                n.describe());
+        mat.power_strain_offset =
+            std::pow(mat.power_k / mat.youngs_modulus, 1.0 / (1.0 - mat.power_n));
+        mat.yield_stress = mat.youngs_modulus * mat.power_strain_offset;
+    }
+    if (!(mat.power_strain_offset > 0 && std::isfinite(mat.power_strain_offset)))
+        m.at("k", "").fail("gives no finite elastic strain at yield with this n and yield stress");
+}
+
 }  // namespace
 
 void read_materials(const YamlValue& v, Model& model) {
@@ -123,24 +148,27 @@ void read_materials(const YamlValue& v, Model& model) {
                 def.describe());
         const YamlMap any = def.open_map("material constants");
         const YamlValue type = any.at("type", "elastic");
-        const std::string t = type.choice({"elastic", "j2_plastic", "johnson_cook", "tabulated"});
+        const std::string t =
+            type.choice({"elastic", "j2_plastic", "johnson_cook", "tabulated", "power_law"});
         std::vector<std::string> keys{"type", "density", "youngs_modulus", "poisson_ratio"};
         if (t == "elastic") {
             for (const auto& [key, value] : any.entries())
                 for (const char* plastic :
                      {"yield_stress", "tangent_modulus", "hardening_mix", "cowper_symonds", "A",
                       "B", "n", "C", "reference_strain_rate", "m", "room_temperature",
-                      "melt_temperature", "flow_curve", "flow_curves"})
+                      "melt_temperature", "flow_curve", "flow_curves", "k"})
                     if (key == plastic)
                         value.fail(
-                            "belongs to plastic materials (type: j2_plastic, johnson_cook or "
-                            "tabulated); remove it or change the type");
+                            "belongs to plastic materials (type: j2_plastic, johnson_cook, "
+                            "tabulated or power_law); remove it or change the type");
         } else if (t == "j2_plastic") {
             keys.insert(keys.end(),
                         {"yield_stress", "tangent_modulus", "hardening_mix", "cowper_symonds"});
         } else if (t == "tabulated") {
             keys.insert(keys.end(),
                         {"flow_curve", "flow_curves", "hardening_mix", "cowper_symonds"});
+        } else if (t == "power_law") {
+            keys.insert(keys.end(), {"k", "n", "yield_stress", "hardening_mix", "cowper_symonds"});
         } else {
             for (const char* thermal : {"m", "room_temperature", "melt_temperature"})
                 if (const auto th = any.find(thermal))
@@ -156,6 +184,7 @@ void read_materials(const YamlValue& v, Model& model) {
         mat.type = t == "elastic"      ? MaterialType::Elastic
                    : t == "j2_plastic" ? MaterialType::J2Plastic
                    : t == "tabulated"  ? MaterialType::Tabulated
+                   : t == "power_law"  ? MaterialType::PowerLaw
                                        : MaterialType::JohnsonCook;
         mat.density = m.at("density", "a number > 0").positive();
         mat.youngs_modulus = m.at("youngs_modulus", "a number > 0").positive();
@@ -207,7 +236,9 @@ void read_materials(const YamlValue& v, Model& model) {
                          "a list of [plastic strain, flow stress] pairs (or flow_curves)")));
             }
         }
-        if (mat.type == MaterialType::J2Plastic || mat.type == MaterialType::Tabulated) {
+        if (mat.type == MaterialType::PowerLaw) read_power_law(m, mat);
+        if (mat.type == MaterialType::J2Plastic || mat.type == MaterialType::Tabulated ||
+            mat.type == MaterialType::PowerLaw) {
             if (const auto cs = m.find("cowper_symonds")) {
                 const YamlMap c = cs->map({"D", "q"});
                 mat.cowper_symonds = true;

@@ -16,13 +16,16 @@
 namespace fpmshell {
 
 struct FlowStress {
-    enum class Kind { Linear, JohnsonCook, Tabulated };
+    enum class Kind { Linear, JohnsonCook, Tabulated, PowerLaw };
     /// Johnson-Cook with n < 1: below this plastic strain the slope is taken at it.
     static constexpr Real k_slope_floor = 1e-6;
     Kind kind = Kind::Linear;
     Real yield_stress = 0;  ///< linear: sigma_y0
     Real hardening = 0;  ///< linear: plastic modulus H = E E_t / (E - E_t); 0 = perfectly plastic
     Real a = 0, b = 0, n = 1;  ///< Johnson-Cook A + B alpha^n
+    /// power law (LS-DYNA *MAT_018): b (strain_offset + alpha)^n, the offset the elastic strain
+    /// at yield (theory.md eq. 7.2-6)
+    Real strain_offset = 0;
     /// Tabulated (theory.md §7.2, eqs. 7.2-4, 7.2-5): sigma_f(alpha) is the first (lowest-rate)
     /// curve of the table; a rate-dependent table's other curves come in through the point's
     /// position among the rates (RateFactor::Kind::Table).
@@ -43,6 +46,7 @@ struct FlowStress {
     [[nodiscard]] Real value(Real alpha) const {
         if (kind == Kind::Linear) return yield_stress + hardening * alpha;
         if (kind == Kind::Tabulated) return table.at(alpha, 0.0).value;
+        if (kind == Kind::PowerLaw) return b * std::pow(strain_offset + alpha, n);
         return a + (alpha > 0 ? b * std::pow(alpha, n) : 0.0);
     }
     /// d sigma_f / d alpha; for Johnson-Cook with n < 1 the slope is infinite at alpha = 0:
@@ -51,6 +55,7 @@ struct FlowStress {
     [[nodiscard]] Real slope(Real alpha) const {
         if (kind == Kind::Linear) return hardening;
         if (kind == Kind::Tabulated) return table.at(alpha, 0.0).slope;
+        if (kind == Kind::PowerLaw) return b * n * std::pow(strain_offset + alpha, n - 1.0);
         const Real at = std::max(alpha, k_slope_floor);
         return b * n * std::pow(at, n - 1.0);
     }
@@ -64,6 +69,10 @@ struct FlowStress {
         if (kind == Kind::Tabulated) {
             const FlowValue<Real> v = table.at(alpha, 0.0);
             return {v.value, v.slope};
+        }
+        if (kind == Kind::PowerLaw) {
+            const Real e = strain_offset + alpha, p = std::pow(e, n - 1.0);
+            return {b * e * p, b * n * p};
         }
         if (!(alpha >= k_slope_floor)) return {value(alpha), slope(alpha)};
         const Real p = std::pow(alpha, n - 1.0);  // alpha^n = alpha alpha^(n-1)

@@ -207,6 +207,16 @@ template <class T, std::size_t K>
             return DgammaIteration<T, decltype(linear)>(c, tr[k].t, tr[k].slope_n, tr[k].yielding,
                                                         linear);
         });
+    } else if (fl.kind == FlowStress::Kind::PowerLaw) {  // a finite slope everywhere
+        auto power = [&fl](const T& alpha) {
+            const T e = fl.strain_offset + alpha;
+            const T p = vector_pow(e, T(fl.n - 1.0));  // e^n = e e^(n-1)
+            return FlowValue<T>{fl.b * e * p, fl.b * fl.n * p};
+        };
+        solve([&](std::size_t k) {
+            return DgammaIteration<T, decltype(power)>(c, tr[k].t, tr[k].slope_n, tr[k].yielding,
+                                                       power);
+        });
     } else if (fl.kind == FlowStress::Kind::Tabulated) {
         solve([&](std::size_t k) {  // the curve of the point's rate (the first without a table)
             return DgammaIteration<T, TableCurveAt<T>>(

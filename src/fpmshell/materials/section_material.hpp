@@ -1,5 +1,6 @@
 // The material model of a section, built from the model's material constants: elastic, or
-// J2 plastic with a bilinear, Johnson-Cook or tabulated flow curve and an optional rate factor.
+// J2 plastic with a bilinear, Johnson-Cook, power-law or tabulated flow curve and an optional
+// rate factor.
 #pragma once
 
 #include <utility>
@@ -28,6 +29,11 @@ using SectionMaterial = std::variant<LinearElastic, J2Plastic>;
             rate.c = m.jc_c;
             rate.reference_rate = m.reference_strain_rate;
         }
+    } else if (m.type == MaterialType::PowerLaw) {
+        flow.kind = FlowStress::Kind::PowerLaw;
+        flow.b = m.power_k;
+        flow.n = m.power_n;
+        flow.strain_offset = m.power_strain_offset;
     } else if (m.type == MaterialType::Tabulated) {
         std::vector<PiecewiseLinearCurve> curves;
         std::vector<Real> rates;

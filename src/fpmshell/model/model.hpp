@@ -29,7 +29,7 @@ struct Curve {
 /// Integral of that factor from 0 to t (t for curve -1).
 [[nodiscard]] Real curve_factor_integral(const std::vector<Curve>& curves, Index curve, Real t);
 
-enum class MaterialType { Elastic, J2Plastic, JohnsonCook, Tabulated };
+enum class MaterialType { Elastic, J2Plastic, JohnsonCook, Tabulated, PowerLaw };
 
 /// A tabulated flow curve: the flow stress at increasing plastic strains from 0, not
 /// decreasing, at one strain rate.
@@ -52,7 +52,9 @@ struct Material {
     Real hardening_mix = 1;  ///< beta: 1 isotropic, 0 kinematic
     Real jc_a = 0, jc_b = 0, jc_n = 1, jc_c = 0;  ///< johnson_cook A, B, n, C
     Real reference_strain_rate = 1;               ///< johnson_cook eps_dot_0
-    bool cowper_symonds = false;  ///< j2_plastic, tabulated: Cowper-Symonds rate factor on
+    /// power_law: sigma = k (eps_0 + eps_p)^n, eps_0 the elastic strain at yield (eq. 7.2-6)
+    Real power_k = 0, power_n = 1, power_strain_offset = 0;
+    bool cowper_symonds = false;  ///< j2_plastic, tabulated, power_law: Cowper-Symonds factor on
     Real cs_d = 0, cs_q = 1;      ///< its D and q
     /// tabulated: one flow curve, or one per strain rate (rates increasing)
     std::vector<FlowCurvePoints> flow_curves{};

@@ -5,6 +5,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -474,6 +475,32 @@ TEST(ModelReader, ReadsPrescribedComponents) {
                  "non-empty list");
     expect_error(replaced(yaml, "velocity: [1, 0, 0]", "angular_velocity: [1, 0, 0]"), 10,
                  "boundary.0.prescribe.components", "about all three axes");
+}
+
+// power_law (eq. 7.2-6): eps_0 from yield_stress, or where the elastic line meets k eps^n.
+TEST(ModelReader, ReadsPowerLawMaterials) {
+    const std::string elastic =
+        "steel: {type: elastic, density: 7.8e-9, youngs_modulus: 210000, poisson_ratio: 0.3}";
+    const std::string power =
+        "steel: {type: power_law, density: 7.8e-9, youngs_modulus: 210000, poisson_ratio: 0.3, "
+        "k: 900, n: 0.25}";
+    const TempDir dir;
+    const Model m = read_model(dir.write("model.yaml", replaced(k_base, elastic, power)));
+    const Material& mat = m.materials[0];
+    EXPECT_EQ(mat.type, MaterialType::PowerLaw);
+    const Real eps0 = std::pow(900.0 / 210000.0, 1.0 / 0.75);  // E eps = k eps^n
+    EXPECT_NEAR(mat.power_strain_offset, eps0, 1e-15);
+    EXPECT_NEAR(mat.yield_stress, 210000.0 * eps0, 1e-9);
+    const Model y = read_model(dir.write(
+        "model.yaml",
+        replaced(k_base, elastic, replaced(power, "n: 0.25", "n: 0.25, yield_stress: 300"))));
+    EXPECT_NEAR(y.materials[0].power_strain_offset, std::pow(300.0 / 900.0, 4.0), 1e-15);
+    expect_error(replaced(k_base, elastic, replaced(power, "n: 0.25", "n: 1.5")), 4,
+                 "materials.steel.n", "must be below 1 without a yield_stress");
+    expect_error(replaced(k_base, elastic, replaced(power, "k: 900", "k: -1")), 4,
+                 "materials.steel.k", "greater than 0");
+    expect_error(replaced(k_base, elastic, replaced(elastic, "}", ", k: 900}")), 4,
+                 "materials.steel.k", "belongs to plastic materials");
 }
 
 // contact.elements of a self-contact: one set, or a list of sets (their union).

@@ -345,6 +345,52 @@ TEST(J2Plastic, TabulatedFlowCurveOnMonotonicPath) {
     EXPECT_EQ(f.slope(0.0), 40.0 / 0.002);
 }
 
+// A power law (eq. 7.2-6) on the equibiaxial path: sigma = k (eps_0 + alpha)^n, and with n = 1
+// it is the bilinear curve of yield stress k eps_0 and plastic modulus k, state for state
+// along a random non-proportional path with unloading.
+TEST(J2Plastic, PowerLawOnMonotonicPathAndAsBilinear) {
+    FlowStress f;
+    f.kind = FlowStress::Kind::PowerLaw;
+    f.b = 600.0;
+    f.n = 0.3;
+    f.strain_offset = std::pow(k_sy / f.b, 1.0 / f.n);
+    EXPECT_NEAR(f.value(0.0), k_sy, 1e-12 * k_sy);
+    const J2Plastic m(k_e, k_nu, f, RateFactor{}, 1.0);
+    for (Real alpha : {0.001, 0.05, 0.3}) {
+        const Real s = f.b * std::pow(f.strain_offset + alpha, f.n);
+        const Real eps = s * (1 - k_nu) / k_e + 0.5 * alpha;
+        for (int n : {1, 40}) {
+            const MaterialPoint p = apply(m, MaterialPoint{}, Voigt3(eps, eps, 0), n);
+            EXPECT_NEAR(p.plastic_strain, alpha, 1e-8 * (1 + alpha)) << "alpha " << alpha;
+            EXPECT_NEAR(p.stress(0), s, 1e-8 * s);
+            EXPECT_NEAR(p.flow_slope, f.slope(p.plastic_strain), 1e-12 * f.slope(0.0));
+        }
+    }
+    const Real h = 2000.0;
+    FlowStress line;
+    line.kind = FlowStress::Kind::PowerLaw;
+    line.b = h;
+    line.n = 1.0;
+    line.strain_offset = k_sy / h;
+    for (Real beta : {1.0, 0.5, 0.0}) {
+        const J2Plastic lin = bilinear(h, beta);
+        const J2Plastic pow(k_e, k_nu, line, RateFactor{}, beta);
+        std::mt19937 rng(5);
+        std::uniform_real_distribution<Real> u(-1.0, 1.0);
+        MaterialPoint a, b;
+        for (int i = 0; i < 200; ++i) {
+            const Voigt3 d(2e-3 * u(rng), 2e-3 * u(rng), 2e-3 * u(rng));
+            lin.update(a, d, 0.0, a);
+            pow.update(b, d, 0.0, b);
+            // the same curve through pow(x, 0) = 1: the iterates agree to the Newton
+            // tolerance, 1e-10 relative
+            for (Eigen::Index k = 0; k < 3; ++k) ASSERT_NEAR(a.stress(k), b.stress(k), 1e-8 * k_sy);
+            ASSERT_NEAR(a.plastic_strain, b.plastic_strain, 1e-10 + 1e-8 * a.plastic_strain);
+        }
+        EXPECT_GT(a.plastic_strain, 0.05) << "the path must go well past yield";
+    }
+}
+
 // A tabulated straight line is the bilinear curve: the same states along a random
 // non-proportional path with unloading, for isotropic, mixed and kinematic hardening.
 TEST(J2Plastic, TabulatedStraightLineIsTheBilinearMaterial) {

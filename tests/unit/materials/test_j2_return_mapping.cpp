@@ -12,6 +12,7 @@
 #include <array>
 #include <cmath>
 #include <random>
+#include <utility>
 
 #include "fpmshell/materials/j2_plastic.hpp"
 #include "fpmshell/materials/j2_return_mapping.hpp"
@@ -49,6 +50,21 @@ J2Plastic tabulated(Real beta) {
     const FlowStress f =
         FlowStress::tabulated({0.0, 0.004, 0.015, 0.03, 0.045, 0.07},
                               {k_sy, 1.2 * k_sy, 1.4 * k_sy, 1.5 * k_sy, 1.5 * k_sy, 1.55 * k_sy});
+    RateFactor rate;
+    rate.kind = RateFactor::Kind::CowperSymonds;
+    rate.d = 40.4;
+    rate.q = 5.0;
+    return J2Plastic(k_e, k_nu, f, rate, beta);
+}
+
+/// A power law (LS-DYNA *MAT_018, eq. 7.2-6) of exponent n from the yield stress k_sy, with a
+/// Cowper-Symonds factor.
+J2Plastic power_law(Real beta, Real n) {
+    FlowStress f;
+    f.kind = FlowStress::Kind::PowerLaw;
+    f.b = 900e6;
+    f.n = n;
+    f.strain_offset = std::pow(k_sy / f.b, 1.0 / n);
     RateFactor rate;
     rate.kind = RateFactor::Kind::CowperSymonds;
     rate.d = 40.4;
@@ -192,6 +208,14 @@ TEST(J2ReturnMapping, EveryLaneEqualsItsScalarReturnTabulatedWithRateFactors) {
         const int yielded =
             check_lanes_against_scalar(tabulated(beta).return_constants(), true, 400);
         EXPECT_GT(yielded, 400) << "beta " << beta;  // enough yielding lanes to mean something
+    }
+}
+
+TEST(J2ReturnMapping, EveryLaneEqualsItsScalarReturnPowerLawWithRateFactors) {
+    for (const auto& [beta, n] : {std::pair{1.0, 0.25}, std::pair{0.5, 0.5}, std::pair{1.0, 1.3}}) {
+        const int yielded =
+            check_lanes_against_scalar(power_law(beta, n).return_constants(), true, 200);
+        EXPECT_GT(yielded, 200) << "beta " << beta << ", n " << n;
     }
 }
 
