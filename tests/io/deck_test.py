@@ -163,6 +163,41 @@ if r_deck.returncode == 0 and r_twin.returncode == 0:
     check("power law: the strip yields", '"plastic_work"' in summary and
           float(summary.split('"plastic_work"')[1].split(":")[1].split(",")[0]) > 0, summary[:400])
 
+# ---- geometric rigid walls: plate_drop.k on a fixed sphere and on a finite flat face, against
+# its twin with the same body written in YAML
+DROP = os.path.join(DECKS, "plate_drop")
+drop_deck, drop_twin = read(os.path.join(DROP, "plate_drop.k")), read(os.path.join(DROP, "plate_drop.yaml"))
+planar = drop_deck[drop_deck.index("*RIGIDWALL_PLANAR_ID"):drop_deck.index("*CONTROL_TERMINATION")]
+twin_body = "  - {name: floor, point: [0, 0, 0], normal: [0, 0, 1], fixed: true}\n"
+WALLS = {  # name: (deck card, twin body)
+    "sphere": ("*RIGIDWALL_GEOMETRIC_SPHERE_ID\n         1ball\n         0\n"
+               "      0.05      0.05      -0.1       0.0       0.0       0.0\n       0.1\n",
+               "  - {name: floor, shape: sphere, point: [0.05, 0.05, -0.1], radius: 0.1, fixed: true}\n"),
+    "flat": ("*RIGIDWALL_GEOMETRIC_FLAT_DISPLAY\n         0\n"
+             "       0.0       0.0       0.0       0.0       0.0       1.0\n"
+             "       1.0       0.0       0.0      0.05       1.0\n         5\n",
+             "  - {name: floor, point: [0, 0, 0], normal: [0, 0, 1], edge: [1, 0, 0],\n"
+             "     size: [0.05, 1], fixed: true}\n"),
+}
+for name, (card, body) in WALLS.items():
+    folder = os.path.join(WORK, "walls", name)
+    os.makedirs(folder, exist_ok=True)
+    shutil.copy(os.path.join(DROP, "plate_drop_mesh.k"), folder)
+    assert planar in drop_deck and twin_body in drop_twin
+    with open(os.path.join(folder, "drop.k"), "w") as f:
+        f.write(drop_deck.replace(planar, card))
+    with open(os.path.join(folder, "drop.yaml"), "w") as f:
+        f.write(drop_twin.replace(twin_body, body))
+    r_deck, h_deck = run(os.path.join(folder, "drop.k"), os.path.join(folder, "deck"))
+    r_twin, h_twin = run(os.path.join(folder, "drop.yaml"), os.path.join(folder, "twin"))
+    check(f"{name} wall: deck and twin run", r_deck.returncode == 0 and r_twin.returncode == 0,
+          r_deck.stderr + r_twin.stderr)
+    if r_deck.returncode or r_twin.returncode:
+        continue
+    check(f"{name} wall: the same history.csv", read(h_deck) == read(h_twin), "the files differ")
+    forces = [float(line.split(",")[-1]) for line in read(h_deck).splitlines()[1:]]
+    check(f"{name} wall: the plate hits it", min(forces) < 0, f"smallest force {min(forces)}")
+
 # ---- check prints the deck as understood
 c = fpmshell("check", os.path.join(DECKS, "tube_crush", "tube_crush.k"))
 out = c.stdout
@@ -223,7 +258,7 @@ REFUSED = {  # card: what its message must say
     "*CONTACT_TIED_SURFACE_TO_SURFACE\n         1         1\n": "fpmshell reads *CONTACT_AUTOMATIC_SINGLE_SURFACE",
     "*MAT_HONEYCOMB\n         2\n": "this material is not supported",
     "*BOUNDARY_PRESCRIBED_MOTION_RIGID\n         1         3         0         1\n": "rigid parts are not supported",
-    "*RIGIDWALL_GEOMETRIC_CYLINDER\n         0\n": "not supported",
+    "*RIGIDWALL_GEOMETRIC_PRISM\n         0\n": "the option _PRISM is not supported",
     "*FREQUENCY_DOMAIN_SSD\n         1\n": "could change the model",
 }
 for k, (card, words) in enumerate(REFUSED.items()):

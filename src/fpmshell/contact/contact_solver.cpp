@@ -9,6 +9,7 @@
 #include "fpmshell/contact/closest_point.hpp"
 #include "fpmshell/io/restart_archive.hpp"
 #include "fpmshell/model/node_thickness.hpp"
+#include "fpmshell/model/rigid_face.hpp"
 
 namespace fpmshell {
 namespace {
@@ -463,19 +464,22 @@ void ContactSolver::collect_rigid(const Definition& d, const std::vector<Vec3>& 
                                   std::vector<Constraint>& out) const {
     const auto b = static_cast<std::size_t>(d.def.body);
     const RigidBody& body = model_.rigid_bodies[b];
-    const Vec3 point = body.point + body_u[b];
     for (Index s : d.slaves) {
         const auto us = static_cast<std::size_t>(s);
         // Thickness offset h_s / 2 in every direction (theory.md §8.3): a particle touches the
         // face with a ball of its half thickness, so the contact point does not jump when the
         // shell turns (an offset that follows the orientation does work and creates energy).
         const Real offset = 0.5 * node_thickness_[us];
-        const Real gap = body.normal.dot(y[us] - point) - offset;
+        // a curved face is linearised at the point below the particle for this step
+        const RigidFacePoint face = rigid_face_point(body, y[us], body_u[b]);
+        if (!face.faces) continue;
+        const Real gap = face.normal.dot(y[us] - (face.anchor + body_u[b])) - offset;
         if (!(gap < (lagrange ? activation_distance(offset, motion_) : 0.0))) continue;
         Constraint c;
         c.slave = s;
         c.body = d.def.body;
-        c.normal = body.normal;
+        c.normal = face.normal;
+        c.anchor = face.anchor;
         c.offset = offset;
         c.gap = gap;
         c.thickness = node_thickness_[us];
@@ -576,9 +580,7 @@ void ContactSolver::enforce(const std::vector<Vec3>& x, std::vector<Vec3>& x_pre
         if (c.element >= 0)
             for (std::size_t j = 0; j < 3; ++j)
                 r -= c.xi[j] * x[static_cast<std::size_t>(c.master[j])];
-        if (c.body >= 0)
-            r -= model_.rigid_bodies[static_cast<std::size_t>(c.body)].point +
-                 bodies[static_cast<std::size_t>(c.body)].u;
+        if (c.body >= 0) r -= c.anchor + bodies[static_cast<std::size_t>(c.body)].u;
         const Real inside = c.offset - c.normal.dot(r);
         if (inside > k_sweep_tolerance * c.offset) {
             c.allowance = inside;
@@ -602,10 +604,7 @@ void ContactSolver::enforce(const std::vector<Vec3>& x, std::vector<Vec3>& x_pre
         if (c.element >= 0)
             for (std::size_t k = 0; k < 3; ++k)
                 r -= c.xi[k] * x_pred[static_cast<std::size_t>(c.master[k])];
-        if (c.body >= 0) {
-            const auto b = static_cast<std::size_t>(c.body);
-            r -= model_.rigid_bodies[b].point + body_u_pred[b];
-        }
+        if (c.body >= 0) r -= c.anchor + body_u_pred[static_cast<std::size_t>(c.body)];
         return c.normal.dot(r) - c.offset + c.allowance;
     };
     // Projected Gauss-Seidel on lambda >= 0, g + W dlambda >= 0, complementarity (§8.3), per

@@ -123,6 +123,7 @@ private:
         std::array<Index, 3> master{-1, -1, -1};
         std::array<Real, 3> xi{};
         Vec3 normal = Vec3::Zero();
+        Vec3 anchor = Vec3::Zero();  ///< rigid body: its face point below the slave at t = 0
         Real offset = 0;
         Real gap = 0;     ///< at the positions it was built on
         Real weight = 0;  ///< W = sum beta (n.M^-1 n) of its particles and body

@@ -45,12 +45,26 @@ std::string model_summary(const Model& model) {
     out += fmt::format("\nconditions {} boundary, {} loads, {} initial velocities, {} curves",
                        model.boundary.size(), model.loads.size(), model.initial_conditions.size(),
                        model.curves.size());
-    for (const RigidBody& b : model.rigid_bodies)
-        out += fmt::format(
-            "\nrigid body {}: plane through ({:.6g}, {:.6g}, {:.6g}), normal ({:.4g}, {:.4g}, "
-            "{:.4g}), {}",
-            b.name, b.point.x(), b.point.y(), b.point.z(), b.normal.x(), b.normal.y(), b.normal.z(),
-            b.fixed ? std::string("fixed") : fmt::format("mass {:.6g}", b.mass));
+    for (const RigidBody& b : model.rigid_bodies) {
+        const std::string at =
+            fmt::format("({:.6g}, {:.6g}, {:.6g})", b.point.x(), b.point.y(), b.point.z());
+        std::string shape;
+        if (b.shape == RigidShape::Plane)
+            shape = fmt::format("plane through {}, normal ({:.4g}, {:.4g}, {:.4g}){}", at,
+                                b.normal.x(), b.normal.y(), b.normal.z(),
+                                b.size_l > 0 ? fmt::format(", {:.6g} x {:.6g}", b.size_l, b.size_m)
+                                             : std::string());
+        else if (b.shape == RigidShape::Sphere)
+            shape = fmt::format("sphere of radius {:.6g} about {}", b.radius, at);
+        else
+            shape = fmt::format(
+                "cylinder of radius {:.6g} on the axis ({:.4g}, {:.4g}, {:.4g}) "
+                "from {}, {}",
+                b.radius, b.axis.x(), b.axis.y(), b.axis.z(), at,
+                b.length > 0 ? fmt::format("length {:.6g}", b.length) : std::string("infinite"));
+        out += fmt::format("\nrigid body {}: {}, {}", b.name, shape,
+                           b.fixed ? std::string("fixed") : fmt::format("mass {:.6g}", b.mass));
+    }
     for (const ContactDefinition& c : model.contacts)
         out += c.type == ContactType::Self
                    ? fmt::format(

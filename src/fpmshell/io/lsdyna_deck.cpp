@@ -182,6 +182,8 @@ struct WallDef {
     std::array<Real, 3> point{}, normal{};  ///< the tail and head - tail of the wall's normal
     Real mass = 0, speed = 0;               ///< moving walls: mass and the speed along the normal
     bool moving = false;
+    /// the shape's keys of the model (model-format.md rigid_bodies): "shape: plane, point: ..."
+    std::string geometry;
 };
 
 /// One line of the model file and the card it comes from.
@@ -255,6 +257,8 @@ private:
             load(b);
         } else if (starts_with(k, "RIGIDWALL_PLANAR")) {
             rigid_wall(b);
+        } else if (starts_with(k, "RIGIDWALL_GEOMETRIC")) {
+            geometric_wall(b);
         } else if (starts_with(k, "CONTACT_AUTOMATIC_SINGLE_SURFACE") ||
                    starts_with(k, "CONTACT_AUTOMATIC_SURFACE_TO_SURFACE") ||
                    starts_with(k, "CONTACT_AUTOMATIC_NODES_TO_SURFACE")) {
@@ -984,11 +988,88 @@ private:
             w.speed = m.real(1, "V0");
             if (!(w.mass > 0)) m.fail("MASS must be > 0");
         }
+        w.geometry = "shape: plane, point: " + vec(w.point[0], w.point[1], w.point[2]) +
+                     ", normal: " + unit_text(w.normal);
         w.at = {&b, g.line()};
+        add_wall(w, f);
+    }
+
+    void add_wall(const WallDef& w, const Card& f) {
         for (const WallDef& other : walls_)
             if (other.id == w.id)
                 f.fail("rigid wall " + std::to_string(w.id) + " is defined twice");
         walls_.push_back(w);
+    }
+
+    static std::array<Real, 3> unit(const std::array<Real, 3>& v) {
+        const Real len = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+        return {v[0] / len, v[1] / len, v[2] / len};
+    }
+    static std::string unit_text(const std::array<Real, 3>& v) {
+        const std::array<Real, 3> n = unit(v);
+        return vec(n[0], n[1], n[2]);
+    }
+
+    /// *RIGIDWALL_GEOMETRIC_FLAT (a rectangle), _CYLINDER, _SPHERE: a fixed rigid body of that
+    /// shape (model/rigid_face.hpp) the nodes stay outside of; _ID and _DISPLAY (its card
+    /// skipped) read, _MOTION refused.
+    void geometric_wall(const DeckBlock& b) {
+        const std::set<std::string> opt = options_of(b.keyword, 2);
+        std::string shape;
+        for (const std::string& o : opt) {
+            if (o == "FLAT" || o == "CYLINDER" || o == "SPHERE")
+                shape = o;
+            else if (o != "ID" && o != "DISPLAY")
+                refuse(b, "*" + b.keyword + ": the option _" + o +
+                              " is not supported (fpmshell's geometric walls are fixed: _FLAT, "
+                              "_CYLINDER, _SPHERE with _ID, _DISPLAY)");
+        }
+        if (shape.empty())
+            refuse(b, "fpmshell reads *RIGIDWALL_GEOMETRIC_FLAT, _CYLINDER and _SPHERE");
+        std::size_t c = 0;
+        WallDef w;
+        w.id = static_cast<long long>(walls_.size()) + 1;
+        if (opt.count("ID")) w.id = required_card(b, c++, "RWID, HEADING").id(0, "RWID");
+        const Card f = required_card(b, c++, "NSID, NSIDEX, BOXID, BIRTH, DEATH");
+        const Card g = required_card(b, c++, "XT, YT, ZT, XH, YH, ZH");
+        const Card s = required_card(b, c++, "the shape's card");
+        const long long nsid = f.id(0, "NSID");
+        if (f.id(1, "NSIDEX") != 0 || f.id(2, "BOXID") != 0)
+            f.fail("NSIDEX and BOXID are not supported (0 only)");
+        if (f.real(3, "BIRTH") != 0 || (f.real(4, "DEATH") != 0 && f.real(4, "DEATH") < 1e20))
+            f.fail("BIRTH and DEATH are not supported (the wall acts from start to end)");
+        w.nodes = nsid == 0 ? "" : set_name(f, "node", nsid);
+        std::array<Real, 3> tail{}, dir{};
+        for (std::size_t k = 0; k < 3; ++k) {
+            tail[k] = g.real(k, "XT, YT, ZT");
+            dir[k] = g.real(3 + k, "XH, YH, ZH") - tail[k];
+        }
+        const bool has_dir = dir[0] != 0 || dir[1] != 0 || dir[2] != 0;
+        const std::string point = vec(tail[0], tail[1], tail[2]);
+        if (shape == "SPHERE") {
+            w.geometry = "shape: sphere, point: " + point + ", radius: " + num(s.real(0, "RADSPH"));
+        } else if (!has_dir) {
+            g.fail("the head (XH, YH, ZH) must differ from the tail (XT, YT, ZT)");
+        } else if (shape == "CYLINDER") {
+            w.geometry = "shape: cylinder, point: " + point + ", axis: " + unit_text(dir) +
+                         ", radius: " + num(s.real(0, "RADCYL")) +
+                         ", length: " + num(s.real(1, "LENCYL"));
+        } else {
+            const Real l = s.real(3, "LENL"), m = s.real(4, "LENM");
+            w.geometry = "shape: plane, point: " + point + ", normal: " + unit_text(dir);
+            if (l > 0 || m > 0)
+                w.geometry +=
+                    ", edge: " + vec(s.real(0, "XHEV"), s.real(1, "YHEV"), s.real(2, "ZHEV")) +
+                    ", size: [" + num(l) + ", " + num(m) + "]";
+        }
+        w.at = {&b, g.line()};
+        add_wall(w, f);
+        note(b, g.line(),
+             "a fixed rigid " +
+                 std::string(shape == "FLAT"     ? "rectangle"
+                             : shape == "SPHERE" ? "sphere"
+                                                 : "cylinder") +
+                 " the nodes stay outside of (frictionless, Lagrange multipliers)");
     }
 
     /// *CONTACT_AUTOMATIC_SINGLE_SURFACE: self-contact over its side; _SURFACE_TO_SURFACE and
@@ -1309,16 +1390,12 @@ private:
         if (walls_.empty()) return;
         add(out, "rigid_bodies:", walls_.front().at);
         for (const WallDef& w : walls_) {
-            const Real len = std::sqrt(w.normal[0] * w.normal[0] + w.normal[1] * w.normal[1] +
-                                       w.normal[2] * w.normal[2]);
-            const std::array<Real, 3> n{w.normal[0] / len, w.normal[1] / len, w.normal[2] / len};
-            std::string s = "  - {name: rigidwall" + std::to_string(w.id) +
-                            ", shape: plane, point: " + vec(w.point[0], w.point[1], w.point[2]) +
-                            ", normal: " + vec(n[0], n[1], n[2]);
-            if (w.moving)
+            std::string s = "  - {name: rigidwall" + std::to_string(w.id) + ", " + w.geometry;
+            if (w.moving) {
+                const std::array<Real, 3> n = unit(w.normal);
                 s += ", mass: " + num(w.mass) +
                      ", velocity: " + vec(w.speed * n[0], w.speed * n[1], w.speed * n[2]);
-            else
+            } else
                 s += ", fixed: true";
             add(out, s + "}", w.at);
         }

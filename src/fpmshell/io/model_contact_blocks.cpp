@@ -6,6 +6,7 @@
 #include "fpmshell/io/model_blocks.hpp"
 #include "fpmshell/io/model_names.hpp"
 #include "fpmshell/model/node_thickness.hpp"
+#include "fpmshell/model/rigid_face.hpp"
 
 namespace fpmshell {
 namespace {
@@ -38,10 +39,62 @@ void read_contact_method(const YamlMap& m, ContactDefinition& c) {
 
 }  // namespace
 
+namespace {
+
+/// A unit vector from a non-zero one.
+Vec3 unit_vector(const YamlValue& v, const char* what) {
+    Vec3 u = v.vec3();
+    if (!(u.norm() > 0)) v.fail(std::string("the ") + what + " must not be the zero vector");
+    return u.normalized();
+}
+
+/// The geometry keys of each shape (model/rigid_face.hpp); a key of another shape is an error.
+void read_shape(const YamlMap& m, const std::string& shape, RigidBody& b) {
+    const std::vector<std::string> own =
+        shape == "plane"    ? std::vector<std::string>{"normal", "edge", "size"}
+        : shape == "sphere" ? std::vector<std::string>{"radius"}
+                            : std::vector<std::string>{"radius", "axis", "length"};
+    for (const char* key : {"normal", "edge", "size", "radius", "axis", "length"})
+        if (const auto v = m.find(key); v && std::find(own.begin(), own.end(), key) == own.end())
+            v->fail("is not a key of a " + shape + " (" + join_names(own) + ")");
+    if (shape == "plane") {
+        b.shape = RigidShape::Plane;
+        b.point = m.at("point", "a point [x, y, z] of the plane face").vec3();
+        b.normal = unit_vector(
+            m.at("normal", "the face normal [nx, ny, nz], pointing towards the shell"), "normal");
+        if (m.find("edge") || m.find("size")) {  // a rectangle from `point`
+            const YamlValue edge = m.at("edge", "the direction [x, y, z] of the face's first side");
+            const Vec3 e = edge.vec3() - edge.vec3().dot(b.normal) * b.normal;
+            if (!(e.norm() > 1e-9 * edge.vec3().norm()))
+                edge.fail("must not be along the normal: it is a direction in the face");
+            b.edge = e.normalized();
+            const auto size =
+                m.at("size", "the sides [l, m] of the face").list_of(2, "two sides", "[l, m]");
+            b.size_l = size[0].non_negative();  // 0: unbounded that way
+            b.size_m = size[1].non_negative();
+            if (!(b.size_l > 0 || b.size_m > 0))
+                m.at("size", "").fail("give at least one side > 0 (0: unbounded that way)");
+        }
+    } else if (shape == "sphere") {
+        b.shape = RigidShape::Sphere;
+        b.point = m.at("point", "the centre [x, y, z] of the sphere").vec3();
+        b.radius = m.at("radius", "the radius, a number > 0").positive();
+    } else {
+        b.shape = RigidShape::Cylinder;
+        b.point =
+            m.at("point", "a point [x, y, z] of the axis (an end of a finite cylinder)").vec3();
+        b.axis = unit_vector(m.at("axis", "the axis direction [x, y, z]"), "axis");
+        b.radius = m.at("radius", "the radius, a number > 0").positive();
+        b.length = m.non_negative_or("length", 0.0);
+    }
+}
+
+}  // namespace
+
 void read_rigid_bodies(const YamlValue& v, Model& model) {
     for (const YamlValue& item : v.list("rigid bodies")) {
-        const YamlMap m =
-            item.map({"name", "mass", "shape", "point", "normal", "velocity", "fixed"});
+        const YamlMap m = item.map({"name", "mass", "shape", "point", "normal", "velocity", "fixed",
+                                    "radius", "axis", "length", "edge", "size"});
         RigidBody b;
         const YamlValue name = m.at("name", "a name for the body, used in contact and histories");
         b.name = name.name();
@@ -50,7 +103,7 @@ void read_rigid_bodies(const YamlValue& v, Model& model) {
                       name.describe());
         for (const RigidBody& other : model.rigid_bodies)
             if (other.name == b.name) name.fail("the rigid body '" + b.name + "' is defined twice");
-        (void)m.choice_or("shape", {"plane"}, "plane");
+        const std::string shape = m.choice_or("shape", {"plane", "sphere", "cylinder"}, "plane");
         b.fixed = m.choice_or("fixed", {"true", "false"}, "false") == "true";
         if (b.fixed) {
             if (const auto mass = m.find("mass"))
@@ -59,12 +112,7 @@ void read_rigid_bodies(const YamlValue& v, Model& model) {
             b.mass =
                 m.at("mass", "the mass of the body, a number > 0 (or `fixed: true`)").positive();
         }
-        b.point = m.at("point", "a point [x, y, z] of the plane face").vec3();
-        const YamlValue normal =
-            m.at("normal", "the face normal [nx, ny, nz], pointing towards the shell");
-        b.normal = normal.vec3();
-        if (!(b.normal.norm() > 0)) normal.fail("the normal must not be the zero vector");
-        b.normal.normalize();
+        read_shape(m, shape, b);
         if (const auto vel = m.find("velocity")) b.velocity = vel->vec3();
         model.rigid_bodies.push_back(b);
     }
@@ -112,7 +160,9 @@ void read_contact(const YamlValue& v, Model& model) {
             const std::vector<Real> h = node_thickness(model);
             for (const Index p : c.nodes) {
                 const auto up = static_cast<std::size_t>(p);
-                const Real behind = 0.5 * h[up] - rb.normal.dot(model.nodes[up] - rb.point);
+                const RigidFacePoint face = rigid_face_point(rb, model.nodes[up], Vec3::Zero());
+                if (!face.faces) continue;
+                const Real behind = 0.5 * h[up] - face.normal.dot(model.nodes[up] - face.anchor);
                 if (behind > 1e-9 * (1.0 + rb.point.norm()))
                     item.fail(
                         "particle " + std::to_string(p + 1) + " starts " + std::to_string(behind) +

@@ -152,13 +152,27 @@ struct Control {
 
 /// One entry of `rigid_bodies`: a rigid impactor with a plane face (theory.md §8.3). It moves
 /// by the contact forces it receives; a `fixed` body has infinite mass and keeps its velocity.
+enum class RigidShape { Plane, Sphere, Cylinder };
+
+/// A rigid body: a face the shell's particles stay outside of (theory.md §8.3), moving in
+/// translation. Its geometry at t = 0 (model/rigid_face.hpp).
 struct RigidBody {
     std::string name;
-    Real mass = 0;                 ///< 0 when fixed
-    bool fixed = false;            ///< infinite mass: moves at `velocity` whatever it meets
-    Vec3 point = Vec3::Zero();     ///< a point of the plane face at t = 0
-    Vec3 normal = Vec3::UnitZ();   ///< unit normal of the face, pointing towards the shell
+    Real mass = 0;       ///< 0 when fixed
+    bool fixed = false;  ///< infinite mass: moves at `velocity` whatever it meets
+    RigidShape shape = RigidShape::Plane;
+    /// plane: a point of the face (a corner of a finite one); sphere: the centre; cylinder: a
+    /// point of the axis (the end of a finite one)
+    Vec3 point = Vec3::Zero();
+    Vec3 normal = Vec3::UnitZ();   ///< plane: unit normal of the face, pointing towards the shell
     Vec3 velocity = Vec3::Zero();  ///< initial velocity
+    Real radius = 0;               ///< sphere, cylinder
+    Vec3 axis = Vec3::UnitZ();     ///< cylinder: unit axis, from `point`
+    Real length = 0;               ///< cylinder: length along the axis; 0 = infinite
+    /// plane: a finite face, `size_l` along the unit `edge` (in the face) from `point` and
+    /// `size_m` along normal x edge; 0 = infinite
+    Vec3 edge = Vec3::UnitX();
+    Real size_l = 0, size_m = 0;
 };
 
 enum class ContactType { Self, Rigid };

@@ -674,9 +674,18 @@ TEST(ModelReader, EveryErrorNamesFileLineAndKey) {
          10, "rigid_bodies.0.mass", "a fixed body has infinite mass"},
         {k_base + "rigid_bodies:\n  - {name: s, mass: 1, point: [0, 0, 1], normal: [0, 0, 0]}\n",
          10, "rigid_bodies.0.normal", "must not be the zero vector"},
-        {k_base + "rigid_bodies:\n  - {name: s, mass: 1, shape: sphere, point: [0, 0, 1], normal: "
+        {k_base + "rigid_bodies:\n  - {name: s, mass: 1, shape: cone, point: [0, 0, 1], normal: "
                   "[0, 0, 1]}\n",
          10, "rigid_bodies.0.shape", "expected one of plane"},
+        {k_base + "rigid_bodies:\n  - {name: s, mass: 1, shape: sphere, point: [0, 0, 1], normal: "
+                  "[0, 0, 1]}\n",
+         10, "rigid_bodies.0.normal", "is not a key of a sphere (radius)"},
+        {k_base + "rigid_bodies:\n  - {name: s, mass: 1, shape: cylinder, point: [0, 0, 1], axis: "
+                  "[0, 0, 0], radius: 1}\n",
+         10, "rigid_bodies.0.axis", "must not be the zero vector"},
+        {k_base + "rigid_bodies:\n  - {name: s, mass: 1, point: [0, 0, 1], normal: [0, 0, 1], "
+                  "edge: [0, 0, 2], size: [1, 1]}\n",
+         10, "rigid_bodies.0.edge", "must not be along the normal"},
         {k_base + "contact: [{type: rigid, body: ram}]\n", 9, "contact.0.body",
          "the model has no rigid_bodies"},
         {replaced(k_base, "  end_time: 1.0e-3\n",
