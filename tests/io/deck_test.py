@@ -178,9 +178,17 @@ WALLS = {  # name: (deck card, twin body)
              "       1.0       0.0       0.0      0.05       1.0\n         5\n",
              "  - {name: floor, point: [0, 0, 0], normal: [0, 0, 1], edge: [1, 0, 0],\n"
              "     size: [0.05, 1], fixed: true}\n"),
+    # a cylinder along y driven up at 3 m/s by a straight displacement curve
+    "moving cylinder": ("*RIGIDWALL_GEOMETRIC_CYLINDER_MOTION\n         0\n"
+                        "      0.05       0.0      -0.1      0.05       1.0      -0.1\n"
+                        "       0.1       0.0\n         7         1       0.0       0.0       2.0\n"
+                        "*DEFINE_CURVE\n         7\n                 0.0                 0.0\n"
+                        "                0.01                0.03\n",
+                        "  - {name: floor, shape: cylinder, point: [0.05, 0, -0.1], axis: [0, 1, 0],\n"
+                        "     radius: 0.1, fixed: true, velocity: [0, 0, 3]}\n"),
 }
 for name, (card, body) in WALLS.items():
-    folder = os.path.join(WORK, "walls", name)
+    folder = os.path.join(WORK, "walls", name.replace(" ", "_"))
     os.makedirs(folder, exist_ok=True)
     shutil.copy(os.path.join(DROP, "plate_drop_mesh.k"), folder)
     assert planar in drop_deck and twin_body in drop_twin
@@ -296,6 +304,10 @@ ERRORS = [  # (name, extra cards, other files, the line's start, words of the me
      None, "more.k:3: *CONTROL_TIMESTEP: TSSFAC 'zero' is not a finite number"),
     ("include cycle", "*INCLUDE\nloop.k\n", {"loop.k": "*INCLUDE\nloop.k\n"}, None, "includes itself"),
     ("missing include", "*INCLUDE\nabsent.k\n", None, "absent.k", "cannot open"),
+    ("wall motion", "*RIGIDWALL_GEOMETRIC_SPHERE_MOTION\n         0\n       0.0       0.0      -5.0\n"
+     "       1.0\n         3         0       0.0       0.0       1.0\n*DEFINE_CURVE\n         3\n"
+     "                 0.0                 0.0\n                 1.0                 2.0\n", None,
+     "         3         0       0.0", "is not a constant velocity"),
 ]
 for name, extra, files, start, words in ERRORS:
     path, r = deck_case(name.replace(" ", "_"), extra, files=files)

@@ -184,6 +184,11 @@ struct WallDef {
     bool moving = false;
     /// the shape's keys of the model (model-format.md rigid_bodies): "shape: plane, point: ..."
     std::string geometry;
+    /// a geometric wall's _MOTION: its curve (0: none), OPT (0 velocity, 1 displacement), the
+    /// direction cosines, and the card
+    long long motion_curve = 0, motion_opt = 0;
+    std::array<Real, 3> motion_dir{};
+    Origin motion_at;
 };
 
 /// One line of the model file and the card it comes from.
@@ -1019,10 +1024,10 @@ private:
         for (const std::string& o : opt) {
             if (o == "FLAT" || o == "CYLINDER" || o == "SPHERE")
                 shape = o;
-            else if (o != "ID" && o != "DISPLAY")
+            else if (o != "ID" && o != "DISPLAY" && o != "MOTION")
                 refuse(b, "*" + b.keyword + ": the option _" + o +
-                              " is not supported (fpmshell's geometric walls are fixed: _FLAT, "
-                              "_CYLINDER, _SPHERE with _ID, _DISPLAY)");
+                              " is not supported (fpmshell reads _FLAT, _CYLINDER, _SPHERE with "
+                              "_ID, _MOTION, _DISPLAY)");
         }
         if (shape.empty())
             refuse(b, "fpmshell reads *RIGIDWALL_GEOMETRIC_FLAT, _CYLINDER and _SPHERE");
@@ -1062,14 +1067,28 @@ private:
                     ", edge: " + vec(s.real(0, "XHEV"), s.real(1, "YHEV"), s.real(2, "ZHEV")) +
                     ", size: [" + num(l) + ", " + num(m) + "]";
         }
+        if (opt.count("MOTION")) {
+            const Card mo = required_card(b, c++, "LCID, OPT, VX, VY, VZ");
+            w.motion_curve = mo.id(0, "LCID");
+            w.motion_opt = mo.id(1, "OPT");
+            if (w.motion_curve == 0) mo.fail("LCID: the motion needs a curve");
+            if (w.motion_opt != 0 && w.motion_opt != 1)
+                mo.fail("OPT must be 0 (velocity) or 1 (displacement)");
+            for (std::size_t k = 0; k < 3; ++k) w.motion_dir[k] = mo.real(2 + k, "VX, VY, VZ");
+            if (w.motion_dir == std::array<Real, 3>{})
+                mo.fail("VX, VY, VZ: the direction must not be zero");
+            w.motion_dir = unit(w.motion_dir);
+            w.motion_at = {&b, mo.line()};
+        }
         w.at = {&b, g.line()};
         add_wall(w, f);
         note(b, g.line(),
-             "a fixed rigid " +
+             "a rigid " +
                  std::string(shape == "FLAT"     ? "rectangle"
                              : shape == "SPHERE" ? "sphere"
                                                  : "cylinder") +
-                 " the nodes stay outside of (frictionless, Lagrange multipliers)");
+                 " of infinite mass the nodes stay outside of (frictionless, Lagrange "
+                 "multipliers)");
     }
 
     /// *CONTACT_AUTOMATIC_SINGLE_SURFACE: self-contact over its side; _SURFACE_TO_SURFACE and
@@ -1395,8 +1414,10 @@ private:
                 const std::array<Real, 3> n = unit(w.normal);
                 s += ", mass: " + num(w.mass) +
                      ", velocity: " + vec(w.speed * n[0], w.speed * n[1], w.speed * n[2]);
-            } else
+            } else {
                 s += ", fixed: true";
+                if (w.motion_curve != 0) s += ", velocity: " + wall_velocity(w);
+            }
             add(out, s + "}", w.at);
         }
         std::vector<Line> contacts;
@@ -1405,6 +1426,39 @@ private:
                                     (w.nodes.empty() ? "" : ", nodes: " + yaml_name(w.nodes)) + "}",
                                 w.at});
         contact_.insert(contact_.begin(), contacts.begin(), contacts.end());
+    }
+
+    /// The constant velocity of a geometric wall's _MOTION: a flat velocity curve (OPT 0) or a
+    /// straight displacement curve from 0 at t = 0 (OPT 1), along the direction; fpmshell's
+    /// fixed bodies move at a constant velocity, so any other curve is refused.
+    std::string wall_velocity(const WallDef& w) {
+        const DeckBlock& b = *w.motion_at.block;
+        const auto c = curves_.find(w.motion_curve);
+        if (c == curves_.end())
+            deck_fail(b, w.motion_at.line,
+                      "LCID " + std::to_string(w.motion_curve) + ": no *DEFINE_CURVE defines it");
+        const std::vector<Point2>& p = c->second.points;
+        Real speed = p.front().y;
+        bool constant = true;
+        if (w.motion_opt == 1) {
+            speed = p.size() > 1 ? (p.back().y - p.front().y) / (p.back().x - p.front().x) : 0.0;
+            constant = p.size() > 1 && std::isfinite(speed);
+            for (const Point2& q : p)  // on the line through the origin of slope `speed`
+                constant = constant && std::abs(q.y - speed * q.x) <=
+                                           1e-9 * (std::abs(speed * q.x) + std::abs(q.y) + 1e-300);
+        } else {
+            for (const Point2& q : p) constant = constant && q.y == speed;
+        }
+        if (!constant)
+            deck_fail(b, w.motion_at.line,
+                      "the motion of curve " + std::to_string(w.motion_curve) +
+                          " is not a constant velocity (a flat velocity curve, or a straight "
+                          "displacement curve from 0 at t = 0), which is what a geometric wall "
+                          "of fpmshell can do");
+        note(b, w.motion_at.line,
+             "_MOTION: the wall moves at " + num(speed) +
+                 " along its direction throughout (past the curve's end too)");
+        return vec(speed * w.motion_dir[0], speed * w.motion_dir[1], speed * w.motion_dir[2]);
     }
 
     void write_control(std::vector<Line>& out) {
