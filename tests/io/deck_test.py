@@ -135,6 +135,26 @@ for name, (cards, exact) in VARIANTS.items():
         check(f"{name}: the history of the shell-set pressure to rounding", worst < 1e-9,
               f"largest difference {worst:.3g} of a column's largest value")
 
+def deck_against_twin(name, folder, mesh, deck_text, twin_text):
+    """Writes a variant of a test deck and of its twin into `folder` beside their mesh, runs
+    both and checks that they give the same history.csv; returns the deck's history file, or
+    None when a run failed."""
+    os.makedirs(folder, exist_ok=True)
+    shutil.copy(mesh, folder)
+    with open(os.path.join(folder, "model.k"), "w") as f:
+        f.write(deck_text)
+    with open(os.path.join(folder, "model.yaml"), "w") as f:
+        f.write(twin_text)
+    r_deck, h_deck = run(os.path.join(folder, "model.k"), os.path.join(folder, "deck"))
+    r_twin, h_twin = run(os.path.join(folder, "model.yaml"), os.path.join(folder, "twin"))
+    check(f"{name}: deck and twin run", r_deck.returncode == 0 and r_twin.returncode == 0,
+          r_deck.stderr + r_twin.stderr)
+    if r_deck.returncode or r_twin.returncode:
+        return None
+    check(f"{name}: the same history.csv", read(h_deck) == read(h_twin), "the files differ")
+    return h_deck
+
+
 # ---- *MAT_POWER_LAW_PLASTICITY: the strip of strip_pull.k in a power-law steel, against the
 # twin with the same material written in YAML
 STRIP = os.path.join(DECKS, "strip_pull")
@@ -147,18 +167,10 @@ yaml_024 = strip_twin[strip_twin.index("  steel:"):strip_twin.index("sections:")
 yaml_018 = ("  steel: {type: power_law, density: 7850, youngs_modulus: 2.1e11, poisson_ratio: 0.3,\n"
             "          k: 9.0e8, n: 0.25, yield_stress: 3.0e8, cowper_symonds: {D: 40.4, q: 5}}\n\n")
 folder = os.path.join(WORK, "power_law")
-os.makedirs(folder, exist_ok=True)
-shutil.copy(os.path.join(STRIP, "strip_pull_mesh.k"), folder)
-with open(os.path.join(folder, "strip.k"), "w") as f:
-    f.write(strip_deck.replace(mat_024, mat_018))
-with open(os.path.join(folder, "strip.yaml"), "w") as f:
-    f.write(strip_twin.replace(yaml_024, yaml_018))
-r_deck, h_deck = run(os.path.join(folder, "strip.k"), os.path.join(folder, "deck"))
-r_twin, h_twin = run(os.path.join(folder, "strip.yaml"), os.path.join(folder, "twin"))
-check("power law: deck and twin run", r_deck.returncode == 0 and r_twin.returncode == 0,
-      r_deck.stderr + r_twin.stderr)
-if r_deck.returncode == 0 and r_twin.returncode == 0:
-    check("power law: the same history.csv", read(h_deck) == read(h_twin), "the files differ")
+h_deck = deck_against_twin("power law", folder, os.path.join(STRIP, "strip_pull_mesh.k"),
+                           strip_deck.replace(mat_024, mat_018),
+                           strip_twin.replace(yaml_024, yaml_018))
+if h_deck:
     summary = read(os.path.join(folder, "deck", "summary.json"))
     check("power law: the strip yields", '"plastic_work"' in summary and
           float(summary.split('"plastic_work"')[1].split(":")[1].split(",")[0]) > 0, summary[:400])
@@ -188,21 +200,12 @@ WALLS = {  # name: (deck card, twin body)
                         "     radius: 0.1, fixed: true, velocity: [0, 0, 3]}\n"),
 }
 for name, (card, body) in WALLS.items():
-    folder = os.path.join(WORK, "walls", name.replace(" ", "_"))
-    os.makedirs(folder, exist_ok=True)
-    shutil.copy(os.path.join(DROP, "plate_drop_mesh.k"), folder)
     assert planar in drop_deck and twin_body in drop_twin
-    with open(os.path.join(folder, "drop.k"), "w") as f:
-        f.write(drop_deck.replace(planar, card))
-    with open(os.path.join(folder, "drop.yaml"), "w") as f:
-        f.write(drop_twin.replace(twin_body, body))
-    r_deck, h_deck = run(os.path.join(folder, "drop.k"), os.path.join(folder, "deck"))
-    r_twin, h_twin = run(os.path.join(folder, "drop.yaml"), os.path.join(folder, "twin"))
-    check(f"{name} wall: deck and twin run", r_deck.returncode == 0 and r_twin.returncode == 0,
-          r_deck.stderr + r_twin.stderr)
-    if r_deck.returncode or r_twin.returncode:
+    h_deck = deck_against_twin(f"{name} wall", os.path.join(WORK, "walls", name.replace(" ", "_")),
+                               os.path.join(DROP, "plate_drop_mesh.k"),
+                               drop_deck.replace(planar, card), drop_twin.replace(twin_body, body))
+    if not h_deck:
         continue
-    check(f"{name} wall: the same history.csv", read(h_deck) == read(h_twin), "the files differ")
     forces = [float(line.split(",")[-1]) for line in read(h_deck).splitlines()[1:]]
     check(f"{name} wall: the plate hits it", min(forces) < 0, f"smallest force {min(forces)}")
 

@@ -345,6 +345,27 @@ TEST(J2Plastic, TabulatedFlowCurveOnMonotonicPath) {
     EXPECT_EQ(f.slope(0.0), 40.0 / 0.002);
 }
 
+namespace {
+
+/// Materials `a` and `b` give the same states along a random non-proportional path with
+/// unloading (seed `seed`) that goes well past yield: the iterates of their returns agree to
+/// the Newton tolerance, 1e-10 relative.
+void expect_same_states_on_a_random_path(const J2Plastic& a, const J2Plastic& b, unsigned seed) {
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<Real> u(-1.0, 1.0);
+    MaterialPoint pa, pb;
+    for (int i = 0; i < 200; ++i) {
+        const Voigt3 d(2e-3 * u(rng), 2e-3 * u(rng), 2e-3 * u(rng));
+        a.update(pa, d, 0.0, pa);
+        b.update(pb, d, 0.0, pb);
+        for (Eigen::Index k = 0; k < 3; ++k) ASSERT_NEAR(pa.stress(k), pb.stress(k), 1e-8 * k_sy);
+        ASSERT_NEAR(pa.plastic_strain, pb.plastic_strain, 1e-10 + 1e-8 * pa.plastic_strain);
+    }
+    EXPECT_GT(pa.plastic_strain, 0.05) << "the path must go well past yield";
+}
+
+}  // namespace
+
 // A power law (eq. 7.2-6) on the equibiaxial path: sigma = k (eps_0 + alpha)^n, and with n = 1
 // it is the bilinear curve of yield stress k eps_0 and plastic modulus k, state for state
 // along a random non-proportional path with unloading.
@@ -372,47 +393,23 @@ TEST(J2Plastic, PowerLawOnMonotonicPathAndAsBilinear) {
     line.b = h;
     line.n = 1.0;
     line.strain_offset = k_sy / h;
-    for (Real beta : {1.0, 0.5, 0.0}) {
-        const J2Plastic lin = bilinear(h, beta);
-        const J2Plastic pow(k_e, k_nu, line, RateFactor{}, beta);
-        std::mt19937 rng(5);
-        std::uniform_real_distribution<Real> u(-1.0, 1.0);
-        MaterialPoint a, b;
-        for (int i = 0; i < 200; ++i) {
-            const Voigt3 d(2e-3 * u(rng), 2e-3 * u(rng), 2e-3 * u(rng));
-            lin.update(a, d, 0.0, a);
-            pow.update(b, d, 0.0, b);
-            // the same curve through pow(x, 0) = 1: the iterates agree to the Newton
-            // tolerance, 1e-10 relative
-            for (Eigen::Index k = 0; k < 3; ++k) ASSERT_NEAR(a.stress(k), b.stress(k), 1e-8 * k_sy);
-            ASSERT_NEAR(a.plastic_strain, b.plastic_strain, 1e-10 + 1e-8 * a.plastic_strain);
-        }
-        EXPECT_GT(a.plastic_strain, 0.05) << "the path must go well past yield";
-    }
+    // the same curve through pow(x, 0) = 1
+    for (Real beta : {1.0, 0.5, 0.0})
+        expect_same_states_on_a_random_path(bilinear(h, beta),
+                                            J2Plastic(k_e, k_nu, line, RateFactor{}, beta), 5);
 }
 
 // A tabulated straight line is the bilinear curve: the same states along a random
 // non-proportional path with unloading, for isotropic, mixed and kinematic hardening.
 TEST(J2Plastic, TabulatedStraightLineIsTheBilinearMaterial) {
     const Real h = 2000.0;
-    for (Real beta : {1.0, 0.5, 0.0}) {
-        const J2Plastic lin = bilinear(h, beta);
-        const J2Plastic tab(k_e, k_nu, FlowStress::tabulated({0.0, 1.0}, {k_sy, k_sy + h}),
-                            RateFactor{}, beta);
-        std::mt19937 rng(3);
-        std::uniform_real_distribution<Real> u(-1.0, 1.0);
-        MaterialPoint a, b;
-        for (int i = 0; i < 200; ++i) {
-            const Voigt3 d(2e-3 * u(rng), 2e-3 * u(rng), 2e-3 * u(rng));
-            lin.update(a, d, 0.0, a);
-            tab.update(b, d, 0.0, b);
-            // the same operations but for the curve's evaluation (one segment, exact slope h):
-            // the iterates agree to the Newton tolerance, 1e-10 relative
-            for (Eigen::Index k = 0; k < 3; ++k) ASSERT_NEAR(a.stress(k), b.stress(k), 1e-8 * k_sy);
-            ASSERT_NEAR(a.plastic_strain, b.plastic_strain, 1e-10 + 1e-8 * a.plastic_strain);
-        }
-        EXPECT_GT(a.plastic_strain, 0.05) << "the path must go well past yield";
-    }
+    // the same operations but for the curve's evaluation (one segment, exact slope h)
+    for (Real beta : {1.0, 0.5, 0.0})
+        expect_same_states_on_a_random_path(
+            bilinear(h, beta),
+            J2Plastic(k_e, k_nu, FlowStress::tabulated({0.0, 1.0}, {k_sy, k_sy + h}), RateFactor{},
+                      beta),
+            3);
 }
 
 // A table of two curves (eq. 7.2-5), equibiaxial at a constant rate (the filter settled): the
