@@ -209,6 +209,18 @@ for name, (card, body) in WALLS.items():
     forces = [float(line.split(",")[-1]) for line in read(h_deck).splitlines()[1:]]
     check(f"{name} wall: the plate hits it", min(forces) < 0, f"smallest force {min(forces)}")
 
+# ---- *INITIAL_VELOCITY_GENERATION with OMEGA: plate_drop.k spinning about a tilted axis
+generation = drop_deck[drop_deck.index("*INITIAL_VELOCITY_GENERATION"):drop_deck.index("*RIGIDWALL_PLANAR_ID")]
+spinning = ("*INITIAL_VELOCITY_GENERATION\n         1         2      20.0       0.0       0.0      -5.0\n"
+            "      0.05      0.05       0.0       0.0       0.6       0.8\n")
+twin_velocity = "  - {nodes: all, velocity: [0, 0, -5]}\n"
+twin_spinning = ("  - {nodes: all, velocity: [0, 0, -5], rotation: {centre: [0.05, 0.05, 0],\n"
+                 "     angular_velocity: [0, 12, 16]}}\n")
+assert twin_velocity in drop_twin
+deck_against_twin("initial rotation", os.path.join(WORK, "spin"),
+                  os.path.join(DROP, "plate_drop_mesh.k"), drop_deck.replace(generation, spinning),
+                  drop_twin.replace(twin_velocity, twin_spinning))
+
 # ---- check prints the deck as understood
 c = fpmshell("check", os.path.join(DECKS, "tube_crush", "tube_crush.k"))
 out = c.stdout

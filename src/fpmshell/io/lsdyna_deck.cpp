@@ -888,18 +888,27 @@ private:
                                     vec(v.real(3, "VXR"), v.real(4, "VYR"), v.real(5, "VZR")) + "}",
                                 {&b, v.line()}});
         } else if (k == "INITIAL_VELOCITY_GENERATION") {
-            // cards in pairs: the second (the axis of OMEGA) matters only with a rotation
+            // cards in pairs: the translation, then the axis of the rotation OMEGA
             for (std::size_t c = 0; c < b.cards.size(); c += 2) {
                 const Card f = card(b, c);
-                if (f.real(2, "OMEGA") != 0)
-                    f.fail("OMEGA: a rotation about an axis is not supported (0 only)");
+                const Card g = card(b, c + 1);
                 if (f.id(7, "ICID") != 0) f.fail("ICID: only global directions (0) are supported");
-
+                if (f.id(6, "IVATN") != 0 || g.id(7, "IRIGID") != 0)
+                    f.fail("IVATN and IRIGID are not supported (0 only)");
                 const std::string nodes = nodes_of_velocity(f, f.id(0, "ID"), f.id(1, "STYP"));
-                initial_.push_back({"  - {nodes: " + yaml_name(nodes) + ", velocity: " +
-                                        vec(f.real(3, "VX"), f.real(4, "VY"), f.real(5, "VZ")) +
-                                        "}",
-                                    {&b, f.line()}});
+                std::string text = "  - {nodes: " + yaml_name(nodes) + ", velocity: " +
+                                   vec(f.real(3, "VX"), f.real(4, "VY"), f.real(5, "VZ"));
+                if (const Real omega = f.real(2, "OMEGA"); omega != 0) {
+                    std::array<Real, 3> axis{g.real(3, "NX"), g.real(4, "NY"), g.real(5, "NZ")};
+                    if (axis == std::array<Real, 3>{})
+                        g.fail("NX, NY, NZ: the axis of OMEGA must not be zero");
+                    axis = unit(axis);
+                    text += ", rotation: {centre: " +
+                            vec(g.real(0, "XC"), g.real(1, "YC"), g.real(2, "ZC")) +
+                            ", angular_velocity: " +
+                            vec(omega * axis[0], omega * axis[1], omega * axis[2]) + "}";
+                }
+                initial_.push_back({text + "}", {&b, f.line()}});
             }
         } else {
             refuse(b, unsupported_reason(k));

@@ -129,16 +129,28 @@ void read_loads(const YamlValue& v, Model& model) {
 
 void read_initial_conditions(const YamlValue& v, Model& model) {
     for (const YamlValue& item : v.list("initial conditions")) {
-        const YamlMap m = item.map({"nodes", "velocity", "angular_velocity", "normal_velocity"});
+        const YamlMap m =
+            item.map({"nodes", "velocity", "angular_velocity", "normal_velocity", "rotation"});
         InitialVelocity ic;
         ic.nodes = named_node_set(model, m.at("nodes", "a node set name"));
-        if (m.count({"velocity", "angular_velocity", "normal_velocity"}) == 0)
+        if (m.count({"velocity", "angular_velocity", "normal_velocity", "rotation"}) == 0)
             item.fail(
                 "an initial condition needs `velocity: [vx, vy, vz]`, `normal_velocity: v` "
-                "(along the surface normal) and/or `angular_velocity: [wx, wy, wz]`");
+                "(along the surface normal), `angular_velocity: [wx, wy, wz]` and/or `rotation: "
+                "{centre, angular_velocity}`");
         if (const auto vel = m.find("velocity")) ic.velocity = vel->vec3();
         if (const auto vn = m.find("normal_velocity")) ic.normal_velocity = vn->real();
         if (const auto w = m.find("angular_velocity")) ic.angular_velocity = w->vec3();
+        if (const auto r = m.find("rotation")) {  // a rigid rotation about an axis
+            if (const auto w = m.find("angular_velocity"))
+                w->fail(
+                    "give the particles' spin either as angular_velocity or through "
+                    "`rotation`, not both");
+            const YamlMap rot = r->map({"centre", "angular_velocity"});
+            ic.spin_centre = rot.at("centre", "a point [x, y, z] of the rotation axis").vec3();
+            ic.spin =
+                rot.at("angular_velocity", "the rotation vector [wx, wy, wz] (rad/time)").vec3();
+        }
         model.initial_conditions.push_back(ic);
     }
 }

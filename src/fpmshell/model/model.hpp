@@ -106,6 +106,11 @@ struct InitialVelocity {
     /// speed along each particle's initial surface normal (the normal of the element node
     /// order), added to velocity; negative = against the normal
     Real normal_velocity = 0;
+    /// a rigid rotation about the axis through spin_centre: spin x (x - spin_centre) added to
+    /// the velocity, and spin the particles' angular velocity (LS-DYNA's OMEGA of
+    /// *INITIAL_VELOCITY_GENERATION)
+    Vec3 spin = Vec3::Zero();
+    Vec3 spin_centre = Vec3::Zero();
 };
 
 /// Rayleigh damping (theory.md §6.5): a_m (1/s) on mass, a_s (s) on stiffness.

@@ -73,10 +73,12 @@ ExplicitSolver::ExplicitSolver(const Model& model)
     // Initial conditions: v^0, w^0 (the first cycle uses v^{-1/2} := v^0).
     for (const InitialVelocity& ic : model.initial_conditions)
         for (Index p : ic.nodes) {
-            // normal_velocity: along the initial surface normal of the particle (§1.3)
-            s_.v[static_cast<std::size_t>(p)] =
-                ic.velocity + ic.normal_velocity * s_.normal[static_cast<std::size_t>(p)];
-            s_.omega[static_cast<std::size_t>(p)] = ic.angular_velocity;
+            // normal_velocity: along the initial surface normal of the particle (§1.3); spin: a
+            // rigid rotation of the set
+            const auto up = static_cast<std::size_t>(p);
+            s_.v[up] = ic.velocity + ic.normal_velocity * s_.normal[up] +
+                       ic.spin.cross(model.nodes[up] - ic.spin_centre);
+            s_.omega[up] = ic.angular_velocity + ic.spin;
         }
     for (std::size_t p = 0; p < np; ++p) {
         s_.v[p] = bc_->without_fixed_translation(p, s_.v[p]);

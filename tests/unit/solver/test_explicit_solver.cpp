@@ -326,3 +326,35 @@ TEST(ExplicitSolver, NonFiniteStateStopsTheRunNamingStepAndParticle) {
     EXPECT_FALSE(s.state().x[static_cast<std::size_t>(node)].allFinite());
     EXPECT_EQ(s.state().x_prev, m.nodes);
 }
+
+TEST(ExplicitSolver, InitialRotationIsARigidSpinAboutItsAxis) {
+    // initial_conditions.rotation: v = w x (x - c) on every particle of the set, and w its
+    // angular velocity; on top of the translation
+    PlateParams pp;
+    pp.length_x = 2;
+    pp.length_y = 1;
+    pp.nx = 4;
+    pp.ny = 2;
+    const MeshData mesh = generate_plate(pp);
+    Model m;
+    m.nodes = mesh.nodes;
+    m.triangles = mesh.triangles;
+    m.materials.push_back({"al", MaterialType::Elastic, 2700, 70e9, 0.3});
+    m.sections.push_back({0, 0.01, 2, 3});
+    m.element_section.assign(m.triangles.size(), 0);
+    InitialVelocity iv;
+    for (Index p = 0; p < m.n_particles(); ++p) iv.nodes.push_back(p);
+    iv.velocity = Vec3(0, 0, -1);
+    iv.spin = Vec3(0.5, 0, 3.0);
+    iv.spin_centre = Vec3(1, 0.5, 0);
+    m.initial_conditions.push_back(iv);
+    m.control.end_time = 1;
+    const ExplicitSolver s(m);
+    for (Index p = 0; p < m.n_particles(); ++p) {
+        const auto up = static_cast<std::size_t>(p);
+        const Vec3 r = m.nodes[up] - iv.spin_centre;
+        const Vec3 expected(-3.0 * r.y(), 3.0 * r.x() - 0.5 * r.z(), 0.5 * r.y() - 1.0);
+        EXPECT_NEAR((s.state().v[up] - expected).norm(), 0.0, 1e-15) << "particle " << p;
+        EXPECT_EQ(s.state().omega[up], iv.spin);
+    }
+}
