@@ -178,9 +178,9 @@ struct SegmentLoad {
 struct WallDef {
     Origin at;
     long long id = 0;
-    std::string nodes;                      ///< node set, "" for all
-    std::array<Real, 3> point{}, normal{};  ///< the tail and head - tail of the wall's normal
-    Real mass = 0, speed = 0;               ///< moving walls: mass and the speed along the normal
+    std::string nodes;             ///< node set, "" for all
+    std::array<Real, 3> normal{};  ///< a planar wall's head - tail (a moving one moves along it)
+    Real mass = 0, speed = 0;      ///< moving walls: mass and the speed along the normal
     bool moving = false;
     /// the shape's keys of the model (model-format.md rigid_bodies): "shape: plane, point: ..."
     std::string geometry;
@@ -988,10 +988,11 @@ private:
                 "FRIC: friction on rigid walls is not modelled; set FRIC = 0 to run "
                 "frictionless");
         w.nodes = nsid == 0 ? "" : set_name(f, "node", nsid);
+        std::array<Real, 3> tail{};
         Real len = 0;
         for (std::size_t k = 0; k < 3; ++k) {
-            w.point[k] = g.real(k, "XT, YT, ZT");
-            w.normal[k] = g.real(3 + k, "XH, YH, ZH") - w.point[k];
+            tail[k] = g.real(k, "XT, YT, ZT");
+            w.normal[k] = g.real(3 + k, "XH, YH, ZH") - tail[k];
             len += w.normal[k] * w.normal[k];
         }
         if (!(len > 0)) g.fail("the head (XH, YH, ZH) must differ from the tail (XT, YT, ZT)");
@@ -1002,7 +1003,7 @@ private:
             w.speed = m.real(1, "V0");
             if (!(w.mass > 0)) m.fail("MASS must be > 0");
         }
-        w.geometry = "shape: plane, point: " + vec(w.point[0], w.point[1], w.point[2]) +
+        w.geometry = "shape: plane, point: " + vec(tail[0], tail[1], tail[2]) +
                      ", normal: " + unit_text(w.normal);
         w.at = {&b, g.line()};
         add_wall(w, f);

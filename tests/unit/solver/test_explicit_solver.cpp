@@ -335,13 +335,7 @@ TEST(ExplicitSolver, InitialRotationIsARigidSpinAboutItsAxis) {
     pp.length_y = 1;
     pp.nx = 4;
     pp.ny = 2;
-    const MeshData mesh = generate_plate(pp);
-    Model m;
-    m.nodes = mesh.nodes;
-    m.triangles = mesh.triangles;
-    m.materials.push_back({"al", MaterialType::Elastic, 2700, 70e9, 0.3});
-    m.sections.push_back({0, 0.01, 2, 3});
-    m.element_section.assign(m.triangles.size(), 0);
+    Model m = test::one_section_model(generate_plate(pp), 0.01);
     InitialVelocity iv;
     for (Index p = 0; p < m.n_particles(); ++p) iv.nodes.push_back(p);
     iv.velocity = Vec3(0, 0, -1);
