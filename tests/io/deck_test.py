@@ -49,7 +49,7 @@ shutil.rmtree(WORK, ignore_errors=True)
 os.makedirs(WORK)
 
 # ---- the test decks against their twins, and through convert
-for name in sorted(os.listdir(DECKS)):
+for name in sorted(d for d in os.listdir(DECKS) if os.path.isdir(os.path.join(DECKS, d))):
     deck = os.path.join(DECKS, name, name + ".k")
     twin = os.path.join(DECKS, name, name + ".yaml")
     r_deck, h_deck = run(deck, os.path.join(WORK, name, "deck"))
