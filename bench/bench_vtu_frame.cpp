@@ -2,7 +2,7 @@
 // triangles) after a few steps, as a run writes it (driver/field_series.cpp): the standard fields
 // gathered from the solver into the frame of the last iteration (field_frame, on the OpenMP
 // threads) and the file written (write_vtu), in each encoding: raw appended (the default),
-// raw + zlib, base64. The file goes to $TMPDIR (default /tmp).
+// raw + zlib, base64. Each frame is a new file in $TMPDIR (default /tmp), removed untimed.
 //   ./build/bench/fpmshell_bench --benchmark_filter=vtu_frame
 // Counters: MB (the file's size), MB/s. vtu_frame_gather times field_frame alone.
 // docs/performance.md quotes the times.
@@ -30,17 +30,23 @@ void vtu_frame(benchmark::State& state) {
         VtuEncoding::Raw, {VtuEncoding::Raw, VtuCompression::Zlib}, VtuEncoding::Base64};
     const VtuFormat format = formats[state.range(1)];
     const char* tmp = std::getenv("TMPDIR");
-    const std::filesystem::path file =
-        std::filesystem::path(tmp != nullptr && *tmp != '\0' ? tmp : "/tmp") /
-        ("fpmshell_bench_frame_" + std::to_string(::getpid()) + ".vtu");
+    const std::filesystem::path dir =
+        std::filesystem::path(tmp != nullptr && *tmp != '\0' ? tmp : "/tmp");
+    const std::string stem = "fpmshell_bench_frame_" + std::to_string(::getpid()) + "_";
     const std::vector<OutputField> fields = standard_fields();
     FieldFrame frame;  // reused from frame to frame, as FieldSeries does
+    double bytes = 0;
+    long n_frame = 0;
     for (auto _ : state) {
+        // a new file per frame, as a run writes frame_00001.vtu, frame_00002.vtu, ...
+        const std::filesystem::path file = dir / (stem + std::to_string(n_frame++) + ".vtu");
         field_frame(fields, {m, solver, solver.state().x}, solver.time(), frame);
         write_vtu(file, frame, format);
+        state.PauseTiming();  // the file is removed outside the timed part
+        bytes = static_cast<double>(std::filesystem::file_size(file));
+        std::filesystem::remove(file);
+        state.ResumeTiming();
     }
-    const double bytes = static_cast<double>(std::filesystem::file_size(file));
-    std::filesystem::remove(file);
     state.counters["triangles"] = static_cast<double>(m.n_elements());
     state.counters["MB"] = bytes / 1e6;
     state.counters["MB/s"] = benchmark::Counter(

@@ -1,6 +1,8 @@
 // The field list of the VTU frames and the frame built from it.
 #include "fpmshell/driver/output_fields.hpp"
 
+#include <algorithm>
+
 #include "fpmshell/core/rotation.hpp"
 #include "fpmshell/model/model.hpp"
 #include "fpmshell/solver/explicit_solver.hpp"
@@ -11,16 +13,28 @@ namespace {
 
 std::size_t at(Index i) { return static_cast<std::size_t>(i); }
 
+/// Items per call of a field's `values` in field_frame.
+constexpr std::size_t k_items_per_range = 4096;
+
 template <class Vector3>
-void put3(std::span<Real> out, const Vector3& v) {
-    for (int c = 0; c < 3; ++c) out[at(c)] = v[c];
+void put3(Real* out, const Vector3& v) {
+    for (int c = 0; c < 3; ++c) out[c] = v[c];
+}
+
+/// A field of 3 components, item by item from `of(source, item)`.
+template <class Of>
+OutputField::Values three_components(Of of) {
+    return [of](const FieldSource& s, Index first, Index last, std::span<Real> out) {
+        for (Index i = first; i < last; ++i) put3(out.data() + 3 * at(i - first), of(s, i));
+    };
 }
 
 /// A cell field of the plastic strain at one surface.
 OutputField plastic_strain_field(std::string name, ShellSurface surface) {
     return {std::move(name), 1, FieldLocation::Cell,
-            [surface](const FieldSource& s, Index e, std::span<Real> out) {
-                out[0] = surface_plastic_strain(s.solver.elements(), e, surface);
+            [surface](const FieldSource& s, Index first, Index last, std::span<Real> out) {
+                for (Index e = first; e < last; ++e)
+                    out[at(e - first)] = surface_plastic_strain(s.solver.elements(), e, surface);
             }};
 }
 
@@ -29,29 +43,25 @@ OutputField plastic_strain_field(std::string name, ShellSurface surface) {
 std::vector<OutputField> standard_fields() {
     using L = FieldLocation;
     return {
-        {"displacement", 3, L::Point,
-         [](const FieldSource& s, Index p, std::span<Real> out) {
-             put3(out, s.positions[at(p)] - s.solver.state().x0[at(p)]);
-         }},
+        {"displacement", 3, L::Point, three_components([](const FieldSource& s, Index p) {
+             return Vec3(s.positions[at(p)] - s.solver.state().x0[at(p)]);
+         })},
         {"velocity", 3, L::Point,
-         [](const FieldSource& s, Index p, std::span<Real> out) {
-             put3(out, s.solver.state().v[at(p)]);
-         }},
+         three_components([](const FieldSource& s, Index p) { return s.solver.state().v[at(p)]; })},
         {"rotation", 3, L::Point,  // rotation vector (theory.md §1.4)
-         [](const FieldSource& s, Index p, std::span<Real> out) {
-             put3(out, rotation_vector(s.solver.state().rotation[at(p)]));
-         }},
+         three_components([](const FieldSource& s, Index p) {
+             return rotation_vector(s.solver.state().rotation[at(p)]);
+         })},
         {"membrane_force", 3, L::Cell,  // xx, yy, xy per unit length, element frame
-         [](const FieldSource& s, Index e, std::span<Real> out) {
-             put3(out, s.solver.elements().membrane_force(e));
-         }},
-        {"bending_moment", 3, L::Cell,
-         [](const FieldSource& s, Index e, std::span<Real> out) {
-             put3(out, s.solver.elements().bending_moment(e));
-         }},
+         three_components(
+             [](const FieldSource& s, Index e) { return s.solver.elements().membrane_force(e); })},
+        {"bending_moment", 3, L::Cell, three_components([](const FieldSource& s, Index e) {
+             return s.solver.elements().bending_moment(e);
+         })},
         {"thickness", 1, L::Cell,
-         [](const FieldSource& s, Index e, std::span<Real> out) {
-             out[0] = s.solver.elements().thickness(e);
+         [](const FieldSource& s, Index first, Index last, std::span<Real> out) {
+             for (Index e = first; e < last; ++e)
+                 out[at(e - first)] = s.solver.elements().thickness(e);
          }},
         plastic_strain_field("plastic_strain_top", ShellSurface::Top),
         plastic_strain_field("plastic_strain_middle", ShellSurface::Middle),
@@ -80,10 +90,16 @@ void field_frame(const std::vector<OutputField>& fields, const FieldSource& sour
         array.components = field.components;
         array.values.resize(n * width);
         Real* values = array.values.data();
-        // every item writes its own values: the same bytes on any number of threads
-#pragma omp parallel for schedule(static) if (n >= 10000)
-        for (std::size_t i = 0; i < n; ++i)
-            field.value(source, static_cast<Index>(i), std::span<Real>(values + i * width, width));
+        // Fixed ranges, each writing its own values: the same bytes on any number of threads;
+        // one call of the field per range (a call per item cost as much as the values).
+        const std::size_t n_ranges = (n + k_items_per_range - 1) / k_items_per_range;
+#pragma omp parallel for schedule(static) if (n_ranges > 1)
+        for (std::size_t r = 0; r < n_ranges; ++r) {
+            const std::size_t first = r * k_items_per_range;
+            const std::size_t last = std::min(n, first + k_items_per_range);
+            field.values(source, static_cast<Index>(first), static_cast<Index>(last),
+                         std::span<Real>(values + first * width, (last - first) * width));
+        }
     }
 }
 

@@ -30,14 +30,15 @@ struct FieldSource {
 };
 
 struct OutputField {
-    /// Writes the values of particle (Point) or triangle (Cell) `item` to `out`, which holds
-    /// `components` values.
-    using Value = std::function<void(const FieldSource& source, Index item, std::span<Real> out)>;
+    /// Writes the values of the particles (Point) or triangles (Cell) first .. last - 1 to
+    /// `out`, item after item, `components` values each.
+    using Values = std::function<void(const FieldSource& source, Index first, Index last,
+                                      std::span<Real> out)>;
 
     std::string name;  ///< the array name in the .vtu file
     int components = 1;
     FieldLocation location = FieldLocation::Point;
-    Value value;
+    Values values;
 };
 
 /// The fields of every frame, in the order they appear in the .vtu files: point data

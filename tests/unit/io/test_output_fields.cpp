@@ -3,7 +3,8 @@
 // - a field added to the list is in the frame, after the standard ones, with the values its
 //   entry computes, and in the .vtu text;
 // - a frame of other positions (the last good state of a failed run) shows those positions and
-//   the displacements from them.
+//   the displacements from them;
+// - a frame of many items (gathered in ranges, on every thread) holds each item's own values.
 #include <gtest/gtest.h>
 
 #include <random>
@@ -20,11 +21,11 @@
 namespace fpmshell {
 namespace {
 
-/// A free elastic plate, 4 x 4 squares, with random initial velocities: every field is non-zero
-/// after a few steps.
-Model moving_plate() {
+/// A free elastic plate, 4 x 4 squares unless said, with random initial velocities: every field is
+/// non-zero after a few steps.
+Model moving_plate(Index squares = 4) {
     PlateParams pp;
-    pp.nx = pp.ny = 4;
+    pp.nx = pp.ny = squares;
     pp.pattern = DiagonalPattern::Alternate;
     const MeshData mesh = generate_plate(pp);
     Model m = test::one_section_model(mesh, 0.01);
@@ -72,14 +73,20 @@ TEST(OutputFields, AFieldAddedToTheListIsInTheFrameAndTheVtuWithItsValues) {
     for (int i = 0; i < 5; ++i) solver.step(1e30);
     std::vector<OutputField> fields = standard_fields();
     fields.push_back({"particle_mass", 1, FieldLocation::Point,
-                      [](const FieldSource& s, Index p, std::span<Real> out) {
-                          out[0] = s.solver.state().mass[static_cast<std::size_t>(p)];
+                      [](const FieldSource& s, Index first, Index last, std::span<Real> out) {
+                          for (Index p = first; p < last; ++p)
+                              out[static_cast<std::size_t>(p - first)] =
+                                  s.solver.state().mass[static_cast<std::size_t>(p)];
                       }});
-    fields.push_back(
-        {"corners", 3, FieldLocation::Cell, [](const FieldSource& s, Index e, std::span<Real> out) {
-             const auto& t = s.model.triangles[static_cast<std::size_t>(e)];
-             for (std::size_t c = 0; c < 3; ++c) out[c] = static_cast<Real>(t[c]);
-         }});
+    fields.push_back({"corners", 3, FieldLocation::Cell,
+                      [](const FieldSource& s, Index first, Index last, std::span<Real> out) {
+                          for (Index e = first; e < last; ++e) {
+                              const auto& t = s.model.triangles[static_cast<std::size_t>(e)];
+                              for (std::size_t c = 0; c < 3; ++c)
+                                  out[3 * static_cast<std::size_t>(e - first) + c] =
+                                      static_cast<Real>(t[c]);
+                          }
+                      }});
     const FieldFrame frame = field_frame(fields, {model, solver, solver.state().x}, 0.25);
 
     ASSERT_EQ(frame.point_data.size(), 4u);
@@ -125,6 +132,31 @@ TEST(OutputFields, AFrameOfOtherPositionsShowsThemAndTheirDisplacements) {
         const Vec3 u = positions[p] - solver.state().x0[p];
         for (int c = 0; c < 3; ++c)
             EXPECT_EQ(displacement.values[3 * p + static_cast<std::size_t>(c)], u[c]);
+    }
+}
+
+TEST(OutputFields, EveryItemOfALargeFrameHoldsItsOwnValues) {
+    // 60 x 60 squares: 7 200 triangles and 3 721 particles, more than one range of items
+    const Model model = moving_plate(60);
+    ExplicitSolver solver(model);
+    for (int i = 0; i < 3; ++i) solver.step(1e30);
+    const FieldFrame frame = field_frame(standard_fields(), {model, solver, solver.state().x}, 0);
+    const FieldArray& velocity = frame.point_data[1];
+    ASSERT_EQ(velocity.values.size(), 3 * solver.state().v.size());
+    for (std::size_t p = 0; p < solver.state().v.size(); ++p)
+        for (int c = 0; c < 3; ++c)
+            ASSERT_EQ(velocity.values[3 * p + static_cast<std::size_t>(c)], solver.state().v[p][c])
+                << "particle " << p;
+    const FieldArray& membrane = frame.cell_data[0];
+    const FieldArray& thickness = frame.cell_data[2];
+    ASSERT_EQ(membrane.values.size(), 3 * model.triangles.size());
+    for (Index e = 0; e < model.n_elements(); ++e) {
+        const auto ue = static_cast<std::size_t>(e);
+        const Voigt3 n = solver.elements().membrane_force(e);
+        for (int c = 0; c < 3; ++c)
+            ASSERT_EQ(membrane.values[3 * ue + static_cast<std::size_t>(c)], n[c])
+                << "element " << e;
+        ASSERT_EQ(thickness.values[ue], solver.elements().thickness(e));
     }
 }
 
