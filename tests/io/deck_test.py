@@ -209,6 +209,54 @@ for name, (card, body) in WALLS.items():
     forces = [float(line.split(",")[-1]) for line in read(h_deck).splitlines()[1:]]
     check(f"{name} wall: the plate hits it", min(forces) < 0, f"smallest force {min(forces)}")
 
+# ---- *RIGIDWALL_PLANAR FRIC: plate_drop.k thrown sideways onto a floor with friction 0.3, and
+# with FRIC = 1 (no sliding), against the twin with the contact's friction written in YAML
+fric_line = "       0.0       0.0       0.0       0.0       0.0       1.0       0.0\n"
+speed_line = "         1         2       0.0       0.0       0.0      -5.0\n"
+assert fric_line in planar and speed_line in drop_deck
+sideways = drop_deck.replace(speed_line, "         1         2       0.0       4.0       0.0      -5.0\n")
+sideways_twin = drop_twin.replace("velocity: [0, 0, -5]", "velocity: [4, 0, -5]")
+for fric, written in (("0.3", "0.3"), ("1.0", "stick")):
+    h_deck = deck_against_twin(
+        f"wall friction {fric}", os.path.join(WORK, "walls", "friction_" + fric),
+        os.path.join(DROP, "plate_drop_mesh.k"),
+        sideways.replace(fric_line, fric_line.replace("       0.0\n", f"{fric:>10}\n")),
+        sideways_twin.replace("  - {type: rigid, body: floor}",
+                              f"  - {{type: rigid, body: floor, friction: {written}}}"))
+    if not h_deck:
+        continue
+    rows = [line.split(",") for line in read(h_deck).splitlines()]
+    col = {name: k for k, name in enumerate(rows[0])}
+    fx = [float(r[col["rigidwall1_force_x"]]) for r in rows[1:]]
+    fz = [float(r[col["rigidwall1_force_z"]]) for r in rows[1:]]
+    check(f"wall friction {fric}: the floor is dragged along the sliding (+x)",
+          max(fx) > 0 and sum(fx) > 0, f"force_x from {min(fx)} to {max(fx)}")
+    if fric == "0.3":  # Coulomb: |F_x| <= mu |F_z| in every row (to rounding)
+        over = [(x, z) for x, z in zip(fx, fz) if abs(x) > 0.3 * abs(z) * (1 + 1e-9) + 1e-9]
+        check("wall friction 0.3: within the Coulomb cone in every row", not over, str(over[:3]))
+
+# ---- *CONSTRAINED_NODAL_RIGID_BODY, *CONSTRAINED_SPOTWELD, *CONSTRAINED_GENERALIZED_WELD_SPOT:
+# plate_drop.k thrown sideways with a corner made rigid and two welds, against the twin with the
+# same constraints written in YAML
+constrained = sideways.replace("*RIGIDWALL_PLANAR_ID", (
+    "*SET_NODE_LIST\n         7\n         1         2         3        10        11\n"
+    "*SET_NODE_LIST\n         8\n        60        61\n"
+    "*CONSTRAINED_NODAL_RIGID_BODY\n         1                   7\n"
+    "*CONSTRAINED_SPOTWELD\n        41        42   1.0e+04\n"
+    "*CONSTRAINED_GENERALIZED_WELD_SPOT\n         8\n       0.0       0.0\n"
+    "*RIGIDWALL_PLANAR_ID"))
+constrained_twin = sideways_twin.replace("sets:\n", (
+    "sets:\n  nrb: {node_ids: [1, 2, 3, 10, 11]}\n  weld: {node_ids: [41, 42]}\n"
+    "  generalized: {node_ids: [60, 61]}\n")).replace("rigid_bodies:\n", (
+    "constraints:\n  - {type: rigid, nodes: nrb}\n  - {type: rigid, nodes: weld}\n"
+    "  - {type: rigid, nodes: generalized}\n\nrigid_bodies:\n"))
+h_deck = deck_against_twin("constraints", os.path.join(WORK, "constraints"),
+                           os.path.join(DROP, "plate_drop_mesh.k"), constrained, constrained_twin)
+r = fpmshell("check", os.path.join(WORK, "constraints", "model.k"))
+check("constraints: check names the bodies and notes the weld's failure data",
+      r.returncode == 0 and "nodal rigid bodies: 3 (3 constraints, 9 particles)" in r.stdout and
+      "never fail" in r.stdout, r.stdout + r.stderr)
+
 # ---- *INITIAL_VELOCITY_GENERATION with OMEGA: plate_drop.k spinning about a tilted axis
 generation = drop_deck[drop_deck.index("*INITIAL_VELOCITY_GENERATION"):drop_deck.index("*RIGIDWALL_PLANAR_ID")]
 spinning = ("*INITIAL_VELOCITY_GENERATION\n         1         2      20.0       0.0       0.0      -5.0\n"
@@ -276,7 +324,9 @@ check("a minimal deck is valid", r.returncode == 0, r.stderr)
 
 REFUSED = {  # card: what its message must say
     "*MAT_RIGID\n         2    7800.0   2.1e+11       0.3\n": "rigid parts are not supported",
-    "*CONSTRAINED_SPOTWELD\n         1         2\n": "constraints between nodes are not supported",
+    "*CONSTRAINED_JOINT_SPHERICAL\n         1         2\n": "this constraint is not supported",
+    "*CONSTRAINED_NODAL_RIGID_BODY_INERTIA\n         1\n": "its inertia or constraints would change the model",
+    "*CONSTRAINED_GENERALIZED_WELD_FILLET\n         1\n": "reads *CONSTRAINED_GENERALIZED_WELD_SPOT only",
     "*ELEMENT_SOLID\n         1         1         1         2         3\n": "shells only",
     "*CONTACT_TIED_SURFACE_TO_SURFACE\n         1         1\n": "fpmshell reads *CONTACT_AUTOMATIC_SINGLE_SURFACE",
     "*MAT_HONEYCOMB\n         2\n": "this material is not supported",
@@ -309,8 +359,8 @@ ERRORS = [  # (name, extra cards, other files, the line's start, words of the me
      "parameter 'FAST' is not defined"),
     ("undefined set", "*BOUNDARY_SPC_SET\n         4         0         1\n", None,
      "         4         0         1", "no *SET_NODE_LIST defines set 4"),
-    ("friction", "*RIGIDWALL_PLANAR\n         0\n       0.0       0.0      -1.0       0.0       0.0       0.0       0.3\n",
-     None, "       0.0       0.0      -1.0", "friction on rigid walls is not modelled"),
+    ("friction", "*RIGIDWALL_PLANAR\n         0\n       0.0       0.0      -1.0       0.0       0.0       0.0       1.5\n",
+     None, "       0.0       0.0      -1.0", "FRIC must be from 0 to 1"),
     ("value the model refuses", "*MAT_ELASTIC\n         2    7800.0   2.1e+11       0.7\n"
      "*PART\nsecond\n         2         1         2\n*ELEMENT_SHELL\n       2       2       1       2       3       3\n",
      None, "         2    7800.0   2.1e+11       0.7",
@@ -319,6 +369,8 @@ ERRORS = [  # (name, extra cards, other files, the line's start, words of the me
      None, "more.k:3: *CONTROL_TIMESTEP: TSSFAC 'zero' is not a finite number"),
     ("include cycle", "*INCLUDE\nloop.k\n", {"loop.k": "*INCLUDE\nloop.k\n"}, None, "includes itself"),
     ("missing include", "*INCLUDE\nabsent.k\n", None, "absent.k", "cannot open"),
+    ("weld of one node", "*CONSTRAINED_SPOTWELD\n         3         3\n", None,
+     "         3         3", "N1 and N2 are the same node 3"),
     ("wall motion", "*RIGIDWALL_GEOMETRIC_SPHERE_MOTION\n         0\n       0.0       0.0      -5.0\n"
      "       1.0\n         3         0       0.0       0.0       1.0\n*DEFINE_CURVE\n         3\n"
      "                 0.0                 0.0\n                 1.0                 2.0\n", None,

@@ -483,6 +483,7 @@ void ContactSolver::collect_rigid(const Definition& d, const std::vector<Vec3>& 
         c.offset = offset;
         c.gap = gap;
         c.thickness = node_thickness_[us];
+        if (lagrange) c.friction = d.def.friction;
         out.push_back(c);
     }
 }
@@ -614,6 +615,9 @@ void ContactSolver::enforce(const std::vector<Vec3>& x, std::vector<Vec3>& x_pre
     // that do not depend on the thread count. A fixed body (infinite mass) does not move: it
     // joins no island.
     const std::size_t np = x_pred.size();
+    const bool friction = std::any_of(constraints_.begin(), constraints_.end(),
+                                      [](const Constraint& c) { return c.friction > 0; });
+    if (friction) friction_lambda_.assign(constraints_.size(), Vec3::Zero());
     warm_start(x_pred, body_u_pred, bodies, beta_particle, beta_body);
     island_nodes_.resize(constraints_.size());
     particle_moved_at_.resize(np, -1);
@@ -667,12 +671,22 @@ void ContactSolver::enforce(const std::vector<Vec3>& x, std::vector<Vec3>& x_pre
             const Real lambda_new = std::max(Real(0), c.lambda - g / c.weight);
             const Real dl = lambda_new - c.lambda;
             m.largest_lambda = std::max(m.largest_lambda, lambda_new);
-            if (dl == 0) continue;
-            c.lambda = lambda_new;
-            m.largest_change = std::max(m.largest_change, std::abs(dl));
-            m.largest_move = std::max(m.largest_move, std::abs(dl) * c.weight);
-            ++updates;
-            move_by(c, dl, x_pred, body_u_pred, bodies, beta_particle, beta_body, updates);
+            if (dl != 0) {
+                c.lambda = lambda_new;
+                m.largest_change = std::max(m.largest_change, std::abs(dl));
+                m.largest_move = std::max(m.largest_move, std::abs(dl) * c.weight);
+                ++updates;
+                move_by(c, dl, x_pred, body_u_pred, bodies, beta_particle, beta_body, updates);
+            }
+            if (c.friction > 0) {  // §8.4, after the normal multiplier that bounds it
+                const Vec3 dt = slide(c, friction_lambda_[member], x, x_pred, body_u_pred, bodies,
+                                      beta_particle, beta_body, updates + 1);
+                if (dt.squaredNorm() > 0) {
+                    ++updates;
+                    m.largest_change = std::max(m.largest_change, dt.norm());
+                    m.largest_move = std::max(m.largest_move, dt.norm() * c.weight);
+                }
+            }
         }
         return m;
     };
@@ -727,11 +741,14 @@ void ContactSolver::enforce(const std::vector<Vec3>& x, std::vector<Vec3>& x_pre
         const Constraint& c = constraints_[i];
         note_penetration(penetration_[i], c, step);
         if (c.lambda == 0) continue;
-        f_contact[static_cast<std::size_t>(c.slave)] += c.lambda * c.normal;
+        // the force on the slave: the normal push and the friction against its slip (§8.4)
+        const Vec3 force = c.friction > 0 ? Vec3(c.lambda * c.normal - friction_lambda_[i])
+                                          : Vec3(c.lambda * c.normal);
+        f_contact[static_cast<std::size_t>(c.slave)] += force;
         if (c.element >= 0)
             for (std::size_t k = 0; k < 3; ++k)
                 f_contact[static_cast<std::size_t>(c.master[k])] -= c.lambda * c.xi[k] * c.normal;
-        if (c.body >= 0) bodies[static_cast<std::size_t>(c.body)].force -= c.lambda * c.normal;
+        if (c.body >= 0) bodies[static_cast<std::size_t>(c.body)].force -= force;
     }
     // Pairs that were through already at t_n: their penetration at t_{n+1}.
     for (const Constraint& c : closed_) {
@@ -766,6 +783,40 @@ void ContactSolver::move_by(const Constraint& c, Real dl, std::vector<Vec3>& x_p
         body_u_pred[b] -= (beta_body * dl * bodies[b].inv_mass) * c.normal;
         if (stamp >= 0) body_moved_at_[b] = stamp;
     }
+}
+
+Vec3 ContactSolver::slide(const Constraint& c, Vec3& lambda_t, const std::vector<Vec3>& x,
+                          std::vector<Vec3>& x_pred, std::vector<Vec3>& body_u_pred,
+                          const std::vector<RigidBodyState>& bodies, Real beta_particle,
+                          Real beta_body, std::int64_t stamp) {
+    const auto us = static_cast<std::size_t>(c.slave);
+    const auto b = static_cast<std::size_t>(c.body);
+    const Real body_inv_mass = bodies[b].inv_mass;
+    // the slave's slip against the body over the step, in the tangent plane (eq. 8.4-1)
+    Vec3 slip = x_pred[us] - x[us] - (body_u_pred[b] - bodies[b].u);
+    slip -= c.normal.dot(slip) * c.normal;
+    Vec3 trial = lambda_t;
+    if (const Real length = slip.norm(); length > 0) {
+        // the multiplier that stops the slip, with the weight along it (eq. 8.4-2)
+        const Vec3 t = slip / length;
+        const Real w =
+            beta_particle * t.cwiseProduct(t).dot(inv_mass_[us]) + beta_body * body_inv_mass;
+        if (w > 0) trial += (length / w) * t;
+    }
+    // the Coulomb cone (eq. 8.4-3); no force without a normal one, whatever the coefficient
+    const Real bound = c.lambda > 0 ? c.friction * c.lambda : 0.0;
+    if (const Real size = trial.norm(); size > bound) trial *= bound / size;
+    const Vec3 change = trial - lambda_t;
+    if (change.squaredNorm() == 0) return change;
+    lambda_t = trial;
+    // the slave and the body move as under a force -change on the slave (eq. 8.4-4)
+    x_pred[us] -= beta_particle * inv_mass_[us].cwiseProduct(change);
+    particle_moved_at_[us] = stamp;
+    if (body_inv_mass > 0) {
+        body_u_pred[b] += (beta_body * body_inv_mass) * change;
+        body_moved_at_[b] = stamp;
+    }
+    return change;
 }
 
 MultiplierMemory::Key ContactSolver::key_of(const Constraint& c) {

@@ -130,6 +130,7 @@ private:
         Real lambda = 0;
         Real thickness = 1;  ///< slave thickness, for penetration ratios
         Real allowance = 0;  ///< penetration it already had at t_n (held, not pushed out)
+        Real friction = 0;   ///< Coulomb coefficient (rigid, Lagrange; infinity: no sliding)
         /// the sweeps' bookkeeping: the gap at its last evaluation and the update count then
         Real last_gap = 0;
         std::int64_t evaluated_at = -1;
@@ -171,6 +172,13 @@ private:
     void move_by(const Constraint& c, Real dl, std::vector<Vec3>& x_pred,
                  std::vector<Vec3>& body_u_pred, const std::vector<RigidBodyState>& bodies,
                  Real beta_particle, Real beta_body, std::int64_t stamp);
+    /// §8.4: the tangential multiplier `lambda_t` of constraint c (at x: the positions x^n)
+    /// moves to the one that stops the slave's slip against the body over the step, within the
+    /// Coulomb cone |lambda_t| <= mu lambda; returns its change.
+    Vec3 slide(const Constraint& c, Vec3& lambda_t, const std::vector<Vec3>& x,
+               std::vector<Vec3>& x_pred, std::vector<Vec3>& body_u_pred,
+               const std::vector<RigidBodyState>& bodies, Real beta_particle, Real beta_body,
+               std::int64_t stamp);
     /// The identity of constraint c from step to step (§8.3a).
     [[nodiscard]] static MultiplierMemory::Key key_of(const Constraint& c);
     /// §8.3a: the constraints start from the multipliers the memory kept for their keys, and
@@ -196,7 +204,10 @@ private:
     std::vector<std::pair<MultiplierMemory::Key, Real>> memory_entries_;  ///< scratch
     ConstraintIslands islands_;
     std::vector<ConstraintIslands::Nodes> island_nodes_;  ///< scratch, per constraint
-    std::vector<Real> penetration_;   ///< scratch, per constraint: left at t_{n+1}
+    std::vector<Real> penetration_;  ///< scratch, per constraint: left at t_{n+1}
+    /// per constraint: its tangential (friction) multiplier, a force in the tangent plane
+    /// (§8.4); sized only in steps with friction
+    std::vector<Vec3> friction_lambda_;
     std::vector<int> island_sweeps_;  ///< scratch, per island: its sweeps, < 0 unconverged
     std::vector<std::int64_t> island_updates_;  ///< scratch, per island
     std::vector<Real> element_thickness_;

@@ -7,6 +7,7 @@
 #include <numeric>
 
 #include "fpmshell/solver/explicit_solver.hpp"
+#include "fpmshell/solver/nodal_rigid_bodies.hpp"
 
 namespace fpmshell {
 
@@ -71,9 +72,19 @@ std::string model_summary(const Model& model) {
                          "\ncontact self over {} elements ({})", c.elements.size(),
                          c.method == ContactMethod::Penalty ? "penalty" : "Lagrange multipliers")
                    : fmt::format(
-                         "\ncontact of {} particles with rigid body {} ({})", c.nodes.size(),
+                         "\ncontact of {} particles with rigid body {} ({}{})", c.nodes.size(),
                          model.rigid_bodies[static_cast<std::size_t>(c.body)].name,
-                         c.method == ContactMethod::Penalty ? "penalty" : "Lagrange multipliers");
+                         c.method == ContactMethod::Penalty ? "penalty" : "Lagrange multipliers",
+                         c.friction == 0          ? std::string()
+                         : std::isinf(c.friction) ? std::string(", no sliding")
+                                                  : fmt::format(", friction {:.6g}", c.friction));
+    if (!model.nodal_rigid_bodies.empty()) {
+        const NodalRigidBodies bodies(model);
+        std::size_t particles = 0;
+        for (const auto& b : bodies.bodies()) particles += b.size();
+        out += fmt::format("\nnodal rigid bodies: {} ({} constraints, {} particles)",
+                           bodies.bodies().size(), model.nodal_rigid_bodies.size(), particles);
+    }
     const Real dt = solver.stable_dt();
     out += fmt::format("\nstable time step {:.6g} (time_step_scale {} x critical)\n", dt,
                        model.control.time_step_scale);

@@ -221,6 +221,8 @@ void check_distributable(const Model& model, int ranks) {
     if (model.control.mode == SolutionMode::Relaxation) refuse("control.mode", "relaxation");
     if (model.control.membrane == MembraneKernel::Smoothed)
         refuse("control.membrane", "the smoothed membrane");
+    if (!model.nodal_rigid_bodies.empty())
+        refuse("constraints", "a nodal rigid body (constraints of type rigid)");
 }
 
 /// control.mass_scaling (§6.10): the mass added (`when`: at set-up, or by the end of the run),

@@ -182,6 +182,7 @@ struct WallDef {
     std::array<Real, 3> normal{};  ///< a planar wall's head - tail (a moving one moves along it)
     Real mass = 0, speed = 0;      ///< moving walls: mass and the speed along the normal
     bool moving = false;
+    Real friction = 0;  ///< a planar wall's FRIC: 0 frictionless, (0, 1) Coulomb, 1 no sliding
     /// the shape's keys of the model (model-format.md rigid_bodies): "shape: plane, point: ..."
     std::string geometry;
     /// a geometric wall's _MOTION: its curve (0: none), OPT (0 velocity, 1 displacement), the
@@ -268,6 +269,12 @@ private:
                    starts_with(k, "CONTACT_AUTOMATIC_SURFACE_TO_SURFACE") ||
                    starts_with(k, "CONTACT_AUTOMATIC_NODES_TO_SURFACE")) {
             contact(b);
+        } else if (starts_with(k, "CONSTRAINED_NODAL_RIGID_BODY")) {
+            nodal_rigid_body(b);
+        } else if (starts_with(k, "CONSTRAINED_SPOTWELD")) {
+            spot_weld(b);
+        } else if (starts_with(k, "CONSTRAINED_GENERALIZED_WELD")) {
+            generalized_spot_weld(b);
         } else if (starts_with(k, "CONTROL_") || k == "DAMPING_GLOBAL") {
             control(b);
         } else if (starts_with(k, "DATABASE_")) {
@@ -305,7 +312,9 @@ private:
             return "fpmshell models shells only (*ELEMENT_SHELL); this element kind would change "
                    "the model";
         if (starts_with(k, "CONSTRAINED_"))
-            return "constraints between nodes are not supported; they would change the model";
+            return "this constraint is not supported (fpmshell reads "
+                   "*CONSTRAINED_NODAL_RIGID_BODY, *CONSTRAINED_SPOTWELD and "
+                   "*CONSTRAINED_GENERALIZED_WELD_SPOT), and ignoring it would change the model";
         if (starts_with(k, "BOUNDARY_PRESCRIBED_MOTION"))
             return "fpmshell reads *BOUNDARY_PRESCRIBED_MOTION_NODE and _SET (with _ID); rigid "
                    "parts are not supported";
@@ -387,6 +396,80 @@ private:
             f.fail("no *SET_" + upper(kind) + "_LIST defines set " + std::to_string(sid) +
                    " (define sets before the cards that use them)");
         return it->second;
+    }
+
+    // -- constraints: nodal rigid bodies and spot welds (model-format.md `constraints`)
+
+    /// *CONSTRAINED_NODAL_RIGID_BODY (_TITLE): the nodes of NSID move as one rigid body.
+    void nodal_rigid_body(const DeckBlock& b) {
+        const std::set<std::string> opt = options_of(b.keyword, 4);
+        for (const std::string& o : opt)
+            if (o != "TITLE")
+                refuse(b, "*CONSTRAINED_NODAL_RIGID_BODY_" + o +
+                              " is not supported (its inertia or constraints would change the "
+                              "model); fpmshell reads the plain card and _TITLE");
+        const std::size_t first = opt.count("TITLE") ? 1 : 0;
+        const Card f = required_card(b, first, "PID, CID, NSID, PNODE, IPRT, DRFLAG, RRFLAG");
+        const long long nsid = f.id(2, "NSID");
+        if (f.id(5, "DRFLAG") != 0 || f.id(6, "RRFLAG") != 0)
+            f.fail("DRFLAG and RRFLAG (released degrees of freedom) are not supported (0 only)");
+        constraints_.push_back(
+            {"  - {type: rigid, nodes: " + yaml_name(set_name(f, "node", nsid)) + "}",
+             {&b, f.line()}});
+        if (f.id(3, "PNODE") != 0)
+            note(b, f.line(), "PNODE ignored: the body's motion is that of its nodes");
+    }
+
+    /// *CONSTRAINED_SPOTWELD (_ID): each weld's two nodes move as one rigid body; the failure
+    /// data is noted (a weld never fails).
+    void spot_weld(const DeckBlock& b) {
+        const std::set<std::string> opt = options_of(b.keyword, 2);
+        for (const std::string& o : opt)
+            if (o != "ID")
+                refuse(b, "*CONSTRAINED_SPOTWELD_" + o + " is not supported (plain and _ID)");
+        const std::size_t per_weld = opt.count("ID") ? 2 : 1;
+        if (b.cards.empty()) required_card(b, 0, "N1, N2, SN, SS, N, M, TF, EP");
+        bool failure = false;
+        for (std::size_t c = 0; c < b.cards.size(); c += per_weld) {
+            const Card f = required_card(b, c + per_weld - 1, "N1, N2, SN, SS, N, M, TF, EP");
+            weld_nodes(b, f, {f.id(0, "N1"), f.id(1, "N2")});
+            failure = failure || f.real(2, "SN") != 0 || f.real(3, "SS") != 0 ||
+                      (f.real(6, "TF") != 0 && f.real(6, "TF") < 1e20);
+        }
+        if (failure)
+            note(b, b.line, "the welds' failure (SN, SS, TF) is not modelled: they never fail");
+    }
+
+    /// *CONSTRAINED_GENERALIZED_WELD_SPOT (_ID): the nodes of NSID move as one rigid body; the
+    /// failure data is noted.
+    void generalized_spot_weld(const DeckBlock& b) {
+        const std::set<std::string> opt = options_of(b.keyword, 3);
+        if (!opt.count("SPOT"))
+            refuse(b,
+                   "fpmshell reads *CONSTRAINED_GENERALIZED_WELD_SPOT only (fillet, butt and "
+                   "combined welds are not supported)");
+        for (const std::string& o : opt)
+            if (o != "SPOT" && o != "ID")
+                refuse(b, "*CONSTRAINED_GENERALIZED_WELD_SPOT_" + o + " is not supported");
+        const std::size_t first = opt.count("ID") ? 1 : 0;
+        const Card f = required_card(b, first, "NSID, CID, FILTER, WINDOW, NPR, NPRT");
+        const Card g = required_card(b, first + 1, "TFAIL, EPSF, SN, SS, N, M");
+        constraints_.push_back(
+            {"  - {type: rigid, nodes: " + yaml_name(set_name(f, "node", f.id(0, "NSID"))) + "}",
+             {&b, f.line()}});
+        if ((g.real(0, "TFAIL") != 0 && g.real(0, "TFAIL") < 1e20) || g.real(1, "EPSF") != 0 ||
+            g.real(2, "SN") != 0 || g.real(3, "SS") != 0)
+            note(b, g.line(),
+                 "the weld's failure (TFAIL, EPSF, SN, SS) is not modelled: it never fails");
+    }
+
+    /// A weld of the nodes `ids` as a rigid body of a set of its own (`spotweld_<k>`).
+    void weld_nodes(const DeckBlock& b, const Card& f, const std::array<long long, 2>& ids) {
+        if (ids[0] == ids[1]) f.fail("N1 and N2 are the same node " + std::to_string(ids[0]));
+        const std::string group = "spotweld_" + std::to_string(++welds_);
+        for (const long long id : ids)
+            add_node_to_group(group, id, "{type: rigid, nodes: NODES}", {&b, f.line()},
+                              constraints_);
     }
 
     // -- parts, sections, materials, curves
@@ -983,10 +1066,11 @@ private:
         if (f.real(3, "OFFSET") != 0) f.fail("OFFSET is not supported (0 only)");
         if (f.real(4, "BIRTH") != 0 || (f.real(5, "DEATH") != 0 && f.real(5, "DEATH") < 1e20))
             f.fail("BIRTH and DEATH are not supported (the wall acts from start to end)");
-        if (g.real(6, "FRIC") != 0)
+        w.friction = g.real(6, "FRIC");
+        if (!(w.friction >= 0 && w.friction <= 1))
             g.fail(
-                "FRIC: friction on rigid walls is not modelled; set FRIC = 0 to run "
-                "frictionless");
+                "FRIC must be from 0 to 1 (0 frictionless, a Coulomb coefficient below 1, 1 no "
+                "sliding)");
         w.nodes = nsid == 0 ? "" : set_name(f, "node", nsid);
         std::array<Real, 3> tail{};
         Real len = 0;
@@ -1267,6 +1351,7 @@ private:
         write_list(out, "boundary", boundary_);
         write_list(out, "loads", loads_);
         write_list(out, "initial_conditions", initial_);
+        write_list(out, "constraints", constraints_);
         write_walls(out);
         write_list(out, "contact", contact_);
         if (damping_) out.push_back(*damping_);
@@ -1433,7 +1518,11 @@ private:
         std::vector<Line> contacts;
         for (const WallDef& w : walls_)
             contacts.push_back({"  - {type: rigid, body: rigidwall" + std::to_string(w.id) +
-                                    (w.nodes.empty() ? "" : ", nodes: " + yaml_name(w.nodes)) + "}",
+                                    (w.nodes.empty() ? "" : ", nodes: " + yaml_name(w.nodes)) +
+                                    (w.friction == 0   ? ""
+                                     : w.friction == 1 ? ", friction: stick"
+                                                       : ", friction: " + num(w.friction)) +
+                                    "}",
                                 w.at});
         contact_.insert(contact_.begin(), contacts.begin(), contacts.end());
     }
@@ -1558,7 +1647,8 @@ private:
     std::vector<SegmentLoad> segment_loads_;
     /// the model line of a load or prescribed motion on single nodes -> the set of its nodes
     std::map<std::string, std::string> node_group_of_text_;
-    std::vector<Line> boundary_, loads_, initial_, contact_, control_;
+    std::vector<Line> boundary_, loads_, initial_, contact_, control_, constraints_;
+    long long welds_ = 0;  ///< spot welds read (their sets are numbered by it)
     std::vector<WallDef> walls_;
     std::optional<Line> end_time_, damping_, every_, fields_every_;
     Real every_value_ = 0;

@@ -35,6 +35,9 @@ void read_curves(const YamlValue& v, Model& model);
 void read_boundary(const YamlValue& v, Model& model);
 void read_loads(const YamlValue& v, Model& model);
 void read_initial_conditions(const YamlValue& v, Model& model);
+/// `constraints`, after `boundary` (a particle of a nodal rigid body takes no boundary
+/// condition).
+void read_constraints(const YamlValue& v, Model& model);
 
 // Rigid bodies and contact (model_contact_blocks.cpp).
 

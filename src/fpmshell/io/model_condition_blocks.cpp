@@ -1,6 +1,7 @@
 // The `curves`, `boundary`, `loads` and `initial_conditions` blocks of the model file (see
 // model_blocks.hpp).
 #include <algorithm>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -152,6 +153,32 @@ void read_initial_conditions(const YamlValue& v, Model& model) {
                 rot.at("angular_velocity", "the rotation vector [wx, wy, wz] (rad/time)").vec3();
         }
         model.initial_conditions.push_back(ic);
+    }
+}
+
+void read_constraints(const YamlValue& v, Model& model) {
+    // the particles that have a boundary condition: a rigid body's motion is that of all its
+    // particles, so one fixed or driven particle would have to move the others
+    std::vector<std::uint8_t> bounded(model.nodes.size(), 0);
+    for (const BoundaryCondition& bc : model.boundary)
+        for (const Index p : bc.nodes) bounded[static_cast<std::size_t>(p)] = 1;
+    for (const YamlValue& item : v.list("constraints")) {
+        const YamlMap m = item.map({"type", "nodes"});
+        // `type` names the kind of constraint; rigid is the one fpmshell has
+        static_cast<void>(
+            m.at("type", "rigid (the nodes move as one rigid body)").choice({"rigid"}));
+        const YamlValue nodes = m.at("nodes", "a node set name");
+        NodalRigidBody body;
+        body.nodes = named_node_set(model, nodes);
+        if (body.nodes.size() < 2)
+            nodes.fail("a rigid body needs at least two particles, the set '" + nodes.text() +
+                       "' has " + std::to_string(body.nodes.size()));
+        for (const Index p : body.nodes)
+            if (bounded[static_cast<std::size_t>(p)])
+                nodes.fail("particle " + std::to_string(p + 1) +
+                           " of the rigid body also has a boundary condition (a rigid body "
+                           "moves as a whole: constrain none of its particles)");
+        model.nodal_rigid_bodies.push_back(std::move(body));
     }
 }
 

@@ -1,5 +1,6 @@
 // The `rigid_bodies` and `contact` blocks of the model file (see model_blocks.hpp).
 #include <algorithm>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -147,13 +148,22 @@ void read_contact(const YamlValue& v, Model& model) {
             c.exclusion_radius = m.non_negative_or("exclusion_radius", 0.0);
             read_contact_method(m, c);
         } else {
-            const YamlMap m =
-                item.map({"type", "body", "nodes", "method", "penalty_scale", "max_iterations"});
+            const YamlMap m = item.map(
+                {"type", "body", "nodes", "method", "penalty_scale", "max_iterations", "friction"});
             c.type = ContactType::Rigid;
             c.body = named_rigid_body(model, m.at("body", "the name of a rigid body"));
             c.nodes = m.find("nodes") ? named_node_set(model, *m.find("nodes"))
                                       : model.node_sets.at("all");
             read_contact_method(m, c);
+            if (const auto f = m.find("friction")) {
+                c.friction = f->is_scalar() && f->text() == "stick"
+                                 ? std::numeric_limits<Real>::infinity()
+                                 : f->non_negative();
+                if (c.friction > 0 && c.method == ContactMethod::Penalty)
+                    f->fail(
+                        "friction is modelled with the Lagrange multipliers only (method: "
+                        "lagrange); remove `friction` or `method: penalty`");
+            }
             // A particle that starts inside the face (its half thickness included) would be
             // thrown out of it in one step.
             const RigidBody& rb = model.rigid_bodies[static_cast<std::size_t>(c.body)];

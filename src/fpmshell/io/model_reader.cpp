@@ -25,11 +25,11 @@ namespace {
 
 constexpr std::uintmax_t k_max_model_file_bytes = 64U << 20U;
 
-const std::vector<std::string> k_top_keys = {"title",        "mesh",     "sets",
-                                             "materials",    "sections", "boundary",
-                                             "curves",       "loads",    "initial_conditions",
-                                             "rigid_bodies", "contact",  "damping",
-                                             "control",      "output"};
+const std::vector<std::string> k_top_keys = {"title",       "mesh",         "sets",
+                                             "materials",   "sections",     "boundary",
+                                             "curves",      "loads",        "initial_conditions",
+                                             "constraints", "rigid_bodies", "contact",
+                                             "damping",     "control",      "output"};
 
 YAML::Node load_yaml(const std::string& path) {
     std::error_code ec;
@@ -140,6 +140,7 @@ Model read_model_tree(YamlContext& ctx, YAML::Node root, const std::string& path
     if (const auto b = top.find("boundary")) read_boundary(*b, model);
     if (const auto l = top.find("loads")) read_loads(*l, model);
     if (const auto i = top.find("initial_conditions")) read_initial_conditions(*i, model);
+    if (const auto c = top.find("constraints"); c && !c->is_null()) read_constraints(*c, model);
     if (const auto r = top.find("rigid_bodies"); r && !r->is_null()) read_rigid_bodies(*r, model);
     read_end_when_body_stops(top.at("control"), model);
     if (const auto c = top.find("contact"); c && !c->is_null()) {

@@ -180,6 +180,12 @@ struct RigidBody {
     Real size_l = 0, size_m = 0;
 };
 
+/// One entry of `constraints` of type rigid: particles that move as one rigid body (LS-DYNA's
+/// nodal rigid bodies and spot welds; solver/nodal_rigid_bodies.hpp).
+struct NodalRigidBody {
+    std::vector<Index> nodes;  ///< at least two, sorted
+};
+
 enum class ContactType { Self, Rigid };
 enum class ContactMethod { LagrangeMultiplier, Penalty };
 
@@ -196,6 +202,9 @@ struct ContactDefinition {
     Real exclusion_radius = 0;
     Real penalty_scale = 0.1;  ///< penalty: stiffness = scale x pair mass / dt^2
     int max_iterations = 50;   ///< Lagrange multipliers: Gauss-Seidel sweeps per step
+    /// rigid, Lagrange multipliers: Coulomb friction coefficient between the particles and the
+    /// body (theory.md §8.5); 0 frictionless, infinity: no sliding once in contact
+    Real friction = 0;
 };
 
 enum class Quantity {
@@ -278,6 +287,7 @@ struct Model {
     std::vector<Load> loads;
     std::vector<InitialVelocity> initial_conditions;
     std::vector<RigidBody> rigid_bodies;
+    std::vector<NodalRigidBody> nodal_rigid_bodies;  ///< `constraints` of type rigid
     std::vector<ContactDefinition> contacts;
     Damping damping;
     Control control;

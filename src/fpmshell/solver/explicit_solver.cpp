@@ -23,7 +23,7 @@ constexpr Index k_parallel_min_particles = 2000;
 }  // namespace
 
 ExplicitSolver::ExplicitSolver(const Model& model)
-    : model_(model), topology_(model), elements_(model, topology_) {
+    : model_(model), topology_(model), elements_(model, topology_), nodal_rigid_bodies_(model) {
     const std::size_t np = model.nodes.size();
     const Communicator& comm = Communicator::world();
     decomposition_ =
@@ -113,8 +113,8 @@ ExplicitSolver::ExplicitSolver(const Model& model)
     // Without prescribed motions and Lagrange contact, which change v^{n+1/2} between the two,
     // the velocity update and the energy pass are one sweep over the particle arrays instead
     // of two (the same sums in the same order).
-    fused_particle_pass_ =
-        !bc_->has_prescribed_motions() && !(contact_ && contact_->has_lagrange());
+    fused_particle_pass_ = !bc_->has_prescribed_motions() &&
+                           !(contact_ && contact_->has_lagrange()) && nodal_rigid_bodies_.empty();
 }
 
 Vec3 ExplicitSolver::body_acceleration(Index b) const {
@@ -154,7 +154,10 @@ void ExplicitSolver::cycle(const CyclePolicy& policy, Real load_time, Real dt_ca
         particles = update_velocities(policy, dt);         // 5 §6.6
         impose_prescribed_motions(policy, load_time, dt);  // 6 §6.7
         update_body_velocities(dt);
-        lagrange_contact(dt);              // 7 §8.3
+        nodal_rigid_bodies_.make_rigid(s_, dt.dt_new);  // 6b §6.11
+        lagrange_contact(dt);                           // 7 §8.3
+        if (contact_ && contact_->has_lagrange())       // what the contact moved (§6.11)
+            nodal_rigid_bodies_.make_rigid(s_, dt.dt_new);
         advance_particles(dt, particles);  // 8-9
     }
     book_energies(particles);    // 8 §6.8

@@ -21,6 +21,7 @@
 #include "fpmshell/solver/energy_balance.hpp"
 #include "fpmshell/solver/external_loads.hpp"
 #include "fpmshell/solver/mass_scaling.hpp"
+#include "fpmshell/solver/nodal_rigid_bodies.hpp"
 #include "fpmshell/solver/particle_state.hpp"
 #include "fpmshell/solver/shell_elements.hpp"
 
@@ -207,6 +208,7 @@ private:
     std::unique_ptr<ExternalLoads> loads_;
     std::vector<RigidBodyState> bodies_;
     std::unique_ptr<ContactSolver> contact_;  ///< null without contact definitions
+    NodalRigidBodies nodal_rigid_bodies_;     ///< `constraints` of type rigid
     /// Steps 5 and 8-9 in one sweep (update_velocities_and_advance_particles).
     bool fused_particle_pass_ = false;
     bool parallel_particles_ = false;  ///< particle loops in parallel (large models)

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <string>
 #include <utility>
 #include <vector>
@@ -520,6 +521,41 @@ TEST(ModelReader, ReadsSelfContactOverSeveralSets) {
     expect_error(replaced(yaml, "[a, b]", "[a, c]"), 13, "contact.0.elements.1", "c");
 }
 
+// contact.friction of a rigid contact: a Coulomb coefficient, or `stick` (no sliding).
+TEST(ModelReader, ReadsTheFrictionOfARigidContact) {
+    const std::string yaml =
+        k_base +
+        "rigid_bodies:\n  - {name: w, fixed: true, point: [0, 0, -1], normal: [0, 0, 1]}\n"
+        "contact:\n  - {type: rigid, body: w, friction: 0.25}\n";
+    const TempDir dir;
+    EXPECT_EQ(read_model(dir.write("model.yaml", yaml)).contacts[0].friction, 0.25);
+    EXPECT_EQ(
+        read_model(dir.write("stick.yaml", replaced(yaml, "0.25", "stick"))).contacts[0].friction,
+        std::numeric_limits<Real>::infinity());
+    EXPECT_EQ(read_model(dir.write("none.yaml", replaced(yaml, ", friction: 0.25", "")))
+                  .contacts[0]
+                  .friction,
+              0.0);
+}
+
+// constraints of type rigid: the particles of a node set move as one rigid body.
+TEST(ModelReader, ReadsNodalRigidBodies) {
+    const std::string yaml = k_base +
+                             "sets:\n  weld: {box: [[0.9, -1, -1], [1.1, 0.6, 1]]}\n"
+                             "constraints:\n  - {type: rigid, nodes: weld}\n";
+    const TempDir dir;
+    const Model m = read_model(dir.write("model.yaml", yaml));
+    ASSERT_EQ(m.nodal_rigid_bodies.size(), 1u);
+    EXPECT_EQ(m.nodal_rigid_bodies[0].nodes, m.node_sets.at("weld"));
+    EXPECT_EQ(m.nodal_rigid_bodies[0].nodes.size(), 2u);  // x = 1, y = 0 and 0.5
+    expect_error(replaced(yaml, "0.6, 1]", "0.1, 1]"), 12, "constraints.0.nodes",
+                 "a rigid body needs at least two particles, the set 'weld' has 1");
+    expect_error(replaced(yaml, "type: rigid", "type: tied"), 12, "constraints.0.type",
+                 "expected one of rigid");
+    expect_error(yaml + "boundary:\n  - {nodes: weld, fix: [uz]}\n", 12, "constraints.0.nodes",
+                 "of the rigid body also has a boundary condition");
+}
+
 // Every error category names the file, the line and the key in one sentence.
 TEST(ModelReader, EveryErrorNamesFileLineAndKey) {
     struct Case {
@@ -710,6 +746,17 @@ TEST(ModelReader, EveryErrorNamesFileLineAndKey) {
         {k_base + "rigid_bodies:\n  - {name: w, mass: 1, point: [0, 0, 1], normal: [0, 0, 1]}\n"
                   "contact:\n  - {type: rigid, body: w}\n",
          12, "contact.0", "starts 1.050000 inside the face of rigid body 'w'"},
+        {k_base + "rigid_bodies:\n  - {name: w, mass: 1, point: [0, 0, 1], normal: [0, 0, -1]}\n"
+                  "contact:\n  - {type: rigid, body: w, friction: -0.1}\n",
+         12, "contact.0.friction", "must be 0 or more, got '-0.1'"},
+        {k_base + "rigid_bodies:\n  - {name: w, mass: 1, point: [0, 0, 1], normal: [0, 0, -1]}\n"
+                  "contact:\n  - {type: rigid, body: w, friction: sticky}\n",
+         12, "contact.0.friction", "expected a number, got 'sticky'"},
+        {k_base + "rigid_bodies:\n  - {name: w, mass: 1, point: [0, 0, 1], normal: [0, 0, -1]}\n"
+                  "contact:\n  - {type: rigid, body: w, method: penalty, friction: 0.2}\n",
+         12, "contact.0.friction", "friction is modelled with the Lagrange multipliers only"},
+        {k_base + "contact: [{type: self, friction: 0.2}]\n", 9, "contact.0.friction",
+         "unknown key"},
         {k_base + "output:\n  histories:\n    - {name: s, quantity: rigid_striker_uz}\n", 11,
          "output.histories.0.quantity", "the model has no rigid_bodies"},
         {k_base + "rigid_bodies:\n  - {name: w, mass: 1, point: [0, 0, 1], normal: [0, 0, -1]}\n"

@@ -1,0 +1,37 @@
+// Nodal rigid bodies (model-format.md `constraints`, theory.md §6.11): groups of particles that
+// move as one rigid body, as LS-DYNA's *CONSTRAINED_NODAL_RIGID_BODY and its spot welds do. Each
+// step, after the particles' free velocity update, the velocities of a body's particles are
+// replaced by the rigid motion of the same linear and angular momentum, with the rotation
+// applied exactly so that the body keeps its shape to rounding.
+#pragma once
+
+#include <vector>
+
+#include "fpmshell/core/types.hpp"
+#include "fpmshell/model/model.hpp"
+
+namespace fpmshell {
+
+struct ParticleState;
+
+class NodalRigidBodies {
+public:
+    /// The model's groups, those that share a particle merged into one body (two rigid bodies
+    /// joined at a particle are one).
+    explicit NodalRigidBodies(const Model& model);
+
+    [[nodiscard]] bool empty() const { return bodies_.empty(); }
+    /// The bodies after merging, each a sorted list of particles.
+    [[nodiscard]] const std::vector<std::vector<Index>>& bodies() const { return bodies_; }
+
+    /// Eqs. 6.11-1 to 6.11-4: the half-step velocities v^{n+1/2} and the tangent-plane angular
+    /// velocities of every body's particles become one rigid motion with their linear and
+    /// angular momentum about the centre of mass at x^n, such that x^{n+1} = x^n + dt v is that
+    /// rigid motion exactly. The bodies run in parallel (each writes its own particles).
+    void make_rigid(ParticleState& s, Real dt_new) const;
+
+private:
+    std::vector<std::vector<Index>> bodies_;
+};
+
+}  // namespace fpmshell

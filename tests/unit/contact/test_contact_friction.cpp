@@ -1,0 +1,206 @@
+// Coulomb friction between the particles and a rigid body (theory.md §8.4), on one flat
+// triangle resting on a plane and pressed onto it by forces m_i g (a weight):
+// - sliding at v0 it decelerates at mu g and stops after v0^2 / (2 mu g), then stays;
+// - pushed along the plane by 1.5 mu m_i g it accelerates at 0.5 mu g; by 0.5 mu m_i g it stays;
+// - `stick` (an infinite coefficient) stops the sliding where the triangle lands;
+// - on a fixed plane moving sideways it is dragged up to the plane's speed and rides on it;
+// - on a free plane the friction exchanges momentum: the total along the plane is conserved and
+//   both end at the common velocity;
+// - in every case the energy balance closes, the friction's work counted as contact energy.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+#include "fpmshell/solver/explicit_solver.hpp"
+#include "one_section_model.hpp"
+
+using namespace fpmshell;
+
+namespace {
+
+constexpr Real k_h = 0.01;  // thickness: the triangle's mid-surface rests h/2 above the plane
+constexpr Real k_g = 100;   // the pressing acceleration
+
+struct Sliding {
+    Real friction = 0.3;
+    Vec3 velocity = Vec3::Zero();  ///< of the triangle at t = 0
+    Real push = 0;                 ///< force along x per node, times m_i g
+    Vec3 body_velocity = Vec3::Zero();
+    Real body_mass = 0;  ///< 0: a fixed plane
+    Real lift = 0;       ///< initial gap to the plane (0: resting on it)
+};
+
+/// A flat triangle (legs 1 m) on the plane z = 0 (normal +z), pressed by m_i g per node, its
+/// mid-surface h/2 + lift above the plane.
+Model sliding_triangle(const Sliding& c) {
+    MeshData mesh;
+    const Real z = 0.5 * k_h + c.lift;
+    mesh.nodes = {Vec3(0, 0, z), Vec3(1, 0, z), Vec3(0, 1, z)};
+    mesh.triangles = {{0, 1, 2}};
+    Model m = test::one_section_model(mesh, k_h);
+    m.control.end_time = 1;
+    const std::vector<Index> all{0, 1, 2};
+    m.initial_conditions.push_back({all, c.velocity, Vec3::Zero()});
+    const std::vector<Real> mass = ExplicitSolver(m).state().mass;
+    for (Index p : all)
+        m.loads.push_back({LoadType::Force,
+                           {p},
+                           {},
+                           0,
+                           mass[static_cast<std::size_t>(p)] * k_g * Vec3(c.push, 0, -1),
+                           -1});
+    RigidBody plane;
+    plane.name = "plane";
+    plane.normal = Vec3::UnitZ();
+    plane.velocity = c.body_velocity;
+    plane.fixed = c.body_mass == 0;
+    plane.mass = c.body_mass;
+    m.rigid_bodies.push_back(plane);
+    ContactDefinition contact;
+    contact.type = ContactType::Rigid;
+    contact.body = 0;
+    contact.nodes = all;
+    contact.friction = c.friction;
+    m.contacts.push_back(contact);
+    return m;
+}
+
+Real total_mass(const ExplicitSolver& s) {
+    Real m = 0;
+    for (Real v : s.state().mass) m += v;
+    return m;
+}
+
+/// Runs to time t, returns the largest step taken.
+Real run_to(ExplicitSolver& s, Real t) {
+    Real dt_max = 0;
+    while (s.time() < t) {
+        const Real before = s.time();
+        s.step(1e30);
+        dt_max = std::max(dt_max, s.time() - before);
+    }
+    return dt_max;
+}
+
+}  // namespace
+
+TEST(ContactFriction, ASlidingTriangleStopsAfterTheCoulombDistanceAndStays) {
+    const Real v0 = 1, mu = 0.3;
+    const Model m = sliding_triangle({mu, Vec3(v0, 0, 0)});
+    ExplicitSolver s(m);
+    const Real t_stop = v0 / (mu * k_g), distance = v0 * v0 / (2 * mu * k_g);
+    // halfway: v = v0 - mu g t, at the half step the velocities stand for; one step's
+    // deceleration is the resolution of the comparison
+    const Real dt = run_to(s, 0.5 * t_stop);
+    for (const Vec3& v : s.state().v) {
+        EXPECT_NEAR(v.x(), v0 - mu * k_g * (s.time() - 0.5 * dt), mu * k_g * dt);
+        EXPECT_NEAR(v.y(), 0.0, 1e-9 * v0);  // the triangle's in-plane forces: rounding
+    }
+    // the plane takes the friction force +mu m g along x (the weight m g on it along -z)
+    const Real weight = total_mass(s) * k_g;
+    EXPECT_NEAR(s.bodies()[0].force.x(), mu * weight, 1e-6 * weight);
+    EXPECT_NEAR(s.bodies()[0].force.z(), -weight, 1e-6 * weight);
+    run_to(s, 2 * t_stop);
+    for (std::size_t p = 0; p < 3; ++p) {
+        // at rest: the static friction holds it (the sweeps' tolerance leaves ~1e-6 of a step's
+        // slip); the distance within one step of travel at v0
+        EXPECT_NEAR(s.state().v[p].x(), 0.0, 1e-9 * v0);
+        EXPECT_NEAR(s.state().x[p].x() - m.nodes[p].x(), distance, v0 * dt);
+        EXPECT_NEAR(s.state().x[p].z(), m.nodes[p].z(), 1e-3 * k_h);  // on the plane
+    }
+    // the kinetic energy went into the contact (friction); nothing else did work
+    const Real kinetic0 = 0.5 * total_mass(s) * v0 * v0;
+    EXPECT_NEAR(s.energy().contact, kinetic0, 1e-3 * kinetic0);
+    // the friction acts from the first step, whose half before t_0 the balance cannot book
+    // (the run starts at x^0): half a step of friction work, 3e-6 of the energy
+    EXPECT_LT(std::abs(s.energy().error()), 1e-5);
+}
+
+TEST(ContactFriction, APushAboveTheStaticFrictionSlidesAndOneBelowItDoesNot) {
+    const Real mu = 0.3;
+    {
+        const Model m = sliding_triangle({mu, Vec3::Zero(), 1.5 * mu});
+        ExplicitSolver s(m);
+        const Real dt = run_to(s, 0.02);
+        for (const Vec3& v : s.state().v)  // (1.5 - 1) mu g, to a step's acceleration
+            EXPECT_NEAR(v.x(), 0.5 * mu * k_g * (s.time() - 0.5 * dt), mu * k_g * dt);
+        EXPECT_LT(std::abs(s.energy().error()), 1e-5);  // friction from t_0, as above
+    }
+    {
+        const Model m = sliding_triangle({mu, Vec3::Zero(), 0.5 * mu});
+        ExplicitSolver s(m);
+        run_to(s, 0.02);
+        // held (the sweeps' tolerance lets ~1e-6 of a step's slip through)
+        for (const Vec3& v : s.state().v) EXPECT_NEAR(v.x(), 0.0, 1e-9);
+        EXPECT_NEAR(s.bodies()[0].force.x(), 0.5 * mu * total_mass(s) * k_g,
+                    1e-6 * total_mass(s) * k_g);
+    }
+}
+
+TEST(ContactFriction, StickStopsTheSlidingWhereItLands) {
+    // it falls 1e-5 m under its weight (a few steps) and lands sliding at v0
+    const Real v0 = 1, lift = 1e-5;
+    const Model m = sliding_triangle(
+        {std::numeric_limits<Real>::infinity(), Vec3(v0, 0, 0), 0, Vec3::Zero(), 0, lift});
+    ExplicitSolver s(m);
+    const Real t_land = std::sqrt(2 * lift / k_g);
+    Real dt = run_to(s, s.time() + 1e-12);
+    dt = std::max(dt, run_to(s, s.time() + 1e-12));  // two steps of the fall
+    // the start of the central difference under the weight leaves a balance error of its own
+    // (3.4e-5 of the kinetic energy, the same without friction); the landing adds to it
+    const Real error_falling = s.energy().error();
+    EXPECT_LT(std::abs(error_falling), 1e-4);
+    while (s.time() < t_land) dt = std::max(dt, run_to(s, s.time() + 1e-12));
+    run_to(s, s.time() + 2 * dt);  // the landing step, whichever it was
+    for (const Vec3& v : s.state().v) EXPECT_NEAR(v.x(), 0.0, 1e-9 * v0);
+    for (std::size_t p = 0; p < 3; ++p)  // it slid only while it fell
+        EXPECT_NEAR(s.state().x[p].x() - m.nodes[p].x(), v0 * t_land, 3 * v0 * dt);
+    run_to(s, 0.01);
+    for (const Vec3& v : s.state().v) EXPECT_NEAR(v.x(), 0.0, 1e-9 * v0);
+    // the contact took the sliding and the falling kinetic energy (perfectly plastic impact)
+    const Real mass = total_mass(s);
+    const Real taken = 0.5 * mass * v0 * v0 + mass * k_g * lift;
+    EXPECT_NEAR(s.energy().contact, taken, 1e-3 * taken);
+    EXPECT_NEAR(s.energy().error(), error_falling, 1e-7);  // nothing: the stop is booked whole
+}
+
+TEST(ContactFriction, AMovingPlaneDragsTheTriangleUpToItsSpeed) {
+    const Real speed = 0.5, mu = 0.3;
+    const Model m = sliding_triangle({mu, Vec3::Zero(), 0, Vec3(speed, 0, 0)});
+    ExplicitSolver s(m);
+    const Real t_reach = speed / (mu * k_g);
+    const Real dt = run_to(s, 0.5 * t_reach);
+    for (const Vec3& v : s.state().v)
+        EXPECT_NEAR(v.x(), mu * k_g * (s.time() - 0.5 * dt), mu * k_g * dt);
+    run_to(s, 2 * t_reach);
+    for (const Vec3& v : s.state().v) EXPECT_NEAR(v.x(), speed, 1e-9 * speed);
+    EXPECT_LT(std::abs(s.energy().error()), 1e-5);  // friction from t_0, as in the sliding test
+}
+
+TEST(ContactFriction, OnAFreePlaneTheMomentumAlongItIsConserved) {
+    const Real v0 = 1, mu = 0.3;
+    const Model probe = sliding_triangle({mu, Vec3(v0, 0, 0)});
+    const Real mt = total_mass(ExplicitSolver(probe));
+    const Real mb = 2 * mt;
+    const Model m = sliding_triangle({mu, Vec3(v0, 0, 0), 0, Vec3::Zero(), mb});
+    ExplicitSolver s(m);  // (the model outlives the solver)
+    auto momentum_x = [&] {
+        Real p = mb * s.bodies()[0].v.x();
+        for (std::size_t i = 0; i < 3; ++i) p += s.state().mass[i] * s.state().v[i].x();
+        return p;
+    };
+    // the weight presses the free plane down: the normal force is mb / (mt + mb) of it, and
+    // the relative sliding stops after v0 / (mu g mb / (mt + mb) (1 / mt + 1 / mb)) = v0 / (mu g)
+    run_to(s, 0.2 * v0 / (mu * k_g));
+    // friction is internal to the pair; the velocities are differences of positions (~1 m)
+    // over steps of ~1e-4 s, 1e-12 m/s of rounding per step
+    EXPECT_NEAR(momentum_x(), mt * v0, 1e-9 * mt * v0);
+    EXPECT_GT(s.bodies()[0].v.x(), 0.0);
+    run_to(s, 2 * v0 / (mu * k_g));
+    EXPECT_NEAR(momentum_x(), mt * v0, 1e-9 * mt * v0);
+    const Real common = mt * v0 / (mt + mb);
+    for (const Vec3& v : s.state().v) EXPECT_NEAR(v.x(), common, 1e-9 * v0);
+    EXPECT_NEAR(s.bodies()[0].v.x(), common, 1e-9 * v0);
+    EXPECT_LT(std::abs(s.energy().error()), 1e-6);
+}
