@@ -254,8 +254,40 @@ h_deck = deck_against_twin("constraints", os.path.join(WORK, "constraints"),
                            os.path.join(DROP, "plate_drop_mesh.k"), constrained, constrained_twin)
 r = fpmshell("check", os.path.join(WORK, "constraints", "model.k"))
 check("constraints: check names the bodies and notes the weld's failure data",
-      r.returncode == 0 and "nodal rigid bodies: 3 (3 constraints, 9 particles)" in r.stdout and
+      r.returncode == 0 and "nodal rigid bodies: 3 (9 particles)" in r.stdout and
       "never fail" in r.stdout, r.stdout + r.stderr)
+
+# ---- *MAT_RIGID: clamped_beam.k with its four middle quadrangles a rigid part, against the twin
+# with the rigid material written in YAML
+BEAM = os.path.join(DECKS, "clamped_beam")
+beam_deck, beam_twin = read(os.path.join(BEAM, "clamped_beam.k")), read(os.path.join(BEAM, "clamped_beam.yaml"))
+mesh_lines, in_shells = [], False
+for line in read(os.path.join(BEAM, "clamped_beam_mesh.k")).splitlines():
+    if line.startswith("*"):
+        in_shells = line.startswith("*ELEMENT_SHELL")
+    elif in_shells and line.strip() and int(line.split()[0]) in (10, 11, 30, 31):
+        fields = line.split()
+        line = f"{fields[0]:>8}{2:>8}" + "".join(f"{n:>8}" for n in fields[2:])
+    mesh_lines.append(line)
+rigid_mesh = os.path.join(WORK, "rigid_part_mesh", "clamped_beam_mesh.k")
+os.makedirs(os.path.dirname(rigid_mesh), exist_ok=True)
+with open(rigid_mesh, "w") as f:
+    f.write("\n".join(mesh_lines) + "\n")
+beam_section = "  - {elements: all, material: al6061, thickness: 0.005, thickness_points: 3}\n"
+assert "*BOUNDARY_SPC_SET" in beam_deck and beam_section in beam_twin and "sections:" in beam_twin
+rigid_deck = beam_deck.replace("*BOUNDARY_SPC_SET", (
+    "*PART\nhammer\n2,2,2\n*SECTION_SHELL\n2,16,,3\n0.005,0.005,0.005,0.005\n"
+    "*MAT_RIGID\n         2    7800.0   2.1e+11       0.3\n*BOUNDARY_SPC_SET"))
+rigid_twin = beam_twin.replace(beam_section, (
+    "  - {elements: part_1, material: al6061, thickness: 0.005, thickness_points: 3}\n"
+    "  - {elements: part_2, material: hammer, thickness: 0.005, thickness_points: 3}\n")).replace(
+    "\nsections:", "  hammer: {type: rigid, density: 7800, youngs_modulus: 2.1e11, poisson_ratio: 0.3}\n"
+    "\nsections:")
+deck_against_twin("rigid part", os.path.join(WORK, "rigid_part"), rigid_mesh, rigid_deck, rigid_twin)
+r = fpmshell("check", os.path.join(WORK, "rigid_part", "model.k"))
+check("rigid part: check names one body of the part's 9 particles",
+      r.returncode == 0 and "nodal rigid bodies: 1 (9 particles)" in r.stdout and
+      "material mat_2: rigid, density 7800" in r.stdout, r.stdout + r.stderr)
 
 # ---- *INITIAL_VELOCITY_GENERATION with OMEGA: plate_drop.k spinning about a tilted axis
 generation = drop_deck[drop_deck.index("*INITIAL_VELOCITY_GENERATION"):drop_deck.index("*RIGIDWALL_PLANAR_ID")]
@@ -323,14 +355,14 @@ path, r = deck_case("valid", "")
 check("a minimal deck is valid", r.returncode == 0, r.stderr)
 
 REFUSED = {  # card: what its message must say
-    "*MAT_RIGID\n         2    7800.0   2.1e+11       0.3\n": "rigid parts are not supported",
+    "*MAT_RIGID_DISCRETE\n         2    7800.0   2.1e+11       0.3\n": "this material is not supported",
     "*CONSTRAINED_JOINT_SPHERICAL\n         1         2\n": "this constraint is not supported",
     "*CONSTRAINED_NODAL_RIGID_BODY_INERTIA\n         1\n": "its inertia or constraints would change the model",
     "*CONSTRAINED_GENERALIZED_WELD_FILLET\n         1\n": "reads *CONSTRAINED_GENERALIZED_WELD_SPOT only",
     "*ELEMENT_SOLID\n         1         1         1         2         3\n": "shells only",
     "*CONTACT_TIED_SURFACE_TO_SURFACE\n         1         1\n": "fpmshell reads *CONTACT_AUTOMATIC_SINGLE_SURFACE",
     "*MAT_HONEYCOMB\n         2\n": "this material is not supported",
-    "*BOUNDARY_PRESCRIBED_MOTION_RIGID\n         1         3         0         1\n": "rigid parts are not supported",
+    "*BOUNDARY_PRESCRIBED_MOTION_RIGID\n         1         3         0         1\n": "a rigid part's motion cannot be prescribed",
     "*RIGIDWALL_GEOMETRIC_PRISM\n         0\n": "the option _PRISM is not supported",
     "*FREQUENCY_DOMAIN_SSD\n         1\n": "could change the model",
 }

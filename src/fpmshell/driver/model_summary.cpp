@@ -32,8 +32,8 @@ std::string model_summary(const Model& model) {
                                        "power_law"};
     for (const Material& mat : model.materials)
         out += fmt::format("\nmaterial {}: {}, density {:.6g}, E {:.6g}, nu {:.6g}", mat.name,
-                           type_names[static_cast<int>(mat.type)], mat.density, mat.youngs_modulus,
-                           mat.poisson_ratio);
+                           mat.rigid ? "rigid" : type_names[static_cast<int>(mat.type)],
+                           mat.density, mat.youngs_modulus, mat.poisson_ratio);
     std::vector<std::size_t> section_elements(model.sections.size(), 0);
     for (const Index s : model.element_section) ++section_elements[static_cast<std::size_t>(s)];
     for (std::size_t s = 0; s < model.sections.size(); ++s) {
@@ -78,12 +78,11 @@ std::string model_summary(const Model& model) {
                          c.friction == 0          ? std::string()
                          : std::isinf(c.friction) ? std::string(", no sliding")
                                                   : fmt::format(", friction {:.6g}", c.friction));
-    if (!model.nodal_rigid_bodies.empty()) {
-        const NodalRigidBodies bodies(model);
+    if (const NodalRigidBodies bodies(model); !bodies.empty()) {
         std::size_t particles = 0;
         for (const auto& b : bodies.bodies()) particles += b.size();
-        out += fmt::format("\nnodal rigid bodies: {} ({} constraints, {} particles)",
-                           bodies.bodies().size(), model.nodal_rigid_bodies.size(), particles);
+        out += fmt::format("\nnodal rigid bodies: {} ({} particles)", bodies.bodies().size(),
+                           particles);
     }
     const Real dt = solver.stable_dt();
     out += fmt::format("\nstable time step {:.6g} (time_step_scale {} x critical)\n", dt,

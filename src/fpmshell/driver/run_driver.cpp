@@ -223,6 +223,8 @@ void check_distributable(const Model& model, int ranks) {
         refuse("control.membrane", "the smoothed membrane");
     if (!model.nodal_rigid_bodies.empty())
         refuse("constraints", "a nodal rigid body (constraints of type rigid)");
+    for (const Material& m : model.materials)
+        if (m.rigid) refuse("materials", "a rigid material");
 }
 
 /// control.mass_scaling (§6.10): the mass added (`when`: at set-up, or by the end of the run),

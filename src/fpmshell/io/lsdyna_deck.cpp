@@ -301,13 +301,11 @@ private:
     }
 
     static std::string unsupported_reason(const std::string& k) {
-        if (k == "MAT_RIGID" || k == "MAT_020" || starts_with(k, "MAT_RIGID_"))
-            return "rigid parts are not supported; model a flat impactor as a "
-                   "*RIGIDWALL_PLANAR_MOVING";
         if (starts_with(k, "MAT_"))
             return "this material is not supported; fpmshell reads *MAT_ELASTIC (001), "
                    "*MAT_PLASTIC_KINEMATIC (003), *MAT_JOHNSON_COOK (015), "
-                   "*MAT_POWER_LAW_PLASTICITY (018) and *MAT_PIECEWISE_LINEAR_PLASTICITY (024)";
+                   "*MAT_POWER_LAW_PLASTICITY (018), *MAT_RIGID (020) and "
+                   "*MAT_PIECEWISE_LINEAR_PLASTICITY (024)";
         if (starts_with(k, "ELEMENT_"))
             return "fpmshell models shells only (*ELEMENT_SHELL); this element kind would change "
                    "the model";
@@ -316,8 +314,8 @@ private:
                    "*CONSTRAINED_NODAL_RIGID_BODY, *CONSTRAINED_SPOTWELD and "
                    "*CONSTRAINED_GENERALIZED_WELD_SPOT), and ignoring it would change the model";
         if (starts_with(k, "BOUNDARY_PRESCRIBED_MOTION"))
-            return "fpmshell reads *BOUNDARY_PRESCRIBED_MOTION_NODE and _SET (with _ID); rigid "
-                   "parts are not supported";
+            return "fpmshell reads *BOUNDARY_PRESCRIBED_MOTION_NODE and _SET (with _ID); a "
+                   "rigid part's motion cannot be prescribed";
         if (starts_with(k, "CONTACT_"))
             return "fpmshell reads *CONTACT_AUTOMATIC_SINGLE_SURFACE, _SURFACE_TO_SURFACE and "
                    "_NODES_TO_SURFACE (as its shell self-contact)";
@@ -534,7 +532,8 @@ private:
             {"MAT_003", "MAT_PLASTIC_KINEMATIC"},
             {"MAT_015", "MAT_JOHNSON_COOK"},
             {"MAT_018", "MAT_POWER_LAW_PLASTICITY"},
-            {"MAT_024", "MAT_PIECEWISE_LINEAR_PLASTICITY"}};
+            {"MAT_024", "MAT_PIECEWISE_LINEAR_PLASTICITY"},
+            {"MAT_020", "MAT_RIGID"}};
         std::string name = b.keyword;
         bool titled = false;
         if (name.size() > 6 && name.compare(name.size() - 6, 6, "_TITLE") == 0) {
@@ -664,6 +663,18 @@ private:
             }
             if (c > 0 || p > 0)
                 m.keys.push_back("cowper_symonds: {D: " + num(c) + ", q: " + num(p) + "}");
+        } else if (name == "MAT_RIGID") {
+            // a part of it moves as one rigid body (its section's particles, theory.md §6.11)
+            const Card f = required_card(b, first, "MID, RO, E, PR, N, COUPLE, M, ALIAS");
+            const Card g = card(b, first + 1);
+            mid = f.id(0, "MID");
+            m.keys.push_back("type: rigid");
+            elastic(f, f.real(2, "E"), f.real(3, "PR"));
+            if (g.real(0, "CMO") != 0)
+                g.fail(
+                    "CMO: constraints on a rigid part's motion are not supported (0 only: the "
+                    "part moves freely)");
+            m.at = {&b, f.line()};
         } else {
             refuse(b, unsupported_reason(b.keyword));
         }

@@ -35,10 +35,26 @@ void read_curves(const YamlValue& v, Model& model) {
 
 void read_boundary(const YamlValue& v, Model& model) {
     static const std::vector<std::string> dofs = {"ux", "uy", "uz", "rx", "ry", "rz"};
+    // the particles of the sections of rigid materials: a rigid body moves as a whole
+    std::vector<std::string> rigid_material(model.nodes.size());
+    for (std::size_t e = 0; e < model.triangles.size(); ++e) {
+        const Section& sec = model.sections[static_cast<std::size_t>(model.element_section[e])];
+        const Material& mat = model.materials[static_cast<std::size_t>(sec.material)];
+        if (mat.rigid)
+            for (const Index p : model.triangles[e])
+                rigid_material[static_cast<std::size_t>(p)] = mat.name;
+    }
     for (const YamlValue& item : v.list("boundary conditions")) {
         const YamlMap m = item.map({"nodes", "fix", "symmetry", "prescribe"});
         BoundaryCondition bc;
-        bc.nodes = named_node_set(model, m.at("nodes", "a node set name"));
+        const YamlValue nodes = m.at("nodes", "a node set name");
+        bc.nodes = named_node_set(model, nodes);
+        for (const Index p : bc.nodes)
+            if (const std::string& name = rigid_material[static_cast<std::size_t>(p)];
+                !name.empty())
+                nodes.fail("particle " + std::to_string(p + 1) +
+                           " belongs to a section of the rigid material '" + name +
+                           "' (a rigid body moves as a whole: constrain none of its particles)");
         if (m.count({"fix", "symmetry", "prescribe"}) == 0)
             item.fail(
                 "a boundary condition needs at least one of fix, symmetry or "

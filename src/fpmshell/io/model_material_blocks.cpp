@@ -148,10 +148,10 @@ void read_materials(const YamlValue& v, Model& model) {
                 def.describe());
         const YamlMap any = def.open_map("material constants");
         const YamlValue type = any.at("type", "elastic");
-        const std::string t =
-            type.choice({"elastic", "j2_plastic", "johnson_cook", "tabulated", "power_law"});
+        const std::string t = type.choice(
+            {"elastic", "j2_plastic", "johnson_cook", "tabulated", "power_law", "rigid"});
         std::vector<std::string> keys{"type", "density", "youngs_modulus", "poisson_ratio"};
-        if (t == "elastic") {
+        if (t == "elastic" || t == "rigid") {
             for (const auto& [key, value] : any.entries())
                 for (const char* plastic :
                      {"yield_stress", "tangent_modulus", "hardening_mix", "cowper_symonds", "A",
@@ -181,11 +181,12 @@ void read_materials(const YamlValue& v, Model& model) {
         const YamlMap m = def.map(keys);
         Material mat;
         mat.name = name;
-        mat.type = t == "elastic"      ? MaterialType::Elastic
-                   : t == "j2_plastic" ? MaterialType::J2Plastic
-                   : t == "tabulated"  ? MaterialType::Tabulated
-                   : t == "power_law"  ? MaterialType::PowerLaw
-                                       : MaterialType::JohnsonCook;
+        mat.rigid = t == "rigid";  // elastic constants, rigid motion (model.hpp)
+        mat.type = t == "elastic" || mat.rigid ? MaterialType::Elastic
+                   : t == "j2_plastic"         ? MaterialType::J2Plastic
+                   : t == "tabulated"          ? MaterialType::Tabulated
+                   : t == "power_law"          ? MaterialType::PowerLaw
+                                               : MaterialType::JohnsonCook;
         mat.density = m.at("density", "a number > 0").positive();
         mat.youngs_modulus = m.at("youngs_modulus", "a number > 0").positive();
         const YamlValue nu = m.at("poisson_ratio", "a number in (-1, 0.5)");
@@ -305,6 +306,17 @@ void read_sections(const YamlValue& v, Model& model) {
                " more) has no section; every element needs one, e.g. start with an entry "
                "for `elements: all`");
     }
+    auto rigid = [&](Index s) {
+        return model
+            .materials[static_cast<std::size_t>(
+                model.sections[static_cast<std::size_t>(s)].material)]
+            .rigid;
+    };
+    if (!model.element_section.empty() &&
+        std::all_of(model.element_section.begin(), model.element_section.end(), rigid))
+        v.fail(
+            "every element is in a section of a rigid material: nothing is left to deform or to "
+            "set the time step; give at least one section a deformable material");
 }
 
 }  // namespace fpmshell

@@ -58,6 +58,9 @@ struct Material {
     Real cs_d = 0, cs_q = 1;      ///< its D and q
     /// tabulated: one flow curve, or one per strain rate (rates increasing)
     std::vector<FlowCurvePoints> flow_curves{};
+    /// `type: rigid` (an elastic material here): each section of it moves as one rigid body
+    /// (solver/nodal_rigid_bodies.hpp) and its elements do not limit the time step
+    bool rigid = false;
 
     [[nodiscard]] bool plastic() const { return type != MaterialType::Elastic; }
 };

@@ -52,6 +52,9 @@ ElementTimeSteps::ElementTimeSteps(const Model& model, const MeshTopology& topol
       node_inertia_(topology.element_node_inertia),
       bending_kernel_(model.control.bending),
       stiffness_damping_(model.damping.stiffness) {
+    for (const Section& sec : model.sections)
+        rigid_section_.push_back(model.materials[static_cast<std::size_t>(sec.material)].rigid ? 1
+                                                                                               : 0);
     share_initial_ratios(model);
 }
 

@@ -8,6 +8,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
+#include <limits>
 #include <vector>
 
 #include "fpmshell/core/types.hpp"
@@ -115,6 +117,9 @@ private:
     /// The step of element e of length lc before the reduction for stiffness damping (§6.4).
     [[nodiscard]] Real undamped_dt(Index e, Real lc) const {
         const auto ue = static_cast<std::size_t>(e);
+        // an element of a rigid section moves rigidly (§6.11): no step of its own
+        if (rigid_section_[static_cast<std::size_t>(section_[ue])])
+            return std::numeric_limits<Real>::infinity();
         // §6.4 membrane step L_c / c; the bending modes of thick elements (h / L_c > ~0.5) are
         // slower to integrate, bend_ratio_ < 1 (bending_time_step.hpp).
         Real dt = lc / wave_speed_[static_cast<std::size_t>(section_[ue])] *
@@ -133,9 +138,10 @@ private:
     /// The undamped step that the damped critical step `step` needs (eq. 6.10a).
     [[nodiscard]] Real undamped_target(Real step) const;
 
-    std::vector<Index> section_;          ///< per element
-    std::vector<Real> wave_speed_;        ///< per section
-    std::vector<Mat3> bending_rigidity_;  ///< per section
+    std::vector<Index> section_;               ///< per element
+    std::vector<std::uint8_t> rigid_section_;  ///< per section: of a rigid material
+    std::vector<Real> wave_speed_;             ///< per section
+    std::vector<Mat3> bending_rigidity_;       ///< per section
     std::vector<Real> node_mass_,
         node_inertia_;  ///< per element, its share at each corner (§6.1-6.2)
     BendingKernel bending_kernel_ = BendingKernel::Dkt;

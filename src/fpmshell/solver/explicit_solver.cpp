@@ -102,6 +102,7 @@ ExplicitSolver::ExplicitSolver(const Model& model)
         contact_ = std::make_unique<ContactSolver>(model, topology_,
                                                    bc_->free_inverse_mass(s_.mass), thickness);
     }
+    refresh_contact_masses();
     if (contact_ && decomposition_.distributed()) {  // the contact runs whole on every rank
         contact_owned_.resize(static_cast<std::size_t>(decomposition_.ranks));
         for (const Index p : contact_->particles())
@@ -379,6 +380,17 @@ void ExplicitSolver::add_scaled_mass() {
             if (contact_) contact_->set_inverse_mass(p, bc_->free_inverse_mass(up, s_.mass[up]));
         }
     }
+    if (!records.empty()) refresh_contact_masses();  // the bodies' masses changed too
+}
+
+void ExplicitSolver::refresh_contact_masses() {
+    if (!contact_ || nodal_rigid_bodies_.empty()) return;
+    contact_mass_ = nodal_rigid_bodies_.contact_masses(s_.mass);
+    for (const auto& body : nodal_rigid_bodies_.bodies())
+        for (const Index p : body)
+            contact_->set_inverse_mass(
+                p, bc_->free_inverse_mass(static_cast<std::size_t>(p),
+                                          contact_mass_[static_cast<std::size_t>(p)]));
 }
 
 ExplicitSolver::StepLengths ExplicitSolver::next_step_lengths(
@@ -461,8 +473,14 @@ void ExplicitSolver::lagrange_contact(const StepLengths& dt) {
     body_u_before_ = body_u_pred_;
     contact_->enforce(s_.x, x_pred_, body_u_pred_, bodies_, dt.c1 * dt.dt_n * dt_new,
                       dt.dt_n * dt_new, std::sqrt(motion2), steps_, s_.f_contact);
-    for (std::size_t p = 0; p < np; ++p)
-        if (x_pred_[p] != x_pred_before_[p]) s_.v[p] += (x_pred_[p] - x_pred_before_[p]) / dt_new;
+    // A particle of a nodal rigid body moved as if it had its body's mass (eq. 6.11-5): its
+    // velocity changes by the contact's impulse over its own mass, which make_rigid then
+    // shares with its body.
+    for (std::size_t p = 0; p < np; ++p) {
+        if (x_pred_[p] == x_pred_before_[p]) continue;
+        const Vec3 dv = (x_pred_[p] - x_pred_before_[p]) / dt_new;
+        s_.v[p] += contact_mass_.empty() ? dv : Vec3((contact_mass_[p] / s_.mass[p]) * dv);
+    }
     for (std::size_t b = 0; b < bodies_.size(); ++b)
         if (body_u_pred_[b] != body_u_before_[b])
             bodies_[b].v += (body_u_pred_[b] - body_u_before_[b]) / dt_new;
@@ -683,6 +701,7 @@ void ExplicitSolver::load(RestartReader& in) {
         for (std::size_t p = 0; p < s_.size(); ++p)
             contact_->set_inverse_mass(static_cast<Index>(p),
                                        bc_->free_inverse_mass(p, s_.mass[p]));
+    refresh_contact_masses();
     in.section("contact");
     bool has_contact = false;
     in(has_contact);

@@ -120,6 +120,9 @@ private:
     /// 1 (§6.10) the mass and inertia the element loop added to the elements whose step fell
     /// below the target of control.mass_scaling, given to their particles.
     void add_scaled_mass();
+    /// The contact's inverse masses of the nodal rigid bodies' particles: their bodies'
+    /// (eq. 6.11-5), after the masses changed.
+    void refresh_contact_masses();
     /// 3 dt_{n+1/2} = scale min dt_e, growth capped at 1.2 dt_{n-1/2} (§6.4), and dt_n.
     [[nodiscard]] StepLengths next_step_lengths(const CyclePolicy& policy,
                                                 const ShellElements::StepTotals& elements,
@@ -208,7 +211,10 @@ private:
     std::unique_ptr<ExternalLoads> loads_;
     std::vector<RigidBodyState> bodies_;
     std::unique_ptr<ContactSolver> contact_;  ///< null without contact definitions
-    NodalRigidBodies nodal_rigid_bodies_;     ///< `constraints` of type rigid
+    NodalRigidBodies nodal_rigid_bodies_;     ///< `constraints` and rigid materials (§6.11)
+    /// per particle, the mass the contact gives it (its body's, eq. 6.11-5); empty without
+    /// contact or nodal rigid bodies
+    std::vector<Real> contact_mass_;
     /// Steps 5 and 8-9 in one sweep (update_velocities_and_advance_particles).
     bool fused_particle_pass_ = false;
     bool parallel_particles_ = false;  ///< particle loops in parallel (large models)

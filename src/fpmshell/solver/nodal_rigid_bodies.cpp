@@ -23,14 +23,34 @@ Index root_of(std::vector<Index>& parent, Index p) {
     return p;
 }
 
+/// The groups of particles that move rigidly: the model's constraints, and the particles of each
+/// section of a rigid material (one body per section).
+std::vector<NodalRigidBody> rigid_groups(const Model& model) {
+    std::vector<NodalRigidBody> groups = model.nodal_rigid_bodies;
+    // the particles of each section of a rigid material
+    for (std::size_t s = 0; s < model.sections.size(); ++s) {
+        if (!model.materials[static_cast<std::size_t>(model.sections[s].material)].rigid) continue;
+        NodalRigidBody body;
+        for (std::size_t e = 0; e < model.triangles.size(); ++e)
+            if (static_cast<std::size_t>(model.element_section[e]) == s)
+                body.nodes.insert(body.nodes.end(), model.triangles[e].begin(),
+                                  model.triangles[e].end());
+        std::sort(body.nodes.begin(), body.nodes.end());
+        body.nodes.erase(std::unique(body.nodes.begin(), body.nodes.end()), body.nodes.end());
+        if (!body.nodes.empty()) groups.push_back(std::move(body));
+    }
+    return groups;
+}
+
 }  // namespace
 
 NodalRigidBodies::NodalRigidBodies(const Model& model) {
-    if (model.nodal_rigid_bodies.empty()) return;
+    const std::vector<NodalRigidBody> groups = rigid_groups(model);
+    if (groups.empty()) return;
     std::vector<Index> parent(model.nodes.size());
     std::iota(parent.begin(), parent.end(), Index{0});
     std::vector<std::uint8_t> member(model.nodes.size(), 0);
-    for (const NodalRigidBody& group : model.nodal_rigid_bodies) {
+    for (const NodalRigidBody& group : groups) {
         for (const Index p : group.nodes) {
             member[static_cast<std::size_t>(p)] = 1;
             const Index a = root_of(parent, group.nodes.front()), b = root_of(parent, p);
@@ -48,6 +68,16 @@ NodalRigidBodies::NodalRigidBodies(const Model& model) {
         }
         bodies_[static_cast<std::size_t>(body_of_root[r])].push_back(static_cast<Index>(p));
     }
+}
+
+std::vector<Real> NodalRigidBodies::contact_masses(const std::vector<Real>& mass) const {
+    std::vector<Real> out = mass;
+    for (const std::vector<Index>& body : bodies_) {
+        Real total = 0;
+        for (const Index p : body) total += mass[static_cast<std::size_t>(p)];
+        for (const Index p : body) out[static_cast<std::size_t>(p)] = total;
+    }
+    return out;
 }
 
 void NodalRigidBodies::make_rigid(ParticleState& s, Real dt_new) const {

@@ -556,6 +556,33 @@ TEST(ModelReader, ReadsNodalRigidBodies) {
                  "of the rigid body also has a boundary condition");
 }
 
+// type: rigid: an elastic material whose sections move as rigid bodies.
+TEST(ModelReader, ReadsRigidMaterials) {
+    const std::string yaml =
+        replaced(k_base, "sections:\n",
+                 "  hammer: {type: rigid, density: 7.8e-9, youngs_modulus: 210000, "
+                 "poisson_ratio: 0.3}\nsections:\n") +
+        "sets:\n  head: {box: [[1.4, -1, -1], [2.1, 2, 1]]}\n";
+    const std::string with_section =
+        replaced(yaml, "  - {elements: all, material: steel, thickness: 0.1}\n",
+                 "  - {elements: all, material: steel, thickness: 0.1}\n"
+                 "  - {elements: head, material: hammer, thickness: 0.1}\n");
+    const TempDir dir;
+    const Model m = read_model(dir.write("model.yaml", with_section));
+    ASSERT_EQ(m.materials.size(), 2u);
+    EXPECT_TRUE(m.materials[1].rigid);
+    EXPECT_FALSE(m.materials[0].rigid);
+    EXPECT_EQ(m.materials[1].type, MaterialType::Elastic);
+    expect_error(replaced(with_section, "material: steel", "material: hammer"), 6, "sections",
+                 "every element is in a section of a rigid material");
+    expect_error(with_section + "boundary:\n  - {nodes: xmax, fix: all}\n", 14, "boundary.0.nodes",
+                 "belongs to a section of the rigid material 'hammer'");
+    expect_error(replaced(with_section, "poisson_ratio: 0.3}\nsections",
+                          "poisson_ratio: 0.3, "
+                          "yield_stress: 1}\nsections"),
+                 5, "materials.hammer.yield_stress", "belongs to plastic materials");
+}
+
 // Every error category names the file, the line and the key in one sentence.
 TEST(ModelReader, EveryErrorNamesFileLineAndKey) {
     struct Case {

@@ -4,7 +4,8 @@
 //   T/I, keeps every distance between its particles to rounding, and strains nothing;
 // - a strip cut in two at its middle and joined by a weld of each pair of coincident particles
 //   moves as the uncut strip does;
-// - two particles welded at a distance keep that distance while the strip they join swings.
+// - two particles welded at a distance keep that distance while the strip they join swings;
+// - the section of a rigid material moves as one body and its elements set no time step.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -36,53 +37,60 @@ Model flat_plate(Index n) {
     return m;
 }
 
-/// A cantilever strip along x (2 x 0.2 m, 20 x 2 squares, h = 0.02) clamped at x = 0 and
-/// loaded at its tip by a force along -z; `cut`: made of two strips of 10 x 2 squares whose
-/// particles at x = 1 coincide, each pair welded as a nodal rigid body.
-Model cantilever(bool cut) {
-    Model m;
-    auto add_strip = [&](Real x0, Real length, Index nx) {
-        PlateParams pp;
-        pp.length_x = length;
-        pp.length_y = 0.2;
-        pp.nx = nx;
-        pp.ny = 2;
-        pp.origin = Vec3(x0, 0, 0);
-        const MeshData strip = generate_plate(pp);
-        const auto offset = static_cast<Index>(m.nodes.size());
-        m.nodes.insert(m.nodes.end(), strip.nodes.begin(), strip.nodes.end());
-        for (auto t : strip.triangles) {
-            for (Index& p : t) p += offset;
-            m.triangles.push_back(t);
-        }
-    };
-    if (cut) {
-        add_strip(0, 1, 10);
-        add_strip(1, 1, 10);
-    } else {
-        add_strip(0, 2, 20);
+/// Appends a strip of `nx` x 2 squares, `length` x 0.2 m, from x = x0 (its own particles).
+void append_strip(MeshData& mesh, Real x0, Real length, Index nx) {
+    PlateParams pp;
+    pp.length_x = length;
+    pp.length_y = 0.2;
+    pp.nx = nx;
+    pp.ny = 2;
+    pp.origin = Vec3(x0, 0, 0);
+    const MeshData strip = generate_plate(pp);
+    const auto offset = static_cast<Index>(mesh.nodes.size());
+    mesh.nodes.insert(mesh.nodes.end(), strip.nodes.begin(), strip.nodes.end());
+    for (auto t : strip.triangles) {
+        for (Index& p : t) p += offset;
+        mesh.triangles.push_back(t);
     }
-    MeshData mesh;
-    mesh.nodes = m.nodes;
-    mesh.triangles = m.triangles;
-    Model model = test::one_section_model(mesh, 0.02);
-    model.control.end_time = 1;
-    std::vector<Index> root, tip;
-    for (std::size_t p = 0; p < model.nodes.size(); ++p) {
-        if (model.nodes[p].x() < 1e-9) root.push_back(static_cast<Index>(p));
-        if (model.nodes[p].x() > 2 - 1e-9) tip.push_back(static_cast<Index>(p));
+}
+
+/// Welds every pair of coincident particles (a nodal rigid body each).
+void weld_coincident_particles(Model& m) {
+    for (std::size_t p = 0; p < m.nodes.size(); ++p)
+        for (std::size_t q = p + 1; q < m.nodes.size(); ++q)
+            if ((m.nodes[p] - m.nodes[q]).norm() < 1e-9)
+                m.nodal_rigid_bodies.push_back({{static_cast<Index>(p), static_cast<Index>(q)}});
+}
+
+/// Clamps the particles at x = 0 and loads those at x = tip by 100 N each along -z.
+void clamp_root_and_load_tip(Model& m, Real tip) {
+    std::vector<Index> root, loaded;
+    for (std::size_t p = 0; p < m.nodes.size(); ++p) {
+        if (m.nodes[p].x() < 1e-9) root.push_back(static_cast<Index>(p));
+        if (m.nodes[p].x() > tip - 1e-9) loaded.push_back(static_cast<Index>(p));
     }
     BoundaryCondition clamp;
     clamp.nodes = root;
     clamp.fixed.fill(true);
-    model.boundary.push_back(clamp);
-    model.loads.push_back({LoadType::Force, tip, {}, 0, Vec3(0, 0, -100), -1});
-    if (cut)  // the pairs of coincident particles at x = 1
-        for (std::size_t p = 0; p < model.nodes.size(); ++p)
-            for (std::size_t q = p + 1; q < model.nodes.size(); ++q)
-                if ((model.nodes[p] - model.nodes[q]).norm() < 1e-9)
-                    model.nodal_rigid_bodies.push_back(
-                        {{static_cast<Index>(p), static_cast<Index>(q)}});
+    m.boundary.push_back(clamp);
+    m.loads.push_back({LoadType::Force, loaded, {}, 0, Vec3(0, 0, -100), -1});
+}
+
+/// A cantilever strip along x (2 x 0.2 m, 20 x 2 squares, h = 0.02) clamped at x = 0 and
+/// loaded at its tip by a force along -z; `cut`: made of two strips of 10 x 2 squares whose
+/// particles at x = 1 coincide, each pair welded as a nodal rigid body.
+Model cantilever(bool cut) {
+    MeshData mesh;
+    if (cut) {
+        append_strip(mesh, 0, 1, 10);
+        append_strip(mesh, 1, 1, 10);
+    } else {
+        append_strip(mesh, 0, 2, 20);
+    }
+    Model model = test::one_section_model(mesh, 0.02);
+    model.control.end_time = 1;
+    clamp_root_and_load_tip(model, 2);
+    if (cut) weld_coincident_particles(model);  // the pairs at x = 1
     return model;
 }
 
@@ -204,4 +212,115 @@ TEST(NodalRigidBodies, TwoParticlesWeldedAtADistanceKeepIt) {
     }
     EXPECT_GT(swing, 1e-6);  // the weld turned with the strip
     EXPECT_LT(std::abs(s.energy().error()), 1e-3);
+}
+
+namespace {
+
+/// A strip clamped at x = 0: an inner half of 10 x 2 elastic squares and an outer half of
+/// `outer_nx` x 2 squares (none for 0) in a section of its own, of a rigid material or an
+/// elastic one, joined by welds of their coincident particles at x = 1; a force along -z at the
+/// tip.
+Model half_rigid_strip(Index outer_nx, bool rigid) {
+    MeshData mesh;
+    append_strip(mesh, 0, 1, 10);
+    const std::size_t inner_elements = mesh.triangles.size();
+    if (outer_nx > 0) append_strip(mesh, 1, 1, outer_nx);
+    Model model = test::one_section_model(mesh, 0.02);
+    model.control.end_time = 1;
+    if (outer_nx > 0) {
+        Material outer = model.materials[0];
+        outer.name = "outer";
+        outer.rigid = rigid;
+        model.materials.push_back(outer);
+        model.sections.push_back({1, 0.02, 2, 3});
+        for (std::size_t e = inner_elements; e < model.triangles.size(); ++e)
+            model.element_section[e] = 1;
+        weld_coincident_particles(model);
+    }
+    clamp_root_and_load_tip(model, outer_nx > 0 ? 2 : 1);
+    return model;
+}
+
+}  // namespace
+
+TEST(NodalRigidBodies, ASectionOfARigidMaterialMovesAsOneBodyAndSetsNoStep) {
+    const Model rigid = half_rigid_strip(40, true);
+    const Model elastic = half_rigid_strip(40, false);
+    const Model inner = half_rigid_strip(0, false);
+    ExplicitSolver s(rigid);
+    // the outer half's elements, four times shorter (L_c 0.34 of the inner ones'), would set
+    // the step; rigid, they do not: the step is the inner half's alone (the same elements, the
+    // same bits)
+    EXPECT_EQ(s.stable_dt(), ExplicitSolver(inner).stable_dt());
+    EXPECT_GT(s.stable_dt(), 2.5 * ExplicitSolver(elastic).stable_dt());
+    // one body: the outer half and the welded particles of the inner half at x = 1
+    const NodalRigidBodies bodies(rigid);
+    ASSERT_EQ(bodies.bodies().size(), 1u);
+    EXPECT_EQ(bodies.bodies()[0].size(), 41u * 3u + 3u);
+    while (s.time() < 0.02) s.step(1e30);
+    std::vector<std::size_t> outer;
+    for (std::size_t p = 0; p < rigid.nodes.size(); ++p)
+        if (rigid.nodes[p].x() > 1 - 1e-9) outer.push_back(p);
+    Real turned = 0;
+    for (std::size_t i = 0; i < outer.size(); i += 5)
+        for (std::size_t j = 0; j < i; j += 3) {
+            const std::size_t p = outer[i], q = outer[j];
+            // the outer half keeps its shape to rounding of positions of about 1 m
+            EXPECT_NEAR((s.state().x[p] - s.state().x[q]).norm(),
+                        (rigid.nodes[p] - rigid.nodes[q]).norm(), 1e-12);
+            turned = std::max(turned, std::abs(s.state().x[p].z() - s.state().x[q].z()));
+        }
+    EXPECT_GT(turned, 1e-6);  // it turned with the bending inner half
+    EXPECT_LT(std::abs(s.energy().error()), 1e-3);
+}
+
+TEST(NodalRigidBodies, ARigidPartOfLightParticlesPushesWithItsWholeMassInContact) {
+    // a rigid plate (1 x 1 m, 20 x 20 squares: 441 particles of 0.18 kg, 78 kg in all) moving up
+    // at 1 m/s under a free elastic triangle of 1.56 kg lying 0.04 m above it
+    PlateParams pp;
+    pp.nx = pp.ny = 20;
+    const MeshData plate = generate_plate(pp);
+    MeshData mesh = plate;
+    const auto first = static_cast<Index>(mesh.nodes.size());
+    for (const Vec3& c : {Vec3(0.4, 0.4, 0.05), Vec3(0.6, 0.4, 0.05), Vec3(0.4, 0.6, 0.05)})
+        mesh.nodes.push_back(c);
+    mesh.triangles.push_back({first, first + 1, first + 2});
+    Model m = test::one_section_model(mesh, 0.01);
+    m.control.end_time = 1;
+    Material hard = m.materials[0];
+    hard.name = "hard";
+    hard.rigid = true;
+    m.materials.push_back(hard);
+    m.sections.push_back({1, 0.01, 2, 3});
+    for (std::size_t e = 0; e < plate.triangles.size(); ++e) m.element_section[e] = 1;
+    std::vector<Index> plate_nodes, all_elements;
+    for (Index p = 0; p < first; ++p) plate_nodes.push_back(p);
+    for (Index e = 0; e < m.n_elements(); ++e) all_elements.push_back(e);
+    const Real v0 = 1;
+    m.initial_conditions.push_back({plate_nodes, Vec3(0, 0, v0), Vec3::Zero()});
+    ContactDefinition self;
+    self.elements = all_elements;
+    m.contacts.push_back(self);
+    ExplicitSolver s(m);
+    Real plate_mass = 0, triangle_mass = 0;
+    for (std::size_t p = 0; p < m.nodes.size(); ++p)
+        (p < static_cast<std::size_t>(first) ? plate_mass : triangle_mass) += s.state().mass[p];
+    while (s.time() < 0.08) s.step(1e30);  // the impact at 0.04 s
+    Real momentum = 0, plate_momentum = 0;
+    for (std::size_t p = 0; p < m.nodes.size(); ++p) {
+        momentum += s.state().mass[p] * s.state().v[p].z();
+        if (p < static_cast<std::size_t>(first))
+            plate_momentum += s.state().mass[p] * s.state().v[p].z();
+    }
+    // contact forces are equal and opposite; velocities are differences of positions over a
+    // step (rounding of 1e-12 m/s per step)
+    EXPECT_NEAR(momentum, plate_mass * v0, 1e-9 * plate_mass * v0);
+    // a perfectly plastic impact (§8.3): both at the common velocity
+    const Real common = plate_mass * v0 / (plate_mass + triangle_mass);
+    for (std::size_t p = static_cast<std::size_t>(first); p < m.nodes.size(); ++p)
+        EXPECT_NEAR(s.state().v[p].z(), common, 1e-3 * v0);
+    // the plate's centre (the triangle is off it: the plate turns a little too)
+    EXPECT_NEAR(plate_momentum / plate_mass, common, 1e-3 * v0);
+    // the triangle lies on the plate, h apart, within the sweeps' tolerance
+    EXPECT_LT(s.contact_statistics()->max_penetration, 1e-3 * 0.01);
 }
