@@ -289,6 +289,22 @@ check("rigid part: check names one body of the part's 9 particles",
       r.returncode == 0 and "nodal rigid bodies: 1 (9 particles)" in r.stdout and
       "material mat_2: rigid, density 7800" in r.stdout, r.stdout + r.stderr)
 
+# ---- *DATABASE_RCFORC: tube_crush.k with the forces of its self-contact as histories, against
+# the twin with the same columns written in YAML (the contact after the wall's: contact_2)
+TUBE = os.path.join(DECKS, "tube_crush")
+tube_deck, tube_twin = read(os.path.join(TUBE, "tube_crush.k")), read(os.path.join(TUBE, "tube_crush.yaml"))
+assert tube_deck.endswith("*END\n") and tube_twin.endswith("quantity: rigid_wall_force_z}\n")
+h_deck = deck_against_twin(
+    "contact forces", os.path.join(WORK, "rcforc"), os.path.join(TUBE, "tube_crush_mesh.k"),
+    tube_deck[:-len("*END\n")] + "*DATABASE_RCFORC\n1.0e-5\n*END\n",
+    tube_twin + "".join(f"    - {{name: contact1_force_{c}, quantity: contact_2_force_{c}}}\n"
+                        for c in "xyz"))
+if h_deck:
+    rows = [line.split(",") for line in read(h_deck).splitlines()]
+    col = {name: k for k, name in enumerate(rows[0])}
+    check("contact forces: the columns of RCFORC are in history.csv",
+          all(f"contact1_force_{c}" in col for c in "xyz"), rows[0])
+
 # ---- *INITIAL_VELOCITY_GENERATION with OMEGA: plate_drop.k spinning about a tilted axis
 generation = drop_deck[drop_deck.index("*INITIAL_VELOCITY_GENERATION"):drop_deck.index("*RIGIDWALL_PLANAR_ID")]
 spinning = ("*INITIAL_VELOCITY_GENERATION\n         1         2      20.0       0.0       0.0      -5.0\n"

@@ -124,6 +124,7 @@ ContactSolver::ContactSolver(const Model& model, const MeshTopology& topology,
         }
         definitions_.push_back(std::move(d));
     }
+    slave_force_.assign(definitions_.size(), Vec3::Zero());
 }
 
 std::vector<Index> ContactSolver::particles() const {
@@ -518,6 +519,7 @@ void ContactSolver::penalty_forces(const std::vector<Vec3>& x, const std::vector
     for (Definition& d : definitions_) {
         if (d.def.method != ContactMethod::Penalty) continue;
         const std::size_t first = constraints_.size();
+        slave_force_[definition_index(d)].setZero();
         if (d.def.type == ContactType::Self) {
             prepare_search(d, x, motion);
             collect_self(d, x, x, false, constraints_, closed_);
@@ -526,6 +528,7 @@ void ContactSolver::penalty_forces(const std::vector<Vec3>& x, const std::vector
         }
         for (std::size_t i = first; i < constraints_.size(); ++i) {
             Constraint& c = constraints_[i];
+            c.definition = definition_index(d);
             const Real w = weight(c, beta_particle, beta_body, bodies);
             if (!(w > 0) || !(c.gap < 0)) continue;
             // scale x the force that would remove the whole penetration in one step
@@ -535,6 +538,7 @@ void ContactSolver::penalty_forces(const std::vector<Vec3>& x, const std::vector
     }
     for (const Constraint& c : constraints_) {
         f_contact[static_cast<std::size_t>(c.slave)] += c.lambda * c.normal;
+        slave_force_[c.definition] += c.lambda * c.normal;
         if (c.element >= 0)
             for (std::size_t k = 0; k < 3; ++k)
                 f_contact[static_cast<std::size_t>(c.master[k])] -= c.lambda * c.xi[k] * c.normal;
@@ -558,12 +562,16 @@ void ContactSolver::enforce(const std::vector<Vec3>& x, std::vector<Vec3>& x_pre
     for (Definition& d : definitions_) {
         if (d.def.method != ContactMethod::LagrangeMultiplier) continue;
         max_iterations = std::max(max_iterations, d.def.max_iterations);
+        const std::size_t first = constraints_.size();
+        slave_force_[definition_index(d)].setZero();
         if (d.def.type == ContactType::Self) {
             prepare_search(d, x, motion);
             collect_self(d, x, x_pred, true, constraints_, closed_);
         } else {
             collect_rigid(d, x_pred, body_u_pred, true, constraints_);
         }
+        for (std::size_t i = first; i < constraints_.size(); ++i)
+            constraints_[i].definition = definition_index(d);
     }
     // Drop constraints that nothing can satisfy (every particle fixed); set the weights. A
     // pair that is already inside at t_n (it escaped detection, or the linearised gap of the
@@ -745,6 +753,7 @@ void ContactSolver::enforce(const std::vector<Vec3>& x, std::vector<Vec3>& x_pre
         const Vec3 force = c.friction > 0 ? Vec3(c.lambda * c.normal - friction_lambda_[i])
                                           : Vec3(c.lambda * c.normal);
         f_contact[static_cast<std::size_t>(c.slave)] += force;
+        slave_force_[c.definition] += force;
         if (c.element >= 0)
             for (std::size_t k = 0; k < 3; ++k)
                 f_contact[static_cast<std::size_t>(c.master[k])] -= c.lambda * c.xi[k] * c.normal;
@@ -862,6 +871,7 @@ void ContactSolver::transfer_state(Archive& ar) {
     ar(st.held_penetrations, st.max_penetration, st.max_penetration_ratio, st.max_penetration_step);
     ar(st.max_penetration_particle, st.max_penetration_element, st.seconds);
     memory_.transfer(ar);
+    ar(slave_force_);
 }
 
 void ContactSolver::save(RestartWriter& out) const {
@@ -902,6 +912,9 @@ void ContactSolver::load(RestartReader& in) {
         st.max_penetration_element < -1 || st.max_penetration_element >= n_triangles)
         fail("statistics");
     if (!memory_.restored(n_particles, n_bodies)) fail("multipliers");
+    bool forces_valid = slave_force_.size() == definitions_.size();
+    for (const Vec3& f : slave_force_) forces_valid = forces_valid && f.allFinite();
+    if (!forces_valid) fail("forces");
 }
 
 }  // namespace fpmshell

@@ -85,6 +85,10 @@ public:
                  std::vector<Vec3>& f_contact);
 
     [[nodiscard]] const ContactStatistics& statistics() const { return stats_; }
+    /// The contact force at t_n on the slaves of definition k: for a self-contact the push on
+    /// the particles of its pairs' slave side (LS-DYNA's RCFORC slave side), for a rigid contact
+    /// the force on its particles (minus the body's share of it).
+    [[nodiscard]] const Vec3& slave_force(std::size_t k) const { return slave_force_[k]; }
 
     /// What collect_self takes of a triangle once per step: its unit normals at x^n and at the
     /// predictor y, and a sphere about its face at y.
@@ -131,6 +135,7 @@ private:
         Real thickness = 1;  ///< slave thickness, for penetration ratios
         Real allowance = 0;  ///< penetration it already had at t_n (held, not pushed out)
         Real friction = 0;   ///< Coulomb coefficient (rigid, Lagrange; infinity: no sliding)
+        std::uint32_t definition = 0;  ///< index of its contact definition
         /// the sweeps' bookkeeping: the gap at its last evaluation and the update count then
         Real last_gap = 0;
         std::int64_t evaluated_at = -1;
@@ -188,6 +193,9 @@ private:
     /// Keeps the positive multipliers of this step's constraints for the next (§8.3a).
     void keep_multipliers();
     void prepare_search(Definition& d, const std::vector<Vec3>& x, Real motion);
+    [[nodiscard]] std::uint32_t definition_index(const Definition& d) const {
+        return static_cast<std::uint32_t>(&d - definitions_.data());
+    }
     template <class Archive>
     void transfer_state(Archive& ar);
 
@@ -213,6 +221,7 @@ private:
     std::vector<Real> element_thickness_;
     std::vector<Real> node_thickness_;
     std::vector<Definition> definitions_;
+    std::vector<Vec3> slave_force_;  ///< per definition: the force on its slaves at t_n
     bool has_penalty_ = false, has_lagrange_ = false;
     BucketGrid grid_;
     std::vector<Vec3> box_lo_, box_hi_;             ///< scratch for the grid

@@ -103,6 +103,13 @@ std::vector<Real> sample_histories(const Model& model, const ExplicitSolver& sol
             out.push_back(body_quantity(solver, h.quantity, h.body));
             continue;
         }
+        if (h.contact >= 0) {  // the force on the definition's slaves (contact_<n>_force_<c>)
+            const Vec3 f = solver.contact_force(h.contact);
+            out.push_back(h.quantity == Quantity::ContactForceX   ? f.x()
+                          : h.quantity == Quantity::ContactForceY ? f.y()
+                                                                  : f.z());
+            continue;
+        }
         Real acc = 0;
         Real lo = std::numeric_limits<Real>::infinity(), hi = -lo;
         for (Index p : h.nodes) {

@@ -1216,8 +1216,8 @@ private:
             f.fail("SBOXID and MBOXID are not supported (0 only)");
         if (g.real(0, "FS") != 0 || g.real(1, "FD") != 0)
             g.fail(
-                "FS, FD: friction is not modelled by fpmshell's contact; set them to 0 to run "
-                "frictionless");
+                "FS, FD: fpmshell's shell self-contact is frictionless (friction is modelled "
+                "against rigid walls, their FRIC); set them to 0 to run frictionless");
         if (g.real(6, "BT") != 0 || (g.real(7, "DT") != 0 && g.real(7, "DT") < 1e20))
             g.fail("BT and DT are not supported (contact acts from start to end)");
         if (g.real(4, "VDC") != 0)
@@ -1235,6 +1235,10 @@ private:
             elements = "[" + yaml_name(sides[0]) + ", " + yaml_name(sides[1]) + "]";
         }
         contact_.push_back({"  - {type: self, elements: " + elements + "}", {&b, f.line()}});
+        // its number in RCFORC's columns: CID of _ID or _TITLE, else its place among the cards
+        const long long cid = opt.count("ID") || opt.count("TITLE") ? card(b, 0).id(0, "CID") : 0;
+        contact_ids_.push_back(
+            {cid > 0 ? cid : static_cast<long long>(contact_ids_.size()) + 1, {&b, f.line()}});
         note(b, f.line(),
              std::string(single ? "as fpmshell's shell self-contact"
                                 : "as fpmshell's shell self-contact over both sides together "
@@ -1328,12 +1332,14 @@ private:
                 fields_every_ = Line{num(dt), {&b, f.line()}};
             return;
         }
-        if (k == "DATABASE_GLSTAT" || k == "DATABASE_NODOUT" || k == "DATABASE_RWFORC") {
+        if (k == "DATABASE_GLSTAT" || k == "DATABASE_NODOUT" || k == "DATABASE_RWFORC" ||
+            k == "DATABASE_RCFORC") {
             if (dt > 0 && (!every_ || dt < every_value_)) {
                 every_value_ = dt;
                 every_ = Line{num(dt), {&b, f.line()}};
             }
             if (k == "DATABASE_RWFORC") wall_forces_ = true;
+            if (k == "DATABASE_RCFORC") contact_forces_ = true;
             return;
         }
         note(b, b.line,
@@ -1606,6 +1612,14 @@ private:
                                              "rigid_rigidwall{}_force_{}}}",
                                              w.id, c, w.id, c),
                                  w.at});
+        // the contact definitions come after the walls' in the model (write_walls)
+        if (contact_forces_)
+            for (std::size_t k = 0; k < contact_ids_.size(); ++k)
+                for (const char* c : {"x", "y", "z"})
+                    h.push_back({fmt::format("    - {{name: contact{}_force_{}, quantity: "
+                                             "contact_{}_force_{}}}",
+                                             contact_ids_[k].first, c, walls_.size() + k + 1, c),
+                                 contact_ids_[k].second});
         if (!h.empty()) {
             o.push_back({"  histories:", h.front().at});
             o.insert(o.end(), h.begin(), h.end());
@@ -1665,6 +1679,8 @@ private:
     Real every_value_ = 0;
     long long fields_every_npltc_ = 0;
     bool wall_forces_ = false;
+    bool contact_forces_ = false;  ///< *DATABASE_RCFORC: a history of each contact's force
+    std::vector<std::pair<long long, Origin>> contact_ids_;  ///< per contact card: its number
     std::vector<std::pair<long long, Origin>> history_nodes_;
 };
 

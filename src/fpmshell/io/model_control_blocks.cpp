@@ -40,6 +40,31 @@ void rigid_quantity(const Model& model, const YamlValue& q, HistoryRequest& req)
                                 join_names(bodies) + " (e.g. rigid_" + bodies.front() + "_uz)");
 }
 
+/// `contact_<n>_force_<x|y|z>`: the contact force on the slaves of the n-th contact definition.
+void contact_quantity(const Model& model, const YamlValue& q, HistoryRequest& req) {
+    const std::string qn = q.name();
+    const std::string expected =
+        "expected contact_<n>_force_x, _y or _z, n from 1 to the number of contact definitions (" +
+        std::to_string(model.contacts.size()) + ")";
+    const auto underscore = qn.find('_', 8);
+    const std::string number =
+        qn.substr(8, underscore == std::string::npos ? std::string::npos : underscore - 8);
+    const std::string rest = underscore == std::string::npos ? "" : qn.substr(underscore + 1);
+    if (number.empty() || number.size() > 6 ||
+        number.find_first_not_of("0123456789") != std::string::npos)
+        q.fail("'" + qn + "': " + expected);
+    const std::size_t n = std::stoul(number);
+    if (n < 1 || n > model.contacts.size())
+        q.fail("'" + qn + "' names contact definition " + number + ", but the model has " +
+               std::to_string(model.contacts.size()) + "; " + expected);
+    if (rest != "force_x" && rest != "force_y" && rest != "force_z")
+        q.fail("'" + qn + "': " + expected);
+    req.quantity = rest == "force_x"   ? Quantity::ContactForceX
+                   : rest == "force_y" ? Quantity::ContactForceY
+                                       : Quantity::ContactForceZ;
+    req.contact = static_cast<Index>(n - 1);
+}
+
 /// control.mass_scaling: {time_step: > 0, added_mass_limit: >= 0}, dynamic runs only.
 void read_mass_scaling(const YamlValue& v, Control& c) {
     const YamlMap m = v.map({"time_step", "added_mass_limit"});
@@ -182,6 +207,17 @@ void read_output(const std::optional<YamlValue>& v, Model& model) {
                 n->fail("a rigid-body quantity belongs to the body, not to nodes; remove `nodes`");
             if (const auto red = r.find("reduce"))
                 red->fail("a rigid-body quantity is one value; remove `reduce`");
+            o.histories.push_back(req);
+            continue;
+        }
+        if (qn.rfind("contact_", 0) == 0) {
+            contact_quantity(model, q, req);
+            if (const auto n = r.find("nodes"))
+                n->fail(
+                    "a contact quantity belongs to the contact definition, not to nodes; "
+                    "remove `nodes`");
+            if (const auto red = r.find("reduce"))
+                red->fail("a contact quantity is one value; remove `reduce`");
             o.histories.push_back(req);
             continue;
         }

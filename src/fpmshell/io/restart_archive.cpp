@@ -15,10 +15,11 @@ namespace {
 constexpr char k_magic[8] = {'F', 'P', 'M', 'S', 'H', 'R', 'S', 'T'};
 // Raised whenever the content of a restart file changes. A file of another format is refused:
 // the sections of the solver, the elements and the result files are read only in the layout
-// this build writes (format 6: the CRC-32 of the file's content at its end; the solver's
+// this build writes (format 7: the CRC-32 of the file's content at its end; the solver's
 // section "mass_scaling", the masses mass scaling has added during the run; one section per
-// result file, "history", "energy" and "fields").
-constexpr std::uint32_t k_format_version = 6;
+// result file, "history", "energy" and "fields"; the contact forces on each definition's
+// slaves in the section "contact").
+constexpr std::uint32_t k_format_version = 7;
 
 /// Bytes of the checksum at the end of the file: the CRC-32 (zlib's, little-endian) of every
 /// byte before it. It turns a file damaged after it was written (cut short, a flipped bit, an

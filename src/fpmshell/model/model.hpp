@@ -245,7 +245,11 @@ enum class Quantity {
     RigidAz,
     RigidForceX,
     RigidForceY,
-    RigidForceZ
+    RigidForceZ,
+    // contact definitions (contact_<n>_force_<x|y|z>): the contact force on their slaves
+    ContactForceX,
+    ContactForceY,
+    ContactForceZ
 };
 enum class Reduce { Single, Sum, Max, Min, Mean };
 
@@ -253,6 +257,7 @@ struct HistoryRequest {
     std::string name;
     std::vector<Index> nodes;  ///< empty for rigid-body quantities
     Index body = -1;           ///< rigid-body quantities: index into Model::rigid_bodies
+    Index contact = -1;        ///< contact quantities: index into Model::contacts
     Quantity quantity = Quantity::Uz;
     Reduce reduce = Reduce::Single;  ///< Single only when the set has one node
 };

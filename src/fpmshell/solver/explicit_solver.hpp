@@ -73,6 +73,10 @@ public:
     /// a^n of rigid body b.
     [[nodiscard]] Vec3 body_acceleration(Index b) const;
     /// Contact statistics (nullptr without contact).
+    /// The contact force at t_n on the slaves of contact definition k (0 without contact).
+    [[nodiscard]] Vec3 contact_force(Index k) const {
+        return contact_ ? contact_->slave_force(static_cast<std::size_t>(k)) : Vec3::Zero();
+    }
     [[nodiscard]] const ContactStatistics* contact_statistics() const {
         return contact_ ? &contact_->statistics() : nullptr;
     }

@@ -101,6 +101,8 @@ TEST(ContactFriction, ASlidingTriangleStopsAfterTheCoulombDistanceAndStays) {
     const Real weight = total_mass(s) * k_g;
     EXPECT_NEAR(s.bodies()[0].force.x(), mu * weight, 1e-6 * weight);
     EXPECT_NEAR(s.bodies()[0].force.z(), -weight, 1e-6 * weight);
+    // and the triangle the opposite (the contact definition's force on its slaves)
+    EXPECT_EQ(s.contact_force(0), Vec3(-s.bodies()[0].force));
     run_to(s, 2 * t_stop);
     for (std::size_t p = 0; p < 3; ++p) {
         // at rest: the static friction holds it (the sweeps' tolerance leaves ~1e-6 of a step's

@@ -7,7 +7,8 @@
 //   energy; the penalty (elastic) contact gives the energy back after the rebound;
 // - a strip rolled up beyond a full turn lies on itself instead of passing through;
 // - the multiplier memory of the warm start (§8.3a) keeps the positive multipliers by key and
-//   recalls them.
+//   recalls them;
+// - the contact force on the slaves of a self-contact is the weight it carries.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -401,4 +402,37 @@ TEST(Contact, CurvedAndFiniteRigidFacesHoldTheShellOutside) {
         EXPECT_GT(z_over, 0.5 * h * (1 - 2e-3)) << "the part over the face is held";
         EXPECT_LT(z_beyond, -0.005) << "the part beyond its edge falls past it";
     }
+}
+
+TEST(Contact, TheSlaveForceOfASelfContactIsTheWeightItCarries) {
+    // a triangle (legs 0.2 m) falls 0.01 m onto a fixed square of two triangles (2 x 2 m) and
+    // rests on it under its weight m g; the square's corners lie outside the triangle, so the
+    // triangle's particles are the only slaves that touch
+    MeshData mesh;
+    mesh.nodes = {Vec3(-1, -1, 0),  Vec3(1, -1, 0),     Vec3(1, 1, 0),     Vec3(-1, 1, 0),
+                  Vec3(0, 0, 0.02), Vec3(0.2, 0, 0.02), Vec3(0, 0.2, 0.02)};
+    mesh.triangles = {{0, 1, 2}, {0, 2, 3}, {4, 5, 6}};
+    Model m = from_mesh(mesh, 0.01, k_steel);
+    const Real g = 100;
+    BoundaryCondition fixed;
+    fixed.nodes = {0, 1, 2, 3};
+    fixed.fixed.fill(true);
+    m.boundary.push_back(fixed);
+    const std::vector<Real> mass = ExplicitSolver(m).state().mass;
+    Real weight = 0;
+    for (Index p = 4; p < 7; ++p) {
+        m.loads.push_back(
+            {LoadType::Force, {p}, {}, 0, Vec3(0, 0, -mass[static_cast<std::size_t>(p)] * g), -1});
+        weight += mass[static_cast<std::size_t>(p)] * g;
+    }
+    ContactDefinition self;
+    self.elements = m.element_sets["all"];
+    m.contacts.push_back(self);
+    ExplicitSolver s(m);
+    EXPECT_EQ(s.contact_force(0), Vec3::Zero());  // apart at the start
+    while (s.time() < 0.05) s.step(1e30);         // it lands at 0.014 s
+    // at rest: the multipliers carry the weight step by step, to the sweeps' tolerance
+    EXPECT_NEAR(s.contact_force(0).z(), weight, 1e-6 * weight);
+    EXPECT_NEAR(s.contact_force(0).x(), 0.0, 1e-9 * weight);
+    EXPECT_NEAR(s.state().x[4].z(), 0.01, 1e-3 * 0.01);  // h apart (half of each thickness)
 }

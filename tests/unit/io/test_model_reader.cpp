@@ -583,6 +583,24 @@ TEST(ModelReader, ReadsRigidMaterials) {
                  5, "materials.hammer.yield_stress", "belongs to plastic materials");
 }
 
+// contact_<n>_force_<c>: the force on the slaves of the n-th contact definition.
+TEST(ModelReader, ReadsContactForceHistories) {
+    const std::string yaml = k_base +
+                             "contact:\n  - {type: self}\noutput:\n  histories:\n"
+                             "    - {name: f, quantity: contact_1_force_y}\n";
+    const TempDir dir;
+    const Model m = read_model(dir.write("model.yaml", yaml));
+    ASSERT_EQ(m.output.histories.size(), 1u);
+    EXPECT_EQ(m.output.histories[0].contact, 0);
+    EXPECT_EQ(m.output.histories[0].quantity, Quantity::ContactForceY);
+    expect_error(replaced(yaml, "contact_1", "contact_2"), 13, "output.histories.0.quantity",
+                 "names contact definition 2, but the model has 1");
+    expect_error(replaced(yaml, "force_y", "force_q"), 13, "output.histories.0.quantity",
+                 "expected contact_<n>_force_x, _y or _z");
+    expect_error(replaced(yaml, "quantity: contact", "nodes: all, quantity: contact"), 13,
+                 "output.histories.0.nodes", "belongs to the contact definition");
+}
+
 // Every error category names the file, the line and the key in one sentence.
 TEST(ModelReader, EveryErrorNamesFileLineAndKey) {
     struct Case {
