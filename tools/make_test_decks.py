@@ -123,9 +123,26 @@ def strip_pull():
           node_set(2, "pulled_end", [ids[nx, j] for j in range(ny + 1)]))
 
 
+def plate_hammer():
+    # a 100 x 100 mm plate (part 1, 8 x 8 quadrangles, nodes 1-81) 1.5 mm above the floor z = 0;
+    # a 50 x 50 mm doubler (part 2, 4 x 4, nodes 101-125) 3.5 mm above its middle, its corners
+    # over plate nodes 21, 25, 57, 61 (the spot welds); a 30 x 30 mm rigid hammer (part 3, 2 x 2,
+    # nodes 201-209) 15 mm up; the node set of the plate's edge y = 0 (a nodal rigid body)
+    n, a = 8, 0.1
+    plate, ids = grid(n, n, lambda i, j: (a * i / n, a * j / n, 0.0015))
+    doubler, dids = grid(4, 4, lambda i, j: (0.025 + 0.0125 * i, 0.025 + 0.0125 * j, 0.005),
+                         first_node=101)
+    hammer, hids = grid(2, 2, lambda i, j: (0.035 + 0.015 * i, 0.035 + 0.015 * j, 0.015),
+                        first_node=201)
+    write("plate_hammer", ["*NODE"] + plate + doubler + hammer + ["*ELEMENT_SHELL"] +
+          quads(n, n, ids, 1) + quads(4, 4, dids, 2, first_element=101) +
+          quads(2, 2, hids, 3, first_element=201) + node_set(1, "edge", [ids[i, 0] for i in range(n + 1)]))
+
+
 if __name__ == "__main__":
     plate_drop()
     clamped_beam()
     print("tube bottom ring:", tube_crush())
     pressure_panel()
     strip_pull()
+    plate_hammer()
