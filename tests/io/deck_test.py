@@ -102,6 +102,12 @@ def panel_variant(name, load_cards):
     return path
 
 
+def columns_by_name(path):
+    """The columns of a history.csv by their header names, as numbers."""
+    rows = [line.split(",") for line in read(path).splitlines()]
+    return {name: [float(r[k]) for r in rows[1:]] for k, name in enumerate(rows[0])}
+
+
 def history_columns(path):
     rows = [line.split(",") for line in read(path).splitlines()[1:]]
     return list(zip(*[[float(v) for v in row] for row in rows]))
@@ -225,10 +231,8 @@ for fric, written in (("0.3", "0.3"), ("1.0", "stick")):
                               f"  - {{type: rigid, body: floor, friction: {written}}}"))
     if not h_deck:
         continue
-    rows = [line.split(",") for line in read(h_deck).splitlines()]
-    col = {name: k for k, name in enumerate(rows[0])}
-    fx = [float(r[col["rigidwall1_force_x"]]) for r in rows[1:]]
-    fz = [float(r[col["rigidwall1_force_z"]]) for r in rows[1:]]
+    columns = columns_by_name(h_deck)
+    fx, fz = columns["rigidwall1_force_x"], columns["rigidwall1_force_z"]
     check(f"wall friction {fric}: the floor is dragged along the sliding (+x)",
           max(fx) > 0 and sum(fx) > 0, f"force_x from {min(fx)} to {max(fx)}")
     if fric == "0.3":  # Coulomb: |F_x| <= mu |F_z| in every row (to rounding)
@@ -300,10 +304,9 @@ h_deck = deck_against_twin(
     tube_twin + "".join(f"    - {{name: contact1_force_{c}, quantity: contact_2_force_{c}}}\n"
                         for c in "xyz"))
 if h_deck:
-    rows = [line.split(",") for line in read(h_deck).splitlines()]
-    col = {name: k for k, name in enumerate(rows[0])}
+    columns = columns_by_name(h_deck)
     check("contact forces: the columns of RCFORC are in history.csv",
-          all(f"contact1_force_{c}" in col for c in "xyz"), rows[0])
+          all(f"contact1_force_{c}" in columns for c in "xyz"), list(columns))
 
 # ---- *INITIAL_VELOCITY_GENERATION with OMEGA: plate_drop.k spinning about a tilted axis
 generation = drop_deck[drop_deck.index("*INITIAL_VELOCITY_GENERATION"):drop_deck.index("*RIGIDWALL_PLANAR_ID")]
