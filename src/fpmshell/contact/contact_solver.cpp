@@ -623,8 +623,12 @@ void ContactSolver::enforce(const std::vector<Vec3>& x, std::vector<Vec3>& x_pre
     // that do not depend on the thread count. A fixed body (infinite mass) does not move: it
     // joins no island.
     const std::size_t np = x_pred.size();
-    const bool friction = std::any_of(constraints_.begin(), constraints_.end(),
-                                      [](const Constraint& c) { return c.friction > 0; });
+    // (by the definitions, not a pass over the constraints: most models have no friction)
+    const bool friction =
+        std::any_of(definitions_.begin(), definitions_.end(), [](const Definition& d) {
+            return d.def.type == ContactType::Rigid &&
+                   d.def.method == ContactMethod::LagrangeMultiplier && d.def.friction > 0;
+        });
     if (friction) friction_lambda_.assign(constraints_.size(), Vec3::Zero());
     warm_start(x_pred, body_u_pred, bodies, beta_particle, beta_body);
     island_nodes_.resize(constraints_.size());
