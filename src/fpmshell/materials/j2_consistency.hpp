@@ -171,8 +171,8 @@ FPMSHELL_INLINE void halley_in_bracket(const MaskOf<T>& open, const T& phi, cons
 template <class T, class Curve>
 class DgammaIteration {
 public:
-    DgammaIteration(const J2ReturnConstants& c, const TrialReturn<T>& t, const T& slope_n,
-                    const MaskOf<T>& lanes, const Curve& curve)
+    FPMSHELL_INLINE DgammaIteration(const J2ReturnConstants& c, const TrialReturn<T>& t,
+                                    const T& slope_n, const MaskOf<T>& lanes, const Curve& curve)
         : c_(c),
           t_(t),
           curve_(curve),
@@ -390,7 +390,7 @@ public:
     }
     /// The solution, with sigma_f' = B n alpha^(n-1) = n (y - A) / alpha at the last
     /// evaluation (taken at FlowStress::k_slope_floor below it, as FlowStress::slope does).
-    [[nodiscard]] Consistency<T> result() const {
+    [[nodiscard]] FPMSHELL_INLINE Consistency<T> result() const {
         Consistency<T> out = out_;
         const MaskOf<T> floor = last_alpha_ < FlowStress::k_slope_floor;
         out.flow_slope = select(
