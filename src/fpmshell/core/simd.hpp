@@ -17,7 +17,7 @@
 
 #include "fpmshell/core/types.hpp"
 
-#if defined(__AVX512F__) || defined(__FMA__)
+#if defined(__AVX512F__)
 #include <immintrin.h>
 #endif
 
@@ -109,21 +109,16 @@ namespace simd_detail {
 /// the bits the step corrects), whatever the compiler's contraction (sanitizer and clang builds
 /// turn it off)
 [[nodiscard]] FPMSHELL_INLINE Real fused(Real a, Real b, Real c) { return std::fma(a, b, c); }
-/// The instruction itself where the build has one: libstdc++'s stdx::fma is a generic fallback
-/// that GCC 12 leaves out of line in large callers, and a call there spills every vector
-/// register of the return mapping's iterations (Johnson-Cook kernels 1.6-1.8 times slower).
+/// The AVX-512 instruction itself (the refinements below run on AVX-512 only): libstdc++'s
+/// stdx::fma is a generic fallback that GCC 12 leaves out of line in large callers, and a call
+/// there spills every vector register of the return mapping's iterations (Johnson-Cook kernels
+/// 1.6-1.8 times slower).
 [[nodiscard]] FPMSHELL_INLINE RealPack fused(const RealPack& a, const RealPack& b,
                                              const RealPack& c) {
 #if defined(__AVX512F__)
     if constexpr (k_lanes == 8)
         return RealPack(_mm512_fmadd_pd(static_cast<__m512d>(a), static_cast<__m512d>(b),
                                         static_cast<__m512d>(c)));
-    else
-        return stdx::fma(a, b, c);
-#elif defined(__FMA__)
-    if constexpr (k_lanes == 4)
-        return RealPack(_mm256_fmadd_pd(static_cast<__m256d>(a), static_cast<__m256d>(b),
-                                        static_cast<__m256d>(c)));
     else
         return stdx::fma(a, b, c);
 #else
