@@ -2,12 +2,15 @@
 // it, reads, copies what we need and finalises it again, also when an error is thrown.
 // Gmsh 4.8 crashes (double free, segmentation fault) on some malformed files (about 1 in 150
 // randomly damaged files when fuzzed), so the read runs in a child process whose result comes
-// back through a pipe: a crash or a hang of Gmsh becomes an InputError instead.
+// back through a pipe: a crash or a hang of Gmsh becomes an InputError instead. Some damaged
+// files make Gmsh allocate gigabytes before it fails (7.6 GB for a 144-byte file): the child's
+// memory is limited to what a mesh of the file's size can need.
 #include "fpmshell/mesh/gmsh_reader.hpp"
 
 #include <fcntl.h>
 #include <poll.h>
 #include <signal.h>
+#include <sys/resource.h>
 #include <sys/types.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -22,6 +25,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <new>
 #include <sstream>
 #include <string>
 #include <unordered_map>
@@ -333,13 +337,64 @@ bool deserialize(const std::string& data, MeshData& m) {
            r.get_sets(m.node_sets) && r.get_sets(m.element_sets) && r.at_end();
 }
 
+/// The private writable memory this process has mapped (VmData of /proc/self/status), in
+/// bytes; 0 when it cannot be read.
+std::uint64_t mapped_data_bytes() {
+    std::ifstream status("/proc/self/status");
+    for (std::string line; std::getline(status, line);)
+        if (line.rfind("VmData:", 0) == 0) {
+            std::istringstream value(line.substr(7));
+            std::uint64_t kb = 0;
+            value >> kb;
+            return kb * 1024;
+        }
+    return 0;
+}
+
+/// The memory Gmsh may take to read a file of `file_bytes` bytes: its start-up (the library's
+/// data and initialisation: under 8 MB) and a multiple of the file's size. Meshes of 5.7 to
+/// 78 MB (formats 2 and 4, ASCII and binary) took 7 to 18 bytes of memory per byte of file, the
+/// most in ASCII with short numbers: a real mesh stays well inside, while a damaged file whose
+/// counts make Gmsh allocate gigabytes is stopped at once (docs/model-format.md, `file:`).
+std::uint64_t gmsh_memory_budget(std::uintmax_t file_bytes) {
+    constexpr std::uint64_t k_start_up = std::uint64_t{256} << 20;
+    constexpr std::uint64_t k_per_file_byte = 64;
+    return k_start_up + k_per_file_byte * static_cast<std::uint64_t>(file_bytes);
+}
+
+/// Set in the child when an allocation failed (Gmsh's C API turns the exception into a plain
+/// "failed", so the reason is kept here).
+bool g_allocation_failed = false;
+
+void on_allocation_failure() {
+    g_allocation_failed = true;
+    throw std::bad_alloc();
+}
+
+/// Lets the child map at most `budget` bytes more of private writable memory (RLIMIT_DATA,
+/// which since Linux 4.7 covers mmap as well as the heap: Gmsh's and the C library's
+/// allocations). The limit is set above what the process already has, since that (the
+/// libraries' data, a sanitizer's shadow memory) counts too; it only ever lowers the limit.
+void limit_memory(std::uint64_t budget) {
+    const std::uint64_t now = mapped_data_bytes();
+    rlimit limit{};
+    if (now == 0 || ::getrlimit(RLIMIT_DATA, &limit) != 0) return;
+    const rlim_t wanted = static_cast<rlim_t>(now + budget);
+    if (limit.rlim_cur != RLIM_INFINITY && limit.rlim_cur <= wanted) return;
+    limit.rlim_cur = wanted;
+    ::setrlimit(RLIMIT_DATA, &limit);
+}
+
 /// Child side: read, send 'M' + mesh or 'E' + message, exit without running destructors.
-[[noreturn]] void child(const std::string& path, int fd) {
+[[noreturn]] void child(const std::string& path, std::uintmax_t file_bytes, int fd) {
     const int null_fd = ::open("/dev/null", O_WRONLY);
     if (null_fd >= 0) {  // Gmsh and the C library may print on crashes; keep the terminal clean
         ::dup2(null_fd, STDOUT_FILENO);
         ::dup2(null_fd, STDERR_FILENO);
     }
+    const std::uint64_t budget = gmsh_memory_budget(file_bytes);
+    limit_memory(budget);
+    std::set_new_handler(on_allocation_failure);
     std::string out;
     try {
         out = "M" + serialize(read_in_process(path));
@@ -351,6 +406,13 @@ bool deserialize(const std::string& data, MeshData& m) {
     } catch (...) {
         out = "E" + input_error_text(path, 0, "", "cannot read the mesh");
     }
+    if (g_allocation_failed && out.front() == 'E')
+        out = "E" + input_error_text(path, 0, "",
+                                     "Gmsh needed more than " + std::to_string(budget >> 20) +
+                                         " MB of memory to read this file of " +
+                                         std::to_string(file_bytes) +
+                                         " bytes, far more than a mesh of its size takes; the "
+                                         "file is probably damaged");
     const char* p = out.data();
     std::size_t left = out.size();
     while (left > 0) {
@@ -377,7 +439,9 @@ MeshData read_gmsh(const std::string& path, std::chrono::seconds time_limit) {
     }
     if (pid == 0) {
         ::close(fds[0]);
-        child(path, fds[1]);
+        std::error_code size_error;
+        const std::uintmax_t file_bytes = std::filesystem::file_size(path, size_error);
+        child(path, size_error ? 0 : file_bytes, fds[1]);
     }
     ::close(fds[1]);
 

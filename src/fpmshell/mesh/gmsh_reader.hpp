@@ -19,8 +19,9 @@ namespace fpmshell {
 /// gives no set. Throws InputError (naming `path`) when the file cannot be read, is not a .msh
 /// file, holds other surface element types, or holds no triangle. Gmsh is initialised and
 /// finalised inside the call (also on error), without reading its configuration files.
-/// The read runs in a child process: a Gmsh crash or a read longer than time_limit (a hung
-/// Gmsh) is an InputError too.
+/// The read runs in a child process: a Gmsh crash, a read longer than time_limit (a hung Gmsh)
+/// or one that needs more memory than a mesh of the file's size can (256 MB + 64 bytes per byte
+/// of file) is an InputError too.
 [[nodiscard]] MeshData read_gmsh(const std::string& path,
                                  std::chrono::seconds time_limit = std::chrono::minutes(10));
 

@@ -13,8 +13,9 @@
 namespace fpmshell {
 namespace {
 
-/// Models below this many elements (or shape classes) are set up serially.
-constexpr Index k_parallel_min_elements = 2000;
+/// Models below this many elements (or shape classes) are set up serially (read by the OpenMP
+/// pragmas only: unused in a build without OpenMP).
+[[maybe_unused]] constexpr Index k_parallel_min_elements = 2000;
 
 /// Local flat shape of the triangle (p0, p1, p2): node 1 at the origin, edge 1-2 along x.
 TriangleShape local_shape(const Vec3& p0, const Vec3& p1, const Vec3& p2) {
