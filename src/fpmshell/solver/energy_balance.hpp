@@ -15,11 +15,18 @@ struct EnergyBalance {
     Real external_work = 0;  ///< work of loads and supports, plus the initial kinetic energy
     Real damping = 0;        ///< dissipated by Rayleigh damping
     Real contact = 0;        ///< dissipated by contact (0 without contact)
+    /// What rounding alone can put into the balance so far (theory.md eq. 6.8-2): the steps
+    /// taken times this step's rounding of the works. Not a result: it is recomputed every step
+    /// (and not kept in restart files).
+    Real rounding = 0;
 
-    /// (kinetic + internal - external work + damping + contact) / max(kinetic, internal, external).
+    /// (kinetic + internal - external work + damping + contact) / max(kinetic, internal,
+    /// external, rounding) (theory.md eq. 6.8-1). The rounding floor keeps the ratio of a model
+    /// that does not move (held by friction, in equilibrium) from being a ratio of rounding
+    /// errors: there every energy is of the order of the last bits of the positions.
     [[nodiscard]] Real error() const {
         const Real scale =
-            std::max({std::abs(kinetic), std::abs(internal), std::abs(external_work)});
+            std::max({std::abs(kinetic), std::abs(internal), std::abs(external_work), rounding});
         if (scale <= 0) return 0;
         return (kinetic + internal - external_work + damping + contact) / scale;
     }

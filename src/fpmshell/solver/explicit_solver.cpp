@@ -499,6 +499,8 @@ void ExplicitSolver::book_energies(const ParticleSums& particles) {
         contact_work + particles.contact_work;  // dissipated (multipliers) or stored (penalty)
     energy_.external_work += external_work + particles.external_work;
     energy_.damping += particles.damping;
+    // eq. 6.8-2: this step's rounding, as if every step so far had had it
+    energy_.rounding = static_cast<Real>(steps_ + 1) * particles.rounding;
 }
 
 void ExplicitSolver::finish_step(const StepLengths& dt, const ParticleSums& particles) {

@@ -109,6 +109,7 @@ private:
     /// out-of-balance and applied loads squared (relaxation residual).
     struct ParticleSums {
         Real kinetic = 0, external_work = 0, contact_work = 0, damping = 0, non_finite = 0;
+        Real rounding = 0;  ///< of this step's works (eq. 6.8-2)
         Real residual2 = 0, reference2 = 0;
     };
     template <class Archive>
@@ -162,8 +163,8 @@ private:
     void update_particle_velocity(std::size_t p, const CyclePolicy& policy, const StepLengths& dt,
                                   Real* residual);
     /// The energies of particle p at t_n added to energy[0..3] (kinetic, work of loads and
-    /// reactions, contact work, damping), energy[4] += 1 if its new state is not finite; then
-    /// its x^{n+1} and rotation increment.
+    /// reactions, contact work, damping), energy[4] += 1 if its new state is not finite,
+    /// energy[5] the rounding of its works (eq. 6.8-2); then its x^{n+1} and rotation increment.
     void advance_particle(std::size_t p, const StepLengths& dt, Real* energy);
 
     /// Whether particle p at `position` has a finite state: the position, its angular velocity
@@ -226,8 +227,8 @@ private:
     std::vector<Vec3> x_pred_, body_u_pred_;           ///< contact scratch: predicted x^{n+1}
     std::vector<Vec3> x_pred_before_, body_u_before_;  ///< the predictor before the multipliers
     std::vector<std::array<Real, 2>> sums2_;           ///< scratch: per-chunk partial sums
-    std::vector<std::array<Real, 5>> sums5_;
-    std::vector<std::array<Real, 7>> sums7_;
+    std::vector<std::array<Real, 6>> sums6_;
+    std::vector<std::array<Real, 8>> sums8_;
     Real time_ = 0;
     Real dt_half_ = 0;       ///< dt_{n-1/2} (0 before the first step)
     Real dt_half_prev_ = 0;  ///< the step before dt_half_

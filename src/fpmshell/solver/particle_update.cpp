@@ -3,6 +3,7 @@
 // energies at t_n with the new positions x^{n+1}. Every particle on its own; sums atom by atom
 // (atom_sums), so that they depend neither on the thread count nor on the ranks.
 #include <algorithm>
+#include <limits>
 
 #include "fpmshell/core/communicator.hpp"
 #include "fpmshell/core/exact_sum.hpp"
@@ -66,8 +67,15 @@ inline void ExplicitSolver::advance_particle(std::size_t p, const StepLengths& d
         moment_sum = moment_sum + s_.reaction_moment_prev[p] + s_.reaction_moment[p];
     }
     energy[1] += 0.5 * force_sum.dot(s_.x[p] - s_.x_prev[p]) + 0.5 * moment_sum.dot(s_.dtheta[p]);
-    if (contact_)
-        energy[2] += 0.5 * (s_.f_contact_prev[p] + s_.f_contact[p]).dot(s_.x[p] - s_.x_prev[p]);
+    // The works' rounding (eq. 6.8-2): the step's displacement is a difference of positions,
+    // each rounded to eps |x|, and every force the balance books acts over it.
+    Real forces = 0.5 * force_sum.cwiseAbs().sum() + s_.f_int[p].cwiseAbs().sum();
+    if (contact_) {
+        const Vec3 contact_sum = s_.f_contact_prev[p] + s_.f_contact[p];
+        energy[2] += 0.5 * contact_sum.dot(s_.x[p] - s_.x_prev[p]);
+        forces += 0.5 * contact_sum.cwiseAbs().sum();
+    }
+    energy[5] += std::numeric_limits<Real>::epsilon() * s_.x[p].cwiseAbs().maxCoeff() * forces;
     if (dt.a_m > 0) {
         const Vec3 vbar = 0.5 * (s_.v_prev[p] + s_.v[p]);
         const Vec3 wbar = 0.5 * (s_.omega_prev[p] + s_.omega[p]);
@@ -129,12 +137,12 @@ ExplicitSolver::ParticleSums ExplicitSolver::update_velocities_and_advance_parti
     // (every particle's new value is written below).
     std::swap(s_.v, s_.v_prev);
     std::swap(s_.omega, s_.omega_prev);
-    const std::array<Real, 7> sums = atom_sums<7>(sums7_, [&](Index ip, std::array<Real, 7>& acc) {
+    const std::array<Real, 8> sums = atom_sums<8>(sums8_, [&](Index ip, std::array<Real, 8>& acc) {
         const std::size_t p = static_cast<std::size_t>(ip);
-        update_particle_velocity(p, policy, dt, acc.data() + 5);
+        update_particle_velocity(p, policy, dt, acc.data() + 6);
         advance_particle(p, dt, acc.data());
     });
-    return {sums[0], sums[1], sums[2], sums[3], sums[4], sums[5], sums[6]};
+    return {sums[0], sums[1], sums[2], sums[3], sums[4], sums[5], sums[6], sums[7]};
 }
 
 ExplicitSolver::ParticleSums ExplicitSolver::update_velocities(const CyclePolicy& policy,
@@ -152,8 +160,8 @@ ExplicitSolver::ParticleSums ExplicitSolver::update_velocities(const CyclePolicy
 }
 
 void ExplicitSolver::advance_particles(const StepLengths& dt, ParticleSums& sums) {
-    const std::array<Real, 5> energy =
-        atom_sums<5>(sums5_, [&](Index ip, std::array<Real, 5>& acc) {
+    const std::array<Real, 6> energy =
+        atom_sums<6>(sums6_, [&](Index ip, std::array<Real, 6>& acc) {
             advance_particle(static_cast<std::size_t>(ip), dt, acc.data());
         });
     sums.kinetic = energy[0];
@@ -161,6 +169,7 @@ void ExplicitSolver::advance_particles(const StepLengths& dt, ParticleSums& sums
     sums.contact_work = energy[2];
     sums.damping = energy[3];
     sums.non_finite = energy[4];
+    sums.rounding = energy[5];
 }
 
 }  // namespace fpmshell
