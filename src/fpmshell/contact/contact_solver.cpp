@@ -462,31 +462,47 @@ void ContactSolver::collect_self(Definition& d, const std::vector<Vec3>& x,
 
 void ContactSolver::collect_rigid(const Definition& d, const std::vector<Vec3>& y,
                                   const std::vector<Vec3>& body_u, bool lagrange,
-                                  std::vector<Constraint>& out) const {
+                                  std::vector<Constraint>& out) {
     const auto b = static_cast<std::size_t>(d.def.body);
     const RigidBody& body = model_.rigid_bodies[b];
-    for (Index s : d.slaves) {
-        const auto us = static_cast<std::size_t>(s);
-        // Thickness offset h_s / 2 in every direction (theory.md §8.3): a particle touches the
-        // face with a ball of its half thickness, so the contact point does not jump when the
-        // shell turns (an offset that follows the orientation does work and creates energy).
-        const Real offset = 0.5 * node_thickness_[us];
-        // a curved face is linearised at the point below the particle for this step
-        const RigidFacePoint face = rigid_face_point(body, y[us], body_u[b]);
-        if (!face.faces) continue;
-        const Real gap = face.normal.dot(y[us] - (face.anchor + body_u[b])) - offset;
-        if (!(gap < (lagrange ? activation_distance(offset, motion_) : 0.0))) continue;
-        Constraint c;
-        c.slave = s;
-        c.body = d.def.body;
-        c.normal = face.normal;
-        c.anchor = face.anchor;
-        c.offset = offset;
-        c.gap = gap;
-        c.thickness = node_thickness_[us];
-        if (lagrange) c.friction = d.def.friction;
-        out.push_back(c);
+    // The slaves in fixed chunks, in parallel, each into its own buffer, joined in chunk order:
+    // the constraints come in slave order for any thread count (as in collect_self).
+    const std::size_t n_slaves = d.slaves.size();
+    const std::size_t n_chunks = (n_slaves + k_collect_chunk - 1) / k_collect_chunk;
+    if (collect_chunks_.size() < n_chunks) collect_chunks_.resize(n_chunks);
+    [[maybe_unused]] const bool parallel = n_slaves >= parallel_min_slaves_;
+#pragma omp parallel for schedule(static) if (parallel)
+    for (std::size_t chunk = 0; chunk < n_chunks; ++chunk) {
+        std::vector<Constraint>& found = collect_chunks_[chunk].out;
+        found.clear();
+        for (std::size_t i = chunk * k_collect_chunk;
+             i < std::min(n_slaves, (chunk + 1) * k_collect_chunk); ++i) {
+            const Index s = d.slaves[i];
+            const auto us = static_cast<std::size_t>(s);
+            // Thickness offset h_s / 2 in every direction (theory.md §8.3): a particle touches
+            // the face with a ball of its half thickness, so the contact point does not jump
+            // when the shell turns (an offset that follows the orientation does work and
+            // creates energy).
+            const Real offset = 0.5 * node_thickness_[us];
+            // a curved face is linearised at the point below the particle for this step
+            const RigidFacePoint face = rigid_face_point(body, y[us], body_u[b]);
+            if (!face.faces) continue;
+            const Real gap = face.normal.dot(y[us] - (face.anchor + body_u[b])) - offset;
+            if (!(gap < (lagrange ? activation_distance(offset, motion_) : 0.0))) continue;
+            Constraint c;
+            c.slave = s;
+            c.body = d.def.body;
+            c.normal = face.normal;
+            c.anchor = face.anchor;
+            c.offset = offset;
+            c.gap = gap;
+            c.thickness = node_thickness_[us];
+            if (lagrange) c.friction = d.def.friction;
+            found.push_back(c);
+        }
     }
+    for (std::size_t chunk = 0; chunk < n_chunks; ++chunk)
+        out.insert(out.end(), collect_chunks_[chunk].out.begin(), collect_chunks_[chunk].out.end());
 }
 
 Real ContactSolver::weight(const Constraint& c, Real beta_particle, Real beta_body,

@@ -167,7 +167,7 @@ private:
     /// Rigid-face constraints at positions y; lagrange: also the particles near the face.
     void collect_rigid(const Definition& d, const std::vector<Vec3>& y,
                        const std::vector<Vec3>& body_u, bool lagrange,
-                       std::vector<Constraint>& out) const;
+                       std::vector<Constraint>& out);
     [[nodiscard]] Real weight(const Constraint& c, Real beta_particle, Real beta_body,
                               const std::vector<RigidBodyState>& bodies) const;
     void note_penetration(Real penetration, const Constraint& c, long step);
