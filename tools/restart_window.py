@@ -14,6 +14,7 @@ import argparse
 import json
 import os
 import shutil
+import statistics
 import subprocess
 import tempfile
 
@@ -59,9 +60,11 @@ def main():
                 print("round %d %s, %d thread(s): %d steps, %.1f ns per element-step, contact %.1f %%"
                       % (r, tag, threads, steps, ns, 100 * contact / loop), flush=True)
     for (tag, threads), runs in sorted(results.items()):
-        print("%s, %d thread(s): %.0f-%.0f ns per element-step, contact %.1f-%.1f %%"
+        print("%s, %d thread(s): %.0f-%.0f ns per element-step (median %.0f), contact %.1f-%.1f %% "
+              "(median %.1f %%)"
               % (tag, threads, min(x[0] for x in runs), max(x[0] for x in runs),
-                 100 * min(x[1] for x in runs), 100 * max(x[1] for x in runs)))
+                 statistics.median(x[0] for x in runs), 100 * min(x[1] for x in runs),
+                 100 * max(x[1] for x in runs), 100 * statistics.median(x[1] for x in runs)))
     for threads in sorted({t for _, t in histories}):
         same = histories[("old", threads)] == histories[("new", threads)]
         print("%d thread(s): history.csv the same bytes for both builds: %s" % (threads, same))
