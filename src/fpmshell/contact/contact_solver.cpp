@@ -33,6 +33,11 @@ constexpr Real k_corner_weight = 0.99;
 // it runs in parallel from this many times the sweeps' minimum (on the tube's ~1 400 constraints
 // a parallel region per pass cost more than it shared out on two threads).
 constexpr std::size_t k_pass_factor = 4;
+// Clearance of a dropped pair (theory.md eq. 8.1d): the face of weights >= -0.02 reaches
+// 0.06 x the largest corner distance beyond the triangle (the frame's radius is 1.1 x that
+// distance); the motion of the step of the drop counts twice more (its predictor and its t_n);
+// a relative 1e-6 of the offset covers the rounding of the distances.
+constexpr Real k_clear_face = 0.06, k_clear_motions = 4.0, k_clear_rounding = 1e-6;
 
 Vec3 unit_normal(const Vec3& a, const Vec3& b, const Vec3& c) {
     const Vec3 n = (b - a).cross(c - a);
@@ -229,6 +234,7 @@ void ContactSolver::search(Definition& d, const std::vector<Vec3>& x) {
         const std::vector<Index>& found = search_chunks_[chunk];
         d.candidates.insert(d.candidates.end(), found.begin(), found.end());
     }
+    d.candidate_clear.assign(d.candidates.size(), -std::numeric_limits<Real>::infinity());
 }
 
 void ContactSolver::collect_self(Definition& d, const std::vector<Vec3>& x,
@@ -254,6 +260,12 @@ void ContactSolver::collect_self(Definition& d, const std::vector<Vec3>& x,
             std::unique(d.candidate_triangles.begin(), d.candidate_triangles.end()),
             d.candidate_triangles.end());
     }
+    // (after a restart the clearances are not known: every pair is computed once)
+    if (d.candidate_clear.size() != d.candidates.size())
+        d.candidate_clear.assign(d.candidates.size(), -std::numeric_limits<Real>::infinity());
+    // eq. 8.1d: a pair is skipped while travelled + d_a < its clearance; d_a grows with the
+    // offset, so that of the definition's largest offset bounds every pair's.
+    const Real clear_activation = activation_distance(d.max_offset, motion_);
     frames_.resize(tri.size());
     const std::size_t n_tri = d.candidate_triangles.size();
 #pragma omp parallel for schedule(static) if (parallel)
@@ -274,7 +286,9 @@ void ContactSolver::collect_self(Definition& d, const std::vector<Vec3>& x,
                                                (yb - f.centre_y).squaredNorm(),
                                                (yc - f.centre_y).squaredNorm()}));
     }
-#pragma omp parallel for schedule(dynamic) if (parallel)
+    const bool clearances = lagrange && pair_clearances_;
+    long skipped = 0;
+#pragma omp parallel for schedule(dynamic) reduction(+ : skipped) if (parallel)
     for (std::size_t chunk = 0; chunk < n_chunks; ++chunk) {
         CollectBuffers& buf = collect_chunks_[chunk];
         buf.out.clear();
@@ -287,16 +301,35 @@ void ContactSolver::collect_self(Definition& d, const std::vector<Vec3>& x,
             const Index s = d.slaves[i];
             const std::size_t us = static_cast<std::size_t>(s);
             for (std::int64_t k = begin; k < end; ++k) {
+                Real& clear = d.candidate_clear[static_cast<std::size_t>(k)];
+                if (d.travelled + clear_activation < clear) {
+                    ++skipped;
+                    continue;
+                }
                 const Index e = d.candidates[static_cast<std::size_t>(k)];
                 const auto& t = tri[static_cast<std::size_t>(e)];
                 const Real offset =
                     d.slave_offset[i] + 0.5 * element_thickness_[static_cast<std::size_t>(e)];
                 const TriangleFrame& f = frames_[static_cast<std::size_t>(e)];
+                // eq. 8.1d: the clearance of a pair dropped at a distance >= `distance` from the
+                // triangle at y
+                auto keep_clear = [&](Real distance) {
+                    // a point beside the triangle but over the extended face (eq. 8.1d)
+                    const Real face = k_clear_face * (f.radius_y + 3 * d.margin);
+                    clear = d.travelled - k_clear_motions * motion_ + distance -
+                            offset * (1 + k_clear_rounding) - face * face / (2 * offset);
+                };
                 if (far_on_its_side(
                         f, x[us], y[us], x[static_cast<std::size_t>(t[0])],
                         y[static_cast<std::size_t>(t[0])],
-                        offset + (lagrange ? activation_distance(offset, motion_) : 0.0)))
+                        offset + (lagrange ? activation_distance(offset, motion_) : 0.0))) {
+                    // its plane and its sphere bound the distance to the triangle from below
+                    if (clearances)
+                        keep_clear(
+                            std::max(std::abs(f.n_y.dot(y[us] - y[static_cast<std::size_t>(t[0])])),
+                                     (y[us] - f.centre_y).norm() - f.radius_y));
                     continue;
+                }
                 Constraint c;
                 c.slave = s;
                 c.element = e;
@@ -321,7 +354,11 @@ void ContactSolver::collect_self(Definition& d, const std::vector<Vec3>& x,
                     // are beside the triangle: this saves their second closest point.)
                     if (!cp_y.in_face) {
                         const Real reach = offset + activation_distance(offset, motion_);
-                        if ((y[us] - cp_y.point).norm() > reach * (1.0 + 1e-9)) continue;
+                        const Real distance = (y[us] - cp_y.point).norm();
+                        if (distance > reach * (1.0 + 1e-9)) {
+                            if (clearances) keep_clear(distance);
+                            continue;
+                        }
                     }
                 }
                 // Side of the pair from t_n (§8.2): the surfaces are apart there.
@@ -408,6 +445,7 @@ void ContactSolver::collect_self(Definition& d, const std::vector<Vec3>& x,
                 buf.sorted[k].low != buf.sorted[k - 1].low)
                 buf.unique.push_back(buf.sorted[k].index);
     }
+    stats_.pairs_skipped += skipped;
     // One constraint per key: the first found (slave order, then candidate order), so the
     // result does not depend on anything but the mesh and the state. Each chunk has sorted its
     // keys and kept the first of equal ones; merging the chunks' lists, the earliest chunk

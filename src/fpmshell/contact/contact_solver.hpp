@@ -45,6 +45,9 @@ struct ContactStatistics {
     Index max_penetration_particle = -1;
     Index max_penetration_element = -1;  ///< -1 when it was against a rigid body
     double seconds = 0;                  ///< wall time spent in contact (search + enforcement)
+    /// Self-contact pairs dropped by their clearance (theory.md eq. 8.1d) without being
+    /// computed, over the run
+    long pairs_skipped = 0;
 };
 
 class ContactSolver {
@@ -111,6 +114,10 @@ public:
         parallel_min_constraints_ = constraints;
     }
 
+    /// Whether collect_self drops pairs by their clearance (theory.md eq. 8.1d; on by default).
+    /// The constraints are the same either way: tests switch it off to compare.
+    void set_pair_clearances(bool on) { pair_clearances_ = on; }
+
     /// The state carried from step to step (search cadence, candidates, statistics), for a
     /// restart file (io/restart_archive.hpp).
     void save(RestartWriter& out) const;
@@ -154,6 +161,9 @@ private:
         bool searched = false;
         std::vector<std::int64_t> candidate_start;  ///< CSR per slave
         std::vector<Index> candidates;              ///< triangles
+        /// per candidate: collect_self drops the pair without computing it while travelled plus
+        /// the activation distance stays below this (eq. 8.1d); -inf: not known to be clear
+        std::vector<Real> candidate_clear;
         /// the triangles among the candidates, once each (collect_self's frames; empty after
         /// a search until collect_self remakes it)
         std::vector<Index> candidate_triangles;
@@ -262,6 +272,7 @@ private:
     /// barrier per sweep, more than a few hundred constraint updates.
     std::size_t parallel_min_slaves_ = 2000;
     std::size_t parallel_min_constraints_ = 512;
+    bool pair_clearances_ = true;
 };
 
 }  // namespace fpmshell

@@ -244,3 +244,46 @@ TEST(ContactSweeps, StartFromTheLastMultipliers) {
     for (std::size_t p = 0; p < once.force.size(); ++p)
         EXPECT_LT((once.force[p] - twice.force[p]).norm(), 1e-4 * largest) << "particle " << p;
 }
+
+TEST(ContactSearch, ClearancesDropOnlyPairsThatMakeNoConstraint) {
+    // The folded sheet's layers close in at the largest rate the motion allows (every particle
+    // moves by `motion` per step, the upper layer down and the lower one up, with a random
+    // sideways part), from apart to well into contact, over several searches. One solver drops
+    // pairs by their clearance (eq. 8.1d), the other computes every candidate pair: the
+    // constraints, hence the forces and corrected predictors, must be bitwise the same.
+    const FoldedSheet f = folded_sheet(3, 24, 12, 0.3 * k_h);
+    const MeshTopology topology(f.model);
+    const std::vector<Real> thickness(f.model.triangles.size(), k_h);
+    ContactSolver skipping(f.model, topology, unit_inverse_masses(f.model), thickness);
+    ContactSolver computing(f.model, topology, unit_inverse_masses(f.model), thickness);
+    computing.set_pair_clearances(false);
+    const Real motion = 0.05 * k_margin;  // 10 steps per search: (8.1b) with 2 x motion a step
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<Real> u(-1, 1);
+    std::vector<Vec3> x = f.x, body_u;
+    std::vector<RigidBodyState> bodies;
+    long active_steps = 0;
+    for (long step = 0; step < 80; ++step) {
+        std::vector<Vec3> y = x;
+        for (std::size_t p = 0; p < x.size(); ++p) {
+            const Real approach = f.x[p].z() > 0.75 * k_h ? -1.0 : 1.0;
+            const Vec3 dir = Vec3(u(rng), u(rng), approach + 0.5 * u(rng)).normalized();
+            y[p] += motion * dir;
+        }
+        std::vector<Vec3> y_skipping = y, y_computing = y;
+        std::vector<Vec3> f_skipping(x.size(), Vec3::Zero()), f_computing = f_skipping;
+        skipping.enforce(x, y_skipping, body_u, bodies, 1e-4, 1e-4, motion, step, f_skipping);
+        computing.enforce(x, y_computing, body_u, bodies, 1e-4, 1e-4, motion, step, f_computing);
+        ASSERT_EQ(skipping.statistics().active, computing.statistics().active) << "step " << step;
+        for (std::size_t p = 0; p < x.size(); ++p) {
+            ASSERT_EQ(f_skipping[p], f_computing[p]) << "step " << step << ", particle " << p;
+            ASSERT_EQ(y_skipping[p], y_computing[p]) << "step " << step << ", particle " << p;
+        }
+        if (skipping.statistics().active > 0) ++active_steps;
+        x = y;  // the uncorrected predictor: every particle moved by exactly `motion`
+    }
+    EXPECT_GT(active_steps, 20) << "the layers came into contact";
+    EXPECT_GT(skipping.statistics().searches, 5) << "over several searches";
+    EXPECT_GT(skipping.statistics().pairs_skipped, 1000) << "the clearances dropped pairs";
+    EXPECT_EQ(computing.statistics().pairs_skipped, 0);
+}
