@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <string>
 
 #include "fpmshell/contact/closest_point.hpp"
@@ -53,15 +54,20 @@ Vec3 unit_normal(const Vec3& a, const Vec3& b, const Vec3& c) {
 /// never less than the plane distance) exceeds the activation distance, and a pair closed at x
 /// would need a plane distance below the offset at y. Both signs with a margin of 1e-9 of the
 /// reach, far above the rounding of the closest point's plane distance that collect_self takes.
-bool far_on_its_side(const ContactSolver::TriangleFrame& f, const Vec3& xs, const Vec3& ys,
-                     const Vec3& xa, const Vec3& ya, Real reach) {
+/// Returns, for such a pair, the larger of its plane and sphere distances (both bound the
+/// slave's distance to the triangle at y from below: its clearance, eq. 8.1d); none otherwise.
+std::optional<Real> far_on_its_side(const ContactSolver::TriangleFrame& f, const Vec3& xs,
+                                    const Vec3& ys, const Vec3& xa, const Vec3& ya, Real reach) {
     const Real side_x = f.n_x.dot(xs - xa), side_y = f.n_y.dot(ys - ya);
     const Real margin = 1e-9 * reach;
     if (!((side_x > margin && side_y > margin) || (side_x < -margin && side_y < -margin)))
-        return false;
+        return std::nullopt;
     const Real beyond = reach + margin;
-    if (std::abs(side_y) > beyond) return true;
-    return (ys - f.centre_y).squaredNorm() > (beyond + f.radius_y) * (beyond + f.radius_y);
+    const Real plane = std::abs(side_y);
+    const Real centre2 = (ys - f.centre_y).squaredNorm();
+    if (!(plane > beyond) && !(centre2 > (beyond + f.radius_y) * (beyond + f.radius_y)))
+        return std::nullopt;
+    return std::max(plane, std::sqrt(centre2) - f.radius_y);
 }
 
 Real activation_distance(Real offset, Real motion) {
@@ -319,15 +325,11 @@ void ContactSolver::collect_self(Definition& d, const std::vector<Vec3>& x,
                     clear = d.travelled - k_clear_motions * motion_ + distance -
                             offset * (1 + k_clear_rounding) - face * face / (2 * offset);
                 };
-                if (far_on_its_side(
+                if (const std::optional<Real> distance = far_on_its_side(
                         f, x[us], y[us], x[static_cast<std::size_t>(t[0])],
                         y[static_cast<std::size_t>(t[0])],
                         offset + (lagrange ? activation_distance(offset, motion_) : 0.0))) {
-                    // its plane and its sphere bound the distance to the triangle from below
-                    if (clearances)
-                        keep_clear(
-                            std::max(std::abs(f.n_y.dot(y[us] - y[static_cast<std::size_t>(t[0])])),
-                                     (y[us] - f.centre_y).norm() - f.radius_y));
+                    if (clearances) keep_clear(*distance);
                     continue;
                 }
                 Constraint c;
