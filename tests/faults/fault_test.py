@@ -27,6 +27,7 @@ import shutil
 import signal
 import subprocess
 import sys
+import tempfile
 import time
 import xml.etree.ElementTree as ET
 
@@ -72,11 +73,11 @@ def write(name, text):
     return path
 
 
-def fpm(*args, env=None, preexec=None, timeout=300):
+def fpm(*args, env=None, preexec=None, timeout=300, program=None, cwd=None):
     full_env = dict(os.environ, OMP_NUM_THREADS="1")
     full_env.update(env or {})
-    p = subprocess.run([FPM] + list(args), stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
-                       text=True, env=full_env, preexec_fn=preexec, timeout=timeout)
+    p = subprocess.run([program or FPM] + list(args), stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
+                       text=True, env=full_env, preexec_fn=preexec, timeout=timeout, cwd=cwd)
     return p.returncode, p.stdout
 
 
@@ -181,28 +182,58 @@ errors = error_lines(out)
 check("an output folder inside a file: exit 2, one sentence naming it",
       code == 2 and len(errors) == 1 and "plate.yaml/results" in errors[0], out)
 
-ro = os.path.join(WORK, "read_only")
-code, out = fpm("run", plate, "-o", ro, "--quiet")
-check("a first run writes the results later made read-only", code == 0, out)
-before = snapshot(ro)
-if os.geteuid() == 0:  # root writes anywhere: the second run is an unprivileged user's
-    nobody = pwd.getpwnam("nobody")
-    for root, dirs, files in os.walk(WORK):
+def folder_others_can_reach():
+    """A new folder that any user can traverse, for the unprivileged user's run: WORK lies in
+    the clone, whose parent may be a private folder (a home of mode 0700) that only its owner
+    can pass through. The first of $TMPDIR, /tmp, /var/tmp, /dev/shm whose every ancestor
+    others may traverse; None if there is none."""
+    for base in (tempfile.gettempdir(), "/tmp", "/var/tmp", "/dev/shm"):
+        base = os.path.realpath(base)
+        ancestors, p = [], base
+        while True:
+            ancestors.append(p)
+            if p == os.path.dirname(p):
+                break
+            p = os.path.dirname(p)
+        if os.path.isdir(base) and all(os.stat(a).st_mode & 0o001 for a in ancestors):
+            folder = tempfile.mkdtemp(prefix="fpmshell-faults-", dir=base)
+            os.chmod(folder, 0o755)
+            return folder
+    return None
+
+
+# Root writes anywhere: the second run into the read-only folder is then an unprivileged
+# user's, with a copy of the program and of the model in a folder that user can reach (the same
+# program, model and results; only their place differs).
+demote, ro_program, ro_model, ro_base = None, FPM, plate, WORK
+if os.geteuid() == 0:
+    ro_base = folder_others_can_reach()
+    if ro_base is not None:
+        nobody = pwd.getpwnam("nobody")
+        ro_program = shutil.copy2(FPM, os.path.join(ro_base, "fpmshell"))
+        ro_model = shutil.copy2(plate, os.path.join(ro_base, "plate.yaml"))
+        os.chmod(ro_program, 0o755)
+        os.chmod(ro_model, 0o644)
+        demote = lambda: (os.setgroups([]), os.setgid(nobody.pw_gid), os.setuid(nobody.pw_uid))
+check("a folder for the unprivileged user's run (every ancestor traversable by others)",
+      ro_base is not None, "none of $TMPDIR, /tmp, /var/tmp, /dev/shm is reachable by every user")
+if ro_base is not None:
+    ro = os.path.join(ro_base, "read_only")
+    code, out = fpm("run", ro_model, "-o", ro, "--quiet")
+    check("a first run writes the results later made read-only", code == 0, out)
+    before = snapshot(ro)
+    for root, dirs, files in os.walk(ro):
+        os.chmod(root, 0o555)
+    code, out = fpm("run", ro_model, "-o", ro, "--quiet", "--overwrite", preexec=demote,
+                    program=ro_program, cwd=ro_base)
+    errors = error_lines(out)
+    check("a read-only result folder: exit 2, one sentence naming it", code == 2 and len(errors) == 1
+          and ro in errors[0], "exit %d: %s" % (code, out))
+    check("a read-only result folder: the earlier results unchanged", snapshot(ro) == before)
+    for root, dirs, files in os.walk(ro):
         os.chmod(root, 0o755)
-        for f in files:
-            os.chmod(os.path.join(root, f), 0o644)
-    demote = lambda: (os.setgid(nobody.pw_gid), os.setuid(nobody.pw_uid))
-else:
-    demote = None
-for root, dirs, files in os.walk(ro):
-    os.chmod(root, 0o555)
-code, out = fpm("run", plate, "-o", ro, "--quiet", "--overwrite", preexec=demote)
-errors = error_lines(out)
-check("a read-only result folder: exit 2, one sentence naming it", code == 2 and len(errors) == 1
-      and ro in errors[0], "exit %d: %s" % (code, out))
-check("a read-only result folder: the earlier results unchanged", snapshot(ro) == before)
-for root, dirs, files in os.walk(ro):
-    os.chmod(root, 0o755)
+    if ro_base != WORK:
+        shutil.rmtree(ro_base)
 
 # ---- a kill during a write --------------------------------------------------------------------
 # A frame, a history row and a restart file at every step of a larger plate (writing is most of
