@@ -5,8 +5,8 @@
 #   tools/compare_builds.sh OLD_BIN NEW_BIN [WORKDIR=build/compare]
 # The old binary's outputs are kept in WORKDIR/old and reused while WORKDIR/old/done is newer
 # than OLD_BIN (delete it to force a rerun).
-# About 5 minutes per binary on the project's 2-core machine. The validation scripts rewrite
-# docs/validation/*-quick.png: restore them with `git checkout docs/validation`.
+# About 5 minutes per binary on the project's 2-core machine. The quick variants draw their
+# plots into their own output folders, not into docs/validation/.
 set -u
 OLD=$(readlink -f "$1"); NEW=$(readlink -f "$2"); WORK=$(readlink -m "${3:-build/compare}")
 SRC=$(cd "$(dirname "$0")/.." && pwd)

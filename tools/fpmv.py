@@ -3,8 +3,9 @@
 Protocol of a problem script (see validation/README.md):
     run.py --fpmshell PATH --out DIR [--quick]
 runs fpmshell on its model(s), compares with the reference, writes DIR/rows.json (one row per
-compared quantity, fields below), draws its plots into docs/validation/, prints one line per row
-and a closing 'N passed, M failed' line, and exits 0 only when every row passed.
+compared quantity, fields below), draws its plots (into docs/validation/ for the full variant,
+into DIR/plots/ for the quick one), prints one line per row and a closing 'N passed, M failed'
+line, and exits 0 only when every row passed.
 """
 import argparse
 import csv
@@ -16,6 +17,11 @@ import time
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 PLOT_DIR = os.path.join(ROOT, "docs", "validation")
+# Where plot_path() puts a plot: docs/validation/ for the full variant (make validate), the
+# run's own --out folder for the quick one: make test writes nothing into the source tree (a
+# clone may be read-only, and its tracked files stay as they were). tools/make_validation.py
+# copies a quick variant's plots into docs/validation/ when its report shows that variant.
+_plot_dir = PLOT_DIR
 
 
 def parse_args(description, extra=None):
@@ -29,7 +35,10 @@ def parse_args(description, extra=None):
                          "the same particle and element counts (for problems that take hours)")
     if extra:
         extra(ap)
-    return ap.parse_args()
+    args = ap.parse_args()
+    global _plot_dir
+    _plot_dir = os.path.join(os.path.abspath(args.out), "plots") if args.quick else PLOT_DIR
+    return args
 
 
 def start(problem, description, quick_cases, full_cases, extra=None):
@@ -284,8 +293,8 @@ def fit_period(t, w, guess):
 
 
 def plot_path(name):
-    os.makedirs(PLOT_DIR, exist_ok=True)
-    return os.path.join(PLOT_DIR, name)
+    os.makedirs(_plot_dir, exist_ok=True)
+    return os.path.join(_plot_dir, name)
 
 
 def pyplot():

@@ -14,6 +14,7 @@ import glob
 import json
 import math
 import os
+import shutil
 import sys
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
@@ -44,6 +45,18 @@ def load_rows(build):
             continue
         found[problem] = ("quick" if quick else "full", rows, path)
     return found
+
+
+def take_quick_plots(found):
+    """The plots of the quick variants the report shows, copied from their run folders (the
+    quick variant, run by make test, draws there and never into the source tree) into
+    docs/validation/, where the report links them."""
+    for variant, _, path in found.values():
+        if variant != "quick":
+            continue
+        os.makedirs(PLOT_DIR, exist_ok=True)
+        for png in sorted(glob.glob(os.path.join(os.path.dirname(path), "plots", "*.png"))):
+            shutil.copy2(png, PLOT_DIR)
 
 
 def order_key(problem):
@@ -206,6 +219,7 @@ def main():
     ap.add_argument("--output", default=os.path.join(ROOT, "docs", "validation.md"))
     args = ap.parse_args()
     found = load_rows(args.build)
+    take_quick_plots(found)
     if not found:
         print("no rows.json under %s/validation/*/; run make validate (or make test) first"
               % args.build, file=sys.stderr)
