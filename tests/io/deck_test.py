@@ -422,6 +422,12 @@ ERRORS = [  # (name, extra cards, other files, the line's start, words of the me
     ("missing include", "*INCLUDE\nabsent.k\n", None, "absent.k", "cannot open"),
     ("weld of one node", "*CONSTRAINED_SPOTWELD\n         3         3\n", None,
      "         3         3", "N1 and N2 are the same node 3"),
+    ("set defined twice", "*SET_NODE_LIST\n         9\n         1\n*SET_NODE_LIST\n         9       0.0\n         2\n",
+     None, "         9       0.0", "*SET_NODE 9 is defined twice (first at "),
+    ("part defined twice", "*PART\nagain\n         1         1         1         0\n", None,
+     "         1         1         1         0", "part 1 is defined twice (first at "),
+    ("material defined twice", "*MAT_ELASTIC\n         1    2700.0     7e+10      0.33\n", None,
+     "         1    2700.0", "material 1 is defined twice (first at "),
     ("wall motion", "*RIGIDWALL_GEOMETRIC_SPHERE_MOTION\n         0\n       0.0       0.0      -5.0\n"
      "       1.0\n         3         0       0.0       0.0       1.0\n*DEFINE_CURVE\n         3\n"
      "                 0.0                 0.0\n                 1.0                 2.0\n", None,
@@ -434,6 +440,9 @@ for name, extra, files, start, words in ERRORS:
           r.stdout + r.stderr)
     check(f"{name}: the message names the place and says what", words in r.stderr and
           (not where or r.stderr.startswith("error: " + where)), r.stderr)
+    if "defined twice" in words:
+        check(f"{name}: the message names the first definition's place too",
+              (words + path + ":") in r.stderr, r.stderr)
 
 # a surface-to-surface contact between two parts: self-contact over both
 two_parts = BASE.replace("*ELEMENT_SHELL\n       1       1       1       2       3       3\n",
@@ -450,6 +459,19 @@ path, r = deck_case("nodes to surface", "*CONTACT_AUTOMATIC_NODES_TO_SURFACE\n"
                     "         1         2         4         3\n", base=two_parts)
 check("nodes to surface with a node set: refused", r.returncode == 2 and "SSTYP 4" in r.stderr,
       r.stderr)
+
+# walls without _ID are numbered by their place in the deck (LS-DYNA's rule), although the
+# translator takes them in the order of their text: the first wall here sorts last
+path, r = deck_case("walls numbered by place", "*RIGIDWALL_PLANAR\n         0\n"
+                    "       0.0       0.0      -2.0       0.0       0.0       0.0\n"
+                    "*RIGIDWALL_PLANAR\n         0\n"
+                    "       0.0       0.0      -1.0       0.0       0.0       0.0\n")
+converted = os.path.join(os.path.dirname(path), "walls.yaml")
+c = fpmshell("convert", path, "-o", converted)
+walls = [l for l in read(converted).splitlines() if "name: rigidwall" in l] if c.returncode == 0 else []
+check("walls without _ID: numbered by their place in the deck", len(walls) == 2 and
+      "name: rigidwall1, shape: plane, point: [0, 0, -2]" in walls[1] + walls[0] and
+      "name: rigidwall2, shape: plane, point: [0, 0, -1]" in walls[1] + walls[0], c.stderr + str(walls))
 
 path, r = deck_case("no termination", "", base=BASE.replace("*CONTROL_TERMINATION\n     0.001\n", ""))
 check("a deck without *CONTROL_TERMINATION is refused", r.returncode == 2 and

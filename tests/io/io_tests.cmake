@@ -16,3 +16,10 @@ add_test(NAME io.lsdyna_decks
          COMMAND ${FPMSHELL_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/io/deck_test.py
                  $<TARGET_FILE:fpmshell> ${CMAKE_BINARY_DIR}/deck_test_work)
 set_tests_properties(io.lsdyna_decks PROPERTIES LABELS io TIMEOUT ${_timeout_300s})
+
+# Card order is free: every test deck with its cards reversed, shuffled and spread over nested
+# *INCLUDE files gives the same model and history.csv bytes (tests/io/deck_order_test.py).
+add_test(NAME io.deck_card_order
+         COMMAND ${FPMSHELL_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/io/deck_order_test.py
+                 $<TARGET_FILE:fpmshell> ${CMAKE_BINARY_DIR}/deck_order_test_work)
+set_tests_properties(io.deck_card_order PROPERTIES LABELS io TIMEOUT ${_timeout_300s})

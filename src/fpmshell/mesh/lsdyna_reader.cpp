@@ -66,6 +66,10 @@ public:
             for (const DeckCard& c : block.cards) card(c.text, c.line);
         }
         raw_.path = main_path_;
+        // The triangles in element-number order, whatever order the cards and included files
+        // come in (LS-DYNA reads a deck as a whole): a reordered deck is the same model.
+        std::stable_sort(raw_.shells.begin(), raw_.shells.end(),
+                         [](const auto& a, const auto& b) { return a.id < b.id; });
         for (const auto& [name, parts] : part_sets_) {  // the parts' elements, known by now
             auto& members = raw_.element_sets[name];
             for (const long long pid : parts) {

@@ -1,0 +1,338 @@
+// Rigid walls (planar and geometric), contacts, nodal rigid bodies and spot welds of a deck.
+#include "fpmshell/io/lsdyna/deck_translator.hpp"
+
+namespace fpmshell::deck {
+
+/// *CONSTRAINED_NODAL_RIGID_BODY (_TITLE): the nodes of NSID move as one rigid body.
+void DeckTranslator::nodal_rigid_body(const DeckBlock& b) {
+    const std::set<std::string> opt = options_of(b.keyword, 4);
+    for (const std::string& o : opt)
+        if (o != "TITLE")
+            refuse(b, "*CONSTRAINED_NODAL_RIGID_BODY_" + o +
+                          " is not supported (its inertia or constraints would change the "
+                          "model); fpmshell reads the plain card and _TITLE");
+    const std::size_t first = opt.count("TITLE") ? 1 : 0;
+    const Card f = required_card(b, first, "PID, CID, NSID, PNODE, IPRT, DRFLAG, RRFLAG");
+    const long long nsid = f.id(2, "NSID");
+    if (f.id(5, "DRFLAG") != 0 || f.id(6, "RRFLAG") != 0)
+        f.fail("DRFLAG and RRFLAG (released degrees of freedom) are not supported (0 only)");
+    constraints_.push_back(
+        {"  - {type: rigid, nodes: " + yaml_name(set_name(f, "node", nsid)) + "}", {&b, f.line()}});
+    if (f.id(3, "PNODE") != 0)
+        note(b, f.line(), "PNODE ignored: the body's motion is that of its nodes");
+}
+
+/// *CONSTRAINED_SPOTWELD (_ID): each weld's two nodes move as one rigid body; the failure
+/// data is noted (a weld never fails).
+void DeckTranslator::spot_weld(const DeckBlock& b) {
+    const std::set<std::string> opt = options_of(b.keyword, 2);
+    for (const std::string& o : opt)
+        if (o != "ID")
+            refuse(b, "*CONSTRAINED_SPOTWELD_" + o + " is not supported (plain and _ID)");
+    const std::size_t per_weld = opt.count("ID") ? 2 : 1;
+    if (b.cards.empty()) required_card(b, 0, "N1, N2, SN, SS, N, M, TF, EP");
+    bool failure = false;
+    for (std::size_t c = 0; c < b.cards.size(); c += per_weld) {
+        const Card f = required_card(b, c + per_weld - 1, "N1, N2, SN, SS, N, M, TF, EP");
+        weld_nodes(b, f, {f.id(0, "N1"), f.id(1, "N2")});
+        failure = failure || f.real(2, "SN") != 0 || f.real(3, "SS") != 0 ||
+                  (f.real(6, "TF") != 0 && f.real(6, "TF") < 1e20);
+    }
+    if (failure)
+        note(b, b.line, "the welds' failure (SN, SS, TF) is not modelled: they never fail");
+}
+
+/// *CONSTRAINED_GENERALIZED_WELD_SPOT (_ID): the nodes of NSID move as one rigid body; the
+/// failure data is noted.
+void DeckTranslator::generalized_spot_weld(const DeckBlock& b) {
+    const std::set<std::string> opt = options_of(b.keyword, 3);
+    if (!opt.count("SPOT"))
+        refuse(b,
+               "fpmshell reads *CONSTRAINED_GENERALIZED_WELD_SPOT only (fillet, butt and "
+               "combined welds are not supported)");
+    for (const std::string& o : opt)
+        if (o != "SPOT" && o != "ID")
+            refuse(b, "*CONSTRAINED_GENERALIZED_WELD_SPOT_" + o + " is not supported");
+    const std::size_t first = opt.count("ID") ? 1 : 0;
+    const Card f = required_card(b, first, "NSID, CID, FILTER, WINDOW, NPR, NPRT");
+    const Card g = required_card(b, first + 1, "TFAIL, EPSF, SN, SS, N, M");
+    constraints_.push_back(
+        {"  - {type: rigid, nodes: " + yaml_name(set_name(f, "node", f.id(0, "NSID"))) + "}",
+         {&b, f.line()}});
+    if ((g.real(0, "TFAIL") != 0 && g.real(0, "TFAIL") < 1e20) || g.real(1, "EPSF") != 0 ||
+        g.real(2, "SN") != 0 || g.real(3, "SS") != 0)
+        note(b, g.line(),
+             "the weld's failure (TFAIL, EPSF, SN, SS) is not modelled: it never fails");
+}
+
+/// A weld of the nodes `ids` as a rigid body of a set of its own (`spotweld_<k>`).
+void DeckTranslator::weld_nodes(const DeckBlock& b, const Card& f,
+                                const std::array<long long, 2>& ids) {
+    if (ids[0] == ids[1]) f.fail("N1 and N2 are the same node " + std::to_string(ids[0]));
+    const std::string group = "spotweld_" + std::to_string(++welds_);
+    for (const long long id : ids)
+        add_node_to_group(group, id, "{type: rigid, nodes: NODES}", {&b, f.line()}, constraints_);
+}
+
+void DeckTranslator::rigid_wall(const DeckBlock& b) {
+    const std::set<std::string> opt = options_of(b.keyword, 2);
+    for (const std::string& o : opt)
+        if (o != "ID" && o != "MOVING" && o != "FORCES")
+            refuse(b, "*RIGIDWALL_PLANAR_" + o +
+                          " is not supported; fpmshell's walls are infinite planes "
+                          "(_ID, _MOVING, _FORCES)");
+    std::size_t c = 0;
+    WallDef w;
+    w.id = reading_number(b);  // LS-DYNA numbers a wall without _ID by its place
+    if (opt.count("ID")) w.id = required_card(b, c++, "RWID, HEADING").id(0, "RWID");
+    const Card f = required_card(b, c++, "NSID, NSIDEX, BOXID, OFFSET, BIRTH, DEATH");
+    const Card g = required_card(b, c++, "XT, YT, ZT, XH, YH, ZH, FRIC, WVEL");
+    const long long nsid = f.id(0, "NSID");
+    if (f.id(1, "NSIDEX") != 0 || f.id(2, "BOXID") != 0)
+        f.fail("NSIDEX and BOXID are not supported (0 only)");
+    if (f.real(3, "OFFSET") != 0) f.fail("OFFSET is not supported (0 only)");
+    if (f.real(4, "BIRTH") != 0 || (f.real(5, "DEATH") != 0 && f.real(5, "DEATH") < 1e20))
+        f.fail("BIRTH and DEATH are not supported (the wall acts from start to end)");
+    w.friction = g.real(6, "FRIC");
+    if (!(w.friction >= 0 && w.friction <= 1))
+        g.fail(
+            "FRIC must be from 0 to 1 (0 frictionless, a Coulomb coefficient below 1, 1 no "
+            "sliding)");
+    w.nodes = nsid == 0 ? "" : set_name(f, "node", nsid);
+    std::array<Real, 3> tail{};
+    Real len = 0;
+    for (std::size_t k = 0; k < 3; ++k) {
+        tail[k] = g.real(k, "XT, YT, ZT");
+        w.normal[k] = g.real(3 + k, "XH, YH, ZH") - tail[k];
+        len += w.normal[k] * w.normal[k];
+    }
+    if (!(len > 0)) g.fail("the head (XH, YH, ZH) must differ from the tail (XT, YT, ZT)");
+    if (opt.count("MOVING")) {
+        const Card m = required_card(b, c++, "MASS, V0");
+        w.moving = true;
+        w.mass = m.real(0, "MASS");
+        w.speed = m.real(1, "V0");
+        if (!(w.mass > 0)) m.fail("MASS must be > 0");
+    }
+    w.geometry = "shape: plane, point: " + vec(tail[0], tail[1], tail[2]) +
+                 ", normal: " + unit_text(w.normal);
+    w.at = {&b, g.line()};
+    add_wall(w, f);
+}
+
+void DeckTranslator::add_wall(const WallDef& w, const Card& f) {
+    for (const WallDef& other : walls_)
+        if (other.id == w.id)
+            f.fail("rigid wall " + std::to_string(w.id) + " is defined twice (first at " +
+                   place(other.at) + ")");
+    walls_.push_back(w);
+}
+
+std::array<Real, 3> DeckTranslator::unit(const std::array<Real, 3>& v) {
+    const Real len = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+    return {v[0] / len, v[1] / len, v[2] / len};
+}
+
+std::string DeckTranslator::unit_text(const std::array<Real, 3>& v) {
+    const std::array<Real, 3> n = unit(v);
+    return vec(n[0], n[1], n[2]);
+}
+
+/// *RIGIDWALL_GEOMETRIC_FLAT (a rectangle), _CYLINDER, _SPHERE: a fixed rigid body of that
+/// shape (model/rigid_face.hpp) the nodes stay outside of; _ID and _DISPLAY (its card
+/// skipped) read, _MOTION refused.
+void DeckTranslator::geometric_wall(const DeckBlock& b) {
+    const std::set<std::string> opt = options_of(b.keyword, 2);
+    std::string shape;
+    for (const std::string& o : opt) {
+        if (o == "FLAT" || o == "CYLINDER" || o == "SPHERE")
+            shape = o;
+        else if (o != "ID" && o != "DISPLAY" && o != "MOTION")
+            refuse(b, "*" + b.keyword + ": the option _" + o +
+                          " is not supported (fpmshell reads _FLAT, _CYLINDER, _SPHERE with "
+                          "_ID, _MOTION, _DISPLAY)");
+    }
+    if (shape.empty()) refuse(b, "fpmshell reads *RIGIDWALL_GEOMETRIC_FLAT, _CYLINDER and _SPHERE");
+    std::size_t c = 0;
+    WallDef w;
+    w.id = reading_number(b);  // LS-DYNA numbers a wall without _ID by its place
+    if (opt.count("ID")) w.id = required_card(b, c++, "RWID, HEADING").id(0, "RWID");
+    const Card f = required_card(b, c++, "NSID, NSIDEX, BOXID, BIRTH, DEATH");
+    const Card g = required_card(b, c++, "XT, YT, ZT, XH, YH, ZH");
+    const Card s = required_card(b, c++, "the shape's card");
+    const long long nsid = f.id(0, "NSID");
+    if (f.id(1, "NSIDEX") != 0 || f.id(2, "BOXID") != 0)
+        f.fail("NSIDEX and BOXID are not supported (0 only)");
+    if (f.real(3, "BIRTH") != 0 || (f.real(4, "DEATH") != 0 && f.real(4, "DEATH") < 1e20))
+        f.fail("BIRTH and DEATH are not supported (the wall acts from start to end)");
+    w.nodes = nsid == 0 ? "" : set_name(f, "node", nsid);
+    std::array<Real, 3> tail{}, dir{};
+    for (std::size_t k = 0; k < 3; ++k) {
+        tail[k] = g.real(k, "XT, YT, ZT");
+        dir[k] = g.real(3 + k, "XH, YH, ZH") - tail[k];
+    }
+    const bool has_dir = dir[0] != 0 || dir[1] != 0 || dir[2] != 0;
+    const std::string point = vec(tail[0], tail[1], tail[2]);
+    if (shape == "SPHERE") {
+        w.geometry = "shape: sphere, point: " + point + ", radius: " + num(s.real(0, "RADSPH"));
+    } else if (!has_dir) {
+        g.fail("the head (XH, YH, ZH) must differ from the tail (XT, YT, ZT)");
+    } else if (shape == "CYLINDER") {
+        w.geometry = "shape: cylinder, point: " + point + ", axis: " + unit_text(dir) +
+                     ", radius: " + num(s.real(0, "RADCYL")) +
+                     ", length: " + num(s.real(1, "LENCYL"));
+    } else {
+        const Real l = s.real(3, "LENL"), m = s.real(4, "LENM");
+        w.geometry = "shape: plane, point: " + point + ", normal: " + unit_text(dir);
+        if (l > 0 || m > 0)
+            w.geometry +=
+                ", edge: " + vec(s.real(0, "XHEV"), s.real(1, "YHEV"), s.real(2, "ZHEV")) +
+                ", size: [" + num(l) + ", " + num(m) + "]";
+    }
+    if (opt.count("MOTION")) {
+        const Card mo = required_card(b, c++, "LCID, OPT, VX, VY, VZ");
+        w.motion_curve = mo.id(0, "LCID");
+        w.motion_opt = mo.id(1, "OPT");
+        if (w.motion_curve == 0) mo.fail("LCID: the motion needs a curve");
+        if (w.motion_opt != 0 && w.motion_opt != 1)
+            mo.fail("OPT must be 0 (velocity) or 1 (displacement)");
+        for (std::size_t k = 0; k < 3; ++k) w.motion_dir[k] = mo.real(2 + k, "VX, VY, VZ");
+        if (w.motion_dir == std::array<Real, 3>{})
+            mo.fail("VX, VY, VZ: the direction must not be zero");
+        w.motion_dir = unit(w.motion_dir);
+        w.motion_at = {&b, mo.line()};
+    }
+    w.at = {&b, g.line()};
+    add_wall(w, f);
+    note(b, g.line(),
+         "a rigid " +
+             std::string(shape == "FLAT"     ? "rectangle"
+                         : shape == "SPHERE" ? "sphere"
+                                             : "cylinder") +
+             " of infinite mass the nodes stay outside of (frictionless, Lagrange "
+             "multipliers)");
+}
+
+/// *CONTACT_AUTOMATIC_SINGLE_SURFACE: self-contact over its side; _SURFACE_TO_SURFACE and
+/// _NODES_TO_SURFACE: self-contact over the union of both sides, which keeps the two
+/// apart (and each side from itself too: noted).
+void DeckTranslator::contact(const DeckBlock& b) {
+    const bool single = starts_with(b.keyword, "CONTACT_AUTOMATIC_SINGLE_SURFACE");
+    const std::set<std::string> opt = options_of(b.keyword, single ? 4 : 5);
+    for (const std::string& o : opt)
+        if (o != "ID" && o != "MPP" && o != "TITLE")
+            refuse(b, "*" + b.keyword + ": the option _" + o + " is not supported");
+    std::size_t c = (opt.count("ID") || opt.count("TITLE")) ? 1 : 0;
+    if (opt.count("MPP")) {
+        ++c;
+        if (c < b.cards.size() && trim(b.cards[c].text).rfind('&', 0) == 0) ++c;
+    }
+    const Card f = required_card(b, c, "SSID, MSID, SSTYP, MSTYP");
+    const Card g = card(b, c + 1);
+    if (f.id(4, "SBOXID") != 0 || f.id(5, "MBOXID") != 0)
+        f.fail("SBOXID and MBOXID are not supported (0 only)");
+    if (g.real(0, "FS") != 0 || g.real(1, "FD") != 0)
+        g.fail(
+            "FS, FD: fpmshell's shell self-contact is frictionless (friction is modelled "
+            "against rigid walls, their FRIC); set them to 0 to run frictionless");
+    if (g.real(6, "BT") != 0 || (g.real(7, "DT") != 0 && g.real(7, "DT") < 1e20))
+        g.fail("BT and DT are not supported (contact acts from start to end)");
+    if (g.real(4, "VDC") != 0)
+        note(b, g.line(),
+             "VDC ignored: the contact is enforced by Lagrange multipliers, without "
+             "viscous damping");
+    std::vector<std::string> sides{contact_side(f, f.id(0, "SSID"), f.id(2, "SSTYP"), "SSTYP")};
+    if (!single) sides.push_back(contact_side(f, f.id(1, "MSID"), f.id(3, "MSTYP"), "MSTYP"));
+    std::string elements;
+    if (std::find(sides.begin(), sides.end(), "all") != sides.end()) {
+        elements = "all";
+    } else if (sides.size() == 1 || sides[0] == sides[1]) {
+        elements = yaml_name(sides[0]);
+    } else {
+        elements = "[" + yaml_name(sides[0]) + ", " + yaml_name(sides[1]) + "]";
+    }
+    contact_.push_back({"  - {type: self, elements: " + elements + "}", {&b, f.line()}});
+    // its number in RCFORC's columns: CID of _ID or _TITLE, else its place among the cards
+    const long long cid = opt.count("ID") || opt.count("TITLE") ? card(b, 0).id(0, "CID") : 0;
+    contact_ids_.push_back({cid > 0 ? cid : reading_number(b), {&b, f.line()}});
+    note(b, f.line(),
+         std::string(single ? "as fpmshell's shell self-contact"
+                            : "as fpmshell's shell self-contact over both sides together "
+                              "(each side is kept from itself too)") +
+             " (Lagrange multipliers, each shell's thickness as its contact thickness)");
+}
+
+/// The element set of one side of a contact: SID of type TYP (1 shell set, 2 part set,
+/// 3 part, 5 all; SID 0 is all).
+std::string DeckTranslator::contact_side(const Card& f, long long sid, long long typ,
+                                         const char* name) {
+    if (typ == 5 || sid == 0) return "all";
+    if (typ == 1) return set_name(f, "shell", sid);
+    if (typ == 2) return set_name(f, "part", sid);
+    if (typ == 3) return "part_" + std::to_string(sid);
+    f.fail(std::string(name) + " " + std::to_string(typ) +
+           " is not supported: 1 (shell set), 2 (part set), 3 (part) or 5 (all); give a node "
+           "set's shells as a part or shell set");
+}
+
+void DeckTranslator::write_walls(std::vector<Line>& out) {
+    if (walls_.empty()) return;
+    add(out, "rigid_bodies:", walls_.front().at);
+    for (const WallDef& w : walls_) {
+        std::string s = "  - {name: rigidwall" + std::to_string(w.id) + ", " + w.geometry;
+        if (w.moving) {
+            const std::array<Real, 3> n = unit(w.normal);
+            s += ", mass: " + num(w.mass) +
+                 ", velocity: " + vec(w.speed * n[0], w.speed * n[1], w.speed * n[2]);
+        } else {
+            s += ", fixed: true";
+            if (w.motion_curve != 0) s += ", velocity: " + wall_velocity(w);
+        }
+        add(out, s + "}", w.at);
+    }
+    std::vector<Line> contacts;
+    for (const WallDef& w : walls_)
+        contacts.push_back({"  - {type: rigid, body: rigidwall" + std::to_string(w.id) +
+                                (w.nodes.empty() ? "" : ", nodes: " + yaml_name(w.nodes)) +
+                                (w.friction == 0   ? ""
+                                 : w.friction == 1 ? ", friction: stick"
+                                                   : ", friction: " + num(w.friction)) +
+                                "}",
+                            w.at});
+    contact_.insert(contact_.begin(), contacts.begin(), contacts.end());
+}
+
+/// The constant velocity of a geometric wall's _MOTION: a flat velocity curve (OPT 0) or a
+/// straight displacement curve from 0 at t = 0 (OPT 1), along the direction; fpmshell's
+/// fixed bodies move at a constant velocity, so any other curve is refused.
+std::string DeckTranslator::wall_velocity(const WallDef& w) {
+    const DeckBlock& b = *w.motion_at.block;
+    const auto c = curves_.find(w.motion_curve);
+    if (c == curves_.end())
+        deck_fail(b, w.motion_at.line,
+                  "LCID " + std::to_string(w.motion_curve) + ": no *DEFINE_CURVE defines it");
+    const std::vector<Point2>& p = c->second.points;
+    Real speed = p.front().y;
+    bool constant = true;
+    if (w.motion_opt == 1) {
+        speed = p.size() > 1 ? (p.back().y - p.front().y) / (p.back().x - p.front().x) : 0.0;
+        constant = p.size() > 1 && std::isfinite(speed);
+        for (const Point2& q : p)  // on the line through the origin of slope `speed`
+            constant = constant && std::abs(q.y - speed * q.x) <=
+                                       1e-9 * (std::abs(speed * q.x) + std::abs(q.y) + 1e-300);
+    } else {
+        for (const Point2& q : p) constant = constant && q.y == speed;
+    }
+    if (!constant)
+        deck_fail(b, w.motion_at.line,
+                  "the motion of curve " + std::to_string(w.motion_curve) +
+                      " is not a constant velocity (a flat velocity curve, or a straight "
+                      "displacement curve from 0 at t = 0), which is what a geometric wall "
+                      "of fpmshell can do");
+    note(b, w.motion_at.line,
+         "_MOTION: the wall moves at " + num(speed) +
+             " along its direction throughout (past the curve's end too)");
+    return vec(speed * w.motion_dir[0], speed * w.motion_dir[1], speed * w.motion_dir[2]);
+}
+
+}  // namespace fpmshell::deck

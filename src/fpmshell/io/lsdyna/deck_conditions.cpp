@@ -1,0 +1,228 @@
+// Constraints on nodes (SPC, prescribed motion), loads on nodes, shells and segments, and
+// initial velocities of a deck.
+#include "fpmshell/io/lsdyna/deck_translator.hpp"
+
+namespace fpmshell::deck {
+
+/// The id card of the _ID options (ID, HEADING) comes first.
+std::size_t DeckTranslator::first_data_card(const std::set<std::string>& opt) {
+    return opt.count("ID") ? 1 : 0;
+}
+
+void DeckTranslator::spc(const DeckBlock& b) {
+    const std::set<std::string> opt = options_of(b.keyword, 2);
+    const bool single = opt.count("NODE") != 0;
+    if (!single && !opt.count("SET")) refuse(b, unsupported_reason("BOUNDARY_SPC"));
+    static const char* dofs[6] = {"ux", "uy", "uz", "rx", "ry", "rz"};
+    for (std::size_t c = first_data_card(opt); c < b.cards.size(); ++c) {
+        const Card f = card(b, c);
+        const long long id = f.id(0, single ? "NID" : "NSID");
+        if (f.id(1, "CID") != 0) f.fail("CID: only global directions (0) are supported");
+        std::string fix, pattern;
+        for (std::size_t d = 0; d < 6; ++d) {
+            const long long on = f.id(2 + d, "DOF");
+            if (on != 0 && on != 1) f.fail("a DOF flag must be 0 or 1");
+            pattern += on ? '1' : '0';
+            if (on) fix += std::string(fix.empty() ? "" : ", ") + dofs[d];
+        }
+        if (fix.empty()) continue;
+        const Origin at{&b, f.line()};
+        const std::string text = "{nodes: NODES, fix: [" + fix + "]}";
+        if (single) {
+            add_node_to_group("spc_" + pattern, id, text, at, boundary_);
+        } else {
+            boundary_.push_back({"  - " + replace_nodes(text, set_name(f, "node", id)), at});
+        }
+    }
+}
+
+/// *BOUNDARY_PRESCRIBED_MOTION_NODE / _SET: a velocity (VAD 0) or a displacement (VAD 2)
+/// along x, y or z (DOF 1, 2, 3), the curve times SF; the node's other directions stay free.
+void DeckTranslator::prescribed_motion(const DeckBlock& b) {
+    const std::set<std::string> opt = options_of(b.keyword, 3);
+    const bool single = opt.count("NODE") != 0;
+    if (!single && !opt.count("SET")) refuse(b, unsupported_reason(b.keyword));
+    for (const std::string& o : opt)
+        if (o != "NODE" && o != "SET" && o != "ID")
+            refuse(b, "*BOUNDARY_PRESCRIBED_MOTION_..._" + o + " is not supported");
+    for (std::size_t c = first_data_card(opt); c < b.cards.size(); ++c) {
+        const Card f = card(b, c);
+        const long long id = f.id(0, single ? "NID" : "NSID");
+        const long long dof = f.id(1, "DOF");
+        const long long vad = f.id(2, "VAD");
+        const Real sf = f.real(4, "SF", 1.0);
+        if (dof < 1 || dof > 3)
+            f.fail("DOF " + std::to_string(dof) +
+                   ": fpmshell prescribes the translations along x, y or z (1, 2, 3)");
+        if (vad != 0 && vad != 2)
+            f.fail("VAD " + std::to_string(vad) +
+                   ": fpmshell prescribes a velocity (0) or a displacement (2)");
+        if (f.id(5, "VID") != 0) f.fail("VID: a direction vector is not supported (0 only)");
+        const Real death = f.real(6, "DEATH");
+        if (f.real(7, "BIRTH") != 0 || (death != 0 && death < 1e20))
+            f.fail("BIRTH and DEATH are not supported (the motion is prescribed throughout)");
+        const std::size_t axis = static_cast<std::size_t>(dof - 1);
+        const std::string value =
+            vec(axis == 0 ? sf : 0.0, axis == 1 ? sf : 0.0, axis == 2 ? sf : 0.0);
+        static const char* names[3] = {"ux", "uy", "uz"};
+        const std::string text = std::string("{nodes: NODES, prescribe: {") +
+                                 (vad == 0 ? "velocity: " : "displacement: ") + value +
+                                 ", curve: " + curve_ref(b, f, f.id(3, "LCID")) +
+                                 ", components: [" + names[axis] + "]}}";
+        if (single) {
+            auto& group = node_group_of_text_[text];
+            if (group.empty())
+                group = "prescribed_nodes_" + std::to_string(node_group_of_text_.size());
+            add_node_to_group(group, id, text, {&b, f.line()}, boundary_);
+        } else {
+            boundary_.push_back(
+                {"  - " + replace_nodes(text, set_name(f, "node", id)), {&b, f.line()}});
+        }
+    }
+}
+
+std::string DeckTranslator::replace_nodes(std::string text, const std::string& set) {
+    text.replace(text.find("NODES"), 5, yaml_name(set));
+    return text;
+}
+
+/// Node `id` joins the set `group` (of node_ids); the first node writes `text` (with NODES
+/// for the set's name) into `lines`.
+void DeckTranslator::add_node_to_group(const std::string& group, long long id,
+                                       const std::string& text, const Origin& at,
+                                       std::vector<Line>& lines) {
+    auto& g = node_groups_[group];
+    if (g.ids.empty()) {
+        g.at = at;
+        lines.push_back({"  - " + replace_nodes(text, group), at});
+    }
+    g.ids.push_back(id);
+}
+
+std::string DeckTranslator::nodes_of_velocity(const Card& f, long long id, long long styp) {
+    if (id == 0) return "all";
+    if (styp == 1) return set_name(f, "part", id);
+    if (styp == 2) return "part_" + std::to_string(id);
+    if (styp == 3) return set_name(f, "node", id);
+    f.fail("STYP " + std::to_string(styp) + " is not 1 (part set), 2 (part) or 3 (node set)");
+}
+
+void DeckTranslator::initial_velocity(const DeckBlock& b) {
+    const std::string& k = b.keyword;
+    if (k == "INITIAL_VELOCITY") {
+        const Card f = required_card(b, 0, "NSID, NSIDEX, BOXID, IRIGID, ICID");
+        const Card v = required_card(b, 1, "VX, VY, VZ, VXR, VYR, VZR");
+        const long long nsid = f.id(0, "NSID");
+        if (f.id(1, "NSIDEX") != 0 || f.id(2, "BOXID") != 0 || f.id(4, "ICID") != 0)
+            f.fail("NSIDEX, BOXID and ICID are not supported (0 only)");
+        const std::string nodes = nsid == 0 ? "all" : set_name(f, "node", nsid);
+        initial_.push_back({"  - {nodes: " + yaml_name(nodes) + ", velocity: " +
+                                vec(v.real(0, "VX"), v.real(1, "VY"), v.real(2, "VZ")) +
+                                ", angular_velocity: " +
+                                vec(v.real(3, "VXR"), v.real(4, "VYR"), v.real(5, "VZR")) + "}",
+                            {&b, v.line()}});
+    } else if (k == "INITIAL_VELOCITY_GENERATION") {
+        // cards in pairs: the translation, then the axis of the rotation OMEGA
+        for (std::size_t c = 0; c < b.cards.size(); c += 2) {
+            const Card f = card(b, c);
+            const Card g = card(b, c + 1);
+            if (f.id(7, "ICID") != 0) f.fail("ICID: only global directions (0) are supported");
+            if (f.id(6, "IVATN") != 0 || g.id(7, "IRIGID") != 0)
+                f.fail("IVATN and IRIGID are not supported (0 only)");
+            const std::string nodes = nodes_of_velocity(f, f.id(0, "ID"), f.id(1, "STYP"));
+            std::string text = "  - {nodes: " + yaml_name(nodes) + ", velocity: " +
+                               vec(f.real(3, "VX"), f.real(4, "VY"), f.real(5, "VZ"));
+            if (const Real omega = f.real(2, "OMEGA"); omega != 0) {
+                std::array<Real, 3> axis{g.real(3, "NX"), g.real(4, "NY"), g.real(5, "NZ")};
+                if (axis == std::array<Real, 3>{})
+                    g.fail("NX, NY, NZ: the axis of OMEGA must not be zero");
+                axis = unit(axis);
+                text += ", rotation: {centre: " +
+                        vec(g.real(0, "XC"), g.real(1, "YC"), g.real(2, "ZC")) +
+                        ", angular_velocity: " +
+                        vec(omega * axis[0], omega * axis[1], omega * axis[2]) + "}";
+            }
+            initial_.push_back({text + "}", {&b, f.line()}});
+        }
+    } else {
+        refuse(b, unsupported_reason(k));
+    }
+}
+
+/// The model's name of load curve `lcid` (written out if some card uses it).
+std::string DeckTranslator::curve_ref(const DeckBlock& b, const Card& f, long long lcid) {
+    if (lcid == 0) f.fail("LCID: a load needs a curve");
+    used_curves_.push_back({lcid, {&b, f.line()}});
+    return "curve_" + std::to_string(lcid);
+}
+
+void DeckTranslator::load(const DeckBlock& b) {
+    const std::string& k = b.keyword;
+    for (const DeckCard& dc : b.cards) {
+        const Card f(deck_, b, dc, k_ten);
+        if (k == "LOAD_SHELL_SET") {
+            const long long ssid = f.id(0, "SSID");
+            if (f.real(3, "AT") != 0) f.fail("AT (an arrival time) is not supported");
+            loads_.push_back(
+                {"  - {type: pressure, elements: " + yaml_name(set_name(f, "shell", ssid)) +
+                     ", value: " + num(f.real(2, "SF", 1.0)) +
+                     ", curve: " + curve_ref(b, f, f.id(1, "LCID")) + "}",
+                 {&b, f.line()}});
+            continue;
+        }
+        const bool single = k == "LOAD_NODE_POINT";
+        if (!single && k != "LOAD_NODE_SET") refuse(b, unsupported_reason(k));
+        const long long id = f.id(0, single ? "NID" : "NSID");
+        const long long dof = f.id(1, "DOF");
+        const long long lcid = f.id(2, "LCID");
+        const Real sf = f.real(3, "SF", 1.0);
+        if (f.id(4, "CID") != 0) f.fail("CID: only global directions (0) are supported");
+        if (dof < 1 || dof > 7 || dof == 4)
+            f.fail("DOF " + std::to_string(dof) +
+                   ": fpmshell loads nodes along x, y, z (1, 2, 3) or about them (5, 6, 7)");
+        const bool moment = dof >= 5;
+        const long long axis = moment ? dof - 5 : dof - 1;
+        const std::string value =
+            vec(axis == 0 ? sf : 0.0, axis == 1 ? sf : 0.0, axis == 2 ? sf : 0.0);
+        const std::string text = std::string("{type: ") + (moment ? "moment" : "force") +
+                                 ", nodes: NODES, value: " + value +
+                                 ", curve: " + curve_ref(b, f, lcid) + "}";
+        if (single) {
+            auto& group = node_group_of_text_[text];  // the nodes of one load and curve
+            if (group.empty()) group = "load_nodes_" + std::to_string(node_group_of_text_.size());
+            add_node_to_group(group, id, text, {&b, f.line()}, loads_);
+        } else
+            loads_.push_back(
+                {"  - " + replace_nodes(text, set_name(f, "node", id)), {&b, f.line()}});
+    }
+}
+
+/// *LOAD_SEGMENT_SET (SSID, LCID, SF, AT) and *LOAD_SEGMENT (LCID, SF, AT, N1 ... N4): a
+/// pressure along each segment's normal (by its node order), on the shell it covers.
+void DeckTranslator::segment_load(const DeckBlock& b) {
+    const std::string& k = b.keyword;
+    const bool set = k == "LOAD_SEGMENT_SET";
+    if (!set && k != "LOAD_SEGMENT") refuse(b, unsupported_reason(k));
+    for (const DeckCard& dc : b.cards) {
+        const Card f(deck_, b, dc, k_ten);
+        const std::size_t at = set ? 3 : 2;
+        if (f.real(at, "AT") != 0) f.fail("AT (an arrival time) is not supported");
+        SegmentLoad load;
+        load.at = {&b, f.line()};
+        load.sf = f.real(set ? 2 : 1, "SF", 1.0);
+        load.curve = curve_ref(b, f, f.id(set ? 1 : 0, "LCID"));
+        if (set) {
+            load.name = set_name(f, "segment", f.id(0, "SSID"));
+            load.segments = segment_sets_.at(load.name);
+            if (load.segments.empty()) f.fail("segment set '" + load.name + "' lists no segment");
+        } else {
+            load.name = "load_segments_" + std::to_string(segment_loads_.size() + 1);
+            load.segments.push_back(segment(f, 3, b));
+        }
+        load.slot = loads_.size();  // its pressures take this place among the loads
+        loads_.push_back({"", load.at});
+        segment_loads_.push_back(std::move(load));
+    }
+}
+
+}  // namespace fpmshell::deck

@@ -1,0 +1,146 @@
+// The control cards (end time, time step, shell options, damping) and the output requests
+// of a deck.
+#include "fpmshell/io/lsdyna/deck_translator.hpp"
+
+namespace fpmshell::deck {
+
+void DeckTranslator::control(const DeckBlock& b) {
+    const std::string& k = b.keyword;
+    const Card f = card(b, 0);
+    const Origin at{&b, f.line()};
+    if (k == "CONTROL_TERMINATION") {
+        end_time_ = Line{num(f.real(0, "ENDTIM")), at};
+        if (f.id(1, "ENDCYC") != 0 || f.real(2, "DTMIN") != 0 || f.real(3, "ENDENG") != 0 ||
+            f.real(4, "ENDMAS") != 0)
+            note(b, f.line(), "only ENDTIM is read (ENDCYC, DTMIN, ENDENG, ENDMAS ignored)");
+    } else if (k == "CONTROL_TIMESTEP") {
+        Real tssfac = f.real(1, "TSSFAC");
+        if (tssfac == 0) tssfac = 0.9;
+        control_.push_back({"  time_step_scale: " + num(tssfac), at});
+        const Real dt2ms = f.real(4, "DT2MS");
+        if (f.id(5, "LCTM") != 0) f.fail("LCTM (a curve of the largest step) is not supported");
+        if (dt2ms > 0)
+            f.fail(
+                "DT2MS > 0 is not supported; DT2MS < 0 (mass added where the step is "
+                "below TSSFAC x |DT2MS|) is");
+        if (dt2ms < 0)
+            control_.push_back({"  mass_scaling: {time_step: " + num(tssfac * -dt2ms) + "}", at});
+        if (f.id(2, "ISDO") != 0 || f.real(3, "TSLIMT") != 0)
+            note(b, f.line(), "ISDO and TSLIMT ignored (fpmshell's own element step)");
+    } else if (k == "CONTROL_SHELL") {
+        const long long istupd = f.id(3, "ISTUPD");
+        if (istupd == 1 || istupd == 4) control_.push_back({"  thickness_update: true", at});
+        note(b, f.line(), "only ISTUPD is read (fpmshell's element has no other options here)");
+    } else if (k == "DAMPING_GLOBAL") {
+        if (f.id(0, "LCID") != 0) f.fail("LCID: damping that varies in time is not supported");
+        bool scaled = false;
+        for (std::size_t s = 2; s < 8; ++s) {
+            const Real v = f.real(s, "STX..SRZ");
+            scaled = scaled || (v != 0 && v != 1);
+        }
+        if (scaled) f.fail("STX..SRZ: damping scaled per direction is not supported");
+        damping_ = Line{"damping: {mass: " + num(f.real(1, "VALDMP")) + "}", at};
+    } else if (k == "CONTROL_OUTPUT" || k == "CONTROL_ENERGY" || k == "CONTROL_HOURGLASS" ||
+               k == "CONTROL_BULK_VISCOSITY" || k == "CONTROL_CONTACT" || k == "CONTROL_ACCURACY" ||
+               k == "CONTROL_CPU" || k == "CONTROL_PARALLEL" || starts_with(k, "CONTROL_MPP")) {
+        note(b, b.line,
+             "ignored (output, hourglass, bulk viscosity or solver settings that "
+             "fpmshell's shells do not use)");
+    } else {
+        refuse(b, unsupported_reason(k));
+    }
+}
+
+void DeckTranslator::database(const DeckBlock& b) {
+    const std::string& k = b.keyword;
+    if (starts_with(k, "DATABASE_HISTORY_NODE")) {
+        const bool with_id = k == "DATABASE_HISTORY_NODE_ID";
+        if (!with_id && k != "DATABASE_HISTORY_NODE")
+            refuse(b, "this history request is not supported");
+        for (const DeckCard& dc : b.cards) {
+            const Card f(deck_, b, dc, with_id ? std::vector<std::size_t>{10} : k_ten);
+            for (std::size_t n = 0; n < f.size(); ++n) {
+                const long long id = f.id(n, "NID");
+                if (id > 0) history_nodes_.push_back({id, {&b, f.line()}});
+            }
+        }
+        return;
+    }
+    const Card f = card(b, 0);
+    const Real dt = f.real(0, "DT");
+    if (k == "DATABASE_BINARY_D3PLOT") {
+        const long long npltc = f.id(3, "NPLTC");
+        if (npltc > 0)
+            fields_every_npltc_ = npltc;
+        else
+            fields_every_ = Line{num(dt), {&b, f.line()}};
+        return;
+    }
+    if (k == "DATABASE_GLSTAT" || k == "DATABASE_NODOUT" || k == "DATABASE_RWFORC" ||
+        k == "DATABASE_RCFORC") {
+        if (dt > 0 && (!every_ || dt < every_value_)) {
+            every_value_ = dt;
+            every_ = Line{num(dt), {&b, f.line()}};
+        }
+        if (k == "DATABASE_RWFORC") wall_forces_ = true;
+        if (k == "DATABASE_RCFORC") contact_forces_ = true;
+        return;
+    }
+    note(b, b.line,
+         "ignored: an output fpmshell does not write (it writes history.csv, "
+         "energy.csv and VTU frames)");
+}
+
+void DeckTranslator::write_control(std::vector<Line>& out) {
+    if (!end_time_)
+        throw InputError(input_error_text(path_, 0, "",
+                                          "the deck has no *CONTROL_TERMINATION; its ENDTIM "
+                                          "is the end time of the run"));
+    add(out, "control:", end_time_->at);
+    add(out, "  end_time: " + end_time_->text, end_time_->at);
+    out.insert(out.end(), control_.begin(), control_.end());
+}
+
+void DeckTranslator::write_output(std::vector<Line>& out) {
+    std::vector<Line> o;
+    if (every_) o.push_back({"  every: " + every_->text, every_->at});
+    if (fields_every_npltc_ > 0)
+        o.push_back({"  fields_every: " +
+                         num(std::stod(end_time_->text) / static_cast<Real>(fields_every_npltc_)),
+                     end_time_->at});
+    else if (fields_every_)
+        o.push_back({"  fields_every: " + fields_every_->text, fields_every_->at});
+    std::vector<Line> h;
+    std::set<long long> seen;
+    for (const auto& [id, at] : history_nodes_) {
+        if (!seen.insert(id).second) continue;
+        for (const char* q : {"ux", "uy", "uz", "vx", "vy", "vz", "ax", "ay", "az"})
+            h.push_back({fmt::format("    - {{name: node{}_{}, nodes: node_{}, quantity: {}}}", id,
+                                     q, id, q),
+                         at});
+    }
+    if (wall_forces_)
+        for (const WallDef& w : walls_)
+            for (const char* c : {"x", "y", "z"})
+                h.push_back({fmt::format("    - {{name: rigidwall{}_force_{}, quantity: "
+                                         "rigid_rigidwall{}_force_{}}}",
+                                         w.id, c, w.id, c),
+                             w.at});
+    // the contact definitions come after the walls' in the model (write_walls)
+    if (contact_forces_)
+        for (std::size_t k = 0; k < contact_ids_.size(); ++k)
+            for (const char* c : {"x", "y", "z"})
+                h.push_back({fmt::format("    - {{name: contact{}_force_{}, quantity: "
+                                         "contact_{}_force_{}}}",
+                                         contact_ids_[k].first, c, walls_.size() + k + 1, c),
+                             contact_ids_[k].second});
+    if (!h.empty()) {
+        o.push_back({"  histories:", h.front().at});
+        o.insert(o.end(), h.begin(), h.end());
+    }
+    if (o.empty()) return;
+    add(out, "output:", o.front().at);
+    out.insert(out.end(), o.begin(), o.end());
+}
+
+}  // namespace fpmshell::deck

@@ -1,0 +1,378 @@
+// Parts, shell sections, materials, curves and tables of a deck, and their model keys.
+#include "fpmshell/io/lsdyna/deck_translator.hpp"
+
+namespace fpmshell::deck {
+
+/// Parts: a heading card and a data card each (one *PART may define several).
+void DeckTranslator::part(const DeckBlock& b) {
+    if (b.cards.size() < 2) required_card(b, 1, "PID, SECID, MID");
+    for (std::size_t c = 0; c + 1 < b.cards.size(); c += 2) {
+        const Card f = required_card(b, c + 1, "PID, SECID, MID");
+        const long long pid = f.id(0, "PID");
+        PartDef p{{&b, f.line()}, f.id(1, "SECID"), f.id(2, "MID")};
+        if (f.id(3, "EOSID") != 0)
+            note(b, f.line(),
+                 "EOSID ignored: an equation of state has no part in a shell's plane stress");
+        if (const auto other = parts_.find(pid); other != parts_.end())
+            f.fail("part " + std::to_string(pid) + " is defined twice (first at " +
+                   place(other->second.at) + ")");
+        parts_[pid] = p;
+    }
+}
+
+void DeckTranslator::section_shell(const DeckBlock& b) {
+    const std::set<std::string> opt = options_of(b.keyword, 2);
+    const std::size_t first = opt.count("TITLE") ? 1 : 0;
+    for (const std::string& o : opt)
+        if (o != "TITLE") refuse(b, "*SECTION_SHELL_" + o + " is not supported");
+    const Card f = required_card(b, first, "SECID, ELFORM, SHRF, NIP, PROPT, QR");
+    const Card t = required_card(b, first + 1, "T1, T2, T3, T4, NLOC");
+    const long long id = f.id(0, "SECID");
+    const long long elform = f.id(1, "ELFORM", 2);
+    long long nip = f.id(3, "NIP", 2);
+    if (nip == 0) nip = 2;
+    const Real qr = f.real(5, "QR/IRID");
+    if (f.id(6, "ICOMP") != 0) f.fail("ICOMP = 1 (composite layers) is not supported");
+    if (nip != 2 && nip != 3 && nip != 5)
+        f.fail("NIP " + std::to_string(nip) +
+               ": fpmshell integrates through the thickness with 2, 3 or 5 points");
+    if (qr != 0) f.fail("QR/IRID: only the default rule (0) is supported");
+    const Real t1 = t.real(0, "T1");
+    if (!(t1 > 0)) t.fail("T1 must be a thickness > 0");
+    for (std::size_t k = 1; k < 4; ++k) {
+        const Real tk = t.real(k, "T2, T3, T4");
+        if (tk != 0 && tk != t1)
+            t.fail(
+                "a thickness that varies over the element (T1 to T4 not equal) is not "
+                "supported");
+    }
+    if (t.real(4, "NLOC") != 0) t.fail("NLOC: only the mid-surface reference (0) is supported");
+    if (const auto other = sections_.find(id); other != sections_.end())
+        f.fail("section " + std::to_string(id) + " is defined twice (first at " +
+               place(other->second.at) + ")");
+    sections_[id] = {{&b, f.line()}, t1, static_cast<int>(nip)};
+    note(b, f.line(),
+         fmt::format("ELFORM {} mapped to fpmshell's finite-particle triangle (CST membrane, "
+                     "DKT bending; quadrangles split in two); NIP {}{}",
+                     elform, nip,
+                     nip == 2
+                         ? " (Gauss)"
+                         : " (fpmshell's rule is Lobatto, surfaces included; LS-DYNA's is Gauss)"));
+}
+
+void DeckTranslator::material(const DeckBlock& b) {
+    static const std::map<std::string, std::string> aliases = {
+        {"MAT_001", "MAT_ELASTIC"},
+        {"MAT_003", "MAT_PLASTIC_KINEMATIC"},
+        {"MAT_015", "MAT_JOHNSON_COOK"},
+        {"MAT_018", "MAT_POWER_LAW_PLASTICITY"},
+        {"MAT_024", "MAT_PIECEWISE_LINEAR_PLASTICITY"},
+        {"MAT_020", "MAT_RIGID"}};
+    std::string name = b.keyword;
+    bool titled = false;
+    if (name.size() > 6 && name.compare(name.size() - 6, 6, "_TITLE") == 0) {
+        titled = true;
+        name.resize(name.size() - 6);
+    }
+    if (const auto a = aliases.find(name); a != aliases.end()) name = a->second;
+    const std::size_t first = titled ? 1 : 0;
+    MaterialDef m;
+    m.keyword = name;
+    long long mid = 0;
+    const auto elastic = [&](const Card& f, Real e, Real nu) {
+        m.keys.push_back("density: " + num(f.real(1, "RO")));
+        m.keys.push_back("youngs_modulus: " + num(e));
+        m.keys.push_back("poisson_ratio: " + num(nu));
+    };
+    if (name == "MAT_ELASTIC") {
+        const Card f = required_card(b, first, "MID, RO, E, PR");
+        mid = f.id(0, "MID");
+        m.keys.push_back("type: elastic");
+        elastic(f, f.real(2, "E"), f.real(3, "PR"));
+        m.at = {&b, f.line()};
+    } else if (name == "MAT_PLASTIC_KINEMATIC") {
+        const Card f = required_card(b, first, "MID, RO, E, PR, SIGY, ETAN, BETA");
+        const Card g = card(b, first + 1);
+        mid = f.id(0, "MID");
+        m.plastic = true;
+        m.keys.push_back("type: j2_plastic");
+        elastic(f, f.real(2, "E"), f.real(3, "PR"));
+        m.keys.push_back("yield_stress: " + num(f.real(4, "SIGY")));
+        m.keys.push_back("tangent_modulus: " + num(f.real(5, "ETAN")));
+        m.keys.push_back("hardening_mix: " + num(f.real(6, "BETA")));
+        const Real src = g.real(0, "SRC"), srp = g.real(1, "SRP");
+        if (src > 0 || srp > 0)
+            m.keys.push_back("cowper_symonds: {D: " + num(src) + ", q: " + num(srp) + "}");
+        if (g.real(2, "FS") != 0)
+            note(b, g.line(), "FS: failure is not modelled (no element is deleted)");
+        if (g.real(3, "VP") != 0)
+            note(b, g.line(), "VP = 1 read as the scaled yield stress (VP = 0)");
+        m.at = {&b, f.line()};
+    } else if (name == "MAT_JOHNSON_COOK") {
+        const Card f = required_card(b, first, "MID, RO, G, E, PR");
+        const Card g = required_card(b, first + 1, "A, B, N, C, M, TM, TR, EPSO");
+        const Card h = card(b, first + 2), i = card(b, first + 3);
+        mid = f.id(0, "MID");
+        m.plastic = true;
+        Real e = f.real(3, "E");
+        const Real shear = f.real(2, "G"), nu = f.real(4, "PR");
+        if (e == 0) e = 2.0 * shear * (1.0 + nu);
+        m.keys.push_back("type: johnson_cook");
+        elastic(f, e, nu);
+        if (f.real(7, "RATEOP") != 0)
+            f.fail("RATEOP: only the log-linear rate term (0) is supported");
+        if (f.real(6, "VP") != 0)
+            note(b, f.line(), "VP = 1 read as the scaled yield stress (VP = 0)");
+        const Real c = g.real(3, "C"), m_exp = g.real(4, "M"), tm = g.real(5, "TM");
+        const Real eps0 = g.real(7, "EPSO");
+        m.keys.push_back("A: " + num(g.real(0, "A")));
+        m.keys.push_back("B: " + num(g.real(1, "B")));
+        m.keys.push_back("n: " + num(g.real(2, "N")));
+        if (c != 0) {
+            if (!(eps0 > 0)) g.fail("EPSO must be > 0 with a rate term C");
+            m.keys.push_back("C: " + num(c));
+            m.keys.push_back("reference_strain_rate: " + num(eps0));
+        }
+        if (m_exp != 0 && tm != 0 && h.real(0, "CP") != 0)
+            g.fail(
+                "thermal softening (M, TM with CP) is not modelled; set M = 0 for an "
+                "isothermal material");
+        if (m_exp != 0 || tm != 0)
+            note(b, g.line(), "isothermal: the temperature terms (M, TM, TR) are not modelled");
+        bool damage = false;
+        for (std::size_t k = 4; k < 8; ++k) damage = damage || h.real(k, "D1..D4") != 0;
+        damage = damage || i.real(0, "D5") != 0;
+        if (damage) note(b, h.line(), "D1..D5: failure is not modelled (no element is deleted)");
+        note(b, f.line(), "its *EOS is irrelevant: a shell is in plane stress");
+        m.at = {&b, f.line()};
+    } else if (name == "MAT_POWER_LAW_PLASTICITY") {
+        const Card f = required_card(b, first, "MID, RO, E, PR, K, N, SRC, SRP");
+        const Card g = card(b, first + 1);
+        mid = f.id(0, "MID");
+        m.plastic = true;
+        m.keys.push_back("type: power_law");
+        elastic(f, f.real(2, "E"), f.real(3, "PR"));
+        m.keys.push_back("k: " + num(f.real(4, "K")));
+        m.keys.push_back("n: " + num(f.real(5, "N")));
+        const Real src = f.real(6, "SRC"), srp = f.real(7, "SRP");
+        if (src > 0 || srp > 0)
+            m.keys.push_back("cowper_symonds: {D: " + num(src) + ", q: " + num(srp) + "}");
+        // LS-DYNA takes SIGY as the initial yield stress only above 0.02, else the strain
+        // at yield from the elastic line
+        const Real sigy = g.real(0, "SIGY");
+        if (sigy > 0.02) m.keys.push_back("yield_stress: " + num(sigy));
+        if (g.real(1, "VP") != 0)
+            note(b, g.line(), "VP = 1 read as the scaled yield stress (VP = 0)");
+        if (g.real(2, "EPSF") != 0)
+            note(b, g.line(), "EPSF: failure is not modelled (no element is deleted)");
+        m.at = {&b, f.line()};
+    } else if (name == "MAT_PIECEWISE_LINEAR_PLASTICITY") {
+        const Card f = required_card(b, first, "MID, RO, E, PR, SIGY, ETAN, FAIL, TDEL");
+        const Card g = card(b, first + 1);
+        const Card eps = card(b, first + 2), es = card(b, first + 3);
+        mid = f.id(0, "MID");
+        m.plastic = true;
+        m.at = {&b, f.line()};
+        const Real c = g.real(0, "C"), p = g.real(1, "P");
+        m.lcss = g.id(2, "LCSS");
+        if (g.id(3, "LCSR") != 0) g.fail("LCSR (a strain-rate scaling curve) is not supported");
+        if (g.real(4, "VP") != 0)
+            note(b, g.line(), "VP = 1 read as the scaled yield stress (VP = 0)");
+        if (f.real(6, "FAIL") != 0)
+            note(b, f.line(), "FAIL: failure is not modelled (no element is deleted)");
+        std::vector<Point2> points;
+        for (std::size_t k = 0; k < 8; ++k) {
+            const Real x = eps.real(k, "EPS1..EPS8"), y = es.real(k, "ES1..ES8");
+            if (k == 0 || x != 0 || y != 0) points.push_back({x, y});
+        }
+        const bool tabulated = m.lcss != 0 || points.size() >= 2;
+        m.keys.push_back(tabulated ? "type: tabulated" : "type: j2_plastic");
+        elastic(f, f.real(2, "E"), f.real(3, "PR"));
+        if (!tabulated) {
+            m.keys.push_back("yield_stress: " + num(f.real(4, "SIGY")));
+            m.keys.push_back("tangent_modulus: " + num(f.real(5, "ETAN")));
+        } else if (m.lcss == 0) {
+            m.keys.push_back("flow_curve: " + points_text(points));
+        }
+        if (c > 0 || p > 0)
+            m.keys.push_back("cowper_symonds: {D: " + num(c) + ", q: " + num(p) + "}");
+    } else if (name == "MAT_RIGID") {
+        // a part of it moves as one rigid body (its section's particles, theory.md §6.11)
+        const Card f = required_card(b, first, "MID, RO, E, PR, N, COUPLE, M, ALIAS");
+        const Card g = card(b, first + 1);
+        mid = f.id(0, "MID");
+        m.keys.push_back("type: rigid");
+        elastic(f, f.real(2, "E"), f.real(3, "PR"));
+        if (g.real(0, "CMO") != 0)
+            g.fail(
+                "CMO: constraints on a rigid part's motion are not supported (0 only: the "
+                "part moves freely)");
+        m.at = {&b, f.line()};
+    } else {
+        refuse(b, unsupported_reason(b.keyword));
+    }
+    if (const auto other = materials_.find(mid); other != materials_.end())
+        deck_fail(b, m.at.line,
+                  "material " + std::to_string(mid) + " is defined twice (first at " +
+                      place(other->second.at) + ")");
+    materials_[mid] = m;
+}
+
+std::string DeckTranslator::points_text(const std::vector<Point2>& points) {
+    std::string s = "[";
+    for (std::size_t k = 0; k < points.size(); ++k)
+        s += (k ? ", [" : "[") + num(points[k].x) + ", " + num(points[k].y) + "]";
+    return s + "]";
+}
+
+void DeckTranslator::define_curve(const DeckBlock& b) {
+    const std::set<std::string> opt = options_of(b.keyword, 2);
+    for (const std::string& o : opt)
+        if (o != "TITLE") refuse(b, "*DEFINE_CURVE_" + o + " is not supported");
+    const std::size_t first = opt.count("TITLE") ? 1 : 0;
+    const Card f = required_card(b, first, "LCID, SIDR, SFA, SFO, OFFA, OFFO");
+    const long long id = f.id(0, "LCID");
+    Real sfa = f.real(2, "SFA"), sfo = f.real(3, "SFO");
+    if (sfa == 0) sfa = 1;
+    if (sfo == 0) sfo = 1;
+    const Real offa = f.real(4, "OFFA"), offo = f.real(5, "OFFO");
+    CurveDef c{{&b, f.line()}, {}};
+    for (std::size_t k = first + 1; k < b.cards.size(); ++k) {
+        const Card p(deck_, b, b.cards[k], {20, 20});
+        // abscissa SFA (a + OFFA), ordinate SFO (o + OFFO): the offsets first
+        c.points.push_back({sfa * (p.real(0, "A1") + offa), sfo * (p.real(1, "O1") + offo)});
+    }
+    if (c.points.empty()) f.fail("curve " + std::to_string(id) + " has no points");
+    if (const auto other = curves_.find(id); other != curves_.end())
+        f.fail("curve " + std::to_string(id) + " is defined twice (first at " +
+               place(other->second.at) + ")");
+    curves_[id] = c;
+    if (table_waiting_ > 0) {  // the curves of the last *DEFINE_TABLE follow it, in order
+        tables_[last_table_].curves.push_back(id);
+        --table_waiting_;
+    }
+}
+
+void DeckTranslator::define_table(const DeckBlock& b) {
+    const std::set<std::string> opt = options_of(b.keyword, 2);
+    for (const std::string& o : opt)
+        if (o != "TITLE") refuse(b, "*DEFINE_TABLE_" + o + " is not supported");
+    const std::size_t first = opt.count("TITLE") ? 1 : 0;
+    const Card f = required_card(b, first, "TBID, SFA, OFFA");
+    const long long id = f.id(0, "TBID");
+    Real sfa = f.real(1, "SFA");
+    if (sfa == 0) sfa = 1;
+    const Real offa = f.real(2, "OFFA");
+    TableDef t{{&b, f.line()}, {}, {}};
+    for (std::size_t k = first + 1; k < b.cards.size(); ++k) {
+        const Card v(deck_, b, b.cards[k], {20, 20});
+        t.values.push_back(sfa * (v.real(0, "VALUE") + offa));
+        if (v.id(1, "LCID") != 0)
+            f.fail("a curve id beside VALUE is not supported; let the curves follow the table");
+    }
+    if (t.values.empty()) f.fail("table " + std::to_string(id) + " has no values");
+    if (t.values.front() < 0)  // LS-DYNA: then every value is the logarithm of a rate
+        for (Real& v : t.values) v = std::exp(v);
+    if (const auto other = tables_.find(id); other != tables_.end())
+        f.fail("table " + std::to_string(id) + " is defined twice (first at " +
+               place(other->second.at) + ")");
+    tables_[id] = t;
+    last_table_ = id;
+    table_waiting_ = t.values.size();
+}
+
+void DeckTranslator::write_materials(std::vector<Line>& out) {
+    std::set<long long> used;
+    for (const auto& [pid, p] : parts_)
+        if (element_parts_.count(pid)) used.insert(p.material);
+    bool first = true;
+    for (const auto& [mid, m] : materials_) {
+        if (!used.count(mid)) continue;
+        if (first) add(out, "materials:", m.at);
+        first = false;
+        std::string keys;
+        for (const std::string& k : m.keys) keys += (keys.empty() ? "" : ", ") + k;
+        if (m.lcss != 0) keys += ", " + flow_curves(m);
+        add(out, "  mat_" + std::to_string(mid) + ": {" + keys + "}", m.at);
+    }
+}
+
+/// The flow curve (or the curves per rate) of a *MAT_024's LCSS.
+std::string DeckTranslator::flow_curves(const MaterialDef& m) {
+    const DeckBlock& b = *m.at.block;
+    if (const auto c = curves_.find(m.lcss); c != curves_.end())
+        return "flow_curve: " + points_text(c->second.points);
+    const auto t = tables_.find(m.lcss);
+    if (t == tables_.end())
+        deck_fail(
+            b, m.at.line,
+            "LCSS " + std::to_string(m.lcss) + " is neither a *DEFINE_CURVE nor a *DEFINE_TABLE");
+    if (t->second.curves.size() != t->second.values.size())
+        deck_fail(*t->second.at.block, t->second.at.line,
+                  "the table lists " + std::to_string(t->second.values.size()) +
+                      " strain rates but only " + std::to_string(t->second.curves.size()) +
+                      " *DEFINE_CURVE follow it");
+    for (const std::string& k : m.keys)
+        if (starts_with(k, "cowper_symonds"))
+            note(b, m.at.line, "C, P ignored: LCSS is a table of curves per strain rate");
+    std::string s = "flow_curves: [";
+    for (std::size_t k = 0; k < t->second.values.size(); ++k)
+        s += std::string(k ? ", " : "") + "{strain_rate: " + num(t->second.values[k]) +
+             ", points: " + points_text(curves_.at(t->second.curves[k]).points) + "}";
+    return s + "]";
+}
+
+void DeckTranslator::write_sections(std::vector<Line>& out) {
+    bool first = true;
+    for (const auto& [pid, e] : element_parts_) {
+        const auto p = parts_.find(pid);
+        if (p == parts_.end())
+            deck_fail(*e.first.block, e.first.line,
+                      "an element of part " + std::to_string(pid) + ", which no *PART defines");
+        const PartDef& part = p->second;
+        const auto s = sections_.find(part.section);
+        if (s == sections_.end())
+            deck_fail(*part.at.block, part.at.line,
+                      "SECID " + std::to_string(part.section) + ": no *SECTION_SHELL defines it");
+        const auto m = materials_.find(part.material);
+        if (m == materials_.end())
+            deck_fail(*part.at.block, part.at.line,
+                      "MID " + std::to_string(part.material) + ": no *MAT card defines it");
+        Real thickness = s->second.thickness;
+        if (!e.thickness.empty()) thickness = *e.thickness.begin();
+        int points = s->second.points;
+        if (m->second.plastic && points == 2)
+            deck_fail(*s->second.at.block, s->second.at.line,
+                      "NIP 2 with the plastic material of part " + std::to_string(pid) +
+                          ": fpmshell integrates plastic sections with 3 or 5 points");
+        if (first) add(out, "sections:", part.at);
+        first = false;
+        add(out,
+            "  - {elements: part_" + std::to_string(pid) + ", material: mat_" +
+                std::to_string(part.material) + ", thickness: " + num(thickness) +
+                ", thickness_points: " + std::to_string(points) + "}",
+            part.at);
+    }
+    for (const auto& [pid, p] : parts_)
+        if (!element_parts_.count(pid))
+            note(*p.at.block, p.at.line,
+                 "part " + std::to_string(pid) + " has no shell elements: left out");
+}
+
+void DeckTranslator::write_curves(std::vector<Line>& out) {
+    std::set<long long> done;
+    bool first = true;
+    for (const auto& [id, at] : used_curves_) {
+        if (!done.insert(id).second) continue;
+        const auto c = curves_.find(id);
+        if (c == curves_.end())
+            deck_fail(*at.block, at.line,
+                      "LCID " + std::to_string(id) + ": no *DEFINE_CURVE defines it");
+        if (first) add(out, "curves:", c->second.at);
+        first = false;
+        add(out, "  curve_" + std::to_string(id) + ": " + points_text(c->second.points),
+            c->second.at);
+    }
+}
+
+}  // namespace fpmshell::deck
