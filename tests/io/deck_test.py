@@ -460,6 +460,42 @@ path, r = deck_case("nodes to surface", "*CONTACT_AUTOMATIC_NODES_TO_SURFACE\n"
 check("nodes to surface with a node set: refused", r.returncode == 2 and "SSTYP 4" in r.stderr,
       r.stderr)
 
+# the fixed-column habits of decks written by other tools give BASE's model: lower-case
+# keywords, a blank line inside a block (a part's blank heading: a card of defaults) and between
+# records, NIP left blank, reals without an E (1.0000-2), integers written as reals (1.0), fields
+# that run together (read by column, never by blanks)
+QUIRKS = """*keyword
+*node
+       1             0.0             0.0             0.0
+       2        1.0000+0             0.0             0.0
+
+       3             0.0   1.00000000000             0.0
+*element_shell
+       1       1       1       2       3       3
+*part
+
+         1         1         1
+*section_shell
+         1         2         0
+  1.0000-2
+*mat_elastic
+       1.07800.000002.1000E+11       0.3
+*control_termination
+  1.0000-3
+
+"""
+
+
+def summary(r):
+    return [l for l in r.stdout.splitlines() if not l.startswith(("model", "title", "note"))]
+
+
+_, plain = deck_case("plain", "")
+_, quirky = deck_case("quirks", "", base=QUIRKS)
+check("a deck in other tools' fixed-column habits gives the plain deck's model",
+      plain.returncode == 0 and quirky.returncode == 0 and summary(plain) == summary(quirky),
+      quirky.stdout + quirky.stderr)
+
 # walls without _ID are numbered by their place in the deck (LS-DYNA's rule), although the
 # translator takes them in the order of their text: the first wall here sorts last
 path, r = deck_case("walls numbered by place", "*RIGIDWALL_PLANAR\n         0\n"

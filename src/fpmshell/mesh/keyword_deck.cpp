@@ -55,8 +55,11 @@ private:
         while (std::getline(in, text)) {
             ++number;
             if (!text.empty() && text.back() == '\r') text.pop_back();
-            if (text.empty() || text.front() == '$' || trim(text).empty()) continue;
-            if (text.front() == '*') {
+            if (!text.empty() && text.front() == '$') continue;
+            const bool blank = trim(text).empty();
+            if (blank && (block == nullptr || pending != Pending::None)) continue;
+            if (!blank && text.front() == '*') {
+                drop_trailing_blank_cards(block);
                 const std::string keyword = start(text, path, number, block);
                 pending = keyword == "INCLUDE"     ? Pending::Include
                           : keyword == "PARAMETER" ? Pending::Parameter
@@ -81,9 +84,18 @@ private:
                         "*INCLUDE takes one file name; start another *INCLUDE for the next file");
             if (block == nullptr)
                 fail_at(path, number, "a data card before the first keyword; expected *KEYWORD");
-            block->cards.push_back({number, text});
+            block->cards.push_back({number, text});  // a blank card: every field its default
         }
+        drop_trailing_blank_cards(block);
         open_.pop_back();
+    }
+
+    /// Blank lines at a block's end separate it from the next keyword; inside, a blank line is
+    /// a card whose fields all take their defaults (a part's heading, a material's optional
+    /// card), as LS-DYNA reads it.
+    static void drop_trailing_blank_cards(DeckBlock* block) {
+        while (block != nullptr && !block->cards.empty() && trim(block->cards.back().text).empty())
+            block->cards.pop_back();
     }
 
     /// Starts the block of a keyword line; returns the keyword (blocks are not made for the

@@ -19,6 +19,10 @@ enum class DeckFormat { Standard, Long, WideId };
 struct DeckCard {
     int line = 0;
     std::string text;
+    /// A blank line: every field takes its default (lists of records skip it).
+    [[nodiscard]] bool blank() const {
+        return text.find_first_not_of(" \t\r") == std::string::npos;
+    }
 };
 
 /// A keyword and its data cards, as written (one file: an *INCLUDE starts a block of its own).

@@ -30,7 +30,7 @@ std::vector<std::string> columns(const std::string& line, const std::vector<std:
 
 bool blank_or_id(const std::string& f) {
     long long v = 0;
-    return f.empty() || parse_id(f, v);
+    return f.empty() || parse_whole(f, v);
 }
 
 bool blank_or_real(const std::string& f) {
@@ -142,12 +142,19 @@ private:
 
     long long id(const std::string& field, int line, const char* what) const {
         long long v = 0;
-        if (!parse_id(field, v))
+        if (!parse_whole(field, v))
             raw_.fail(line, std::string("expected ") + what + ", got '" + field + "'");
         return v;
     }
 
     void card(const std::string& line, int number) {
+        // A blank line between records is skipped; where a card's place gives its meaning (a
+        // set's title, a shell's thickness card) it is a card of defaults.
+        const bool record_start =
+            block_ == Block::Node || (block_ == Block::Shell && card_ % cards_per_element_ == 0) ||
+            ((block_ == Block::NodeSet || block_ == Block::ShellSet || block_ == Block::PartSet) &&
+             !(title_ && card_ == 0));
+        if (record_start && trim(line).empty()) return;
         const int index = card_++;
         switch (block_) {
             case Block::Skip:
@@ -183,7 +190,7 @@ private:
                 }
                 for (std::size_t k = 6; k < f.size(); ++k) {
                     long long n = 0;
-                    if (!f[k].empty() && parse_id(f[k], n) && n != 0)
+                    if (!f[k].empty() && parse_whole(f[k], n) && n != 0)
                         raw_.fail(number, "shells with more than 4 nodes are not supported");
                 }
                 if (nodes[3] == 0 || nodes[3] == nodes[2]) nodes.pop_back();
@@ -230,7 +237,7 @@ private:
                     long long v = 0;
                     if (s.empty()) {
                         ids.push_back(0);
-                    } else if (parse_id(s, v)) {
+                    } else if (parse_whole(s, v)) {
                         ids.push_back(v);
                     } else {
                         raw_.fail(number, "expected a number, got '" + s + "'");

@@ -59,10 +59,24 @@ bool parse_real(const std::string& field, Real& value) {
     if (f.empty()) return false;
     for (char& c : f)
         if (c == 'd' || c == 'D') c = 'e';
+    // Fortran's exponent without its letter, as fixed-column writers save a column: 2.00000-3
+    if (f.find_first_of("eE") == std::string::npos)
+        if (const auto sign = f.find_last_of("+-");
+            sign != std::string::npos && sign > 0 &&
+            (std::isdigit(static_cast<unsigned char>(f[sign - 1])) || f[sign - 1] == '.'))
+            f.insert(sign, 1, 'e');
     const char* first = f.data() + (f.front() == '+' ? 1 : 0);
     const char* last = f.data() + f.size();
     const auto [ptr, ec] = std::from_chars(first, last, value, std::chars_format::general);
     return ec == std::errc() && ptr == last && std::isfinite(value);
+}
+
+bool parse_whole(const std::string& field, long long& value) {
+    if (parse_id(field, value)) return true;
+    Real r = 0;
+    if (!parse_real(field, r) || r != std::round(r) || std::abs(r) >= 1e15) return false;
+    value = static_cast<long long>(r);
+    return true;
 }
 
 }  // namespace text_mesh

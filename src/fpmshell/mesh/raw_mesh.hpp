@@ -67,8 +67,11 @@ namespace text_mesh {
 [[nodiscard]] std::vector<std::string> split_blanks(const std::string& s);
 /// Parses a whole integer field; false when it is not one.
 [[nodiscard]] bool parse_id(const std::string& field, long long& value);
-/// Parses a real field (also Fortran exponents 1.0D+3); false when it is not a finite number.
+/// Parses a real field (also Fortran exponents 1.0D+3, and 2.0-3 without the letter); false when
+/// it is not a finite number.
 [[nodiscard]] bool parse_real(const std::string& field, Real& value);
+/// A whole number, also written as a real ("7.0000000", as some writers save an integer field).
+[[nodiscard]] bool parse_whole(const std::string& field, long long& value);
 }  // namespace text_mesh
 
 }  // namespace fpmshell

@@ -21,7 +21,9 @@ std::string write_deck(const std::string& name, const std::string& text) {
 }
 
 // Blocks keep their keyword (upper case, without the format suffix), file, line and data cards;
-// comments and blank lines are dropped, *KEYWORD, *PARAMETER and *END make no block.
+// comments are dropped; a blank line inside a block is a card of defaults (a part's heading may
+// be blank), blank lines at a block's end are dropped; *KEYWORD, *PARAMETER and *END make no
+// block.
 TEST(KeywordDeck, ReadsBlocksAndParameters) {
     const std::string path = write_deck("blocks", R"(*KEYWORD
 $ a comment
@@ -34,6 +36,7 @@ Two blocks
                    1                   2
 *Control_Termination
 0.01
+
 *END
 *NODE
 )");
@@ -44,10 +47,12 @@ Two blocks
     EXPECT_EQ(deck.blocks[0].cards[0].text, "Two blocks");
     EXPECT_EQ(deck.blocks[1].keyword, "SECTION_SHELL");
     EXPECT_EQ(deck.blocks[1].format, DeckFormat::Long);
-    ASSERT_EQ(deck.blocks[1].cards.size(), 1U);  // the blank line is not a card
-    EXPECT_EQ(deck.blocks[1].cards[0].line, 9);
+    ASSERT_EQ(deck.blocks[1].cards.size(), 2U);  // the blank line is a card of defaults
+    EXPECT_TRUE(deck.blocks[1].cards[0].blank());
+    EXPECT_EQ(deck.blocks[1].cards[1].line, 9);
     EXPECT_EQ(deck.blocks[2].keyword, "CONTROL_TERMINATION");
     EXPECT_EQ(deck.blocks[2].format, DeckFormat::Standard);
+    EXPECT_EQ(deck.blocks[2].cards.size(), 1U);  // the blank line before *END is not a card
     EXPECT_EQ(deck.parameters.at("THICK"), "R0.002");
     EXPECT_EQ(deck.parameters.at("COUNT"), "I4");
     std::filesystem::remove(path);

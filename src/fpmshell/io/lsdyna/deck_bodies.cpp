@@ -33,6 +33,8 @@ void DeckTranslator::spot_weld(const DeckBlock& b) {
     if (b.cards.empty()) required_card(b, 0, "N1, N2, SN, SS, N, M, TF, EP");
     bool failure = false;
     for (std::size_t c = 0; c < b.cards.size(); c += per_weld) {
+        while (c < b.cards.size() && b.cards[c].blank()) ++c;  // blank lines between welds
+        if (c >= b.cards.size()) break;
         const Card f = required_card(b, c + per_weld - 1, "N1, N2, SN, SS, N, M, TF, EP");
         weld_nodes(b, f, {f.id(0, "N1"), f.id(1, "N2")});
         failure = failure || f.real(2, "SN") != 0 || f.real(3, "SS") != 0 ||

@@ -15,6 +15,7 @@ void DeckTranslator::spc(const DeckBlock& b) {
     if (!single && !opt.count("SET")) refuse(b, unsupported_reason("BOUNDARY_SPC"));
     static const char* dofs[6] = {"ux", "uy", "uz", "rx", "ry", "rz"};
     for (std::size_t c = first_data_card(opt); c < b.cards.size(); ++c) {
+        if (b.cards[c].blank()) continue;  // a blank line between records
         const Card f = card(b, c);
         const long long id = f.id(0, single ? "NID" : "NSID");
         if (f.id(1, "CID") != 0) f.fail("CID: only global directions (0) are supported");
@@ -46,6 +47,7 @@ void DeckTranslator::prescribed_motion(const DeckBlock& b) {
         if (o != "NODE" && o != "SET" && o != "ID")
             refuse(b, "*BOUNDARY_PRESCRIBED_MOTION_..._" + o + " is not supported");
     for (std::size_t c = first_data_card(opt); c < b.cards.size(); ++c) {
+        if (b.cards[c].blank()) continue;  // a blank line between records
         const Card f = card(b, c);
         const long long id = f.id(0, single ? "NID" : "NSID");
         const long long dof = f.id(1, "DOF");
@@ -124,6 +126,8 @@ void DeckTranslator::initial_velocity(const DeckBlock& b) {
     } else if (k == "INITIAL_VELOCITY_GENERATION") {
         // cards in pairs: the translation, then the axis of the rotation OMEGA
         for (std::size_t c = 0; c < b.cards.size(); c += 2) {
+            while (c < b.cards.size() && b.cards[c].blank()) ++c;  // blank lines between pairs
+            if (c >= b.cards.size()) break;
             const Card f = card(b, c);
             const Card g = card(b, c + 1);
             if (f.id(7, "ICID") != 0) f.fail("ICID: only global directions (0) are supported");
@@ -159,6 +163,7 @@ std::string DeckTranslator::curve_ref(const DeckBlock& b, const Card& f, long lo
 void DeckTranslator::load(const DeckBlock& b) {
     const std::string& k = b.keyword;
     for (const DeckCard& dc : b.cards) {
+        if (dc.blank()) continue;  // a blank line between records
         const Card f(deck_, b, dc, k_ten);
         if (k == "LOAD_SHELL_SET") {
             const long long ssid = f.id(0, "SSID");
@@ -204,6 +209,7 @@ void DeckTranslator::segment_load(const DeckBlock& b) {
     const bool set = k == "LOAD_SEGMENT_SET";
     if (!set && k != "LOAD_SEGMENT") refuse(b, unsupported_reason(k));
     for (const DeckCard& dc : b.cards) {
+        if (dc.blank()) continue;  // a blank line between records
         const Card f(deck_, b, dc, k_ten);
         const std::size_t at = set ? 3 : 2;
         if (f.real(at, "AT") != 0) f.fail("AT (an arrival time) is not supported");

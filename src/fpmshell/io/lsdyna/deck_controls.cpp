@@ -58,6 +58,7 @@ void DeckTranslator::database(const DeckBlock& b) {
         if (!with_id && k != "DATABASE_HISTORY_NODE")
             refuse(b, "this history request is not supported");
         for (const DeckCard& dc : b.cards) {
+            if (dc.blank()) continue;
             const Card f(deck_, b, dc, with_id ? std::vector<std::size_t>{10} : k_ten);
             for (std::size_t n = 0; n < f.size(); ++n) {
                 const long long id = f.id(n, "NID");

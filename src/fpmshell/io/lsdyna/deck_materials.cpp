@@ -238,6 +238,7 @@ void DeckTranslator::define_curve(const DeckBlock& b) {
     const Real offa = f.real(4, "OFFA"), offo = f.real(5, "OFFO");
     CurveDef c{{&b, f.line()}, {}};
     for (std::size_t k = first + 1; k < b.cards.size(); ++k) {
+        if (b.cards[k].blank()) continue;  // a blank line between points
         const Card p(deck_, b, b.cards[k], {20, 20});
         // abscissa SFA (a + OFFA), ordinate SFO (o + OFFO): the offsets first
         c.points.push_back({sfa * (p.real(0, "A1") + offa), sfo * (p.real(1, "O1") + offo)});
@@ -265,6 +266,7 @@ void DeckTranslator::define_table(const DeckBlock& b) {
     const Real offa = f.real(2, "OFFA");
     TableDef t{{&b, f.line()}, {}, {}};
     for (std::size_t k = first + 1; k < b.cards.size(); ++k) {
+        if (b.cards[k].blank()) continue;  // a blank line between values
         const Card v(deck_, b, b.cards[k], {20, 20});
         t.values.push_back(sfa * (v.real(0, "VALUE") + offa));
         if (v.id(1, "LCID") != 0)

@@ -12,19 +12,21 @@ void DeckTranslator::element_shell(const DeckBlock& b) {
                                     (opt.count("OFFSET") ? 1 : 0);
     const std::size_t w = b.format == DeckFormat::WideId ? 10 : 8;
     for (std::size_t c = 0; c < b.cards.size(); c += per_element) {
+        while (c < b.cards.size() && b.cards[c].blank()) ++c;  // blank lines between elements
+        if (c >= b.cards.size()) break;
         // EID and PID in columns, else (hand-written files) split at blanks, as the mesh
         // reader reads them
         std::vector<std::string> ids = deck_fields(b, b.cards[c], std::vector<std::size_t>(6, w));
         long long eid = 0, pid = 0;
-        if (!text_mesh::parse_id(ids[0], eid) || !text_mesh::parse_id(ids[1], pid)) {
+        if (!text_mesh::parse_whole(ids[0], eid) || !text_mesh::parse_whole(ids[1], pid)) {
             ids = text_mesh::split_blanks(b.cards[c].text);
             ids.resize(std::max<std::size_t>(ids.size(), 6));
-            if (!text_mesh::parse_id(ids[1], pid)) continue;  // the mesh reader says why
+            if (!text_mesh::parse_whole(ids[1], pid)) continue;  // the mesh reader says why
         }
         std::array<long long, 4> n{};
         bool numbered = true;
         for (std::size_t k = 0; k < 4; ++k)
-            numbered = numbered && (ids[2 + k].empty() || text_mesh::parse_id(ids[2 + k], n[k]));
+            numbered = numbered && (ids[2 + k].empty() || text_mesh::parse_whole(ids[2 + k], n[k]));
         if (numbered) {
             if (n[3] != 0 && n[3] != n[2]) {
                 if (quadrangles_ == 0) first_quadrangle_ = {&b, b.cards[c].line};
@@ -57,7 +59,8 @@ void DeckTranslator::set_header(const DeckBlock& b) {
     const std::string kind = starts_with(b.keyword, "SET_NODE")    ? "node"
                              : starts_with(b.keyword, "SET_SHELL") ? "shell"
                                                                    : "part";
-    define_set(f, kind, sid, titled ? trim(b.cards[0].text) : lsdyna_set_name(kind, sid));
+    const std::string title = titled ? trim(b.cards[0].text) : "";
+    define_set(f, kind, sid, !title.empty() ? title : lsdyna_set_name(kind, sid));
 }
 
 /// Set `sid` of `kind` is called `name`; a set number defined twice is refused.
@@ -89,11 +92,13 @@ void DeckTranslator::segment_set(const DeckBlock& b) {
     const bool titled = opt.count("TITLE") != 0;
     const Card head = required_card(b, titled ? 1 : 0, "SID");
     const long long sid = head.id(0, "SID");
-    const std::string name = titled ? trim(b.cards[0].text) : lsdyna_set_name("segment", sid);
+    const std::string title = titled ? trim(b.cards[0].text) : "";
+    const std::string name = !title.empty() ? title : lsdyna_set_name("segment", sid);
     define_set(head, "segment", sid, name);
     auto& segments = segment_sets_[name];
     for (std::size_t c = titled ? 2 : 1; c < b.cards.size(); ++c)
-        segments.push_back(segment(Card(deck_, b, b.cards[c], k_ten), 0, b));
+        if (!b.cards[c].blank())
+            segments.push_back(segment(Card(deck_, b, b.cards[c], k_ten), 0, b));
 }
 
 /// The segment of nodes in fields first ... first + 3 of `f`.
