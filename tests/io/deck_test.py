@@ -496,6 +496,32 @@ check("a deck in other tools' fixed-column habits gives the plain deck's model",
       plain.returncode == 0 and quirky.returncode == 0 and summary(plain) == summary(quirky),
       quirky.stdout + quirky.stderr)
 
+# initial velocities in LS-DYNA's forms: a node of its own (*INITIAL_VELOCITY_NODE, given
+# first) keeps its velocity over *INITIAL_VELOCITY of all nodes, whose exempted set (NSIDEX)
+# takes the velocities of the third card
+VELOCITIES = BASE.replace("     0.001\n", "    1.0e-6\n") + """*INITIAL_VELOCITY_NODE
+         1       7.0       0.0       0.0
+*DATABASE_NODOUT
+    1.0e-7
+*DATABASE_HISTORY_NODE
+         1         2         3
+*INITIAL_VELOCITY
+         0         9
+       5.0       0.0       0.0
+       3.0       0.0       0.0
+*SET_NODE_LIST
+         9
+         1         2
+"""
+path, r = deck_case("initial velocities", "", base=VELOCITIES)
+out = os.path.join(os.path.dirname(path), "results")
+r, h = run(path, out)
+rows = read(h).splitlines() if r.returncode == 0 else ["", ""]
+first = dict(zip(rows[0].split(","), rows[1].split(",")))
+check("initial velocities: _NODE over the set, NSIDEX's own velocity, the rest",
+      r.returncode == 0 and [first.get(f"node{n}_vx") for n in (1, 2, 3)] == ["7", "3", "5"],
+      r.stderr + str(rows[:2]))
+
 # walls without _ID are numbered by their place in the deck (LS-DYNA's rule), although the
 # translator takes them in the order of their text: the first wall here sorts last
 path, r = deck_case("walls numbered by place", "*RIGIDWALL_PLANAR\n         0\n"

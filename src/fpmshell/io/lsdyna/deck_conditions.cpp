@@ -109,20 +109,39 @@ std::string DeckTranslator::nodes_of_velocity(const Card& f, long long id, long 
     f.fail("STYP " + std::to_string(styp) + " is not 1 (part set), 2 (part) or 3 (node set)");
 }
 
+/// The initial velocities, from the most general card to the most specific: *INITIAL_VELOCITY
+/// (a set, all nodes, an exempted set with its own velocities), then _GENERATION, then _NODE;
+/// a later entry of the model replaces an earlier one on the nodes they share
+/// (model-format.md), so a node given its own velocity keeps it whatever the card order.
 void DeckTranslator::initial_velocity(const DeckBlock& b) {
     const std::string& k = b.keyword;
     if (k == "INITIAL_VELOCITY") {
         const Card f = required_card(b, 0, "NSID, NSIDEX, BOXID, IRIGID, ICID");
         const Card v = required_card(b, 1, "VX, VY, VZ, VXR, VYR, VZR");
-        const long long nsid = f.id(0, "NSID");
-        if (f.id(1, "NSIDEX") != 0 || f.id(2, "BOXID") != 0 || f.id(4, "ICID") != 0)
-            f.fail("NSIDEX, BOXID and ICID are not supported (0 only)");
+        const long long nsid = f.id(0, "NSID"), nsidex = f.id(1, "NSIDEX");
+        if (f.id(2, "BOXID") != 0 || f.id(4, "ICID") != 0)
+            f.fail("BOXID and ICID are not supported (0 only)");
         const std::string nodes = nsid == 0 ? "all" : set_name(f, "node", nsid);
-        initial_.push_back({"  - {nodes: " + yaml_name(nodes) + ", velocity: " +
-                                vec(v.real(0, "VX"), v.real(1, "VY"), v.real(2, "VZ")) +
-                                ", angular_velocity: " +
-                                vec(v.real(3, "VXR"), v.real(4, "VYR"), v.real(5, "VZR")) + "}",
-                            {&b, v.line()}});
+        initial_sets_.push_back(
+            {"  - {nodes: " + yaml_name(nodes) + ", " + velocities(v, 0) + "}", {&b, v.line()}});
+        if (nsidex != 0) {  // the exempted nodes take the velocities of the third card
+            const Card e = card(b, 2);
+            initial_sets_.push_back({"  - {nodes: " + yaml_name(set_name(f, "node", nsidex)) +
+                                         ", " + velocities(e, 0) + "}",
+                                     {&b, e.line()}});
+        }
+    } else if (k == "INITIAL_VELOCITY_NODE") {
+        // one card per node; the nodes of one velocity make one set
+        for (const DeckCard& dc : b.cards) {
+            if (dc.blank()) continue;
+            const Card f(deck_, b, dc, k_ten);
+            if (f.id(7, "ICID") != 0) f.fail("ICID: only global directions (0) are supported");
+            const std::string text = "{nodes: NODES, " + velocities(f, 1) + "}";
+            auto& group = node_group_of_text_[text];
+            if (group.empty())
+                group = "velocity_nodes_" + std::to_string(node_group_of_text_.size());
+            add_node_to_group(group, f.id(0, "NID"), text, {&b, f.line()}, initial_nodes_);
+        }
     } else if (k == "INITIAL_VELOCITY_GENERATION") {
         // cards in pairs: the translation, then the axis of the rotation OMEGA
         for (std::size_t c = 0; c < b.cards.size(); c += 2) {
@@ -146,11 +165,19 @@ void DeckTranslator::initial_velocity(const DeckBlock& b) {
                         ", angular_velocity: " +
                         vec(omega * axis[0], omega * axis[1], omega * axis[2]) + "}";
             }
-            initial_.push_back({text + "}", {&b, f.line()}});
+            initial_generated_.push_back({text + "}", {&b, f.line()}});
         }
     } else {
         refuse(b, unsupported_reason(k));
     }
+}
+
+/// "velocity: [VX, VY, VZ], angular_velocity: [VXR, VYR, VZR]" from fields first ... first + 5.
+std::string DeckTranslator::velocities(const Card& f, std::size_t first) {
+    return "velocity: " +
+           vec(f.real(first, "VX"), f.real(first + 1, "VY"), f.real(first + 2, "VZ")) +
+           ", angular_velocity: " +
+           vec(f.real(first + 3, "VXR"), f.real(first + 4, "VYR"), f.real(first + 5, "VZR"));
 }
 
 /// The model's name of load curve `lcid` (written out if some card uses it).

@@ -195,6 +195,9 @@ std::string DeckTranslator::unsupported_reason(const std::string& k) {
     if (starts_with(k, "CONTACT_"))
         return "fpmshell reads *CONTACT_AUTOMATIC_SINGLE_SURFACE, _SURFACE_TO_SURFACE and "
                "_NODES_TO_SURFACE (as its shell self-contact)";
+    if (starts_with(k, "INITIAL_"))
+        return "fpmshell reads *INITIAL_VELOCITY (with NSIDEX), *INITIAL_VELOCITY_NODE and "
+               "*INITIAL_VELOCITY_GENERATION";
     if (starts_with(k, "LOAD_"))
         return "fpmshell reads *LOAD_NODE_POINT, *LOAD_NODE_SET, *LOAD_SHELL_SET, "
                "*LOAD_SEGMENT and *LOAD_SEGMENT_SET";
@@ -219,7 +222,10 @@ DeckTranslation DeckTranslator::write() {
     write_curves(out);
     write_list(out, "boundary", boundary_);
     write_list(out, "loads", loads_);
-    write_list(out, "initial_conditions", initial_);
+    std::vector<Line> initial = initial_sets_;  // the more specific cards later (they win)
+    initial.insert(initial.end(), initial_generated_.begin(), initial_generated_.end());
+    initial.insert(initial.end(), initial_nodes_.begin(), initial_nodes_.end());
+    write_list(out, "initial_conditions", initial);
     write_list(out, "constraints", constraints_);
     write_walls(out);
     write_list(out, "contact", contact_);

@@ -187,6 +187,7 @@ public:
                            const Origin& at, std::vector<Line>& lines);
     std::string nodes_of_velocity(const Card& f, long long id, long long styp);
     void initial_velocity(const DeckBlock& b);
+    static std::string velocities(const Card& f, std::size_t first);
     /// The model's name of load curve `lcid` (written out if some card uses it).
     std::string curve_ref(const DeckBlock& b, const Card& f, long long lcid);
     void load(const DeckBlock& b);
@@ -270,7 +271,9 @@ private:
     std::vector<SegmentLoad> segment_loads_;
     /// the model line of a load or prescribed motion on single nodes -> the set of its nodes
     std::map<std::string, std::string> node_group_of_text_;
-    std::vector<Line> boundary_, loads_, initial_, contact_, control_, constraints_;
+    std::vector<Line> boundary_, loads_, contact_, control_, constraints_;
+    /// initial velocities of *INITIAL_VELOCITY, _GENERATION and _NODE, written in that order
+    std::vector<Line> initial_sets_, initial_generated_, initial_nodes_;
     long long welds_ = 0;  ///< spot welds read (their sets are numbered by it)
     std::vector<WallDef> walls_;
     std::optional<Line> end_time_, damping_, every_, fields_every_;
