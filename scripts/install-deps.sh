@@ -10,6 +10,7 @@ PACKAGES=(
     build-essential cmake clang-format
     libeigen3-dev libyaml-cpp-dev libcli11-dev libfmt-dev
     libgtest-dev libbenchmark-dev zlib1g-dev libgmsh-dev libmetis-dev libopenmpi-dev openmpi-bin
+    libmuparser-dev
     python3 python3-matplotlib python3-numpy python3-yaml python3-vtk9
 )
 

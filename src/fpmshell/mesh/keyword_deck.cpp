@@ -7,6 +7,7 @@
 
 #include "fpmshell/core/errors.hpp"
 #include "fpmshell/core/text.hpp"
+#include "fpmshell/mesh/deck_parameters.hpp"
 #include "fpmshell/mesh/raw_mesh.hpp"
 
 namespace fpmshell {
@@ -18,11 +19,39 @@ using text_mesh::upper;
 class DeckReader {
 public:
     KeywordDeck read(const std::string& path) {
+        namespace fs = std::filesystem;
+        main_folder_ = fs::path(path).parent_path();
         read_file(path, "", 0, 0);
+        // includes not found where they stood: again with every *INCLUDE_PATH of the deck
+        // (the deck may give its paths after the includes that need them)
+        while (!deferred_.empty()) {
+            const std::size_t before = deferred_.size();
+            std::vector<Deferred> waiting;
+            waiting.swap(deferred_);
+            for (const Deferred& d : waiting) {
+                if (const auto found = find_include(d.name, d.from); !found.empty())
+                    read_file(found, d.from, d.line, d.depth);
+                else
+                    deferred_.push_back(d);
+            }
+            if (deferred_.size() == before) {
+                const Deferred& d = deferred_.front();
+                fail_at(
+                    d.from, d.line,
+                    "*INCLUDE: cannot open '" + d.name + "' (looked in " + looked_in(d.from) + ")");
+            }
+        }
+        deck_.parameters = resolve_parameters(parameters_, duplication_, deck_.notes);
         return std::move(deck_);
     }
 
 private:
+    enum class Pending { None, Include, IncludePath, Parameter, Expression, Duplication };
+    struct Deferred {
+        std::string name, from;
+        int line = 0, depth = 0;
+    };
+
     void read_file(const std::string& path, const std::string& from, int from_line, int depth) {
         namespace fs = std::filesystem;
         std::error_code ec;
@@ -49,9 +78,18 @@ private:
         deck_.bytes += fs::file_size(path, ec);
         open_.push_back(canonical);
         DeckBlock* block = nullptr;  // the block the cards go to (null: before any keyword)
-        enum class Pending { None, Include, Parameter, Done } pending = Pending::None;
+        Pending pending = Pending::None;
+        bool local = false;  // the *PARAMETER being read is _LOCAL
+        int include_at = 0;  // the line of an *INCLUDE whose file name is still to come
+        std::string name;    // a file name continued on the next line (" +")
         std::string text;
         int number = 0;
+        const auto close_include = [&] {
+            if (include_at > 0)
+                deck_.notes.push_back(
+                    input_error_text(path, include_at, "", "*INCLUDE names no file: nothing read"));
+            include_at = 0;
+        };
         while (std::getline(in, text)) {
             ++number;
             if (!text.empty() && text.back() == '\r') text.pop_back();
@@ -60,34 +98,96 @@ private:
             if (blank && (block == nullptr || pending != Pending::None)) continue;
             if (!blank && text.front() == '*') {
                 drop_trailing_blank_cards(block);
-                const std::string keyword = start(text, path, number, block);
-                pending = keyword == "INCLUDE"     ? Pending::Include
-                          : keyword == "PARAMETER" ? Pending::Parameter
-                                                   : Pending::None;
+                close_include();
+                const std::string keyword = start(text, path, number, block, local);
+                pending = keyword == "INCLUDE"                 ? Pending::Include
+                          : keyword == "INCLUDE_PATH"          ? Pending::IncludePath
+                          : keyword == "PARAMETER"             ? Pending::Parameter
+                          : keyword == "PARAMETER_EXPRESSION"  ? Pending::Expression
+                          : keyword == "PARAMETER_DUPLICATION" ? Pending::Duplication
+                                                               : Pending::None;
+                if (pending == Pending::Include) include_at = number;
                 if (keyword == "END") break;
                 continue;
             }
-            if (pending == Pending::Include) {
-                const std::string name = trim(text);
-                fs::path target(name);
-                if (target.is_relative()) target = fs::path(path).parent_path() / target;
-                read_file(target.string(), path, number, depth + 1);
-                pending = Pending::Done;  // one file name per *INCLUDE
-                continue;
+            switch (pending) {
+                case Pending::Include: {
+                    std::string part = trim(text);
+                    const bool continued =
+                        part.size() > 2 && part.compare(part.size() - 2, 2, " +") == 0;
+                    name += continued ? trim(part.substr(0, part.size() - 2)) : part;
+                    if (continued) continue;
+                    include_at = 0;
+                    if (const auto found = find_include(name, path); !found.empty())
+                        read_file(found, path, number, depth + 1);
+                    else
+                        deferred_.push_back({name, path, number, depth + 1});
+                    name.clear();
+                    continue;
+                }
+                case Pending::IncludePath:
+                    include_paths_.push_back(trim(text));
+                    continue;
+                case Pending::Parameter:
+                case Pending::Expression:
+                    read_parameter_card(text, long_, pending == Pending::Expression, local, path,
+                                        number, parameters_);
+                    continue;
+                case Pending::Duplication: {
+                    long long flag = 0;
+                    const std::string field = trim(text.substr(0, 10));
+                    if (!text_mesh::parse_whole(field.empty() ? "1" : field, flag) || flag < 1 ||
+                        flag > 5)
+                        fail_at(path, number,
+                                "*PARAMETER_DUPLICATION: DFLAG '" + field +
+                                    "' should be 1, 2, 3, 4 or 5");
+                    duplication_ = static_cast<ParameterDuplication>(flag);
+                    continue;
+                }
+                case Pending::None:
+                    break;
             }
-            if (pending == Pending::Parameter) {
-                parameter(text, path, number);
-                continue;
-            }
-            if (pending == Pending::Done)
-                fail_at(path, number,
-                        "*INCLUDE takes one file name; start another *INCLUDE for the next file");
             if (block == nullptr)
                 fail_at(path, number, "a data card before the first keyword; expected *KEYWORD");
             block->cards.push_back({number, text});  // a blank card: every field its default
         }
+        if (!name.empty())
+            fail_at(path, number,
+                    "*INCLUDE: the file name '" + name + "' goes on past the file's end (' +')");
+        close_include();
         drop_trailing_blank_cards(block);
         open_.pop_back();
+    }
+
+    /// Where an included file is: as given when absolute; else in the including file's
+    /// folder, the main deck's, then each *INCLUDE_PATH folder read so far ("" if nowhere).
+    std::string find_include(const std::string& name, const std::string& from) const {
+        namespace fs = std::filesystem;
+        std::error_code ec;
+        const fs::path given(name);
+        if (given.is_absolute()) return fs::exists(given, ec) ? name : "";
+        for (const fs::path& folder : search_folders(from)) {
+            const fs::path candidate = folder / given;
+            if (fs::exists(candidate, ec)) return candidate.string();
+        }
+        return "";
+    }
+
+    std::vector<std::filesystem::path> search_folders(const std::string& from) const {
+        std::vector<std::filesystem::path> folders{std::filesystem::path(from).parent_path(),
+                                                   main_folder_};
+        for (const std::string& p : include_paths_) {
+            const std::filesystem::path folder(p);
+            folders.push_back(folder.is_absolute() ? folder : main_folder_ / folder);
+        }
+        return folders;
+    }
+
+    std::string looked_in(const std::string& from) const {
+        std::string s;
+        for (const auto& f : search_folders(from))
+            s += (s.empty() ? "'" : ", '") + (f.empty() ? std::string(".") : f.string()) + "'";
+        return s;
     }
 
     /// Blank lines at a block's end separate it from the next keyword; inside, a blank line is
@@ -98,10 +198,11 @@ private:
             block->cards.pop_back();
     }
 
-    /// Starts the block of a keyword line; returns the keyword (blocks are not made for the
-    /// keywords read here).
+    /// Starts the block of a keyword line; returns the keyword, or for the keywords read here
+    /// (no block is made) their family: INCLUDE, INCLUDE_PATH, PARAMETER, PARAMETER_EXPRESSION,
+    /// PARAMETER_DUPLICATION. `local` tells a *PARAMETER(_EXPRESSION)_LOCAL.
     std::string start(const std::string& text, const std::string& path, int number,
-                      DeckBlock*& block) {
+                      DeckBlock*& block, bool& local) {
         std::string line = upper(trim(text.substr(1)));
         // the keyword ends at the first blank or comma (*KEYWORD may carry memory and LONG=)
         const auto end = line.find_first_of(" \t,");
@@ -115,44 +216,31 @@ private:
             name.pop_back();
         }
         block = nullptr;
+        local = false;
         if (name == "KEYWORD") {
             if (rest.find("LONG=Y") != std::string::npos) long_ = true;
             if (rest.find("LONG=S") != std::string::npos) long_ = false;
             return name;
         }
-        if (name == "END" || name == "INCLUDE" || name == "PARAMETER") return name;
+        if (name == "END" || name == "INCLUDE" || name == "PARAMETER_DUPLICATION") return name;
+        if (name == "INCLUDE_PATH" || name == "INCLUDE_PATH_RELATIVE") return "INCLUDE_PATH";
+        for (const char* family : {"PARAMETER_EXPRESSION", "PARAMETER"}) {
+            const std::string f = family;
+            for (const char* option : {"", "_NOECHO", "_LOCAL"})
+                if (name == f + option) {
+                    local = std::string(option) == "_LOCAL";
+                    return f;
+                }
+        }
         if (name.rfind("INCLUDE", 0) == 0 || name.rfind("PARAMETER", 0) == 0)
             fail_at(path, number,
                     "*" + name +
-                        " is not supported; use *INCLUDE with a file name (relative to the "
-                        "including file) and *PARAMETER with plain values");
+                        " is not supported; fpmshell reads *INCLUDE (one or more files), "
+                        "*INCLUDE_PATH(_RELATIVE), *PARAMETER, *PARAMETER_EXPRESSION (and their "
+                        "_LOCAL and _NOECHO) and *PARAMETER_DUPLICATION");
         deck_.blocks.push_back({name, path, number, format, {}});
         block = &deck_.blocks.back();
         return name;
-    }
-
-    /// A *PARAMETER card: pairs of (type and name, value), 10 columns each, or free format.
-    void parameter(const std::string& text, const std::string& path, int number) {
-        std::vector<std::string> fields;
-        if (text.find(',') != std::string::npos) {
-            fields = split_commas(text);
-        } else {
-            for (std::size_t pos = 0; pos < text.size(); pos += 10)
-                fields.push_back(trim(text.substr(pos, 10)));
-        }
-        for (std::size_t k = 0; k < fields.size(); k += 2) {
-            const std::string& head = fields[k];
-            if (head.empty()) continue;
-            const char type = static_cast<char>(std::toupper(static_cast<unsigned char>(head[0])));
-            const std::string name = upper(trim(head.substr(1)));
-            if ((type != 'R' && type != 'I' && type != 'C') || name.empty())
-                fail_at(path, number,
-                        "*PARAMETER: '" + head +
-                            "' should be a type R, I or C followed by the parameter's name");
-            const std::string value = k + 1 < fields.size() ? fields[k + 1] : "";
-            if (value.empty()) fail_at(path, number, "*PARAMETER: '" + name + "' has no value");
-            deck_.parameters[name] = std::string(1, type) + value;
-        }
     }
 
     [[noreturn]] static void fail_at(const std::string& file, int line,
@@ -164,6 +252,11 @@ private:
     std::vector<std::string> open_;  // the files being read, outermost first
     bool long_ = false;              // *KEYWORD LONG=Y
     int files_ = 0;                  // files opened so far
+    std::filesystem::path main_folder_;
+    std::vector<std::string> include_paths_;  // *INCLUDE_PATH folders, in reading order
+    std::vector<Deferred> deferred_;          // includes not found yet
+    std::vector<ParameterDefinition> parameters_;
+    ParameterDuplication duplication_ = ParameterDuplication::WarnKeepFirst;
 };
 
 }  // namespace

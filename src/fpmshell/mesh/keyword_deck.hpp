@@ -37,9 +37,11 @@ struct DeckBlock {
 struct KeywordDeck {
     std::vector<DeckBlock> blocks;  ///< in reading order, includes in place; no *INCLUDE,
                                     ///< *PARAMETER, *KEYWORD or *END blocks
-    /// *PARAMETER values by upper-case name: the field text, its type (R, I or C) first
+    /// The parameters by upper-case name: the field text (a formula's value), its type (R, I
+    /// or C) first (mesh/deck_parameters.hpp)
     std::map<std::string, std::string> parameters;
-    std::uintmax_t bytes = 0;  ///< the size of every file read
+    std::vector<std::string> notes;  ///< "FILE:LINE: ..." for what was read otherwise than written
+    std::uintmax_t bytes = 0;        ///< the size of every file read
 };
 
 /// Include depth beyond which a deck is refused (an include cycle is refused at once).
@@ -47,11 +49,15 @@ inline constexpr int k_max_include_depth = 16;
 /// Files a deck may read in all (a file included many times over counts each time).
 inline constexpr int k_max_deck_files = 4096;
 
-/// Reads the deck at `path`; an *INCLUDE names a file relative to the including file's folder.
-/// Throws InputError "FILE:LINE: ..." for a file that cannot be read or is not a regular file,
-/// an include that cannot be found, nests too deep, includes itself or makes the deck read more
-/// than k_max_deck_files files, a malformed *PARAMETER,
-/// and a keyword fpmshell does not read at this level (*INCLUDE_PATH, *PARAMETER_EXPRESSION).
+/// Reads the deck at `path`. An *INCLUDE lists one or more files (a long name continued on the
+/// next line after " +"), each found as given when absolute, else in the including file's
+/// folder, the main deck's folder, then the folders of every *INCLUDE_PATH(_RELATIVE) of the
+/// deck (wherever it stands; relative folders from the main deck's). *PARAMETER,
+/// *PARAMETER_EXPRESSION (and _LOCAL, _NOECHO) and *PARAMETER_DUPLICATION are resolved once the
+/// whole deck is read (deck_parameters.hpp). Throws InputError "FILE:LINE: ..." for a file that
+/// cannot be read or is not a regular file, an include that cannot be found, nests too deep,
+/// includes itself or makes the deck read more than k_max_deck_files files, a malformed
+/// parameter, and an *INCLUDE_ or *PARAMETER_ form fpmshell does not read.
 [[nodiscard]] KeywordDeck read_keyword_deck(const std::string& path);
 
 /// The fields of `card`: split at commas when it has any (free format), else cut in columns

@@ -81,8 +81,8 @@ TEST(KeywordDeck, CutsFieldsInEveryFormat) {
     std::filesystem::remove(path);
 }
 
-// Errors name the file and line: a card before any keyword, a parameter without a value,
-// two files on one *INCLUDE.
+// Errors name the file and line: a card before any keyword, a parameter without a value, an
+// included file that is not a regular file.
 TEST(KeywordDeck, ReportsErrorsWithLines) {
     const auto expect_error = [](const std::string& name, const std::string& text,
                                  const std::string& where, const std::string& what) {

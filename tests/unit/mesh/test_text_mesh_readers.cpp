@@ -249,8 +249,11 @@ TEST(LsDynaReader, ReportsErrorsWithLines) {
     expect_error(read_lsdyna, dir.write("b3.k", "*INCLUDE\n.\n"), ":2: ", "not a regular file");
     expect_error(read_lsdyna, dir.write("b4.k", "*PARAMETER\nX thick   1.0\n"),
                  ":2: ", "type R, I or C");
-    expect_error(read_lsdyna, dir.write("b5.k", "*PARAMETER_EXPRESSION\nR a 1+2\n"),
+    expect_error(read_lsdyna, dir.write("b5.k", "*INCLUDE_TRANSFORM\nmesh.k\n"),
                  ":1: ", "not supported");
+    // the formula starts in column 11: here the name field holds it all
+    expect_error(read_lsdyna, dir.write("b6.k", "*PARAMETER_EXPRESSION\nR a 1+2\n"),
+                 ":2: ", "not one word");
     expect_error(read_lsdyna, dir.write("c.k", nodes + "*SET_NODE_LIST\n1\n1,2,x\n"),
                  ":7: ", "expected a number");
     expect_error(read_lsdyna, dir.write("d.k", nodes + "*SET_NODE_ADD\n1\n"),

@@ -40,6 +40,25 @@ void DeckTranslator::control(const DeckBlock& b) {
         }
         if (scaled) f.fail("STX..SRZ: damping scaled per direction is not supported");
         damping_ = Line{"damping: {mass: " + num(f.real(1, "VALDMP")) + "}", at};
+    } else if (k == "CONTROL_UNITS") {
+        note(b, b.line,
+             "the deck's numbers are used as they are (fpmshell has no units of its own: they "
+             "must be consistent, as LS-DYNA's must)");
+    } else if (k == "CONTROL_SOLUTION") {
+        if (const long long soln = f.id(0, "SOLN"); soln != 0)
+            f.fail("SOLN " + std::to_string(soln) +
+                   ": fpmshell solves the structural problem only (SOLN 0), not a thermal or "
+                   "coupled one");
+        note(b, b.line, "SOLN 0 (structural) is what fpmshell solves; the other fields ignored");
+    } else if (k == "CONTROL_DAMPING" || k == "CONTROL_DYNAMIC_RELAXATION") {
+        // NRCYCK, DRTOL, DRFCTR, DRTERM, TSSFDR, IRELAL, EDTTL, IDRFLG: dynamic relaxation
+        if (const long long idrflg = f.id(7, "IDRFLG"); idrflg != 0)
+            f.fail("IDRFLG " + std::to_string(idrflg) +
+                   ": dynamic relaxation before the transient run is not supported (fpmshell's "
+                   "quasi-static runs are control.mode: relaxation)");
+        note(b, b.line, "IDRFLG 0: no dynamic relaxation, so its parameters are not used");
+    } else if (k == "CONTROL_STRUCTURED" || k == "CONTROL_STRUCTURED_TERM") {
+        note(b, b.line, "ignored: it asks for a structured copy of the input, not a model change");
     } else if (k == "CONTROL_OUTPUT" || k == "CONTROL_ENERGY" || k == "CONTROL_HOURGLASS" ||
                k == "CONTROL_BULK_VISCOSITY" || k == "CONTROL_CONTACT" || k == "CONTROL_ACCURACY" ||
                k == "CONTROL_CPU" || k == "CONTROL_PARALLEL" || starts_with(k, "CONTROL_MPP")) {

@@ -89,6 +89,7 @@ std::string numbered_family(const std::string& keyword) {
 
 DeckTranslator::DeckTranslator(const std::string& path, std::string mesh_file)
     : path_(path), mesh_file_(std::move(mesh_file)), deck_(read_keyword_deck(path)) {
+    notes_ = deck_.notes;  // what the keyword reader noted (duplicate parameters, empty includes)
     std::map<std::string, long long> count;
     for (const DeckBlock& b : deck_.blocks)
         if (const std::string f = numbered_family(b.keyword); !f.empty())
