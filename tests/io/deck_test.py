@@ -535,6 +535,20 @@ check("walls without _ID: numbered by their place in the deck", len(walls) == 2 
       "name: rigidwall1, shape: plane, point: [0, 0, -2]" in walls[1] + walls[0] and
       "name: rigidwall2, shape: plane, point: [0, 0, -1]" in walls[1] + walls[0], c.stderr + str(walls))
 
+# the older and other forms of the contacts fpmshell has: each as its self-contact, with a note
+# where the mapping is not one-to-one
+# (single-surface forms over part 1 alone, two-sided ones over parts 1 and 2)
+for keyword, words, count in [("*CONTACT_SINGLE_SURFACE", "the older single-surface contact", 1),
+                              ("*CONTACT_SURFACE_TO_SURFACE", "a one-sided contact", 2),
+                              ("*CONTACT_NODES_TO_SURFACE", "a one-sided contact", 2),
+                              ("*CONTACT_AUTOMATIC_GENERAL", "general contact", 1),
+                              ("*CONTACT_AUTOMATIC_SINGLE_SURFACE_MORTAR", "_MORTAR", 1)]:
+    path, r = deck_case(keyword[1:].lower(), keyword + "\n         1         2         3         3\n",
+                        base=two_parts)
+    check(f"{keyword}: read as the self-contact with a note", r.returncode == 0 and
+          f"contact self over {count} elements" in r.stdout and words in r.stdout,
+          r.stdout + r.stderr)
+
 path, r = deck_case("no termination", "", base=BASE.replace("*CONTROL_TERMINATION\n     0.001\n", ""))
 check("a deck without *CONTROL_TERMINATION is refused", r.returncode == 2 and
       "CONTROL_TERMINATION" in r.stderr, r.stderr)

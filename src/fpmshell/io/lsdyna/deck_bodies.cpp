@@ -218,12 +218,56 @@ void DeckTranslator::geometric_wall(const DeckBlock& b) {
 /// *CONTACT_AUTOMATIC_SINGLE_SURFACE: self-contact over its side; _SURFACE_TO_SURFACE and
 /// _NODES_TO_SURFACE: self-contact over the union of both sides, which keeps the two
 /// apart (and each side from itself too: noted).
+namespace {
+
+/// The contact cards read as fpmshell's shell self-contact: the keyword, its words before the
+/// options, whether it has one side, and how the mapping is not one-to-one (null: it is).
+struct ContactForm {
+    const char* keyword;
+    std::size_t words;
+    bool single;
+    const char* differs;
+};
+const ContactForm k_contact_forms[] = {
+    {"CONTACT_AUTOMATIC_SINGLE_SURFACE", 4, true, nullptr},
+    {"CONTACT_AUTOMATIC_SURFACE_TO_SURFACE", 5, false, nullptr},
+    {"CONTACT_AUTOMATIC_NODES_TO_SURFACE", 5, false, nullptr},
+    {"CONTACT_AUTOMATIC_GENERAL", 3, true,
+     "LS-DYNA's general contact also checks beam and shell edges against each other; fpmshell's "
+     "checks particles against faces"},
+    {"CONTACT_SINGLE_SURFACE", 3, true,
+     "the older single-surface contact, read as the automatic one (both sides of each shell, "
+     "its thickness as the contact thickness)"},
+    {"CONTACT_SURFACE_TO_SURFACE", 4, false,
+     "a one-sided contact (the side its segments' normals point to), read as the automatic, "
+     "two-sided one"},
+    {"CONTACT_NODES_TO_SURFACE", 4, false,
+     "a one-sided contact (the side its segments' normals point to), read as the automatic, "
+     "two-sided one"},
+};
+
+}  // namespace
+
+/// A *CONTACT_ card of k_contact_forms as fpmshell's shell self-contact: single-surface forms
+/// over their side, two-sided forms over the union of both sides, which keeps the two apart
+/// (and each side from itself too: noted).
 void DeckTranslator::contact(const DeckBlock& b) {
-    const bool single = starts_with(b.keyword, "CONTACT_AUTOMATIC_SINGLE_SURFACE");
-    const std::set<std::string> opt = options_of(b.keyword, single ? 4 : 5);
+    const ContactForm* form = nullptr;
+    for (const ContactForm& f : k_contact_forms)
+        if (b.keyword == f.keyword ||
+            starts_with(b.keyword, (std::string(f.keyword) + "_").c_str()))
+            form = &f;
+    if (form == nullptr) refuse(b, unsupported_reason(b.keyword));
+    const bool single = form->single;
+    const std::set<std::string> opt = options_of(b.keyword, form->words);
     for (const std::string& o : opt)
-        if (o != "ID" && o != "MPP" && o != "TITLE")
+        if (o != "ID" && o != "MPP" && o != "TITLE" && o != "MORTAR")
             refuse(b, "*" + b.keyword + ": the option _" + o + " is not supported");
+    if (form->differs != nullptr) note(b, b.line, form->differs);
+    if (opt.count("MORTAR"))
+        note(b, b.line,
+             "_MORTAR: the segment-to-segment penalty contact read as fpmshell's particle-to-face "
+             "contact with Lagrange multipliers");
     std::size_t c = (opt.count("ID") || opt.count("TITLE")) ? 1 : 0;
     if (opt.count("MPP")) {
         ++c;

@@ -44,6 +44,10 @@ const std::vector<CardReader>& card_readers() {
         {"CONTACT_AUTOMATIC_SINGLE_SURFACE", true, P::References, &T::contact},
         {"CONTACT_AUTOMATIC_SURFACE_TO_SURFACE", true, P::References, &T::contact},
         {"CONTACT_AUTOMATIC_NODES_TO_SURFACE", true, P::References, &T::contact},
+        {"CONTACT_AUTOMATIC_GENERAL", true, P::References, &T::contact},
+        {"CONTACT_SINGLE_SURFACE", true, P::References, &T::contact},
+        {"CONTACT_SURFACE_TO_SURFACE", true, P::References, &T::contact},
+        {"CONTACT_NODES_TO_SURFACE", true, P::References, &T::contact},
         {"CONSTRAINED_NODAL_RIGID_BODY", true, P::References, &T::nodal_rigid_body},
         {"CONSTRAINED_SPOTWELD", true, P::References, &T::spot_weld},
         {"CONSTRAINED_GENERALIZED_WELD", true, P::References, &T::generalized_spot_weld},
@@ -194,7 +198,8 @@ std::string DeckTranslator::unsupported_reason(const std::string& k) {
         return "fpmshell reads *BOUNDARY_PRESCRIBED_MOTION_NODE and _SET (with _ID); a "
                "rigid part's motion cannot be prescribed";
     if (starts_with(k, "CONTACT_"))
-        return "fpmshell reads *CONTACT_AUTOMATIC_SINGLE_SURFACE, _SURFACE_TO_SURFACE and "
+        return "fpmshell reads *CONTACT_AUTOMATIC_SINGLE_SURFACE, _SURFACE_TO_SURFACE, "
+               "_NODES_TO_SURFACE, _GENERAL and *CONTACT_SINGLE_SURFACE, _SURFACE_TO_SURFACE, "
                "_NODES_TO_SURFACE (as its shell self-contact)";
     if (starts_with(k, "INITIAL_"))
         return "fpmshell reads *INITIAL_VELOCITY (with NSIDEX), *INITIAL_VELOCITY_NODE and "
