@@ -220,6 +220,7 @@ for name, (card, body) in WALLS.items():
 fric_line = "       0.0       0.0       0.0       0.0       0.0       1.0       0.0\n"
 speed_line = "         1         2       0.0       0.0       0.0      -5.0\n"
 assert fric_line in planar and speed_line in drop_deck
+assert "  - {type: rigid, body: floor, offset: 0}" in drop_twin
 sideways = drop_deck.replace(speed_line, "         1         2       0.0       4.0       0.0      -5.0\n")
 sideways_twin = drop_twin.replace("velocity: [0, 0, -5]", "velocity: [4, 0, -5]")
 for fric, written in (("0.3", "0.3"), ("1.0", "stick")):
@@ -227,8 +228,8 @@ for fric, written in (("0.3", "0.3"), ("1.0", "stick")):
         f"wall friction {fric}", os.path.join(WORK, "walls", "friction_" + fric),
         os.path.join(DROP, "plate_drop_mesh.k"),
         sideways.replace(fric_line, fric_line.replace("       0.0\n", f"{fric:>10}\n")),
-        sideways_twin.replace("  - {type: rigid, body: floor}",
-                              f"  - {{type: rigid, body: floor, friction: {written}}}"))
+        sideways_twin.replace("  - {type: rigid, body: floor, offset: 0}",
+                              f"  - {{type: rigid, body: floor, offset: 0, friction: {written}}}"))
     if not h_deck:
         continue
     columns = columns_by_name(h_deck)
@@ -548,6 +549,12 @@ for keyword, words, count in [("*CONTACT_SINGLE_SURFACE", "the older single-surf
     check(f"{keyword}: read as the self-contact with a note", r.returncode == 0 and
           f"contact self over {count} elements" in r.stdout and words in r.stdout,
           r.stdout + r.stderr)
+
+# nodes standing on a planar wall (a car's wheels on the ground): LS-DYNA's wall acts on the
+# nodes themselves, so the shell's thickness puts none of them inside it
+path, r = deck_case("standing on the wall", "*RIGIDWALL_PLANAR\n         0\n"
+                    "       0.0       0.0       0.0       0.0       0.0       1.0\n")
+check("nodes lying on a planar wall: the deck runs as it is", r.returncode == 0, r.stdout + r.stderr)
 
 path, r = deck_case("no termination", "", base=BASE.replace("*CONTROL_TERMINATION\n     0.001\n", ""))
 check("a deck without *CONTROL_TERMINATION is refused", r.returncode == 2 and

@@ -523,12 +523,15 @@ void ContactSolver::collect_rigid(const Definition& d, const std::vector<Vec3>& 
             // the face with a ball of its half thickness, so the contact point does not jump
             // when the shell turns (an offset that follows the orientation does work and
             // creates energy).
-            const Real offset = 0.5 * node_thickness_[us];
+            // A definition's own offset (LS-DYNA's rigid walls: 0, the node itself) replaces it;
+            // the activation distance keeps the half thickness's scale.
+            const Real half_thickness = 0.5 * node_thickness_[us];
+            const Real offset = d.def.offset >= 0 ? d.def.offset : half_thickness;
             // a curved face is linearised at the point below the particle for this step
             const RigidFacePoint face = rigid_face_point(body, y[us], body_u[b]);
             if (!face.faces) continue;
             const Real gap = face.normal.dot(y[us] - (face.anchor + body_u[b])) - offset;
-            if (!(gap < (lagrange ? activation_distance(offset, motion_) : 0.0))) continue;
+            if (!(gap < (lagrange ? activation_distance(half_thickness, motion_) : 0.0))) continue;
             Constraint c;
             c.slave = s;
             c.body = d.def.body;
@@ -647,7 +650,9 @@ void ContactSolver::enforce(const std::vector<Vec3>& x, std::vector<Vec3>& x_pre
                 r -= c.xi[j] * x[static_cast<std::size_t>(c.master[j])];
         if (c.body >= 0) r -= c.anchor + bodies[static_cast<std::size_t>(c.body)].u;
         const Real inside = c.offset - c.normal.dot(r);
-        if (inside > k_sweep_tolerance * c.offset) {
+        // (the tolerance's scale: the offset, or half the thickness for a rigid contact whose
+        // offset is smaller, as LS-DYNA's walls' 0)
+        if (inside > k_sweep_tolerance * std::max(c.offset, 0.5 * c.thickness)) {
             c.allowance = inside;
             ++held;
         }

@@ -148,8 +148,8 @@ void read_contact(const YamlValue& v, Model& model) {
             c.exclusion_radius = m.non_negative_or("exclusion_radius", 0.0);
             read_contact_method(m, c);
         } else {
-            const YamlMap m = item.map(
-                {"type", "body", "nodes", "method", "penalty_scale", "max_iterations", "friction"});
+            const YamlMap m = item.map({"type", "body", "nodes", "method", "penalty_scale",
+                                        "max_iterations", "friction", "offset"});
             c.type = ContactType::Rigid;
             c.body = named_rigid_body(model, m.at("body", "the name of a rigid body"));
             c.nodes = m.find("nodes") ? named_node_set(model, *m.find("nodes"))
@@ -164,22 +164,24 @@ void read_contact(const YamlValue& v, Model& model) {
                         "friction is modelled with the Lagrange multipliers only (method: "
                         "lagrange); remove `friction` or `method: penalty`");
             }
-            // A particle that starts inside the face (its half thickness included) would be
-            // thrown out of it in one step.
+            c.offset = m.non_negative_or("offset", -1.0);
+            // A particle that starts inside the face (its offset included) would be thrown out
+            // of it in one step.
             const RigidBody& rb = model.rigid_bodies[static_cast<std::size_t>(c.body)];
             const std::vector<Real> h = node_thickness(model);
             for (const Index p : c.nodes) {
                 const auto up = static_cast<std::size_t>(p);
                 const RigidFacePoint face = rigid_face_point(rb, model.nodes[up], Vec3::Zero());
                 if (!face.faces) continue;
-                const Real behind = 0.5 * h[up] - face.normal.dot(model.nodes[up] - face.anchor);
+                const Real offset = c.offset >= 0 ? c.offset : 0.5 * h[up];
+                const Real behind = offset - face.normal.dot(model.nodes[up] - face.anchor);
                 if (behind > 1e-9 * (1.0 + rb.point.norm()))
                     item.fail(
                         "particle " + std::to_string(p + 1) + " starts " + std::to_string(behind) +
                         " inside the face of rigid body '" + rb.name +
-                        "' (a particle touches it with a ball of half its thickness; the face "
-                        "normal points towards the shell); move the body by that much or "
-                        "check the sign of its normal");
+                        "' (a particle touches it with a ball of half its thickness, or of the "
+                        "contact's offset; the face normal points towards the shell); move the "
+                        "body by that much or check the sign of its normal");
             }
         }
         model.contacts.push_back(c);

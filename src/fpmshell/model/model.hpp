@@ -208,6 +208,9 @@ struct ContactDefinition {
     /// rigid, Lagrange multipliers: Coulomb friction coefficient between the particles and the
     /// body (theory.md §8.5); 0 frictionless, infinity: no sliding once in contact
     Real friction = 0;
+    /// rigid: the distance from the face at which a particle touches it; negative: half the
+    /// particle's shell thickness (theory.md §8.3). LS-DYNA's rigid walls: 0 (the node itself)
+    Real offset = -1;
 };
 
 enum class Quantity {

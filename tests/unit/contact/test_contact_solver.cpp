@@ -155,6 +155,23 @@ TEST(Contact, FixedPlaneStopsATriangleAndTakesItsMomentum) {
     EXPECT_NEAR(s.energy().contact, 0.5 * total_mass(s) * 9.0, 1e-9);
 }
 
+// A rigid contact holds each particle at its offset from the face: half the shell thickness by
+// default (a ball of half the thickness, theory.md §8.3), the definition's own when it gives one
+// (0 for LS-DYNA's rigid walls: the nodes themselves stop on the plane).
+TEST(Contact, ARigidContactHoldsParticlesAtItsOffset) {
+    for (const Real offset : {-1.0, 0.0, 0.002}) {
+        Model m = triangle_on_plane(3.0, 1.0, ContactMethod::LagrangeMultiplier);
+        m.rigid_bodies[0].fixed = true;
+        m.rigid_bodies[0].mass = 0;
+        m.contacts[0].offset = offset;
+        ExplicitSolver s(m);
+        while (s.time() < 0.1) s.step(1e30);
+        const Real expected = offset < 0 ? 0.5 * 0.01 : offset;
+        for (const Vec3& x : s.state().x) EXPECT_NEAR(x.z(), expected, 1e-9) << offset;
+        for (const Vec3& v : s.state().v) EXPECT_NEAR(v.z(), 0.0, 1e-12) << offset;
+    }
+}
+
 TEST(Contact, TwoPlatesDrivenTogetherDoNotInterpenetrate) {
     // Bottom plate 1 x 1 clamped at its edges; top plate 0.6 x 0.6 above it, moving down fast
     // (a few per cent of the thickness per step). Both h = 0.01: the mid-surfaces must stay

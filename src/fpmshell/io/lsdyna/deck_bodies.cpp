@@ -92,7 +92,10 @@ void DeckTranslator::rigid_wall(const DeckBlock& b) {
     const long long nsid = f.id(0, "NSID");
     if (f.id(1, "NSIDEX") != 0 || f.id(2, "BOXID") != 0)
         f.fail("NSIDEX and BOXID are not supported (0 only)");
-    if (f.real(3, "OFFSET") != 0) f.fail("OFFSET is not supported (0 only)");
+    if (f.real(3, "OFFSET") != 0)
+        note(b, f.line(),
+             "OFFSET: every node of NSID is tracked (LS-DYNA tracks those within OFFSET of the "
+             "wall, a subset)");
     if (f.real(4, "BIRTH") != 0 || (f.real(5, "DEATH") != 0 && f.real(5, "DEATH") < 1e20))
         f.fail("BIRTH and DEATH are not supported (the wall acts from start to end)");
     w.friction = g.real(6, "FRIC");
@@ -338,8 +341,10 @@ void DeckTranslator::write_walls(std::vector<Line>& out) {
     }
     std::vector<Line> contacts;
     for (const WallDef& w : walls_)
+        // LS-DYNA's walls act on the nodes themselves, not on their shells' thickness: offset 0
         contacts.push_back({"  - {type: rigid, body: rigidwall" + std::to_string(w.id) +
                                 (w.nodes.empty() ? "" : ", nodes: " + yaml_name(w.nodes)) +
+                                ", offset: 0" +
                                 (w.friction == 0   ? ""
                                  : w.friction == 1 ? ", friction: stick"
                                                    : ", friction: " + num(w.friction)) +
