@@ -396,7 +396,8 @@ for k, (card, words) in enumerate(REFUSED.items()):
           r.stderr.count("\n") == 1, r.stderr)
 
 NOTED = ["*DATABASE_MATSUM\n1.0e-4\n", "*CONTROL_HOURGLASS\n         1\n", "*HOURGLASS\n         1\n",
-         "*SENSOR_DEFINE_NODE\n         1\n", "*EOS_GRUNEISEN\n         1\n"]
+         "*SENSOR_DEFINE_NODE\n         1\n", "*EOS_GRUNEISEN\n         1\n",
+         "*KEYWORD_ID\nmodel_2024  06-12-2026\n", "*CONTROL_UNITS\n         m        kg         s\n"]
 for k, card in enumerate(NOTED):
     path, r = deck_case(f"noted{k}", card)
     keyword = card.split("\n")[0]

@@ -42,7 +42,8 @@ void DeckTranslator::control(const DeckBlock& b) {
         damping_ = Line{"damping: {mass: " + num(f.real(1, "VALDMP")) + "}", at};
     } else if (k == "CONTROL_UNITS") {
         note(b, b.line,
-             "the deck's numbers are used as they are (fpmshell has no units of its own: they "
+             "ignored: the deck's numbers are used as they are (fpmshell has no units of its own: "
+             "they "
              "must be consistent, as LS-DYNA's must)");
     } else if (k == "CONTROL_SOLUTION") {
         if (const long long soln = f.id(0, "SOLN"); soln != 0)

@@ -59,6 +59,7 @@ const std::vector<CardReader>& card_readers() {
         {"SENSOR_", true, P::References, &T::ignored},
         {"PART_CONTACT", false, P::References, &T::ignored},
         {"COMMENT", false, P::References, &T::ignored},
+        {"KEYWORD_ID", false, P::References, &T::ignored},
         {"DEFINE_BOX", true, P::References, &T::ignored},
         {"DEFINE_COORDINATE", true, P::References, &T::ignored},
     };
@@ -178,6 +179,7 @@ std::string DeckTranslator::ignored_reason(const std::string& k) {
     if (k == "PART_CONTACT")
         return "ignored: contact parameters per part (fpmshell's contact takes each shell's "
                "thickness)";
+    if (k == "KEYWORD_ID") return "ignored: the deck's identification, not a model card";
     return "ignored: only the cards that use it would need it, and fpmshell refuses those";
 }
 
