@@ -557,6 +557,20 @@ path, r = deck_case("standing on the wall", "*RIGIDWALL_PLANAR\n         0\n"
                     "       0.0       0.0       0.0       0.0       0.0       1.0\n")
 check("nodes lying on a planar wall: the deck runs as it is", r.returncode == 0, r.stdout + r.stderr)
 
+# a rigid part held as *MAT_RIGID's CMO = 1 says: CON1 4 (x and y), CON2 7 (every rotation)
+held = two_parts.replace("*PART\nother\n         2         1         1\n",
+                         "*PART\nother\n         2         1         2\n*MAT_RIGID\n"
+                         "         2    7800.0   2.1e+11       0.3\n       1.0       4.0       7.0\n")
+path, r = deck_case("rigid held", "", base=held)
+converted = os.path.join(os.path.dirname(path), "held.yaml")
+c = fpmshell("convert", path, "-o", converted)
+check("*MAT_RIGID CMO 1: the fixed components as the material's fix", c.returncode == 0 and
+      "fix: [ux, uy, rx, ry, rz]" in read(converted), c.stderr)
+path, r = deck_case("rigid local", "", base=held.replace("       1.0       4.0       7.0\n",
+                                                          "      -1.0         3    111000\n"))
+check("*MAT_RIGID CMO -1 (a local system): refused in one sentence", r.returncode == 2 and
+      "CMO -1" in r.stderr and r.stderr.count("\n") == 1, r.stderr)
+
 path, r = deck_case("no termination", "", base=BASE.replace("*CONTROL_TERMINATION\n     0.001\n", ""))
 check("a deck without *CONTROL_TERMINATION is refused", r.returncode == 2 and
       "CONTROL_TERMINATION" in r.stderr, r.stderr)

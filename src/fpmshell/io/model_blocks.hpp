@@ -5,6 +5,7 @@
 // conditions, rigid bodies, contact, damping, output.
 #pragma once
 
+#include <array>
 #include <optional>
 
 #include "fpmshell/io/yaml_access.hpp"
@@ -32,6 +33,8 @@ void read_sections(const YamlValue& v, Model& model);
 // Curves, boundary conditions, loads and initial conditions (model_condition_blocks.cpp).
 
 void read_curves(const YamlValue& v, Model& model);
+/// A `fix` value: `all`, or a non-empty list of ux, uy, uz, rx, ry, rz (true where fixed).
+[[nodiscard]] std::array<bool, 6> fixed_dofs(const YamlValue& fix);
 void read_boundary(const YamlValue& v, Model& model);
 void read_loads(const YamlValue& v, Model& model);
 void read_initial_conditions(const YamlValue& v, Model& model);

@@ -33,8 +33,24 @@ void read_curves(const YamlValue& v, Model& model) {
     }
 }
 
-void read_boundary(const YamlValue& v, Model& model) {
+std::array<bool, 6> fixed_dofs(const YamlValue& fix) {
     static const std::vector<std::string> dofs = {"ux", "uy", "uz", "rx", "ry", "rz"};
+    std::array<bool, 6> fixed{};
+    if (fix.is_scalar()) {
+        if (fix.choice({"all"}) == "all") fixed.fill(true);
+        return fixed;
+    }
+    const auto list = fix.list("degrees of freedom");
+    if (list.empty()) fix.fail("expected `all` or a non-empty list of ux, uy, uz, rx, ry, rz");
+    for (const YamlValue& d : list) {
+        const std::string name = d.choice(dofs);
+        fixed[static_cast<std::size_t>(std::find(dofs.begin(), dofs.end(), name) - dofs.begin())] =
+            true;
+    }
+    return fixed;
+}
+
+void read_boundary(const YamlValue& v, Model& model) {
     // the particles of the sections of rigid materials: a rigid body moves as a whole
     std::vector<std::string> rigid_material(model.nodes.size());
     for (std::size_t e = 0; e < model.triangles.size(); ++e) {
@@ -59,20 +75,7 @@ void read_boundary(const YamlValue& v, Model& model) {
             item.fail(
                 "a boundary condition needs at least one of fix, symmetry or "
                 "prescribe");
-        if (const auto fix = m.find("fix")) {
-            if (fix->is_scalar()) {
-                if (fix->choice({"all"}) == "all") bc.fixed.fill(true);
-            } else {
-                const auto list = fix->list("degrees of freedom");
-                if (list.empty())
-                    fix->fail("expected `all` or a non-empty list of ux, uy, uz, rx, ry, rz");
-                for (const YamlValue& d : list) {
-                    const std::string name = d.choice(dofs);
-                    const auto k = std::find(dofs.begin(), dofs.end(), name) - dofs.begin();
-                    bc.fixed[static_cast<std::size_t>(k)] = true;
-                }
-            }
-        }
+        if (const auto fix = m.find("fix")) bc.fixed = fixed_dofs(*fix);
         if (const auto sym = m.find("symmetry")) {
             const std::string axis = sym->choice({"x", "y", "z"});
             // Plane normal to `axis`: no normal displacement, no rotation about the two

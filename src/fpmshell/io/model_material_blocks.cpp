@@ -151,6 +151,7 @@ void read_materials(const YamlValue& v, Model& model) {
         const std::string t = type.choice(
             {"elastic", "j2_plastic", "johnson_cook", "tabulated", "power_law", "rigid"});
         std::vector<std::string> keys{"type", "density", "youngs_modulus", "poisson_ratio"};
+        if (t == "rigid") keys.push_back("fix");
         if (t == "elastic" || t == "rigid") {
             for (const auto& [key, value] : any.entries())
                 for (const char* plastic :
@@ -182,6 +183,7 @@ void read_materials(const YamlValue& v, Model& model) {
         Material mat;
         mat.name = name;
         mat.rigid = t == "rigid";  // elastic constants, rigid motion (model.hpp)
+        if (const auto fix = m.find("fix")) mat.rigid_fixed = fixed_dofs(*fix);
         mat.type = t == "elastic" || mat.rigid ? MaterialType::Elastic
                    : t == "j2_plastic"         ? MaterialType::J2Plastic
                    : t == "tabulated"          ? MaterialType::Tabulated

@@ -61,6 +61,9 @@ struct Material {
     /// `type: rigid` (an elastic material here): each section of it moves as one rigid body
     /// (solver/nodal_rigid_bodies.hpp) and its elements do not limit the time step
     bool rigid = false;
+    /// rigid: the body's velocity components held at zero, translations along x, y, z then
+    /// rotations about x, y, z (global axes; LS-DYNA's *MAT_RIGID CMO = 1 with CON1, CON2)
+    std::array<bool, 6> rigid_fixed{};
 
     [[nodiscard]] bool plastic() const { return type != MaterialType::Elastic; }
 };

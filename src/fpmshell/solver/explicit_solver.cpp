@@ -386,11 +386,17 @@ void ExplicitSolver::add_scaled_mass() {
 void ExplicitSolver::refresh_contact_masses() {
     if (!contact_ || nodal_rigid_bodies_.empty()) return;
     contact_mass_ = nodal_rigid_bodies_.contact_masses(s_.mass);
-    for (const auto& body : nodal_rigid_bodies_.bodies())
-        for (const Index p : body)
+    const auto& bodies = nodal_rigid_bodies_.bodies();
+    for (std::size_t b = 0; b < bodies.size(); ++b) {
+        // a body held in all six components gives way to no contact (eq. 6.11-6)
+        const auto& fixed = nodal_rigid_bodies_.fixed()[b];
+        const bool held = std::all_of(fixed.begin(), fixed.end(), [](bool f) { return f; });
+        for (const Index p : bodies[b])
             contact_->set_inverse_mass(
-                p, bc_->free_inverse_mass(static_cast<std::size_t>(p),
-                                          contact_mass_[static_cast<std::size_t>(p)]));
+                p, held ? Vec3(Vec3::Zero())
+                        : bc_->free_inverse_mass(static_cast<std::size_t>(p),
+                                                 contact_mass_[static_cast<std::size_t>(p)]));
+    }
 }
 
 ExplicitSolver::StepLengths ExplicitSolver::next_step_lengths(

@@ -24,12 +24,15 @@ Index root_of(std::vector<Index>& parent, Index p) {
 }
 
 /// The groups of particles that move rigidly: the model's constraints, and the particles of each
-/// section of a rigid material (one body per section).
-std::vector<NodalRigidBody> rigid_groups(const Model& model) {
-    std::vector<NodalRigidBody> groups = model.nodal_rigid_bodies;
+/// section of a rigid material (one body per section), with the components each holds fixed.
+std::vector<std::pair<NodalRigidBody, std::array<bool, 6>>> rigid_groups(const Model& model) {
+    std::vector<std::pair<NodalRigidBody, std::array<bool, 6>>> groups;
+    for (const NodalRigidBody& g : model.nodal_rigid_bodies) groups.push_back({g, {}});
     // the particles of each section of a rigid material
     for (std::size_t s = 0; s < model.sections.size(); ++s) {
-        if (!model.materials[static_cast<std::size_t>(model.sections[s].material)].rigid) continue;
+        const Material& material =
+            model.materials[static_cast<std::size_t>(model.sections[s].material)];
+        if (!material.rigid) continue;
         NodalRigidBody body;
         for (std::size_t e = 0; e < model.triangles.size(); ++e)
             if (static_cast<std::size_t>(model.element_section[e]) == s)
@@ -37,7 +40,7 @@ std::vector<NodalRigidBody> rigid_groups(const Model& model) {
                                   model.triangles[e].end());
         std::sort(body.nodes.begin(), body.nodes.end());
         body.nodes.erase(std::unique(body.nodes.begin(), body.nodes.end()), body.nodes.end());
-        if (!body.nodes.empty()) groups.push_back(std::move(body));
+        if (!body.nodes.empty()) groups.push_back({std::move(body), material.rigid_fixed});
     }
     return groups;
 }
@@ -45,12 +48,13 @@ std::vector<NodalRigidBody> rigid_groups(const Model& model) {
 }  // namespace
 
 NodalRigidBodies::NodalRigidBodies(const Model& model) {
-    const std::vector<NodalRigidBody> groups = rigid_groups(model);
+    const auto groups = rigid_groups(model);
     if (groups.empty()) return;
     std::vector<Index> parent(model.nodes.size());
     std::iota(parent.begin(), parent.end(), Index{0});
     std::vector<std::uint8_t> member(model.nodes.size(), 0);
-    for (const NodalRigidBody& group : groups) {
+    for (const auto& [group, unused] : groups) {
+        (void)unused;
         for (const Index p : group.nodes) {
             member[static_cast<std::size_t>(p)] = 1;
             const Index a = root_of(parent, group.nodes.front()), b = root_of(parent, p);
@@ -67,6 +71,13 @@ NodalRigidBodies::NodalRigidBodies(const Model& model) {
             bodies_.emplace_back();
         }
         bodies_[static_cast<std::size_t>(body_of_root[r])].push_back(static_cast<Index>(p));
+    }
+    // a body holds fixed every component that a group merged into it holds fixed
+    fixed_.assign(bodies_.size(), {});
+    for (const auto& [group, fixed] : groups) {
+        const auto b = static_cast<std::size_t>(
+            body_of_root[static_cast<std::size_t>(root_of(parent, group.nodes.front()))]);
+        for (std::size_t k = 0; k < 6; ++k) fixed_[b][k] = fixed_[b][k] || fixed[k];
     }
 }
 
@@ -95,7 +106,10 @@ void NodalRigidBodies::make_rigid(ParticleState& s, Real dt_new) const {
             momentum += s.mass[p] * s.v[p];
         }
         centre /= mass;
-        const Vec3 velocity = momentum / mass;
+        const std::array<bool, 6>& fixed = fixed_[static_cast<std::size_t>(b)];
+        Vec3 velocity = momentum / mass;
+        for (int k = 0; k < 3; ++k)
+            if (fixed[static_cast<std::size_t>(k)]) velocity[k] = 0;  // eq. 6.11-6
         // angular momentum and inertia tensor about the centre (eq. 6.11-2); a shell particle
         // turns in its tangent plane only, so its own inertia has no part about its normal
         Vec3 spin = Vec3::Zero();
@@ -114,13 +128,27 @@ void NodalRigidBodies::make_rigid(ParticleState& s, Real dt_new) const {
         }
         // omega = I^+ L (eq. 6.11-3): the pseudo-inverse leaves out a rotation no particle's
         // mass or inertia resists (two welded particles on the line of their normals cannot
-        // turn each other about it), which carries no angular momentum either
+        // turn each other about it), which carries no angular momentum either. Fixed rotation
+        // axes (eq. 6.11-6): the free axes' block of I against their part of L; the fixed rows
+        // and columns become the largest inertia times the identity, and their omega is 0.
+        if (fixed[3] || fixed[4] || fixed[5]) {
+            const Real scale = std::max(inertia.trace(), Real(0));
+            for (int k = 0; k < 3; ++k) {
+                if (!fixed[static_cast<std::size_t>(3 + k)]) continue;
+                inertia.row(k).setZero();
+                inertia.col(k).setZero();
+                inertia(k, k) = scale;
+                spin[k] = 0;
+            }
+        }
         const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(inertia);
         const Vec3 values = eigen.eigenvalues();
         const Real floor = 1e-12 * std::max(values.maxCoeff(), Real(0));
         Vec3 projected = eigen.eigenvectors().transpose() * spin;
         for (int k = 0; k < 3; ++k) projected[k] = values[k] > floor ? projected[k] / values[k] : 0;
-        const Vec3 omega = eigen.eigenvectors() * projected;
+        Vec3 omega = eigen.eigenvectors() * projected;
+        for (int k = 0; k < 3; ++k)
+            if (fixed[static_cast<std::size_t>(3 + k)]) omega[k] = 0;  // exactly
         // each particle moves with the body, the rotation over the step exact (eq. 6.11-4)
         const Real angle = dt_new * omega.norm();
         const Eigen::Matrix3d turn =

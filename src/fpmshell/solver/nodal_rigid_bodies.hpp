@@ -6,6 +6,7 @@
 // applied exactly so that the body keeps its shape to rounding.
 #pragma once
 
+#include <array>
 #include <vector>
 
 #include "fpmshell/core/types.hpp"
@@ -25,19 +26,24 @@ public:
     [[nodiscard]] bool empty() const { return bodies_.empty(); }
     /// The bodies after merging, each a sorted list of particles.
     [[nodiscard]] const std::vector<std::vector<Index>>& bodies() const { return bodies_; }
+    /// Per body, its velocity components held at zero (x, y, z, then rotations about them):
+    /// those of the rigid materials merged into it (eq. 6.11-6).
+    [[nodiscard]] const std::vector<std::array<bool, 6>>& fixed() const { return fixed_; }
 
     /// The mass the contact gives each particle (eq. 6.11-5): that of its body, or its own
     /// (`mass`) outside the bodies.
     [[nodiscard]] std::vector<Real> contact_masses(const std::vector<Real>& mass) const;
 
-    /// Eqs. 6.11-1 to 6.11-4: the half-step velocities v^{n+1/2} and the tangent-plane angular
-    /// velocities of every body's particles become one rigid motion with their linear and
-    /// angular momentum about the centre of mass at x^n, such that x^{n+1} = x^n + dt v is that
-    /// rigid motion exactly. The bodies run in parallel (each writes its own particles).
+    /// Eqs. 6.11-1 to 6.11-4 (6.11-6 for a body with fixed components): the half-step velocities
+    /// v^{n+1/2} and the tangent-plane angular velocities of every body's particles become one
+    /// rigid motion with their linear and angular momentum about the centre of mass at x^n, such
+    /// that x^{n+1} = x^n + dt v is that rigid motion exactly. The bodies run in parallel (each
+    /// writes its own particles).
     void make_rigid(ParticleState& s, Real dt_new) const;
 
 private:
     std::vector<std::vector<Index>> bodies_;
+    std::vector<std::array<bool, 6>> fixed_;
 };
 
 }  // namespace fpmshell

@@ -274,6 +274,55 @@ TEST(NodalRigidBodies, ASectionOfARigidMaterialMovesAsOneBodyAndSetsNoStep) {
     EXPECT_LT(std::abs(s.energy().error()), 1e-3);
 }
 
+// A rigid material's fixed components (eq. 6.11-6, LS-DYNA's *MAT_RIGID CMO = 1): held in all
+// six, the rigid half of the loaded strip does not move at all and the clamped-and-held strip
+// keeps its energy balance; held in its translations only, its centre of mass stays where it
+// is while it turns with the bending inner half.
+TEST(NodalRigidBodies, ARigidMaterialHoldsTheComponentsItFixes) {
+    const auto outer_particles = [](const Model& m) {
+        std::vector<std::size_t> outer;
+        for (std::size_t p = 0; p < m.nodes.size(); ++p)
+            if (m.nodes[p].x() > 1 - 1e-9) outer.push_back(p);
+        return outer;
+    };
+    Model held = half_rigid_strip(40, true);
+    held.materials[1].rigid_fixed.fill(true);
+    ExplicitSolver s(held);
+    while (s.time() < 0.02) s.step(1e30);
+    const NodalRigidBodies bodies(held);
+    ASSERT_EQ(bodies.fixed().size(), 1u);
+    EXPECT_TRUE(bodies.fixed()[0][0] && bodies.fixed()[0][5]);
+    for (const std::size_t p : outer_particles(held)) {
+        EXPECT_EQ(s.state().x[p], held.nodes[p]);  // exactly: a zero velocity and no turn
+        EXPECT_EQ(s.state().v[p], Vec3::Zero());
+    }
+    EXPECT_LT(std::abs(s.energy().error()), 1e-3);
+
+    Model pinned = half_rigid_strip(40, true);
+    for (std::size_t k = 0; k < 3; ++k) pinned.materials[1].rigid_fixed[k] = true;
+    ExplicitSolver t(pinned);
+    const std::vector<std::size_t> outer = outer_particles(pinned);
+    const auto centre = [&](const std::vector<Vec3>& x) {
+        Vec3 c = Vec3::Zero();
+        Real mass = 0;
+        for (const std::size_t p : outer) {
+            c += t.state().mass[p] * x[p];
+            mass += t.state().mass[p];
+        }
+        return Vec3(c / mass);
+    };
+    const Vec3 start = centre(pinned.nodes);
+    Real turned = 0;
+    while (t.time() < 0.02) {
+        t.step(1e30);
+        // the centre of mass at x^n is where the body turns about: it stays to rounding
+        EXPECT_LT((centre(t.state().x) - start).norm(), 1e-12);
+    }
+    for (const std::size_t p : outer)
+        turned = std::max(turned, std::abs(t.state().x[p].z() - pinned.nodes[p].z()));
+    EXPECT_GT(turned, 1e-6);  // it turned
+}
+
 TEST(NodalRigidBodies, ARigidPartOfLightParticlesPushesWithItsWholeMassInContact) {
     // a rigid plate (1 x 1 m, 20 x 20 squares: 441 particles of 0.18 kg, 78 kg in all) moving up
     // at 1 m/s under a free elastic triangle of 1.56 kg lying 0.04 m above it

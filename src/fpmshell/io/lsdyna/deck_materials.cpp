@@ -203,10 +203,25 @@ void DeckTranslator::material(const DeckBlock& b) {
         mid = f.id(0, "MID");
         m.keys.push_back("type: rigid");
         elastic(f, f.real(2, "E"), f.real(3, "PR"));
-        if (g.real(0, "CMO") != 0)
+        const long long cmo = g.id(0, "CMO");
+        if (cmo == -1)
             g.fail(
-                "CMO: constraints on a rigid part's motion are not supported (0 only: the "
-                "part moves freely)");
+                "CMO -1: constraints in a local coordinate system are not supported (CMO 1 "
+                "constrains the global directions)");
+        if (cmo != 0 && cmo != 1) g.fail("CMO must be 0, 1 or -1");
+        if (cmo == 1) {  // CON1, CON2: 1 x, 2 y, 3 z, 4 x y, 5 y z, 6 z x, 7 all
+            static const char* const axes[8] = {"", "x", "y", "z", "xy", "yz", "zx", "xyz"};
+            std::string fix;
+            for (const auto& [field, prefix] : {std::pair{1, 'u'}, std::pair{2, 'r'}}) {
+                const long long code =
+                    g.id(static_cast<std::size_t>(field), field == 1 ? "CON1" : "CON2");
+                if (code < 0 || code > 7)
+                    g.fail(std::string(field == 1 ? "CON1" : "CON2") + " must be 0 to 7");
+                for (const char* a = axes[code]; *a != '\0'; ++a)
+                    fix += (fix.empty() ? "" : ", ") + std::string{prefix, *a};
+            }
+            if (!fix.empty()) m.keys.push_back("fix: [" + fix + "]");
+        }
         m.at = {&b, f.line()};
     } else {
         refuse(b, unsupported_reason(b.keyword));
