@@ -137,6 +137,8 @@ def main():
             deck["name"], source, deck["what"], elements if elements is not None else "",
             deck["scope"], text, "%.1f" % wall if result == "ran" else "", "yes" if ok else "**no**"))
     lines += ["", "%d of %d decks as promised." % (len(rows) - wrong, len(rows)), ""]
+    for note in json.load(open(args.manifest)).get("notes", []):
+        lines += [note, ""]
     with open(args.output, "w") as f:
         f.write("\n".join(lines))
     print("wrote %s: %d of %d as promised" % (args.output, len(rows) - wrong, len(rows)))
