@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <map>
 #include <set>
+#include <string_view>
 
 #include "fpmshell/core/errors.hpp"
 #include "fpmshell/core/text.hpp"
@@ -19,10 +20,16 @@ using namespace text_mesh;
 enum class Format { Standard, Long, WideId };  // no suffix, '+', '%'
 
 std::vector<std::string> columns(const std::string& line, const std::vector<std::size_t>& widths) {
+    const auto blank = [](char c) { return c == ' ' || c == '\t' || c == '\r'; };
     std::vector<std::string> out;
+    out.reserve(widths.size());
     std::size_t pos = 0;
     for (const std::size_t w : widths) {
-        out.push_back(pos < line.size() ? trim(line.substr(pos, w)) : "");
+        // the column, trimmed in place (no copy of the untrimmed field)
+        std::string_view f = pos < line.size() ? std::string_view(line).substr(pos, w) : "";
+        while (!f.empty() && blank(f.front())) f.remove_prefix(1);
+        while (!f.empty() && blank(f.back())) f.remove_suffix(1);
+        out.emplace_back(f);
         pos += w;
     }
     return out;
@@ -68,8 +75,9 @@ public:
         raw_.path = main_path_;
         // The triangles in element-number order, whatever order the cards and included files
         // come in (LS-DYNA reads a deck as a whole): a reordered deck is the same model.
-        std::stable_sort(raw_.shells.begin(), raw_.shells.end(),
-                         [](const auto& a, const auto& b) { return a.id < b.id; });
+        const auto by_id = [](const auto& a, const auto& b) { return a.id < b.id; };
+        if (!std::is_sorted(raw_.shells.begin(), raw_.shells.end(), by_id))
+            std::stable_sort(raw_.shells.begin(), raw_.shells.end(), by_id);
         for (const auto& [name, parts] : part_sets_) {  // the parts' elements, known by now
             auto& members = raw_.element_sets[name];
             for (const long long pid : parts) {
@@ -154,7 +162,9 @@ private:
             block_ == Block::Node || (block_ == Block::Shell && card_ % cards_per_element_ == 0) ||
             ((block_ == Block::NodeSet || block_ == Block::ShellSet || block_ == Block::PartSet) &&
              !(title_ && card_ == 0));
-        if (record_start && trim(line).empty()) return;
+        if (record_start && std::all_of(line.begin(), line.end(),
+                                        [](char c) { return c == ' ' || c == '\t' || c == '\r'; }))
+            return;
         const int index = card_++;
         switch (block_) {
             case Block::Skip:

@@ -5,6 +5,7 @@
 #include <cctype>
 #include <charconv>
 #include <cmath>
+#include <string_view>
 
 #include "fpmshell/core/errors.hpp"
 #include "fpmshell/core/text.hpp"
@@ -45,8 +46,20 @@ std::vector<std::string> split_blanks(const std::string& s) {
     return out;
 }
 
+namespace {
+
+/// The field without its leading and trailing blanks (no copy: the readers parse millions).
+std::string_view trimmed(std::string_view f) {
+    const auto blank = [](char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\n'; };
+    while (!f.empty() && blank(f.front())) f.remove_prefix(1);
+    while (!f.empty() && blank(f.back())) f.remove_suffix(1);
+    return f;
+}
+
+}  // namespace
+
 bool parse_id(const std::string& field, long long& value) {
-    const std::string f = trim(field);
+    const std::string_view f = trimmed(field);
     if (f.empty()) return false;
     const char* first = f.data() + (f.front() == '+' ? 1 : 0);
     const char* last = f.data() + f.size();
@@ -55,18 +68,26 @@ bool parse_id(const std::string& field, long long& value) {
 }
 
 bool parse_real(const std::string& field, Real& value) {
-    std::string f = trim(field);
-    if (f.empty()) return false;
-    for (char& c : f)
-        if (c == 'd' || c == 'D') c = 'e';
-    // Fortran's exponent without its letter, as fixed-column writers save a column: 2.00000-3
-    if (f.find_first_of("eE") == std::string::npos)
-        if (const auto sign = f.find_last_of("+-");
-            sign != std::string::npos && sign > 0 &&
-            (std::isdigit(static_cast<unsigned char>(f[sign - 1])) || f[sign - 1] == '.'))
-            f.insert(sign, 1, 'e');
-    const char* first = f.data() + (f.front() == '+' ? 1 : 0);
-    const char* last = f.data() + f.size();
+    const std::string_view view = trimmed(field);
+    if (view.empty()) return false;
+    // the common case, a plain decimal or E exponent, parsed in place
+    const bool letters = view.find_first_of("dDeE") != std::string_view::npos;
+    const bool inner_sign = view.find_first_of("+-", 1) != std::string_view::npos;
+    std::string f;
+    if (letters || inner_sign) {
+        f.assign(view);
+        for (char& c : f)
+            if (c == 'd' || c == 'D') c = 'e';
+        // Fortran's exponent without its letter, as fixed-column writers save a column: 2.00000-3
+        if (f.find_first_of("eE") == std::string::npos)
+            if (const auto sign = f.find_last_of("+-");
+                sign != std::string::npos && sign > 0 &&
+                (std::isdigit(static_cast<unsigned char>(f[sign - 1])) || f[sign - 1] == '.'))
+                f.insert(sign, 1, 'e');
+    }
+    const std::string_view text = f.empty() ? view : std::string_view(f);
+    const char* first = text.data() + (text.front() == '+' ? 1 : 0);
+    const char* last = text.data() + text.size();
     const auto [ptr, ec] = std::from_chars(first, last, value, std::chars_format::general);
     return ec == std::errc() && ptr == last && std::isfinite(value);
 }
