@@ -97,7 +97,6 @@ private:
             const bool blank = trim(text).empty();
             if (blank && (block == nullptr || pending != Pending::None)) continue;
             if (!blank && text.front() == '*') {
-                drop_trailing_blank_cards(block);
                 close_include();
                 const std::string keyword = start(text, path, number, block, local);
                 pending = keyword == "INCLUDE"                 ? Pending::Include
@@ -155,7 +154,6 @@ private:
             fail_at(path, number,
                     "*INCLUDE: the file name '" + name + "' goes on past the file's end (' +')");
         close_include();
-        drop_trailing_blank_cards(block);
         open_.pop_back();
     }
 
@@ -188,14 +186,6 @@ private:
         for (const auto& f : search_folders(from))
             s += (s.empty() ? "'" : ", '") + (f.empty() ? std::string(".") : f.string()) + "'";
         return s;
-    }
-
-    /// Blank lines at a block's end separate it from the next keyword; inside, a blank line is
-    /// a card whose fields all take their defaults (a part's heading, a material's optional
-    /// card), as LS-DYNA reads it.
-    static void drop_trailing_blank_cards(DeckBlock* block) {
-        while (block != nullptr && !block->cards.empty() && trim(block->cards.back().text).empty())
-            block->cards.pop_back();
     }
 
     /// Starts the block of a keyword line; returns the keyword, or for the keywords read here

@@ -22,8 +22,8 @@ std::string write_deck(const std::string& name, const std::string& text) {
 
 // Blocks keep their keyword (upper case, without the format suffix), file, line and data cards;
 // comments are dropped; a blank line inside a block is a card of defaults (a part's heading may
-// be blank), blank lines at a block's end are dropped; *KEYWORD, *PARAMETER and *END make no
-// block.
+// be blank, a weld's second card left blank), at its end too; *KEYWORD, *PARAMETER and *END make
+// no block.
 TEST(KeywordDeck, ReadsBlocksAndParameters) {
     const std::string path = write_deck("blocks", R"(*KEYWORD
 $ a comment
@@ -52,7 +52,8 @@ Two blocks
     EXPECT_EQ(deck.blocks[1].cards[1].line, 9);
     EXPECT_EQ(deck.blocks[2].keyword, "CONTROL_TERMINATION");
     EXPECT_EQ(deck.blocks[2].format, DeckFormat::Standard);
-    EXPECT_EQ(deck.blocks[2].cards.size(), 1U);  // the blank line before *END is not a card
+    ASSERT_EQ(deck.blocks[2].cards.size(), 2U);  // the blank line before *END: a card of defaults
+    EXPECT_TRUE(deck.blocks[2].cards[1].blank());
     EXPECT_EQ(deck.parameters.at("THICK"), "R0.002");
     EXPECT_EQ(deck.parameters.at("COUNT"), "I4");
     std::filesystem::remove(path);

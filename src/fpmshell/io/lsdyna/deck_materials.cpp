@@ -38,7 +38,8 @@ void DeckTranslator::section_shell(const DeckBlock& b) {
                ": fpmshell integrates through the thickness with 2, 3 or 5 points");
     if (qr != 0) f.fail("QR/IRID: only the default rule (0) is supported");
     const Real t1 = t.real(0, "T1");
-    if (!(t1 > 0)) t.fail("T1 must be a thickness > 0");
+    // 0: the elements give their thicknesses (*ELEMENT_SHELL_THICKNESS), checked per part
+    if (!(t1 >= 0)) t.fail("T1 must be a thickness >= 0");
     for (std::size_t k = 1; k < 4; ++k) {
         const Real tk = t.real(k, "T2, T3, T4");
         if (tk != 0 && tk != t1)
@@ -357,6 +358,10 @@ void DeckTranslator::write_sections(std::vector<Line>& out) {
                       "MID " + std::to_string(part.material) + ": no *MAT card defines it");
         Real thickness = s->second.thickness;
         if (!e.thickness.empty()) thickness = *e.thickness.begin();
+        if (!(thickness > 0))
+            deck_fail(*s->second.at.block, s->second.at.line,
+                      "T1 is 0 and the elements of part " + std::to_string(pid) +
+                          " give no thickness of their own (*ELEMENT_SHELL_THICKNESS)");
         int points = s->second.points;
         if (m->second.plastic && points == 2)
             deck_fail(*s->second.at.block, s->second.at.line,
