@@ -571,6 +571,17 @@ path, r = deck_case("rigid local", "", base=held.replace("       1.0       4.0  
 check("*MAT_RIGID CMO -1 (a local system): refused in one sentence", r.returncode == 2 and
       "CMO -1" in r.stderr and r.stderr.count("\n") == 1, r.stderr)
 
+# a plastic section with NIP left blank: LS-DYNA's default, two Gauss points, read as it is
+plastic = BASE.replace("*SECTION_SHELL\n         1         2         0         2\n",
+                       "*SECTION_SHELL\n         1         2\n").replace(
+    "*MAT_ELASTIC\n         1    7800.0   2.1e+11       0.3\n",
+    "*MAT_PLASTIC_KINEMATIC\n         1    7800.0   2.1e+11       0.3   2.5e+08   1.0e+09\n")
+assert plastic != BASE
+path, r = deck_case("plastic nip blank", "", base=plastic)
+check("a plastic section with NIP blank: two Gauss points, noted", r.returncode == 0 and
+      "2 x 3 points" in r.stdout and "two Gauss points, as LS-DYNA integrates it" in r.stdout,
+      r.stdout + r.stderr)
+
 path, r = deck_case("no termination", "", base=BASE.replace("*CONTROL_TERMINATION\n     0.001\n", ""))
 check("a deck without *CONTROL_TERMINATION is refused", r.returncode == 2 and
       "CONTROL_TERMINATION" in r.stderr, r.stderr)

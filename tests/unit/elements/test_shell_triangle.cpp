@@ -206,3 +206,48 @@ TEST(ShellTriangle, PlasticElementReducesToElasticBelowYieldAndYieldsInBending) 
     // the yielded moments are smaller than the elastic ones
     EXPECT_LT(ll.bending_moment.norm(), le.bending_moment.norm());
 }
+
+// The fully plastic moment each thickness rule integrates (theory.md §4.5, §7.3): a flat
+// element bent about y step by step (kxx grows, kyy = 0, no membrane strain) far beyond yield
+// in a perfectly plastic J2 material reaches at every point off the mid-surface the limit of
+// plane strain in y, sigma_xx = 2 sigma_y / sqrt(3) (sigma_yy = sigma_xx / 2), so
+//   M_xx = h^2 / 4 * sum_k w_k |zeta_k| * 2 sigma_y / sqrt(3),
+// the closed form of the rule: 2 Gauss points (LS-DYNA's default NIP 2) 2 / sqrt(3) of the exact
+// M_p = h^2 / 4 * 2 sigma_y / sqrt(3), 3 Lobatto points 2 / 3 of it, 5 Lobatto points 0.913.
+TEST(ShellTriangle, EachThicknessRuleIntegratesItsFullyPlasticMoment) {
+    const std::array<Vec3, 3> base{Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0.3, 0.8, 0)};
+    const Real h = 0.05, e = 200e9, nu = 0.3, sigma_y = 250e6;
+    // an increment of uniform curvature kxx = k, as in SectionResultantsMatchPlateTheory
+    const Real k = 2e-3 * sigma_y / (e * h);  // 1/1000 of the surface's yield curvature per step
+    const Real c = (-k / 2 * 0.09 + k / 2 * 0.3) / 0.8;
+    std::array<Vec3, 3> dth;
+    for (int i = 0; i < 3; ++i) {
+        const Real x = base[i].x();
+        dth[i] = Vec3(-c, -(-k * x + k / 2), 0);
+    }
+    FlowStress flow;
+    flow.yield_stress = sigma_y;  // perfectly plastic
+    const J2Plastic steel(e, nu, flow, RateFactor{}, 1.0);
+    for (const int tp : {2, 3, 5}) {
+        const ShellRule r = rule(BendingKernel::Dkt, tp);
+        Real sum = 0;  // sum_k w_k |zeta_k|
+        for (const ThicknessPoint& p : r.through) sum += p.weight * std::abs(p.zeta);
+        const Real closed_form = h * h / 4 * sum * 2 * sigma_y / std::sqrt(3.0);
+        std::vector<MaterialPoint> points(static_cast<std::size_t>(r.n_points()));
+        ShellTriangleLoads loads;
+        // 40 000 steps: 40 times the surface's yield curvature, 20 times that of the Gauss
+        // points (zeta = 1/sqrt(3)), where the stress is within 1e-6 of its limit
+        for (int step = 0; step < 40000; ++step)
+            loads = shell_triangle_loads(reverse_motion(base, base, dth, k_no_drill_axes), r, steel,
+                                         points, 0.0);
+        EXPECT_NEAR(loads.bending_moment(0), closed_form, 1e-4 * closed_form) << tp << " points";
+    }
+    // the rules' own sums: 2 / sqrt(3), 2 / 3, 2 (49/90 sqrt(3/7) + 1/10)
+    Real gauss = 0, lobatto3 = 0, lobatto5 = 0;
+    for (const ThicknessPoint& p : thickness_rule(2)) gauss += p.weight * std::abs(p.zeta);
+    for (const ThicknessPoint& p : thickness_rule(3)) lobatto3 += p.weight * std::abs(p.zeta);
+    for (const ThicknessPoint& p : thickness_rule(5)) lobatto5 += p.weight * std::abs(p.zeta);
+    EXPECT_NEAR(gauss, 2 / std::sqrt(3.0), 1e-15);
+    EXPECT_NEAR(lobatto3, 2.0 / 3.0, 1e-15);
+    EXPECT_NEAR(lobatto5, 2 * (49.0 / 90.0 * std::sqrt(3.0 / 7.0) + 0.1), 1e-15);
+}
