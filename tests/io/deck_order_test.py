@@ -46,10 +46,11 @@ def inline(path):
     while k < len(lines):
         line = lines[k]
         if line.strip().upper() == "*INCLUDE":
-            k += 1
-            while lines[k].startswith("$"):
+            # every file name up to the next keyword (an *INCLUDE may list several)
+            while k + 1 < len(lines) and not lines[k + 1].startswith("*"):
                 k += 1
-            out += inline(os.path.join(os.path.dirname(path), lines[k].strip()))
+                if lines[k].strip() and not lines[k].startswith("$"):
+                    out += inline(os.path.join(os.path.dirname(path), lines[k].strip()))
         else:
             out.append(line)
         k += 1
