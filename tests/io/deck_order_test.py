@@ -26,16 +26,8 @@ import sys
 FPM, WORK = sys.argv[1], sys.argv[2]
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 DECKS = os.path.join(ROOT, "examples", "decks")
-failures = []
-passed = 0
-
-
-def check(name, ok, detail=""):
-    global passed
-    if ok:
-        passed += 1
-    else:
-        failures.append(f"{name}: {detail}")
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from check_tally import check, finish  # noqa: E402
 
 
 def inline(path):
@@ -162,7 +154,4 @@ for name in sorted(d for d in os.listdir(DECKS) if os.path.isdir(os.path.join(DE
         check(f"{name} {variant}: the same history.csv bytes", h == reference_history,
               h if h.startswith("run failed") else "the files differ")
 
-print(f"{passed} checks passed, {len(failures)} failed")
-for f in failures:
-    print("FAILED: " + f[:3000])
-sys.exit(1 if failures else 0)
+sys.exit(finish())

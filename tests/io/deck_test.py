@@ -19,16 +19,8 @@ import sys
 FPM, WORK = sys.argv[1], sys.argv[2]
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 DECKS = os.path.join(ROOT, "examples", "decks")
-failures = []
-passed = 0
-
-
-def check(name, ok, detail=""):
-    global passed
-    if ok:
-        passed += 1
-    else:
-        failures.append(f"{name}: {detail}")
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from check_tally import check, finish  # noqa: E402
 
 
 def fpmshell(*args):
@@ -586,7 +578,4 @@ path, r = deck_case("no termination", "", base=BASE.replace("*CONTROL_TERMINATIO
 check("a deck without *CONTROL_TERMINATION is refused", r.returncode == 2 and
       "CONTROL_TERMINATION" in r.stderr, r.stderr)
 
-print(f"{passed} checks passed, {len(failures)} failed")
-for f in failures:
-    print("FAILED:", f)
-sys.exit(1 if failures else 0)
+sys.exit(finish())

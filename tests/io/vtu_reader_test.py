@@ -20,8 +20,8 @@ from vtkmodules.util.numpy_support import vtk_to_numpy
 from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridReader
 
 FPM, WORK = sys.argv[1], sys.argv[2]
-failures = []
-passed = 0
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from check_tally import check, finish  # noqa: E402
 
 MODEL = """title: clamped plate under a pressure pulse, yielding
 mesh: {generator: plate, length_x: 0.2, length_y: 0.1, nx: 6, ny: 3}
@@ -54,12 +54,6 @@ FORMATS = {  # name: keys added to the output block (none: the default)
 }
 
 
-def check(name, ok, detail=""):
-    global passed
-    if ok:
-        passed += 1
-    else:
-        failures.append(f"{name}: {detail}")
 
 
 def run(name, output_keys):
@@ -152,10 +146,7 @@ def main():
     check("the pulse yields the plate (plastic strain in the last frame)",
           last[2][("cell", "plastic_strain_top")][1].max() > 0)
 
-    for f in failures:
-        print("FAIL", f)
-    print(f"{passed} passed, {len(failures)} failed")
-    return 1 if failures else 0
+    return finish()
 
 
 if __name__ == "__main__":
