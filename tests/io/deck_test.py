@@ -270,14 +270,17 @@ rigid_mesh = os.path.join(WORK, "rigid_part_mesh", "clamped_beam_mesh.k")
 os.makedirs(os.path.dirname(rigid_mesh), exist_ok=True)
 with open(rigid_mesh, "w") as f:
     f.write("\n".join(mesh_lines) + "\n")
-beam_section = "  - {elements: all, material: al6061, thickness: 0.005, thickness_points: 3}\n"
+beam_section = ("  - {elements: all, material: al6061, thickness: 0.005, thickness_points: 3, "
+                "thickness_rule: gauss}\n")
 assert "*BOUNDARY_SPC_SET" in beam_deck and beam_section in beam_twin and "sections:" in beam_twin
 rigid_deck = beam_deck.replace("*BOUNDARY_SPC_SET", (
     "*PART\nhammer\n2,2,2\n*SECTION_SHELL\n2,16,,3\n0.005,0.005,0.005,0.005\n"
     "*MAT_RIGID\n         2    7800.0   2.1e+11       0.3\n*BOUNDARY_SPC_SET"))
 rigid_twin = beam_twin.replace(beam_section, (
-    "  - {elements: part_1, material: al6061, thickness: 0.005, thickness_points: 3}\n"
-    "  - {elements: part_2, material: hammer, thickness: 0.005, thickness_points: 3}\n")).replace(
+    "  - {elements: part_1, material: al6061, thickness: 0.005, thickness_points: 3, "
+    "thickness_rule: gauss}\n"
+    "  - {elements: part_2, material: hammer, thickness: 0.005, thickness_points: 3, "
+    "thickness_rule: gauss}\n")).replace(
     "\nsections:", "  hammer: {type: rigid, density: 7800, youngs_modulus: 2.1e11, poisson_ratio: 0.3}\n"
     "\nsections:")
 deck_against_twin("rigid part", os.path.join(WORK, "rigid_part"), rigid_mesh, rigid_deck, rigid_twin)
@@ -318,7 +321,7 @@ c = fpmshell("check", os.path.join(DECKS, "tube_crush", "tube_crush.k"))
 out = c.stdout
 check("check: exit 0", c.returncode == 0, c.stderr)
 for expected in ("material mat_1: johnson_cook", "section 0: 384 elements, material mat_1, "
-                 "thickness 0.001, 5 x 3 points", "rigid body rigidwall1", "contact self over 384",
+                 "thickness 0.001, 5 Gauss x 3 points", "rigid body rigidwall1", "contact self over 384",
                  "note: ", "*HOURGLASS: ignored", "192 quadrangles split", "*MAT_JOHNSON_COOK"):
     check(f"check prints '{expected}'", expected in out, out)
 
@@ -571,7 +574,7 @@ plastic = BASE.replace("*SECTION_SHELL\n         1         2         0         2
 assert plastic != BASE
 path, r = deck_case("plastic nip blank", "", base=plastic)
 check("a plastic section with NIP blank: two Gauss points, noted", r.returncode == 0 and
-      "2 x 3 points" in r.stdout and "two Gauss points, as LS-DYNA integrates it" in r.stdout,
+      "2 Gauss x 3 points" in r.stdout and "two Gauss points, as LS-DYNA integrates it" in r.stdout,
       r.stdout + r.stderr)
 
 path, r = deck_case("no termination", "", base=BASE.replace("*CONTROL_TERMINATION\n     0.001\n", ""))

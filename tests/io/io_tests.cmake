@@ -23,3 +23,11 @@ add_test(NAME io.deck_card_order
          COMMAND ${FPMSHELL_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/io/deck_order_test.py
                  $<TARGET_FILE:fpmshell> ${CMAKE_BINARY_DIR}/deck_order_test_work)
 set_tests_properties(io.deck_card_order PROPERTIES LABELS io TIMEOUT ${_timeout_300s})
+
+# The rules through the thickness of decks: NIP (Gauss), *CONTROL_SHELL INTGRD (Lobatto),
+# *INTEGRATION_SHELL (user rules) against YAML twins, and their refusals
+# (tests/io/deck_rules_test.py).
+add_test(NAME io.deck_thickness_rules
+         COMMAND ${FPMSHELL_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/io/deck_rules_test.py
+                 $<TARGET_FILE:fpmshell> ${CMAKE_BINARY_DIR}/deck_rules_test_work)
+set_tests_properties(io.deck_thickness_rules PROPERTIES LABELS io TIMEOUT ${_timeout_300s})

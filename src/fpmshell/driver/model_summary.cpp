@@ -36,12 +36,18 @@ std::string model_summary(const Model& model) {
                            mat.density, mat.youngs_modulus, mat.poisson_ratio);
     std::vector<std::size_t> section_elements(model.sections.size(), 0);
     for (const Index s : model.element_section) ++section_elements[static_cast<std::size_t>(s)];
+    static constexpr const char* rule_names[] = {"", "Gauss", "Lobatto", "user"};
     for (std::size_t s = 0; s < model.sections.size(); ++s) {
         const Section& sec = model.sections[s];
         out += fmt::format(
-            "\nsection {}: {} elements, material {}, thickness {:.6g}, {} x {} points", s,
+            "\nsection {}: {} elements, material {}, thickness {:.6g}, {} {} x {} points", s,
             section_elements[s], model.materials[static_cast<std::size_t>(sec.material)].name,
-            sec.thickness, sec.thickness_points, sec.inplane_points);
+            sec.thickness, sec.thickness_points,
+            rule_names[static_cast<int>(
+                sec.thickness_rule == ThicknessRule::ByCount
+                    ? (sec.thickness_points <= 2 ? ThicknessRule::Gauss : ThicknessRule::Lobatto)
+                    : sec.thickness_rule)],
+            sec.inplane_points);
     }
     out += fmt::format("\nconditions {} boundary, {} loads, {} initial velocities, {} curves",
                        model.boundary.size(), model.loads.size(), model.initial_conditions.size(),

@@ -71,9 +71,9 @@ struct YieldSurfaces {
 /// No return mapping: a lane with a yielding point is reported invalid instead.
 struct NoReturnMapping {};
 
-/// The largest number of points of a section the block kernel takes (7 in-plane x 5 through
-/// the thickness, the largest rule of quadrature.hpp).
-inline constexpr std::size_t k_max_block_points = 35;
+/// The largest number of points of a section the block kernel takes (7 in-plane x 10 through
+/// the thickness, the largest rules of quadrature.hpp).
+inline constexpr std::size_t k_max_block_points = 7 * k_max_thickness_points;
 
 /// The stresses of the points follow from the elastic trial (and, in a J2 section, the
 /// yield check and return mapping) inside the kernel.

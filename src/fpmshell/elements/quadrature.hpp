@@ -22,7 +22,15 @@ struct ThicknessPoint {
 
 /// 3-point (degree 2) or 7-point (degree 5, Radon) rule, theory.md §4.5 table.
 [[nodiscard]] std::span<const TrianglePoint> triangle_rule(int n_points);
-/// 2-point Gauss, or 3- / 5-point Lobatto (surface points zeta = +-1 included).
+/// The most points a rule through the thickness has (LS-DYNA's Gauss and Lobatto rules: 10).
+inline constexpr int k_max_thickness_points = 10;
+
+/// Gauss-Legendre through the thickness, 1 to 10 points (theory.md §4.5; LS-DYNA's NIP).
+[[nodiscard]] std::span<const ThicknessPoint> gauss_thickness_rule(int n_points);
+/// Gauss-Lobatto, 3 to 10 points: the surfaces zeta = +-1 included, so they yield first.
+[[nodiscard]] std::span<const ThicknessPoint> lobatto_thickness_rule(int n_points);
+/// The default rule of a number of points: Gauss for 1 and 2, Lobatto for 3 and more
+/// (model-format.md `thickness_rule`).
 [[nodiscard]] std::span<const ThicknessPoint> thickness_rule(int n_points);
 
 }  // namespace fpmshell

@@ -7,6 +7,7 @@
 #include <utility>
 #include <vector>
 
+#include "fpmshell/elements/quadrature.hpp"
 #include "fpmshell/io/model_blocks.hpp"
 #include "fpmshell/io/model_names.hpp"
 #include "fpmshell/materials/flow_table.hpp"
@@ -262,6 +263,50 @@ void read_materials(const YamlValue& v, Model& model) {
     }
 }
 
+/// A section's points through the thickness: `thickness_points` and `thickness_rule`
+/// (model-format.md; theory.md §4.5). Without a rule, 1 or 2 points are Gauss, 3 or more Lobatto.
+void read_thickness_rule(const YamlMap& m, Section& s) {
+    const auto tp = m.find("thickness_points");
+    if (tp) s.thickness_points = static_cast<int>(tp->integer(1, k_max_thickness_points));
+    const auto rule = m.find("thickness_rule");
+    if (!rule) return;
+    if (rule->is_list()) {
+        // a user rule: [zeta, fraction of the thickness] per point, as *INTEGRATION_SHELL's S, WF
+        const std::vector<YamlValue> points = rule->list("[zeta, weight] pairs");
+        if (points.empty() || points.size() > static_cast<std::size_t>(k_max_thickness_points))
+            rule->fail("expected 1 to 10 [zeta, weight] points, got " +
+                       std::to_string(points.size()));
+        Real sum = 0;
+        for (const YamlValue& p : points) {
+            const std::vector<YamlValue> pair =
+                p.list_of(2, "a point", "a [zeta, weight] pair such as [0.5, 0.25]");
+            const Real zeta = pair[0].real(), weight = pair[1].positive();
+            if (zeta < -1 || zeta > 1)
+                pair[0].fail("zeta must lie in [-1, 1], got " + pair[0].describe());
+            s.thickness_user_points.emplace_back(zeta, 2 * weight);
+            sum += weight;
+        }
+        // weights are fractions of the thickness: they must add up to it (rounding of 1e-6)
+        if (std::abs(sum - 1) > 1e-6)
+            rule->fail(
+                fmt::format("the weights must sum to 1 (fractions of the thickness), got {}", sum));
+        if (tp && tp->integer(1, k_max_thickness_points) != static_cast<long long>(points.size()))
+            tp->fail("thickness_points differs from the number of points of thickness_rule");
+        s.thickness_points = static_cast<int>(points.size());
+        s.thickness_rule = ThicknessRule::User;
+        return;
+    }
+    if (rule->choice({"gauss", "lobatto"}) == "gauss") {
+        s.thickness_rule = ThicknessRule::Gauss;
+    } else {
+        if (s.thickness_points < 3)
+            (tp ? *tp : *rule)
+                .fail("a Lobatto rule has 3 to 10 points through the thickness, got " +
+                      std::to_string(s.thickness_points));
+        s.thickness_rule = ThicknessRule::Lobatto;
+    }
+}
+
 void read_sections(const YamlValue& v, Model& model) {
     const auto items = v.list("sections");
     if (items.empty())
@@ -270,8 +315,8 @@ void read_sections(const YamlValue& v, Model& model) {
             "thickness: 1.0}");
     model.element_section.assign(model.triangles.size(), -1);
     for (const YamlValue& item : items) {
-        const YamlMap m =
-            item.map({"elements", "material", "thickness", "thickness_points", "inplane_points"});
+        const YamlMap m = item.map({"elements", "material", "thickness", "thickness_points",
+                                    "thickness_rule", "inplane_points"});
         const auto& elements =
             named_element_set(model, m.at("elements", "an element set name such as all"));
         Section s;
@@ -281,14 +326,7 @@ void read_sections(const YamlValue& v, Model& model) {
             s.inplane_points = 3;    // docs/option-studies.md: 7 changes no tested row by > 0.4 %
         }
         s.thickness = m.at("thickness", "a number > 0").positive();
-        if (const auto tp = m.find("thickness_points")) {
-            const long long n = tp->integer(2, 5);
-            if (n == 4)
-                tp->fail(
-                    "expected 2 (Gauss), 3 or 5 (Lobatto) points through the "
-                    "thickness, got 4");
-            s.thickness_points = static_cast<int>(n);
-        }
+        read_thickness_rule(m, s);
         if (const auto ip = m.find("inplane_points")) {
             const long long n = ip->integer(3, 7);
             if (n != 3 && n != 7)

@@ -68,12 +68,19 @@ struct Material {
     [[nodiscard]] bool plastic() const { return type != MaterialType::Elastic; }
 };
 
+/// The family of a section's points through the thickness (theory.md §4.5). ByCount is the
+/// default of model-format.md: Gauss for 1 or 2 points, Lobatto for 3 or more.
+enum class ThicknessRule { ByCount, Gauss, Lobatto, User };
+
 /// Shell section of a group of elements.
 struct Section {
     Index material = -1;       ///< index into Model::materials
     Real thickness = 0;        ///< h
-    int thickness_points = 2;  ///< 2 = Gauss (elastic default)
+    int thickness_points = 2;  ///< Gauss 1-10 or Lobatto 3-10; a user rule's count
     int inplane_points = 3;    ///< 3 or 7 (theory.md §4.5, §7.5)
+    ThicknessRule thickness_rule = ThicknessRule::ByCount;
+    /// a user rule: (zeta in [-1, 1], weight), the weights summing to 2 as the built-in rules'
+    std::vector<std::pair<Real, Real>> thickness_user_points{};
 };
 
 enum class PrescribedKind { None, Displacement, Velocity, AngularVelocity };

@@ -14,7 +14,22 @@ ElementGroup::ElementGroup(const Model& model, std::size_t section, const Mat3& 
     const Material& mat = model.materials[static_cast<std::size_t>(sec.material)];
     rule_.thickness = sec.thickness;
     rule_.inplane = triangle_rule(sec.inplane_points);
-    rule_.through = thickness_rule(sec.thickness_points);
+    switch (sec.thickness_rule) {
+        case ThicknessRule::ByCount:
+            rule_.through = thickness_rule(sec.thickness_points);
+            break;
+        case ThicknessRule::Gauss:
+            rule_.through = gauss_thickness_rule(sec.thickness_points);
+            break;
+        case ThicknessRule::Lobatto:
+            rule_.through = lobatto_thickness_rule(sec.thickness_points);
+            break;
+        case ThicknessRule::User:
+            for (const auto& [zeta, weight] : sec.thickness_user_points)
+                user_through_.push_back({zeta, weight});
+            rule_.through = user_through_;
+            break;
+    }
     rule_.bending = model.control.bending;
     wave_speed_ = std::sqrt(youngs_modulus / (mat.density * (1.0 - poisson_ratio * poisson_ratio)));
     bending_rigidity_ = stiffness * (sec.thickness * sec.thickness * sec.thickness / 12.0);

@@ -41,6 +41,8 @@ struct GroupPlace {
 class ElementGroup {
 public:
     virtual ~ElementGroup() = default;
+    ElementGroup(const ElementGroup&) = delete;  // rule_.through may view user_through_
+    ElementGroup& operator=(const ElementGroup&) = delete;
 
     [[nodiscard]] const ShellRule& rule() const { return rule_; }
     [[nodiscard]] std::size_t n_points() const {
@@ -112,6 +114,9 @@ protected:
 
     ShellRule rule_;
     std::size_t point_fields_;
+    /// a section's own rule through the thickness (model-format.md `thickness_rule` as a list),
+    /// which rule_.through views; empty for the built-in rules
+    std::vector<ThicknessPoint> user_through_;
 
 private:
     [[nodiscard]] std::size_t block_size() const { return point_fields_ * n_points(); }

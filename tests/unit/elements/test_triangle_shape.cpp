@@ -117,3 +117,42 @@ TEST(Quadrature, WeightsSumAndPolynomialExactness) {
     }
     EXPECT_THROW((void)triangle_rule(4), std::invalid_argument);
 }
+
+// Every rule through the thickness (theory.md §4.5) integrates the monomials of its degree
+// exactly: Gauss with n points up to degree 2n - 1, Lobatto up to 2n - 3 (Abramowitz & Stegun
+// 25.4.29, 25.4.32), and is symmetric, its points ascending in [-1, 1]; Lobatto's ends are the
+// surfaces. Tolerance 1e-14: sums of up to 10 terms of order 1, each with its rounding.
+TEST(Quadrature, EachThicknessRuleIsExactToItsDegree) {
+    const auto check = [](std::span<const ThicknessPoint> rule, int degree, const char* family) {
+        const int n = static_cast<int>(rule.size());
+        for (int d = 0; d <= degree; ++d) {
+            Real q = 0;
+            for (const ThicknessPoint& p : rule) q += p.weight * std::pow(p.zeta, d);
+            const Real exact = d % 2 == 1 ? 0.0 : 2.0 / (d + 1);
+            EXPECT_NEAR(q, exact, 1e-14) << family << " " << n << " points, degree " << d;
+        }
+        // one degree more is not exact (the rule is the one of its family, not a finer one)
+        Real q = 0;
+        for (const ThicknessPoint& p : rule) q += p.weight * std::pow(p.zeta, degree + 1);
+        EXPECT_GT(std::abs(q - 2.0 / (degree + 2)), 1e-6) << family << " " << n;
+        for (std::size_t i = 0; i < rule.size(); ++i) {
+            EXPECT_EQ(rule[i].zeta, -rule[rule.size() - 1 - i].zeta) << family << " " << n;
+            EXPECT_EQ(rule[i].weight, rule[rule.size() - 1 - i].weight) << family << " " << n;
+            if (i > 0) {
+                EXPECT_LT(rule[i - 1].zeta, rule[i].zeta) << family << " " << n;
+            }
+        }
+    };
+    for (int n = 1; n <= k_max_thickness_points; ++n) {
+        check(gauss_thickness_rule(n), 2 * n - 1, "Gauss");
+        if (n >= 3) {
+            check(lobatto_thickness_rule(n), 2 * n - 3, "Lobatto");
+            EXPECT_EQ(lobatto_thickness_rule(n).front().zeta, -1.0);
+        }
+    }
+    // the default rule of a count: Gauss for 1 and 2, Lobatto from 3 (model-format.md)
+    EXPECT_EQ(thickness_rule(2).data(), gauss_thickness_rule(2).data());
+    EXPECT_EQ(thickness_rule(4).data(), lobatto_thickness_rule(4).data());
+    EXPECT_THROW((void)gauss_thickness_rule(11), std::invalid_argument);
+    EXPECT_THROW((void)lobatto_thickness_rule(2), std::invalid_argument);
+}

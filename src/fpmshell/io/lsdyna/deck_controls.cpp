@@ -30,7 +30,14 @@ void DeckTranslator::control(const DeckBlock& b) {
     } else if (k == "CONTROL_SHELL") {
         const long long istupd = f.id(3, "ISTUPD");
         if (istupd == 1 || istupd == 4) control_.push_back({"  thickness_update: true", at});
-        note(b, f.line(), "only ISTUPD is read (fpmshell's element has no other options here)");
+        if (b.cards.size() > 1) {
+            const Card g = card(b, 1);
+            const long long intgrd = g.id(1, "INTGRD");
+            if (intgrd != 0 && intgrd != 1) g.fail("INTGRD must be 0 (Gauss) or 1 (Lobatto)");
+            if (intgrd == 1) lobatto_shells_ = Origin{&b, g.line()};
+        }
+        note(b, f.line(),
+             "only ISTUPD and INTGRD are read (fpmshell's element has no other options here)");
     } else if (k == "DAMPING_GLOBAL") {
         if (f.id(0, "LCID") != 0) f.fail("LCID: damping that varies in time is not supported");
         bool scaled = false;

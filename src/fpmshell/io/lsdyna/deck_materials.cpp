@@ -1,4 +1,4 @@
-// Parts, shell sections, materials, curves and tables of a deck, and their model keys.
+// Parts, materials, curves and tables of a deck, and their model keys.
 #include "fpmshell/io/lsdyna/deck_translator.hpp"
 
 namespace fpmshell::deck {
@@ -18,47 +18,6 @@ void DeckTranslator::part(const DeckBlock& b) {
                    place(other->second.at) + ")");
         parts_[pid] = p;
     }
-}
-
-void DeckTranslator::section_shell(const DeckBlock& b) {
-    const std::set<std::string> opt = options_of(b.keyword, 2);
-    const std::size_t first = opt.count("TITLE") ? 1 : 0;
-    for (const std::string& o : opt)
-        if (o != "TITLE") refuse(b, "*SECTION_SHELL_" + o + " is not supported");
-    const Card f = required_card(b, first, "SECID, ELFORM, SHRF, NIP, PROPT, QR");
-    const Card t = required_card(b, first + 1, "T1, T2, T3, T4, NLOC");
-    const long long id = f.id(0, "SECID");
-    const long long elform = f.id(1, "ELFORM", 2);
-    long long nip = f.id(3, "NIP", 2);
-    if (nip == 0) nip = 2;
-    const Real qr = f.real(5, "QR/IRID");
-    if (f.id(6, "ICOMP") != 0) f.fail("ICOMP = 1 (composite layers) is not supported");
-    if (nip != 2 && nip != 3 && nip != 5)
-        f.fail("NIP " + std::to_string(nip) +
-               ": fpmshell integrates through the thickness with 2, 3 or 5 points");
-    if (qr != 0) f.fail("QR/IRID: only the default rule (0) is supported");
-    const Real t1 = t.real(0, "T1");
-    // 0: the elements give their thicknesses (*ELEMENT_SHELL_THICKNESS), checked per part
-    if (!(t1 >= 0)) t.fail("T1 must be a thickness >= 0");
-    for (std::size_t k = 1; k < 4; ++k) {
-        const Real tk = t.real(k, "T2, T3, T4");
-        if (tk != 0 && tk != t1)
-            t.fail(
-                "a thickness that varies over the element (T1 to T4 not equal) is not "
-                "supported");
-    }
-    if (t.real(4, "NLOC") != 0) t.fail("NLOC: only the mid-surface reference (0) is supported");
-    if (const auto other = sections_.find(id); other != sections_.end())
-        f.fail("section " + std::to_string(id) + " is defined twice (first at " +
-               place(other->second.at) + ")");
-    sections_[id] = {{&b, f.line()}, t1, static_cast<int>(nip)};
-    note(b, f.line(),
-         fmt::format("ELFORM {} mapped to fpmshell's finite-particle triangle (CST membrane, "
-                     "DKT bending; quadrangles split in two); NIP {}{}",
-                     elform, nip,
-                     nip == 2
-                         ? " (Gauss)"
-                         : " (fpmshell's rule is Lobatto, surfaces included; LS-DYNA's is Gauss)"));
 }
 
 void DeckTranslator::material(const DeckBlock& b) {
@@ -338,50 +297,6 @@ std::string DeckTranslator::flow_curves(const MaterialDef& m) {
         s += std::string(k ? ", " : "") + "{strain_rate: " + num(t->second.values[k]) +
              ", points: " + points_text(curves_.at(t->second.curves[k]).points) + "}";
     return s + "]";
-}
-
-void DeckTranslator::write_sections(std::vector<Line>& out) {
-    bool first = true;
-    for (const auto& [pid, e] : element_parts_) {
-        const auto p = parts_.find(pid);
-        if (p == parts_.end())
-            deck_fail(*e.first.block, e.first.line,
-                      "an element of part " + std::to_string(pid) + ", which no *PART defines");
-        const PartDef& part = p->second;
-        const auto s = sections_.find(part.section);
-        if (s == sections_.end())
-            deck_fail(*part.at.block, part.at.line,
-                      "SECID " + std::to_string(part.section) + ": no *SECTION_SHELL defines it");
-        const auto m = materials_.find(part.material);
-        if (m == materials_.end())
-            deck_fail(*part.at.block, part.at.line,
-                      "MID " + std::to_string(part.material) + ": no *MAT card defines it");
-        Real thickness = s->second.thickness;
-        if (!e.thickness.empty()) thickness = *e.thickness.begin();
-        if (!(thickness > 0))
-            deck_fail(*s->second.at.block, s->second.at.line,
-                      "T1 is 0 and the elements of part " + std::to_string(pid) +
-                          " give no thickness of their own (*ELEMENT_SHELL_THICKNESS)");
-        int points = s->second.points;
-        // NIP 2 with a plastic material: LS-DYNA's default rule, two Gauss points, read as it
-        // is (its fully plastic moment 2/sqrt(3) x sigma_y h^2 / 4, as LS-DYNA's; noted)
-        if (m->second.plastic && points == 2)
-            note(*s->second.at.block, s->second.at.line,
-                 "NIP 2 with the plastic material of part " + std::to_string(pid) +
-                     ": two Gauss points, as LS-DYNA integrates it (their fully plastic moment is "
-                     "15 % above sigma_y h^2 / 4; NIP 5 integrates plasticity closer)");
-        if (first) add(out, "sections:", part.at);
-        first = false;
-        add(out,
-            "  - {elements: part_" + std::to_string(pid) + ", material: mat_" +
-                std::to_string(part.material) + ", thickness: " + num(thickness) +
-                ", thickness_points: " + std::to_string(points) + "}",
-            part.at);
-    }
-    for (const auto& [pid, p] : parts_)
-        if (!element_parts_.count(pid))
-            note(*p.at.block, p.at.line,
-                 "part " + std::to_string(pid) + " has no shell elements: left out");
 }
 
 void DeckTranslator::write_curves(std::vector<Line>& out) {

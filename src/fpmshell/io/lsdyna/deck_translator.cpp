@@ -30,6 +30,7 @@ const std::vector<CardReader>& card_readers() {
         {"SET_SEGMENT", true, P::Definitions, &T::segment_set},
         {"PART", false, P::Definitions, &T::part},
         {"SECTION_SHELL", true, P::Definitions, &T::section_shell},
+        {"INTEGRATION_SHELL", false, P::Definitions, &T::integration_shell},
         {"MAT_", true, P::Definitions, &T::material},
         {"DEFINE_CURVE", true, P::Definitions, &T::define_curve},
         {"DEFINE_TABLE", true, P::Definitions, &T::define_table},

@@ -57,7 +57,14 @@ struct MaterialDef {
 struct SectionDef {
     Origin at;
     Real thickness = 0;
-    int points = 2;
+    int points = 2;           ///< NIP
+    long long user_rule = 0;  ///< |QR| of a QR < 0: the IRID of an *INTEGRATION_SHELL; 0 none
+};
+
+/// *INTEGRATION_SHELL: (S, WF) per point, the weights fractions of the thickness summing to 1.
+struct IntegrationRuleDef {
+    Origin at;
+    std::vector<std::pair<Real, Real>> points;
 };
 
 struct PartDef {
@@ -163,6 +170,7 @@ public:
     /// Parts: a heading card and a data card each (one *PART may define several).
     void part(const DeckBlock& b);
     void section_shell(const DeckBlock& b);
+    void integration_shell(const DeckBlock& b);
     void material(const DeckBlock& b);
     static std::string points_text(const std::vector<Point2>& points);
     void define_curve(const DeckBlock& b);
@@ -171,6 +179,7 @@ public:
     /// The flow curve (or the curves per rate) of a *MAT_024's LCSS.
     std::string flow_curves(const MaterialDef& m);
     void write_sections(std::vector<Line>& out);
+    std::string thickness_rule_keys(const SectionDef& s, const MaterialDef& m, long long pid);
     void write_curves(std::vector<Line>& out);
 
     // ---- constraints on nodes, loads and initial velocities (deck_conditions.cpp)
@@ -254,6 +263,8 @@ private:
     std::map<std::string, std::map<long long, std::string>> set_names_;
     std::map<long long, PartDef> parts_;
     std::map<long long, SectionDef> sections_;
+    std::map<long long, IntegrationRuleDef> integration_rules_;
+    std::optional<Origin> lobatto_shells_;  ///< *CONTROL_SHELL INTGRD 1
     std::map<long long, MaterialDef> materials_;
     std::map<long long, CurveDef> curves_;
     std::map<long long, TableDef> tables_;
