@@ -304,6 +304,46 @@ if h_deck:
     check("contact forces: the columns of RCFORC are in history.csv",
           all(f"contact1_force_{c}" in columns for c in "xyz"), list(columns))
 
+# ---- friction in a *CONTACT_ card: plate_hammer.k's self-contact (the hammer on the doubler and
+# the plate) with FS 0.2, FD 0.1, DC 5 (LS-DYNA's decay, theory.md eq. 8.4-5), against the twin
+# with the same keys; FS < 0 refused, VC noted
+HAMMER = os.path.join(DECKS, "plate_hammer")
+hammer_deck = read(os.path.join(HAMMER, "plate_hammer.k"))
+hammer_twin = read(os.path.join(HAMMER, "plate_hammer.yaml"))
+FRICTIONLESS = "$#      fs        fd\n       0.0       0.0\n"
+assert FRICTIONLESS in hammer_deck and "  - {type: self, elements: all}\n" in hammer_twin
+
+
+h_frictional = deck_against_twin(
+    "contact friction", os.path.join(WORK, "friction"), os.path.join(HAMMER, "plate_hammer_mesh.k"),
+    hammer_deck.replace(FRICTIONLESS, "$#      fs        fd        dc\n       0.2       0.1       5.0\n"),
+    hammer_twin.replace("  - {type: self, elements: all}\n",
+                        "  - {type: self, elements: all, friction: 0.2, friction_dynamic: 0.1, "
+                        "friction_decay: 5}\n"))
+h_frictionless = os.path.join(WORK, "plate_hammer", "deck", "history.csv")
+if h_frictional and os.path.exists(h_frictionless):
+    check("contact friction: it changes the impact", read(h_frictional) != read(h_frictionless),
+          "the same history with and without friction")
+
+
+def hammer_check(name, deck_text):
+    folder = os.path.join(WORK, name)
+    os.makedirs(folder, exist_ok=True)
+    shutil.copy(os.path.join(HAMMER, "plate_hammer_mesh.k"), folder)
+    with open(os.path.join(folder, "model.k"), "w") as f:
+        f.write(deck_text)
+    return fpmshell("check", os.path.join(folder, "model.k"))
+
+
+r = hammer_check("friction_table", hammer_deck.replace(FRICTIONLESS, "      -2.0\n"))
+check("FS < 0 (a friction table) is refused naming the card",
+      r.returncode == 2 and "*CONTACT_AUTOMATIC_SINGLE_SURFACE_ID" in r.stderr and "FS < 0" in r.stderr,
+      r.stderr)
+r = hammer_check("friction_vc", hammer_deck.replace(
+    FRICTIONLESS, "       0.2       0.0       0.0     1.0e8\n"))
+check("VC is noted as not honoured", r.returncode == 0 and "VC ignored" in r.stdout,
+      r.stdout + r.stderr)
+
 # ---- *INITIAL_VELOCITY_GENERATION with OMEGA: plate_drop.k spinning about a tilted axis
 generation = drop_deck[drop_deck.index("*INITIAL_VELOCITY_GENERATION"):drop_deck.index("*RIGIDWALL_PLANAR_ID")]
 spinning = ("*INITIAL_VELOCITY_GENERATION\n         1         2      20.0       0.0       0.0      -5.0\n"

@@ -338,6 +338,7 @@ void ContactSolver::collect_self(Definition& d, const std::vector<Vec3>& x,
                 c.master = t;
                 c.offset = offset;
                 c.thickness = 2 * d.slave_offset[i];
+                if (lagrange) c.friction = d.def.friction;
                 // Positions the gap is measured at: the predictor (Lagrange multipliers, normal and
                 // weights frozen there, §8.2) or t_n (penalty).
                 const Vec3& ya = y[static_cast<std::size_t>(t[0])];
@@ -611,7 +612,7 @@ void ContactSolver::penalty_forces(const std::vector<Vec3>& x, const std::vector
 
 void ContactSolver::enforce(const std::vector<Vec3>& x, std::vector<Vec3>& x_pred,
                             std::vector<Vec3>& body_u_pred, std::vector<RigidBodyState>& bodies,
-                            Real beta_particle, Real beta_body, Real motion, long step,
+                            Real beta_particle, Real beta_body, Real dt_new, Real motion, long step,
                             std::vector<Vec3>& f_contact) {
     Stopwatch watch(stats_.seconds);
     constraints_.clear();
@@ -657,6 +658,13 @@ void ContactSolver::enforce(const std::vector<Vec3>& x, std::vector<Vec3>& x_pre
             ++held;
         }
         c.weight = weight(c, beta_particle, beta_body, bodies);
+        // eq. 8.4-5: the coefficient at the sliding speed of the predictor (before contact)
+        const ContactDefinition& def = definitions_[c.definition].def;
+        if (c.friction > 0 && def.friction_decay > 0 && dt_new > 0) {
+            const Real speed = tangential_slip(c, x, x_pred, body_u_pred, bodies).norm() / dt_new;
+            c.friction = def.friction_dynamic + (def.friction - def.friction_dynamic) *
+                                                    std::exp(-def.friction_decay * speed);
+        }
         if (c.weight > 0) {
             ++kept;
             h_min = std::min(h_min, c.thickness);
@@ -687,8 +695,7 @@ void ContactSolver::enforce(const std::vector<Vec3>& x, std::vector<Vec3>& x_pre
     // (by the definitions, not a pass over the constraints: most models have no friction)
     const bool friction =
         std::any_of(definitions_.begin(), definitions_.end(), [](const Definition& d) {
-            return d.def.type == ContactType::Rigid &&
-                   d.def.method == ContactMethod::LagrangeMultiplier && d.def.friction > 0;
+            return d.def.method == ContactMethod::LagrangeMultiplier && d.def.friction > 0;
         });
     if (friction) friction_lambda_.assign(constraints_.size(), Vec3::Zero());
     warm_start(x_pred, body_u_pred, bodies, beta_particle, beta_body);
@@ -821,7 +828,8 @@ void ContactSolver::enforce(const std::vector<Vec3>& x, std::vector<Vec3>& x_pre
         slave_force_[c.definition] += force;
         if (c.element >= 0)
             for (std::size_t k = 0; k < 3; ++k)
-                f_contact[static_cast<std::size_t>(c.master[k])] -= c.lambda * c.xi[k] * c.normal;
+                f_contact[static_cast<std::size_t>(c.master[k])] -=
+                    c.friction > 0 ? Vec3(c.xi[k] * force) : Vec3(c.lambda * c.xi[k] * c.normal);
         if (c.body >= 0) bodies[static_cast<std::size_t>(c.body)].force -= force;
     }
     // Pairs that were through already at t_n: their penetration at t_{n+1}.
@@ -859,22 +867,43 @@ void ContactSolver::move_by(const Constraint& c, Real dl, std::vector<Vec3>& x_p
     }
 }
 
+Vec3 ContactSolver::tangential_slip(const Constraint& c, const std::vector<Vec3>& x,
+                                    const std::vector<Vec3>& x_pred,
+                                    const std::vector<Vec3>& body_u_pred,
+                                    const std::vector<RigidBodyState>& bodies) const {
+    const auto us = static_cast<std::size_t>(c.slave);
+    Vec3 slip = x_pred[us] - x[us];
+    if (c.element >= 0)
+        for (std::size_t k = 0; k < 3; ++k) {
+            const auto um = static_cast<std::size_t>(c.master[k]);
+            slip -= c.xi[k] * (x_pred[um] - x[um]);
+        }
+    if (c.body >= 0) {
+        const auto b = static_cast<std::size_t>(c.body);
+        slip -= body_u_pred[b] - bodies[b].u;
+    }
+    return slip - c.normal.dot(slip) * c.normal;
+}
+
 Vec3 ContactSolver::slide(const Constraint& c, Vec3& lambda_t, const std::vector<Vec3>& x,
                           std::vector<Vec3>& x_pred, std::vector<Vec3>& body_u_pred,
                           const std::vector<RigidBodyState>& bodies, Real beta_particle,
                           Real beta_body, std::int64_t stamp) {
     const auto us = static_cast<std::size_t>(c.slave);
-    const auto b = static_cast<std::size_t>(c.body);
-    const Real body_inv_mass = bodies[b].inv_mass;
-    // the slave's slip against the body over the step, in the tangent plane (eq. 8.4-1)
-    Vec3 slip = x_pred[us] - x[us] - (body_u_pred[b] - bodies[b].u);
-    slip -= c.normal.dot(slip) * c.normal;
+    const Real body_inv_mass = c.body >= 0 ? bodies[static_cast<std::size_t>(c.body)].inv_mass : 0;
+    // the slave's slip against the body or the face point over the step (eq. 8.4-1)
+    const Vec3 slip = tangential_slip(c, x, x_pred, body_u_pred, bodies);
     Vec3 trial = lambda_t;
     if (const Real length = slip.norm(); length > 0) {
-        // the multiplier that stops the slip, with the weight along it (eq. 8.4-2)
+        // the multiplier that stops the slip, with the weight along it (eq. 8.4-2): the slave,
+        // the face's corners by their xi^2, the body
         const Vec3 t = slip / length;
-        const Real w =
-            beta_particle * t.cwiseProduct(t).dot(inv_mass_[us]) + beta_body * body_inv_mass;
+        const Vec3 tt = t.cwiseProduct(t);
+        Real w = beta_particle * tt.dot(inv_mass_[us]) + beta_body * body_inv_mass;
+        if (c.element >= 0)
+            for (std::size_t k = 0; k < 3; ++k)
+                w += beta_particle * c.xi[k] * c.xi[k] *
+                     tt.dot(inv_mass_[static_cast<std::size_t>(c.master[k])]);
         if (w > 0) trial += (length / w) * t;
     }
     // the Coulomb cone (eq. 8.4-3); no force without a normal one, whatever the coefficient
@@ -883,10 +912,18 @@ Vec3 ContactSolver::slide(const Constraint& c, Vec3& lambda_t, const std::vector
     const Vec3 change = trial - lambda_t;
     if (change.squaredNorm() == 0) return change;
     lambda_t = trial;
-    // the slave and the body move as under a force -change on the slave (eq. 8.4-4)
+    // the slave moves as under a force -change, the face's corners under xi_k change, the body
+    // under change (eq. 8.4-4)
     x_pred[us] -= beta_particle * inv_mass_[us].cwiseProduct(change);
     particle_moved_at_[us] = stamp;
+    if (c.element >= 0)
+        for (std::size_t k = 0; k < 3; ++k) {
+            const auto um = static_cast<std::size_t>(c.master[k]);
+            x_pred[um] += (beta_particle * c.xi[k]) * inv_mass_[um].cwiseProduct(change);
+            particle_moved_at_[um] = stamp;
+        }
     if (body_inv_mass > 0) {
+        const auto b = static_cast<std::size_t>(c.body);
         body_u_pred[b] += (beta_body * body_inv_mass) * change;
         body_moved_at_[b] = stamp;
     }

@@ -81,10 +81,11 @@ public:
 
     /// Lagrange-multiplier definitions: corrects the predicted positions x_pred (particles)
     /// and body_u_pred (bodies) so that no gap is negative at t_{n+1}, and adds the forces
-    /// that do it (acting at t_n) to f_contact and to the bodies' force. x: positions x^n.
+    /// that do it (acting at t_n) to f_contact and to the bodies' force. x: positions x^n;
+    /// dt_new: dt_{n+1/2}, over which x_pred was predicted (the sliding speed of eq. 8.4-5).
     void enforce(const std::vector<Vec3>& x, std::vector<Vec3>& x_pred,
                  std::vector<Vec3>& body_u_pred, std::vector<RigidBodyState>& bodies,
-                 Real beta_particle, Real beta_body, Real motion, long step,
+                 Real beta_particle, Real beta_body, Real dt_new, Real motion, long step,
                  std::vector<Vec3>& f_contact);
 
     [[nodiscard]] const ContactStatistics& statistics() const { return stats_; }
@@ -139,9 +140,9 @@ private:
         Real gap = 0;     ///< at the positions it was built on
         Real weight = 0;  ///< W = sum beta (n.M^-1 n) of its particles and body
         Real lambda = 0;
-        Real thickness = 1;  ///< slave thickness, for penetration ratios
-        Real allowance = 0;  ///< penetration it already had at t_n (held, not pushed out)
-        Real friction = 0;   ///< Coulomb coefficient (rigid, Lagrange; infinity: no sliding)
+        Real thickness = 1;            ///< slave thickness, for penetration ratios
+        Real allowance = 0;            ///< penetration it already had at t_n (held, not pushed out)
+        Real friction = 0;             ///< Coulomb coefficient (Lagrange; infinity: no sliding)
         std::uint32_t definition = 0;  ///< index of its contact definition
         /// the sweeps' bookkeeping: the gap at its last evaluation and the update count then
         Real last_gap = 0;
@@ -187,9 +188,15 @@ private:
     void move_by(const Constraint& c, Real dl, std::vector<Vec3>& x_pred,
                  std::vector<Vec3>& body_u_pred, const std::vector<RigidBodyState>& bodies,
                  Real beta_particle, Real beta_body, std::int64_t stamp);
+    /// The slip of constraint c's slave against its body or face point over the step (x^n to
+    /// x_pred), in the tangent plane (eq. 8.4-1).
+    [[nodiscard]] Vec3 tangential_slip(const Constraint& c, const std::vector<Vec3>& x,
+                                       const std::vector<Vec3>& x_pred,
+                                       const std::vector<Vec3>& body_u_pred,
+                                       const std::vector<RigidBodyState>& bodies) const;
     /// §8.4: the tangential multiplier `lambda_t` of constraint c (at x: the positions x^n)
-    /// moves to the one that stops the slave's slip against the body over the step, within the
-    /// Coulomb cone |lambda_t| <= mu lambda; returns its change.
+    /// moves to the one that stops the slave's slip against the body or face over the step,
+    /// within the Coulomb cone |lambda_t| <= mu lambda; returns its change.
     Vec3 slide(const Constraint& c, Vec3& lambda_t, const std::vector<Vec3>& x,
                std::vector<Vec3>& x_pred, std::vector<Vec3>& body_u_pred,
                const std::vector<RigidBodyState>& bodies, Real beta_particle, Real beta_body,

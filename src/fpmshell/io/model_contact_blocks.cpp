@@ -1,5 +1,6 @@
 // The `rigid_bodies` and `contact` blocks of the model file (see model_blocks.hpp).
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <string>
 #include <vector>
@@ -119,14 +120,49 @@ void read_rigid_bodies(const YamlValue& v, Model& model) {
     }
 }
 
+namespace {
+
+/// `friction` (a number >= 0 or stick), `friction_dynamic` and `friction_decay` (theory.md
+/// §8.4, eq. 8.4-5: LS-DYNA's FS, FD, DC).
+void read_friction(const YamlMap& m, ContactDefinition& c) {
+    const auto f = m.find("friction");
+    if (f) {
+        c.friction = f->is_scalar() && f->text() == "stick" ? std::numeric_limits<Real>::infinity()
+                                                            : f->non_negative();
+        if (c.friction > 0 && c.method == ContactMethod::Penalty)
+            f->fail(
+                "friction is modelled with the Lagrange multipliers only (method: "
+                "lagrange); remove `friction` or `method: penalty`");
+    }
+    const auto fd = m.find("friction_dynamic");
+    const auto dc = m.find("friction_decay");
+    if ((fd || dc) && !(c.friction > 0 && std::isfinite(c.friction)))
+        (fd ? *fd : *dc)
+            .fail(
+                "friction_dynamic and friction_decay need a static coefficient: a number "
+                "friction > 0");
+    if (fd && !dc)
+        fd->fail(
+            "friction_dynamic needs friction_decay (> 0: how fast the coefficient falls "
+            "from friction to friction_dynamic with the sliding speed)");
+    if (fd) c.friction_dynamic = fd->non_negative();
+    if (dc) {
+        c.friction_decay = dc->non_negative();
+        if (!fd) c.friction_dynamic = c.friction;
+    }
+}
+
+}  // namespace
+
 void read_contact(const YamlValue& v, Model& model) {
     for (const YamlValue& item : v.list("contact definitions")) {
         const YamlMap any = item.open_map("contact settings");
         const std::string type = any.at("type", "self or rigid").choice({"self", "rigid"});
         ContactDefinition c;
         if (type == "self") {
-            const YamlMap m = item.map({"type", "elements", "method", "exclusion_radius",
-                                        "penalty_scale", "max_iterations"});
+            const YamlMap m =
+                item.map({"type", "elements", "method", "exclusion_radius", "penalty_scale",
+                          "max_iterations", "friction", "friction_dynamic", "friction_decay"});
             c.type = ContactType::Self;
             c.elements = model.element_sets.at("all");
             if (const auto e = m.find("elements"); e && e->is_list()) {
@@ -147,23 +183,17 @@ void read_contact(const YamlValue& v, Model& model) {
             }
             c.exclusion_radius = m.non_negative_or("exclusion_radius", 0.0);
             read_contact_method(m, c);
+            read_friction(m, c);
         } else {
-            const YamlMap m = item.map({"type", "body", "nodes", "method", "penalty_scale",
-                                        "max_iterations", "friction", "offset"});
+            const YamlMap m =
+                item.map({"type", "body", "nodes", "method", "penalty_scale", "max_iterations",
+                          "friction", "friction_dynamic", "friction_decay", "offset"});
             c.type = ContactType::Rigid;
             c.body = named_rigid_body(model, m.at("body", "the name of a rigid body"));
             c.nodes = m.find("nodes") ? named_node_set(model, *m.find("nodes"))
                                       : model.node_sets.at("all");
             read_contact_method(m, c);
-            if (const auto f = m.find("friction")) {
-                c.friction = f->is_scalar() && f->text() == "stick"
-                                 ? std::numeric_limits<Real>::infinity()
-                                 : f->non_negative();
-                if (c.friction > 0 && c.method == ContactMethod::Penalty)
-                    f->fail(
-                        "friction is modelled with the Lagrange multipliers only (method: "
-                        "lagrange); remove `friction` or `method: penalty`");
-            }
+            read_friction(m, c);
             c.offset = m.non_negative_or("offset", -1.0);
             // A particle that starts inside the face (its offset included) would be thrown out
             // of it in one step.

@@ -215,9 +215,13 @@ struct ContactDefinition {
     Real exclusion_radius = 0;
     Real penalty_scale = 0.1;  ///< penalty: stiffness = scale x pair mass / dt^2
     int max_iterations = 50;   ///< Lagrange multipliers: Gauss-Seidel sweeps per step
-    /// rigid, Lagrange multipliers: Coulomb friction coefficient between the particles and the
-    /// body (theory.md §8.5); 0 frictionless, infinity: no sliding once in contact
+    /// Lagrange multipliers: Coulomb friction coefficient between the particles and the body or
+    /// the faces they touch (theory.md §8.4); 0 frictionless, infinity: no sliding once in
+    /// contact. With a decay, the static coefficient mu_s of
+    /// mu = mu_d + (mu_s - mu_d) exp(-decay |v_rel|) (LS-DYNA's FS, FD, DC; eq. 8.4-5)
     Real friction = 0;
+    Real friction_dynamic = 0;  ///< mu_d (used only with friction_decay > 0)
+    Real friction_decay = 0;    ///< DC, in time per length (s/m in SI); 0: mu = friction
     /// rigid: the distance from the face at which a particle touches it; negative: half the
     /// particle's shell thickness (theory.md §8.3). LS-DYNA's rigid walls: 0 (the node itself)
     Real offset = -1;

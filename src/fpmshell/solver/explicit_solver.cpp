@@ -478,7 +478,7 @@ void ExplicitSolver::lagrange_contact(const StepLengths& dt) {
     x_pred_before_ = x_pred_;  // scratch members: no allocation in the time loop
     body_u_before_ = body_u_pred_;
     contact_->enforce(s_.x, x_pred_, body_u_pred_, bodies_, dt.c1 * dt.dt_n * dt_new,
-                      dt.dt_n * dt_new, std::sqrt(motion2), steps_, s_.f_contact);
+                      dt.dt_n * dt_new, dt_new, std::sqrt(motion2), steps_, s_.f_contact);
     // A particle of a nodal rigid body moved as if it had its body's mass (eq. 6.11-5): its
     // velocity changes by the contact's impulse over its own mass, which make_rigid then
     // shares with its body.

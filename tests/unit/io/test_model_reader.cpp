@@ -536,6 +536,17 @@ TEST(ModelReader, ReadsTheFrictionOfARigidContact) {
                   .contacts[0]
                   .friction,
               0.0);
+    // LS-DYNA's decay (theory.md eq. 8.4-5), on a rigid and on a self-contact
+    const std::string decay = ", friction: 0.25, friction_dynamic: 0.1, friction_decay: 5";
+    const Model d = read_model(dir.write("decay.yaml", replaced(yaml, ", friction: 0.25", decay)));
+    EXPECT_EQ(d.contacts[0].friction_dynamic, 0.1);
+    EXPECT_EQ(d.contacts[0].friction_decay, 5.0);
+    const std::string self = k_base + "contact:\n  - {type: self" + decay + "}\n";
+    EXPECT_EQ(read_model(dir.write("self.yaml", self)).contacts[0].friction_decay, 5.0);
+    expect_error(replaced(self, ", friction_decay: 5", ""), -1, "contact.0.friction_dynamic",
+                 "needs friction_decay");
+    expect_error(replaced(self, "friction: 0.25", "friction: stick"), -1,
+                 "contact.0.friction_dynamic", "a number friction > 0");
 }
 
 // constraints of type rigid: the particles of a node set move as one rigid body.
@@ -800,8 +811,8 @@ TEST(ModelReader, EveryErrorNamesFileLineAndKey) {
         {k_base + "rigid_bodies:\n  - {name: w, mass: 1, point: [0, 0, 1], normal: [0, 0, -1]}\n"
                   "contact:\n  - {type: rigid, body: w, method: penalty, friction: 0.2}\n",
          12, "contact.0.friction", "friction is modelled with the Lagrange multipliers only"},
-        {k_base + "contact: [{type: self, friction: 0.2}]\n", 9, "contact.0.friction",
-         "unknown key"},
+        {k_base + "contact: [{type: self, method: penalty, friction: 0.2}]\n", 9,
+         "contact.0.friction", "friction is modelled with the Lagrange multipliers only"},
         {k_base + "output:\n  histories:\n    - {name: s, quantity: rigid_striker_uz}\n", 11,
          "output.histories.0.quantity", "the model has no rigid_bodies"},
         {k_base + "rigid_bodies:\n  - {name: w, mass: 1, point: [0, 0, 1], normal: [0, 0, -1]}\n"

@@ -280,10 +280,7 @@ void DeckTranslator::contact(const DeckBlock& b) {
     const Card g = card(b, c + 1);
     if (f.id(4, "SBOXID") != 0 || f.id(5, "MBOXID") != 0)
         f.fail("SBOXID and MBOXID are not supported (0 only)");
-    if (g.real(0, "FS") != 0 || g.real(1, "FD") != 0)
-        g.fail(
-            "FS, FD: fpmshell's shell self-contact is frictionless (friction is modelled "
-            "against rigid walls, their FRIC); set them to 0 to run frictionless");
+    const std::string friction = contact_friction(g);
     if (g.real(6, "BT") != 0 || (g.real(7, "DT") != 0 && g.real(7, "DT") < 1e20))
         g.fail("BT and DT are not supported (contact acts from start to end)");
     if (g.real(4, "VDC") != 0)
@@ -300,7 +297,7 @@ void DeckTranslator::contact(const DeckBlock& b) {
     } else {
         elements = "[" + yaml_name(sides[0]) + ", " + yaml_name(sides[1]) + "]";
     }
-    contact_.push_back({"  - {type: self, elements: " + elements + "}", {&b, f.line()}});
+    contact_.push_back({"  - {type: self, elements: " + elements + friction + "}", {&b, f.line()}});
     // its number in RCFORC's columns: CID of _ID or _TITLE, else its place among the cards
     const long long cid = opt.count("ID") || opt.count("TITLE") ? card(b, 0).id(0, "CID") : 0;
     contact_ids_.push_back({cid > 0 ? cid : reading_number(b), {&b, f.line()}});
@@ -309,6 +306,31 @@ void DeckTranslator::contact(const DeckBlock& b) {
                             : "as fpmshell's shell self-contact over both sides together "
                               "(each side is kept from itself too)") +
              " (Lagrange multipliers, each shell's thickness as its contact thickness)");
+}
+
+/// Coulomb friction of a contact's second card: FS, FD, DC as `friction`, `friction_dynamic`,
+/// `friction_decay` (mu = FD + (FS - FD) exp(-DC |v_rel|), theory.md eq. 8.4-5); "" for none.
+std::string DeckTranslator::contact_friction(const Card& g) {
+    const Real fs = g.real(0, "FS"), fd = g.real(1, "FD"), dc = g.real(2, "DC");
+    if (fs < 0)
+        g.fail(
+            "FS < 0 (a friction table of *DEFINE_FRICTION or a part-pair friction) is not "
+            "supported; give FS, FD and DC");
+    if (fd < 0 || dc < 0) g.fail("FD and DC must be >= 0");
+    if (g.real(3, "VC") != 0)
+        note(g.block(), g.line(),
+             "VC ignored: the friction force is not limited by VC x the contact area (Coulomb's "
+             "law alone)");
+    if (fs == 0) {
+        if (fd != 0)
+            note(g.block(), g.line(),
+                 "FD without FS: frictionless (LS-DYNA's coefficient FD + (FS - FD) exp(-DC v) "
+                 "starts from FS = 0)");
+        return "";
+    }
+    std::string keys = ", friction: " + num(fs);
+    if (dc > 0) keys += ", friction_dynamic: " + num(fd) + ", friction_decay: " + num(dc);
+    return keys;
 }
 
 /// The element set of one side of a contact: SID of type TYP (1 shell set, 2 part set,

@@ -229,6 +229,7 @@ public:
     void contact(const DeckBlock& b);
     /// The element set of one side of a contact: SID of type TYP (1 shell set, 2 part set,
     /// 3 part, 5 all; SID 0 is all).
+    std::string contact_friction(const Card& g);
     std::string contact_side(const Card& f, long long sid, long long typ, const char* name);
     void write_walls(std::vector<Line>& out);
     /// The constant velocity of a geometric wall's _MOTION: a flat velocity curve (OPT 0) or a
