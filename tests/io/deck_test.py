@@ -417,7 +417,7 @@ REFUSED = {  # card: what its message must say
     "*ELEMENT_SOLID\n         1         1         1         2         3\n": "shells only",
     "*CONTACT_TIED_SURFACE_TO_SURFACE\n         1         1\n": "fpmshell reads *CONTACT_AUTOMATIC_SINGLE_SURFACE",
     "*MAT_HONEYCOMB\n         2\n": "this material is not supported",
-    "*BOUNDARY_PRESCRIBED_MOTION_RIGID\n         1         3         0         1\n": "a rigid part's motion cannot be prescribed",
+    "*BOUNDARY_PRESCRIBED_MOTION_RIGID_LOCAL\n         1         3         0         1\n": "_LOCAL is not supported",
     "*RIGIDWALL_GEOMETRIC_PRISM\n         0\n": "the option _PRISM is not supported",
     "*FREQUENCY_DOMAIN_SSD\n         1\n": "could change the model",
 }

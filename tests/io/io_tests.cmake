@@ -31,3 +31,10 @@ add_test(NAME io.deck_thickness_rules
          COMMAND ${FPMSHELL_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/io/deck_rules_test.py
                  $<TARGET_FILE:fpmshell> ${CMAKE_BINARY_DIR}/deck_rules_test_work)
 set_tests_properties(io.deck_thickness_rules PROPERTIES LABELS io TIMEOUT ${_timeout_300s})
+
+# The rigid-body cards of decks (*BOUNDARY_PRESCRIBED_MOTION_RIGID, ...) against YAML twins, and
+# their refusals (tests/io/deck_rigid_test.py).
+add_test(NAME io.deck_rigid_bodies
+         COMMAND ${FPMSHELL_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/io/deck_rigid_test.py
+                 $<TARGET_FILE:fpmshell> ${CMAKE_BINARY_DIR}/deck_rigid_test_work)
+set_tests_properties(io.deck_rigid_bodies PROPERTIES LABELS io TIMEOUT ${_timeout_300s})

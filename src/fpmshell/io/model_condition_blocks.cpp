@@ -61,16 +61,34 @@ void read_boundary(const YamlValue& v, Model& model) {
                 rigid_material[static_cast<std::size_t>(p)] = mat.name;
     }
     for (const YamlValue& item : v.list("boundary conditions")) {
-        const YamlMap m = item.map({"nodes", "fix", "symmetry", "prescribe"});
+        const YamlMap m = item.map({"nodes", "rigid_body", "fix", "symmetry", "prescribe"});
         BoundaryCondition bc;
-        const YamlValue nodes = m.at("nodes", "a node set name");
-        bc.nodes = named_node_set(model, nodes);
-        for (const Index p : bc.nodes)
-            if (const std::string& name = rigid_material[static_cast<std::size_t>(p)];
-                !name.empty())
-                nodes.fail("particle " + std::to_string(p + 1) +
-                           " belongs to a section of the rigid material '" + name +
-                           "' (a rigid body moves as a whole: constrain none of its particles)");
+        if (m.count({"nodes", "rigid_body"}) != 1)
+            item.fail(
+                "a boundary condition needs exactly one of nodes (a node set) or rigid_body (the "
+                "elements of a rigid part)");
+        if (const auto body = m.find("rigid_body")) {
+            // the rigid body of these elements, held or driven as a whole (theory.md eq. 6.11-7)
+            bc.rigid_elements = named_element_set(model, *body);
+            for (const Index e : bc.rigid_elements) {
+                const Section& sec =
+                    model.sections[static_cast<std::size_t>(model.element_section[e])];
+                if (!model.materials[static_cast<std::size_t>(sec.material)].rigid)
+                    body->fail("element " + std::to_string(e + 1) +
+                               " is not of a rigid material (rigid_body names the elements of "
+                               "a rigid part)");
+            }
+        } else {
+            const YamlValue nodes = m.at("nodes", "a node set name");
+            bc.nodes = named_node_set(model, nodes);
+            for (const Index p : bc.nodes)
+                if (const std::string& name = rigid_material[static_cast<std::size_t>(p)];
+                    !name.empty())
+                    nodes.fail("particle " + std::to_string(p + 1) +
+                               " belongs to a section of the rigid material '" + name +
+                               "' (a rigid body moves as a whole: constrain none of its "
+                               "particles, or give the body's motion with rigid_body)");
+        }
         if (m.count({"fix", "symmetry", "prescribe"}) == 0)
             item.fail(
                 "a boundary condition needs at least one of fix, symmetry or "
@@ -104,15 +122,22 @@ void read_boundary(const YamlValue& v, Model& model) {
             }
             bc.curve = optional_curve(model, p);
             if (const auto comps = p.find("components")) {
-                if (bc.prescribed == PrescribedKind::AngularVelocity)
+                // a rigid body's angular velocity may be prescribed about some axes only
+                const bool rotations = bc.prescribed == PrescribedKind::AngularVelocity;
+                if (rotations && bc.rigid_elements.empty())
                     comps->fail(
                         "an angular velocity is prescribed about all three axes; "
-                        "`components` is for a displacement or a velocity");
-                const auto list = comps->list("translation components");
-                if (list.empty()) comps->fail("expected a non-empty list of ux, uy, uz");
+                        "`components` is for a displacement or a velocity (or a rigid_body's "
+                        "rotation axes rx, ry, rz)");
+                const auto list =
+                    comps->list(rotations ? "rotation axes" : "translation components");
+                if (list.empty())
+                    comps->fail(rotations ? "expected a non-empty list of rx, ry, rz"
+                                          : "expected a non-empty list of ux, uy, uz");
                 bc.components = {false, false, false};
                 for (const YamlValue& c : list) {
-                    const std::string name = c.choice({"ux", "uy", "uz"});
+                    const std::string name =
+                        rotations ? c.choice({"rx", "ry", "rz"}) : c.choice({"ux", "uy", "uz"});
                     bc.components[static_cast<std::size_t>(name[1] - 'x')] = true;
                 }
             }

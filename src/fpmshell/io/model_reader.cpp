@@ -19,6 +19,7 @@
 #include "fpmshell/io/overrides.hpp"
 #include "fpmshell/io/set_builder.hpp"
 #include "fpmshell/io/yaml_access.hpp"
+#include "fpmshell/model/rigid_body_partition.hpp"
 
 namespace fpmshell {
 namespace {
@@ -141,6 +142,10 @@ Model read_model_tree(YamlContext& ctx, YAML::Node root, const std::string& path
     if (const auto l = top.find("loads")) read_loads(*l, model);
     if (const auto i = top.find("initial_conditions")) read_initial_conditions(*i, model);
     if (const auto c = top.find("constraints"); c && !c->is_null()) read_constraints(*c, model);
+    // the entries of type rigid_body on the rigid bodies the sections and constraints make
+    if (const auto b = top.find("boundary"))
+        if (const auto problem = rigid_body_partition(model).problem)
+            b->list("boundary conditions")[problem->first].fail(problem->second);
     if (const auto r = top.find("rigid_bodies"); r && !r->is_null()) read_rigid_bodies(*r, model);
     read_end_when_body_stops(top.at("control"), model);
     if (const auto c = top.find("contact"); c && !c->is_null()) {

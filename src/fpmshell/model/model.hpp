@@ -94,8 +94,12 @@ struct BoundaryCondition {
     Vec3 value = Vec3::Zero();  ///< displacement, velocity or angular velocity, times the curve
     Index curve = -1;           ///< index into Model::curves; -1 = factor 1 at all times
     /// the prescribed translation components (x, y, z); the others stay free (a prescribed
-    /// angular velocity takes all three)
+    /// angular velocity takes all three, but on a rigid body its rotation axes x, y, z)
     std::array<bool, 3> components{true, true, true};
+    /// `rigid_body`: the elements (of rigid materials) whose rigid body the entry holds or
+    /// drives, in its velocity at the centre of mass and its angular velocity, global axes
+    /// (theory.md eq. 6.11-7); `nodes` is then empty
+    std::vector<Index> rigid_elements{};
 };
 
 enum class LoadType { Pressure, Force, Moment };

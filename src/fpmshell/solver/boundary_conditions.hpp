@@ -50,6 +50,11 @@ public:
     [[nodiscard]] bool prescribed_rotation(std::size_t p) const { return prescribed_rotation_[p]; }
     /// A fixed or prescribed component: the only particles with reactions.
     [[nodiscard]] bool constrained(std::size_t p) const { return constrained_[p]; }
+    /// These particles have reactions too (those of driven rigid bodies, eq. 6.11-7), though
+    /// none of their own components is held.
+    void add_reactions(const std::vector<Index>& particles) {
+        for (const Index p : particles) constrained_[static_cast<std::size_t>(p)] = 1;
+    }
     [[nodiscard]] bool has_prescribed_motions() const { return !prescribed_.empty(); }
 
     /// u with the fixed translation components of particle p set to zero.

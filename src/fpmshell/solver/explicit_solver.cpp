@@ -69,6 +69,8 @@ ExplicitSolver::ExplicitSolver(const Model& model)
     }
     // Boundary conditions (§6.7) and the drill axes they leave (§2.6, eq. 2.6c).
     bc_ = std::make_unique<BoundaryConditions>(model, s_.full_rotation);
+    // the particles of driven rigid bodies have reactions (eq. 6.11-7)
+    bc_->add_reactions(nodal_rigid_bodies_.driven_particles());
     for (std::size_t p = 0; p < np; ++p) s_.drill_axis[p] = bc_->drill_axis(p, s_.normal[p]);
     // Initial conditions: v^0, w^0 (the first cycle uses v^{-1/2} := v^0).
     for (const InitialVelocity& ic : model.initial_conditions)
@@ -155,14 +157,15 @@ void ExplicitSolver::cycle(const CyclePolicy& policy, Real load_time, Real dt_ca
         particles = update_velocities(policy, dt);         // 5 §6.6
         impose_prescribed_motions(policy, load_time, dt);  // 6 §6.7
         update_body_velocities(dt);
-        nodal_rigid_bodies_.make_rigid(s_, dt.dt_new);  // 6b §6.11
-        lagrange_contact(dt);                           // 7 §8.3
-        if (contact_ && contact_->has_lagrange())       // what the contact moved (§6.11)
-            nodal_rigid_bodies_.make_rigid(s_, dt.dt_new);
+        const PrescribedMotionTimes at = prescribed_motion_times(policy, load_time, dt);
+        nodal_rigid_bodies_.make_rigid(s_, at, model_.curves);  // 6b §6.11
+        lagrange_contact(dt);                                   // 7 §8.3
+        if (contact_ && contact_->has_lagrange())               // what the contact moved (§6.11)
+            nodal_rigid_bodies_.make_rigid(s_, at, model_.curves);
         advance_particles(dt, particles);  // 8-9
     }
-    book_energies(particles);    // 8 §6.8
-    finish_step(dt, particles);  // 9
+    book_energies(dt, particles);  // 8 §6.8
+    finish_step(dt, particles);    // 9
     if (decomposition_.distributed()) start_position_exchange();
 }
 
@@ -415,6 +418,8 @@ ExplicitSolver::StepLengths ExplicitSolver::next_step_lengths(
     // v^{1/2} = v^0 + dt/2 a^0. A full dt_n there would make the relaxation a gradient descent
     // with step dt^2/m, unstable for dt omega_max > sqrt(2).
     dt.dt_n = (dt_half_ > 0 && !restart_) ? 0.5 * (dt_half_ + dt.dt_new) : 0.5 * dt.dt_new;
+    dt.first = !(dt_half_ > 0) && !restart_;
+    if (dt_half_ > 0 && !(dt_half_prev_ > 0) && !restart_) dt.prev_weight = 0.5;
     restart_ = false;
     dt.a_m = policy.mass_damping;
     dt.c1 = 1.0 / (1.0 + 0.5 * dt.a_m * dt.dt_n);
@@ -440,8 +445,9 @@ void ExplicitSolver::penalty_contact(const StepLengths& dt) {
                              dt.dt_n * dt.dt_new, std::sqrt(motion2), steps_, s_.f_contact);
 }
 
-void ExplicitSolver::impose_prescribed_motions(const CyclePolicy& policy, Real load_time,
-                                               const StepLengths& dt) {
+PrescribedMotionTimes ExplicitSolver::prescribed_motion_times(const CyclePolicy& policy,
+                                                              Real load_time,
+                                                              const StepLengths& dt) const {
     PrescribedMotionTimes at;
     at.load_time = load_time;
     at.t_half = load_time + (policy.advance_time ? 0.5 * dt.dt_new : 0.0);
@@ -450,7 +456,13 @@ void ExplicitSolver::impose_prescribed_motions(const CyclePolicy& policy, Real l
     at.dt_new = dt.dt_new;
     at.c1 = dt.c1;
     at.relaxation = policy.relaxation;
-    bc_->impose_prescribed_motions(s_, model_.curves, at);
+    return at;
+}
+
+void ExplicitSolver::impose_prescribed_motions(const CyclePolicy& policy, Real load_time,
+                                               const StepLengths& dt) {
+    bc_->impose_prescribed_motions(s_, model_.curves,
+                                   prescribed_motion_times(policy, load_time, dt));
 }
 
 void ExplicitSolver::update_body_velocities(const StepLengths& dt) {
@@ -492,10 +504,12 @@ void ExplicitSolver::lagrange_contact(const StepLengths& dt) {
             bodies_[b].v += (body_u_pred_[b] - body_u_before_[b]) / dt_new;
 }
 
-void ExplicitSolver::book_energies(const ParticleSums& particles) {
+void ExplicitSolver::book_energies(const StepLengths& dt, const ParticleSums& particles) {
     Real kinetic = 0, external_work = 0, contact_work = 0;
     for (const RigidBodyState& b : bodies_) {
-        const Real body_work = 0.5 * (b.force_prev + b.force).dot(b.u - b.u_prev);
+        // the step's displacement; in the first cycle that of v^{-1/2} over dt_n (eq. 6.8-3)
+        const Vec3 du = dt.first ? Vec3(dt.dt_n * b.v_prev) : Vec3(b.u - b.u_prev);
+        const Real body_work = 0.5 * (dt.prev_weight * b.force_prev + b.force).dot(du);
         contact_work += body_work;
         kinetic += 0.5 * b.mass * b.v_prev.dot(b.v);
         if (b.inv_mass == 0) external_work -= body_work;  // what drives a fixed body on

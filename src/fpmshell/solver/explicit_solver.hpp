@@ -103,6 +103,11 @@ private:
     /// dt_n = (dt_{n-1/2} + dt_{n+1/2}) / 2, c1 = 1 / (1 + a_m dt_n / 2), c2 = 1 - a_m dt_n / 2.
     struct StepLengths {
         Real dt_n = 0, dt_new = 0, c1 = 1, c2 = 1, a_m = 0;
+        /// the run's first cycle: x^{-1} is taken as x^0 - dt_n v^{-1/2} in the works (§6.8)
+        bool first = false;
+        /// the weight of the last step's forces in this step's works: 1, but 1/2 in the second
+        /// cycle, whose velocity update of t_0 spanned dt_n = dt_{1/2} / 2 (eq. 6.8-3)
+        Real prev_weight = 1;
     };
     /// Sums over the particles of one cycle: kinetic energy, work of loads and reactions,
     /// contact work, damping, the count of non-finite states (energies at t_n, §6.8), then the
@@ -143,6 +148,9 @@ private:
     /// 5 central difference alone (the sweep above without 8-9).
     [[nodiscard]] ParticleSums update_velocities(const CyclePolicy& policy, const StepLengths& dt);
     /// 6 prescribed motions (§6.7) and the rigid bodies' velocities.
+    [[nodiscard]] PrescribedMotionTimes prescribed_motion_times(const CyclePolicy& policy,
+                                                                Real load_time,
+                                                                const StepLengths& dt) const;
     void impose_prescribed_motions(const CyclePolicy& policy, Real load_time,
                                    const StepLengths& dt);
     void update_body_velocities(const StepLengths& dt);
@@ -153,7 +161,7 @@ private:
     /// second sweep).
     void advance_particles(const StepLengths& dt, ParticleSums& sums);
     /// 8 the energy balance at t_n (§6.8) from the particles' sums and the rigid bodies.
-    void book_energies(const ParticleSums& particles);
+    void book_energies(const StepLengths& dt, const ParticleSums& particles);
     /// 9 the rigid bodies' positions, the step lengths and the step count.
     void finish_step(const StepLengths& dt, const ParticleSums& particles);
 

@@ -7,78 +7,60 @@
 #include <algorithm>
 #include <numeric>
 
+#include "fpmshell/core/errors.hpp"
+#include "fpmshell/model/rigid_body_partition.hpp"
 #include "fpmshell/solver/particle_state.hpp"
 
 namespace fpmshell {
 
-namespace {
-
-/// Union-find over the particles, with path halving.
-Index root_of(std::vector<Index>& parent, Index p) {
-    while (parent[static_cast<std::size_t>(p)] != p) {
-        auto& up = parent[static_cast<std::size_t>(p)];
-        up = parent[static_cast<std::size_t>(up)];
-        p = up;
-    }
-    return p;
-}
-
-/// The groups of particles that move rigidly: the model's constraints, and the particles of each
-/// section of a rigid material (one body per section), with the components each holds fixed.
-std::vector<std::pair<NodalRigidBody, std::array<bool, 6>>> rigid_groups(const Model& model) {
-    std::vector<std::pair<NodalRigidBody, std::array<bool, 6>>> groups;
-    for (const NodalRigidBody& g : model.nodal_rigid_bodies) groups.push_back({g, {}});
-    // the particles of each section of a rigid material
-    for (std::size_t s = 0; s < model.sections.size(); ++s) {
-        const Material& material =
-            model.materials[static_cast<std::size_t>(model.sections[s].material)];
-        if (!material.rigid) continue;
-        NodalRigidBody body;
-        for (std::size_t e = 0; e < model.triangles.size(); ++e)
-            if (static_cast<std::size_t>(model.element_section[e]) == s)
-                body.nodes.insert(body.nodes.end(), model.triangles[e].begin(),
-                                  model.triangles[e].end());
-        std::sort(body.nodes.begin(), body.nodes.end());
-        body.nodes.erase(std::unique(body.nodes.begin(), body.nodes.end()), body.nodes.end());
-        if (!body.nodes.empty()) groups.push_back({std::move(body), material.rigid_fixed});
-    }
-    return groups;
-}
-
-}  // namespace
-
 NodalRigidBodies::NodalRigidBodies(const Model& model) {
-    const auto groups = rigid_groups(model);
-    if (groups.empty()) return;
-    std::vector<Index> parent(model.nodes.size());
-    std::iota(parent.begin(), parent.end(), Index{0});
-    std::vector<std::uint8_t> member(model.nodes.size(), 0);
-    for (const auto& [group, unused] : groups) {
-        (void)unused;
-        for (const Index p : group.nodes) {
-            member[static_cast<std::size_t>(p)] = 1;
-            const Index a = root_of(parent, group.nodes.front()), b = root_of(parent, p);
-            if (a != b) parent[static_cast<std::size_t>(std::max(a, b))] = std::min(a, b);
-        }
+    RigidBodyPartition partition = rigid_body_partition(model);
+    if (partition.problem)  // the model reader reports it at its line; a model built in code here
+        throw InputError("boundary entry " + std::to_string(partition.problem->first + 1) + ": " +
+                         partition.problem->second);
+    bodies_ = std::move(partition.bodies);
+    fixed_ = std::move(partition.held);
+    for (std::size_t b = 0; b < bodies_.size(); ++b)
+        for (const RigidPrescription& pr : partition.prescribed[b])
+            if (pr.kind != PrescribedKind::None) {
+                if (prescribed_.empty()) {
+                    prescribed_ = partition.prescribed;
+                    driven_.assign(bodies_.size(), 0);
+                }
+                driven_[b] = 1;
+            }
+}
+
+std::vector<Index> NodalRigidBodies::driven_particles() const {
+    std::vector<Index> out;
+    for (std::size_t b = 0; b < driven_.size(); ++b)
+        if (driven_[b]) out.insert(out.end(), bodies_[b].begin(), bodies_[b].end());
+    std::sort(out.begin(), out.end());
+    return out;
+}
+
+Real NodalRigidBodies::prescribed_value(std::size_t b, std::size_t k, const Vec3& centre,
+                                        const Vec3& centre0, const PrescribedMotionTimes& at,
+                                        const std::vector<Curve>& curves) const {
+    if (prescribed_.empty()) return 0;
+    const RigidPrescription& pr = prescribed_[b][k];
+    const auto d = static_cast<Eigen::Index>(k % 3);
+    switch (pr.kind) {
+        case PrescribedKind::None:
+            return 0;  // held at zero
+        case PrescribedKind::AngularVelocity:
+            return pr.value * curve_factor(curves, pr.curve, at.t_half);
+        case PrescribedKind::Velocity:
+            if (!at.relaxation) return pr.value * curve_factor(curves, pr.curve, at.t_half);
+            // in relaxation, the centre reaches the integral of the velocity (as a particle's)
+            return (centre0[d] + pr.value * curve_factor_integral(curves, pr.curve, at.load_time) -
+                    centre[d]) /
+                   at.dt_new;
+        case PrescribedKind::Displacement:
+            return (centre0[d] + pr.value * curve_factor(curves, pr.curve, at.t_next) - centre[d]) /
+                   at.dt_new;
     }
-    // bodies in the order of their smallest particle, particles ascending
-    std::vector<Index> body_of_root(model.nodes.size(), -1);
-    for (std::size_t p = 0; p < model.nodes.size(); ++p) {
-        if (!member[p]) continue;
-        const auto r = static_cast<std::size_t>(root_of(parent, static_cast<Index>(p)));
-        if (body_of_root[r] < 0) {
-            body_of_root[r] = static_cast<Index>(bodies_.size());
-            bodies_.emplace_back();
-        }
-        bodies_[static_cast<std::size_t>(body_of_root[r])].push_back(static_cast<Index>(p));
-    }
-    // a body holds fixed every component that a group merged into it holds fixed
-    fixed_.assign(bodies_.size(), {});
-    for (const auto& [group, fixed] : groups) {
-        const auto b = static_cast<std::size_t>(
-            body_of_root[static_cast<std::size_t>(root_of(parent, group.nodes.front()))]);
-        for (std::size_t k = 0; k < 6; ++k) fixed_[b][k] = fixed_[b][k] || fixed[k];
-    }
+    return 0;
 }
 
 std::vector<Real> NodalRigidBodies::contact_masses(const std::vector<Real>& mass) const {
@@ -91,25 +73,33 @@ std::vector<Real> NodalRigidBodies::contact_masses(const std::vector<Real>& mass
     return out;
 }
 
-void NodalRigidBodies::make_rigid(ParticleState& s, Real dt_new) const {
+void NodalRigidBodies::make_rigid(ParticleState& s, const PrescribedMotionTimes& at,
+                                  const std::vector<Curve>& curves) const {
+    const Real dt_new = at.dt_new;
     const auto n_bodies = static_cast<std::ptrdiff_t>(bodies_.size());
 #pragma omp parallel for schedule(static) if (n_bodies >= 64)
-    for (std::ptrdiff_t b = 0; b < n_bodies; ++b) {
-        const std::vector<Index>& body = bodies_[static_cast<std::size_t>(b)];
+    for (std::ptrdiff_t ib = 0; ib < n_bodies; ++ib) {
+        const auto b = static_cast<std::size_t>(ib);
+        const std::vector<Index>& body = bodies_[b];
+        const bool driven = !driven_.empty() && driven_[b] != 0;
         // mass, centre of mass at x^n, linear momentum (eq. 6.11-1)
         Real mass = 0;
-        Vec3 centre = Vec3::Zero(), momentum = Vec3::Zero();
+        Vec3 centre = Vec3::Zero(), momentum = Vec3::Zero(), centre0 = Vec3::Zero();
         for (const Index ip : body) {
             const auto p = static_cast<std::size_t>(ip);
             mass += s.mass[p];
             centre += s.mass[p] * s.x[p];
             momentum += s.mass[p] * s.v[p];
+            if (driven) centre0 += s.mass[p] * s.x0[p];
         }
         centre /= mass;
-        const std::array<bool, 6>& fixed = fixed_[static_cast<std::size_t>(b)];
+        centre0 /= mass;
+        const std::array<bool, 6>& fixed = fixed_[b];
         Vec3 velocity = momentum / mass;
-        for (int k = 0; k < 3; ++k)
-            if (fixed[static_cast<std::size_t>(k)]) velocity[k] = 0;  // eq. 6.11-6
+        for (std::size_t k = 0; k < 3; ++k)  // eqs. 6.11-6, 6.11-7
+            if (fixed[k])
+                velocity[static_cast<Eigen::Index>(k)] =
+                    prescribed_value(b, k, centre, centre0, at, curves);
         // angular momentum and inertia tensor about the centre (eq. 6.11-2); a shell particle
         // turns in its tangent plane only, so its own inertia has no part about its normal
         Vec3 spin = Vec3::Zero();
@@ -128,10 +118,17 @@ void NodalRigidBodies::make_rigid(ParticleState& s, Real dt_new) const {
         }
         // omega = I^+ L (eq. 6.11-3): the pseudo-inverse leaves out a rotation no particle's
         // mass or inertia resists (two welded particles on the line of their normals cannot
-        // turn each other about it), which carries no angular momentum either. Fixed rotation
-        // axes (eq. 6.11-6): the free axes' block of I against their part of L; the fixed rows
-        // and columns become the largest inertia times the identity, and their omega is 0.
+        // turn each other about it), which carries no angular momentum either. Held rotation
+        // axes (eqs. 6.11-6, 6.11-7): their angular velocity omega_h is known, so the free
+        // axes' block of I takes their part of L less I_fh omega_h; the held rows and columns
+        // become the largest inertia times the identity.
+        Vec3 held_omega = Vec3::Zero();
         if (fixed[3] || fixed[4] || fixed[5]) {
+            for (std::size_t k = 0; k < 3; ++k)
+                if (fixed[3 + k])
+                    held_omega[static_cast<Eigen::Index>(k)] =
+                        prescribed_value(b, 3 + k, centre, centre0, at, curves);
+            if (driven) spin -= inertia * held_omega;
             const Real scale = std::max(inertia.trace(), Real(0));
             for (int k = 0; k < 3; ++k) {
                 if (!fixed[static_cast<std::size_t>(3 + k)]) continue;
@@ -148,7 +145,7 @@ void NodalRigidBodies::make_rigid(ParticleState& s, Real dt_new) const {
         for (int k = 0; k < 3; ++k) projected[k] = values[k] > floor ? projected[k] / values[k] : 0;
         Vec3 omega = eigen.eigenvectors() * projected;
         for (int k = 0; k < 3; ++k)
-            if (fixed[static_cast<std::size_t>(3 + k)]) omega[k] = 0;  // exactly
+            if (fixed[static_cast<std::size_t>(3 + k)]) omega[k] = held_omega[k];  // exactly
         // each particle moves with the body, the rotation over the step exact (eq. 6.11-4)
         const Real angle = dt_new * omega.norm();
         const Eigen::Matrix3d turn =
@@ -157,9 +154,15 @@ void NodalRigidBodies::make_rigid(ParticleState& s, Real dt_new) const {
         for (const Index ip : body) {
             const auto p = static_cast<std::size_t>(ip);
             const Vec3 r = s.x[p] - centre;
+            const Vec3 v_before = s.v[p], omega_before = s.omega[p];
             s.v[p] = velocity + (turn * r - r) / dt_new;
             const Vec3& n = s.normal[p];
             s.omega[p] = s.full_rotation[p] ? omega : Vec3(omega - n.dot(omega) * n);
+            if (driven) {  // the drive's reaction, booked as a support's (eq. 6.11-7)
+                s.reaction[p] += (s.mass[p] / (at.c1 * at.dt_n)) * (s.v[p] - v_before);
+                s.reaction_moment[p] +=
+                    (s.inertia[p] / (at.c1 * at.dt_n)) * (s.omega[p] - omega_before);
+            }
         }
     }
 }

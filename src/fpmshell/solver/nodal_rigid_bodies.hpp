@@ -11,6 +11,8 @@
 
 #include "fpmshell/core/types.hpp"
 #include "fpmshell/model/model.hpp"
+#include "fpmshell/model/rigid_body_partition.hpp"
+#include "fpmshell/solver/boundary_conditions.hpp"
 
 namespace fpmshell {
 
@@ -20,30 +22,45 @@ class NodalRigidBodies {
 public:
     /// The model's groups (`constraints` of type rigid, and the particles of each section of a
     /// rigid material), those that share a particle merged into one body (two rigid bodies
-    /// joined at a particle are one).
+    /// joined at a particle are one: model/rigid_body_partition.hpp). A `boundary` entry of type
+    /// rigid_body that cannot be applied is an InputError.
     explicit NodalRigidBodies(const Model& model);
 
     [[nodiscard]] bool empty() const { return bodies_.empty(); }
     /// The bodies after merging, each a sorted list of particles.
     [[nodiscard]] const std::vector<std::vector<Index>>& bodies() const { return bodies_; }
-    /// Per body, its velocity components held at zero (x, y, z, then rotations about them):
-    /// those of the rigid materials merged into it (eq. 6.11-6).
+    /// Per body, its velocity components held (x, y, z, then rotations about them): at zero
+    /// by the rigid materials merged into it and by `fix` of a `boundary` entry of type
+    /// rigid_body (eq. 6.11-6), or at the values such an entry prescribes (eq. 6.11-7).
     [[nodiscard]] const std::vector<std::array<bool, 6>>& fixed() const { return fixed_; }
+    /// The particles of the bodies with a prescribed motion, ascending: their velocity changes
+    /// in make_rigid are reactions that do work (the energy balance books them, §6.8).
+    [[nodiscard]] std::vector<Index> driven_particles() const;
 
     /// The mass the contact gives each particle (eq. 6.11-5): that of its body, or its own
     /// (`mass`) outside the bodies.
     [[nodiscard]] std::vector<Real> contact_masses(const std::vector<Real>& mass) const;
 
-    /// Eqs. 6.11-1 to 6.11-4 (6.11-6 for a body with fixed components): the half-step velocities
-    /// v^{n+1/2} and the tangent-plane angular velocities of every body's particles become one
-    /// rigid motion with their linear and angular momentum about the centre of mass at x^n, such
-    /// that x^{n+1} = x^n + dt v is that rigid motion exactly. The bodies run in parallel (each
-    /// writes its own particles).
-    void make_rigid(ParticleState& s, Real dt_new) const;
+    /// Eqs. 6.11-1 to 6.11-4 (6.11-6 for a body with fixed components, 6.11-7 with prescribed
+    /// ones): the half-step velocities v^{n+1/2} and the tangent-plane angular velocities of
+    /// every body's particles become one rigid motion with their linear and angular momentum
+    /// about the centre of mass at x^n, such that x^{n+1} = x^n + dt v is that rigid motion
+    /// exactly. A driven body's particles add the change of their velocities to their reactions.
+    /// The bodies run in parallel (each writes its own particles).
+    void make_rigid(ParticleState& s, const PrescribedMotionTimes& at,
+                    const std::vector<Curve>& curves) const;
 
 private:
+    /// The velocity (k < 3) or angular velocity (k >= 3) component k of body b at this step,
+    /// its centre of mass at x^n `centre` and at t = 0 `centre0`.
+    [[nodiscard]] Real prescribed_value(std::size_t b, std::size_t k, const Vec3& centre,
+                                        const Vec3& centre0, const PrescribedMotionTimes& at,
+                                        const std::vector<Curve>& curves) const;
+
     std::vector<std::vector<Index>> bodies_;
     std::vector<std::array<bool, 6>> fixed_;
+    std::vector<std::array<RigidPrescription, 6>> prescribed_;  ///< per body; empty: none anywhere
+    std::vector<std::uint8_t> driven_;                          ///< per body: some value prescribed
 };
 
 }  // namespace fpmshell

@@ -59,20 +59,26 @@ inline void ExplicitSolver::advance_particle(std::size_t p, const StepLengths& d
     energy[0] += 0.5 * s_.mass[p] * s_.v_prev[p].dot(s_.v[p]) +
                  0.5 * s_.inertia[p] * s_.omega_prev[p].dot(s_.omega[p]);
     const bool constrained = bc_->constrained(p);
-    Vec3 force_sum = s_.f_ext_prev[p] + s_.f_ext[p];
+    const Real w = dt.prev_weight;  // 1, or 1/2 in the second cycle (eq. 6.8-3)
+    Vec3 force_sum = w * s_.f_ext_prev[p] + s_.f_ext[p];
     Vec3 moment_sum =
-        loads_->has_moment_loads() ? Vec3(s_.m_ext_prev[p] + s_.m_ext[p]) : Vec3::Zero();
+        loads_->has_moment_loads() ? Vec3(w * s_.m_ext_prev[p] + s_.m_ext[p]) : Vec3::Zero();
     if (constrained) {
-        force_sum = force_sum + s_.reaction_prev[p] + s_.reaction[p];
-        moment_sum = moment_sum + s_.reaction_moment_prev[p] + s_.reaction_moment[p];
+        force_sum = force_sum + w * s_.reaction_prev[p] + s_.reaction[p];
+        moment_sum = moment_sum + w * s_.reaction_moment_prev[p] + s_.reaction_moment[p];
     }
-    energy[1] += 0.5 * force_sum.dot(s_.x[p] - s_.x_prev[p]) + 0.5 * moment_sum.dot(s_.dtheta[p]);
+    // The step's displacement and turn; in the first cycle those of v^{-1/2} := v^0 over dt_n,
+    // with which the leapfrog kinetic energy 1/2 m v^{-1/2} v^{1/2} of t_0 counts the forces of
+    // t_0 (eq. 6.8-3): an impact or a drive that acts at once is booked whole.
+    const Vec3 dx = dt.first ? Vec3(dt.dt_n * s_.v_prev[p]) : Vec3(s_.x[p] - s_.x_prev[p]);
+    const Vec3 dtheta = dt.first ? Vec3(dt.dt_n * s_.omega_prev[p]) : s_.dtheta[p];
+    energy[1] += 0.5 * force_sum.dot(dx) + 0.5 * moment_sum.dot(dtheta);
     // The works' rounding (eq. 6.8-2): the step's displacement is a difference of positions,
     // each rounded to eps |x|, and every force the balance books acts over it.
     Real forces = 0.5 * force_sum.cwiseAbs().sum() + s_.f_int[p].cwiseAbs().sum();
     if (contact_) {
-        const Vec3 contact_sum = s_.f_contact_prev[p] + s_.f_contact[p];
-        energy[2] += 0.5 * contact_sum.dot(s_.x[p] - s_.x_prev[p]);
+        const Vec3 contact_sum = w * s_.f_contact_prev[p] + s_.f_contact[p];
+        energy[2] += 0.5 * contact_sum.dot(dx);
         forces += 0.5 * contact_sum.cwiseAbs().sum();
     }
     energy[5] += std::numeric_limits<Real>::epsilon() * s_.x[p].cwiseAbs().maxCoeff() * forces;

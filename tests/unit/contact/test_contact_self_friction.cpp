@@ -122,11 +122,11 @@ TEST(ContactSelfFriction, ATriangleSlidingOnAHeldSheetStopsAfterTheCoulombDistan
         EXPECT_NEAR(s.state().x[up].x() - m.nodes[up].x(), distance, c.v0 * dt);
         EXPECT_NEAR(s.state().x[up].z(), k_h, 1e-3 * k_h);  // on the sheet
     }
-    // the kinetic energy went into the contact (friction); the first half step before t_0 is
-    // not booked (as against a rigid plane: test_contact_friction.cpp)
+    // the kinetic energy went into the contact (friction), from t_0 on (eq. 6.8-3); the balance
+    // closes to rounding and the trapezoid's O(dt^2) (1e-11 measured)
     const Real kinetic0 = 0.5 * slider_mass(s) * c.v0 * c.v0;
     EXPECT_NEAR(s.energy().contact, kinetic0, 1e-3 * kinetic0);
-    EXPECT_LT(std::abs(s.energy().error()), 1e-5);
+    EXPECT_LT(std::abs(s.energy().error()), 1e-9);
 }
 
 TEST(ContactSelfFriction, TheStaticToDynamicDecayStopsItAtTheClosedFormTime) {
@@ -145,7 +145,7 @@ TEST(ContactSelfFriction, TheStaticToDynamicDecayStopsItAtTheClosedFormTime) {
     s.step(1e30);
     const Real dt = s.time() - before;
     EXPECT_NEAR(t, t_closed, 3 * dt);
-    EXPECT_LT(std::abs(s.energy().error()), 1e-5);
+    EXPECT_LT(std::abs(s.energy().error()), 1e-9);
 }
 
 TEST(ContactSelfFriction, OnAFreeSheetTheMomentumAlongItIsConservedAndTheSlidingStops) {
@@ -195,5 +195,5 @@ TEST(ContactSelfFriction, OnAFreeSheetTheMomentumAlongItIsConservedAndTheSliding
     Real sheet_p = 0;
     for (std::size_t i = 0; i < 4; ++i) sheet_p += s.state().mass[i] * s.state().v[i].x();
     EXPECT_NEAR(sheet_p / sheet_mass, common, 1e-3 * c.v0);
-    EXPECT_LT(std::abs(s.energy().error()), 1e-4);
+    EXPECT_LT(std::abs(s.energy().error()), 1e-8);  // the sheet's ringing aside: 1e-10 measured
 }

@@ -42,6 +42,7 @@ void DeckTranslator::spc(const DeckBlock& b) {
 void DeckTranslator::prescribed_motion(const DeckBlock& b) {
     const std::set<std::string> opt = options_of(b.keyword, 3);
     const bool single = opt.count("NODE") != 0;
+    if (opt.count("RIGID")) return prescribed_rigid_motion(b, opt);
     if (!single && !opt.count("SET")) refuse(b, unsupported_reason(b.keyword));
     for (const std::string& o : opt)
         if (o != "NODE" && o != "SET" && o != "ID")
@@ -80,6 +81,51 @@ void DeckTranslator::prescribed_motion(const DeckBlock& b) {
             boundary_.push_back(
                 {"  - " + replace_nodes(text, set_name(f, "node", id)), {&b, f.line()}});
         }
+    }
+}
+
+/// *BOUNDARY_PRESCRIBED_MOTION_RIGID: the velocity (VAD 0) or displacement (VAD 2) of a rigid
+/// part's centre of mass along x, y or z (DOF 1-3), or its angular velocity about x, y or z
+/// (DOF 5-7, VAD 0), the curve times SF; the body's other components stay free (theory.md eq.
+/// 6.11-7: `boundary` entries of type rigid_body).
+void DeckTranslator::prescribed_rigid_motion(const DeckBlock& b, const std::set<std::string>& opt) {
+    for (const std::string& o : opt)
+        if (o != "RIGID" && o != "ID")
+            refuse(b, "*BOUNDARY_PRESCRIBED_MOTION_RIGID_" + o + " is not supported");
+    for (std::size_t c = first_data_card(opt); c < b.cards.size(); ++c) {
+        if (b.cards[c].blank()) continue;  // a blank line between records
+        const Card f = card(b, c);
+        const long long pid = f.id(0, "PID");
+        const long long dof = f.id(1, "DOF");
+        const long long vad = f.id(2, "VAD");
+        const Real sf = f.real(4, "SF", 1.0);
+        const bool rotation = dof >= 5 && dof <= 7;
+        if (!(dof >= 1 && dof <= 3) && !rotation)
+            f.fail("DOF " + std::to_string(dof) +
+                   ": fpmshell prescribes a rigid part's translation along x, y or z (1, 2, 3) "
+                   "or its rotation about x, y or z (5, 6, 7)");
+        if (vad != 0 && !(vad == 2 && !rotation))
+            f.fail("VAD " + std::to_string(vad) +
+                   (rotation ? ": fpmshell prescribes a rigid part's rotation as an angular "
+                               "velocity (VAD 0)"
+                             : ": fpmshell prescribes a velocity (0) or a displacement (2)"));
+        if (f.id(5, "VID") != 0)
+            f.fail("VID: a direction vector or local system is not supported (0 only)");
+        const Real death = f.real(6, "DEATH");
+        if (f.real(7, "BIRTH") != 0 || (death != 0 && death < 1e20))
+            f.fail("BIRTH and DEATH are not supported (the motion is prescribed throughout)");
+        const std::size_t axis = static_cast<std::size_t>(rotation ? dof - 5 : dof - 1);
+        const std::string value =
+            vec(axis == 0 ? sf : 0.0, axis == 1 ? sf : 0.0, axis == 2 ? sf : 0.0);
+        static const char* translations[3] = {"ux", "uy", "uz"};
+        static const char* rotations[3] = {"rx", "ry", "rz"};
+        const char* kind =
+            rotation ? "angular_velocity: " : (vad == 0 ? "velocity: " : "displacement: ");
+        boundary_.push_back({"  - {rigid_body: part_" + std::to_string(pid) + ", prescribe: {" +
+                                 kind + value + ", curve: " + curve_ref(b, f, f.id(3, "LCID")) +
+                                 ", components: [" +
+                                 (rotation ? rotations[axis] : translations[axis]) + "]}}",
+                             {&b, f.line()}});
     }
 }
 

@@ -189,6 +189,7 @@ public:
     /// *BOUNDARY_PRESCRIBED_MOTION_NODE / _SET: a velocity (VAD 0) or a displacement (VAD 2)
     /// along x, y or z (DOF 1, 2, 3), the curve times SF; the node's other directions stay free.
     void prescribed_motion(const DeckBlock& b);
+    void prescribed_rigid_motion(const DeckBlock& b, const std::set<std::string>& opt);
     static std::string replace_nodes(std::string text, const std::string& set);
     /// Node `id` joins the set `group` (of node_ids); the first node writes `text` (with NODES
     /// for the set's name) into `lines`.

@@ -1,0 +1,155 @@
+"""The rigid-body cards of decks (README, "LS-DYNA decks"; theory.md eq. 6.11-7), each a variant of
+plate_hammer.k (a rigid hammer, part 3, on a welded plate) against its YAML twin, the same
+history.csv bytes:
+
+- *BOUNDARY_PRESCRIBED_MOTION_RIGID: the hammer driven down at a velocity (DOF 3, VAD 0), turned
+  about x (DOF 5), lowered by a displacement (VAD 2) -> `boundary` entries of type rigid_body;
+- refusals with exit 2 and one sentence naming the place: VAD 1, DOF 4 with a vector, a
+  rotation given as an angle, a part that is not rigid.
+
+usage: deck_rigid_test.py FPMSHELL WORKDIR
+"""
+import os
+import shutil
+import subprocess
+import sys
+
+FPM, WORK = sys.argv[1], sys.argv[2]
+ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+HAMMER = os.path.join(ROOT, "examples", "decks", "plate_hammer")
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from check_tally import check, finish  # noqa: E402
+
+
+def fpmshell(*args):
+    return subprocess.run([FPM, *args], capture_output=True, text=True, timeout=600)
+
+
+def read(path):
+    with open(path) as f:
+        return f.read()
+
+
+def write(folder, name, text):
+    os.makedirs(folder, exist_ok=True)
+    shutil.copy(os.path.join(HAMMER, "plate_hammer_mesh.k"), folder)
+    path = os.path.join(folder, name)
+    with open(path, "w") as f:
+        f.write(text)
+    return path
+
+
+def run(model):
+    out = os.path.join(os.path.dirname(model), "out_" + os.path.basename(model).split(".")[1])
+    r = fpmshell("run", model, "-o", out, "--quiet", "--threads", "1", "--overwrite")
+    return r, os.path.join(out, "history.csv")
+
+
+shutil.rmtree(WORK, ignore_errors=True)
+deck, twin = read(os.path.join(HAMMER, "plate_hammer.k")), read(os.path.join(HAMMER, "plate_hammer.yaml"))
+END = "*END\n"
+assert deck.endswith(END) and "\noutput:" in twin and "\nboundary:" not in twin
+# the hammer (initial velocity -10 m/s) driven on at -10 m/s and sent back up at 5 m/s from 0.7 ms,
+# just before it would meet the plate at 0.8 ms (a drive through the plate would crush it against
+# the floor it lies on: the unit tests drive a body into a strip); a displacement of -10 m/s x t
+# that turns back the same way
+CURVE = ("*DEFINE_CURVE\n$#    lcid      sidr       sfa       sfo\n         9\n"
+         "$#                a1                  o1\n                 0.0                 1.0\n"
+         "              0.0006                 1.0\n              0.0007                -0.5\n"
+         "                 1.0                -0.5\n"
+         "*DEFINE_CURVE\n        10\n                 0.0                 0.0\n"
+         "              0.0007                 1.0\n               0.002                0.05\n")
+TWIN_CURVE = ("curves:\n  curve_9: [[0, 1], [0.0006, 1], [0.0007, -0.5], [1, -0.5]]\n"
+              "  curve_10: [[0, 0], [0.0007, 1], [0.002, 0.05]]\n")
+
+VARIANTS = {  # name: (cards added to the deck, the twin's boundary entries)
+    "velocity": ("*BOUNDARY_PRESCRIBED_MOTION_RIGID\n$#     pid       dof       vad      lcid"
+                 "        sf\n         3         3         0         9     -10.0\n",
+                 "  - {rigid_body: part_3, prescribe: {velocity: [0, 0, -10], curve: curve_9, "
+                 "components: [uz]}}\n"),
+    "velocity and rotation (_ID, two records)": (
+        "*BOUNDARY_PRESCRIBED_MOTION_RIGID_ID\n         1hammer drive\n"
+        "         3         3         0         9     -10.0\n"
+        "         3         5         0         9      20.0\n",
+        "  - {rigid_body: part_3, prescribe: {velocity: [0, 0, -10], curve: curve_9, "
+        "components: [uz]}}\n"
+        "  - {rigid_body: part_3, prescribe: {angular_velocity: [20, 0, 0], curve: curve_9, "
+        "components: [rx]}}\n"),
+    "displacement": ("*BOUNDARY_PRESCRIBED_MOTION_RIGID\n         3         3         2        10"
+                     "    -0.007\n",
+                     "  - {rigid_body: part_3, prescribe: {displacement: [0, 0, -0.007], "
+                     "curve: curve_10, components: [uz]}}\n"),
+}
+histories = {}
+for k, (name, (cards, entries)) in enumerate(VARIANTS.items()):
+    folder = os.path.join(WORK, f"motion{k}")
+    d = write(folder, "model.k", deck[:-len(END)] + CURVE + cards + END)
+    t = write(folder, "model.yaml", twin.replace("\noutput:", "\n" + TWIN_CURVE + "\nboundary:\n" +
+                                                 entries + "\noutput:"))
+    r_deck, h_deck = run(d)
+    r_twin, h_twin = run(t)
+    check(f"{name}: deck and twin run", r_deck.returncode == 0 and r_twin.returncode == 0,
+          r_deck.stderr + r_twin.stderr)
+    if r_deck.returncode or r_twin.returncode:
+        continue
+    check(f"{name}: the same history.csv", read(h_deck) == read(h_twin), "the files differ")
+    histories[name] = read(h_deck)
+r_free, h_free = run(write(os.path.join(WORK, "free"), "model.k", deck))
+if r_free.returncode == 0:
+    histories["free"] = read(h_free)
+check("the drives change the run (each history differs)",
+      len(set(histories.values())) == len(histories) == len(VARIANTS) + 1,
+      f"{len(set(histories.values()))} distinct of {len(histories)}")
+
+# the hammer's centre (node 205) under the velocity drive: z velocity -10 once the ramp is done
+rows = [line.split(",") for line in histories.get("velocity", "").splitlines()]
+if rows:
+    header = rows[0]
+    if "node205_vz" in header:
+        k = header.index("node205_vz")
+        before = [float(r[k]) for r in rows[1:] if float(r[0]) < 0.0006]
+        after = [float(r[k]) for r in rows[1:] if float(r[0]) > 0.0007]
+        check("velocity: the hammer moves at -10 m/s, then back up at 5 m/s",
+              before and after and all(abs(v + 10) < 1e-6 for v in before) and
+              all(abs(v - 5) < 1e-6 for v in after), (before[-3:], after[:3]))
+    else:
+        check("velocity: the history has node205_vz", False, header)
+
+
+def refused(name, cards, *words):
+    path = write(os.path.join(WORK, name.replace(" ", "_")), "model.k",
+                 deck[:-len(END)] + CURVE + cards + END)
+    r = fpmshell("check", path)
+    check(f"{name}: exit 2, one sentence naming the place",
+          r.returncode == 2 and all(w in r.stderr for w in words) and
+          len(r.stderr.strip().splitlines()) == 1, r.stderr)
+
+
+refused("acceleration", "*BOUNDARY_PRESCRIBED_MOTION_RIGID\n         3         3         1         9\n",
+        "model.k:", "*BOUNDARY_PRESCRIBED_MOTION_RIGID", "VAD 1")
+refused("vector", "*BOUNDARY_PRESCRIBED_MOTION_RIGID\n         3         4         0         9"
+        "       1.0         7\n", "model.k:", "DOF 4")
+refused("angle", "*BOUNDARY_PRESCRIBED_MOTION_RIGID\n         3         6         2         9\n",
+        "model.k:", "VAD 2", "angular velocity")
+refused("not rigid", "*BOUNDARY_PRESCRIBED_MOTION_RIGID\n         1         3         0         9\n",
+        "model.k:", "*BOUNDARY_PRESCRIBED_MOTION_RIGID", "not of a rigid material")
+
+# the YAML keys: exactly one of nodes and rigid_body; rotation axes only for a rigid body
+for name, entry, words in (
+        ("yaml both", "  - {nodes: part_3, rigid_body: part_3, fix: all}\n",
+         ("model.yaml:", "boundary.0", "exactly one of nodes")),
+        ("yaml axes on nodes", "  - {nodes: part_1, prescribe: {angular_velocity: [1, 0, 0], "
+         "components: [rx]}}\n", ("model.yaml:", "boundary.0.prescribe.components",
+                                  "a rigid_body's rotation axes")),
+        ("yaml particles of a rigid part", "  - {nodes: part_3, fix: all}\n",
+         ("model.yaml:", "boundary.0.nodes", "give the body's motion with rigid_body")),
+        ("yaml two drives of one component",
+         "  - {rigid_body: part_3, prescribe: {velocity: [0, 0, 1], components: [uz]}}\n"
+         "  - {rigid_body: part_3, fix: [uz]}\n", ("already held or prescribed",))):
+    path = write(os.path.join(WORK, name.replace(" ", "_")), "model.yaml",
+                 twin.replace("\noutput:", "\nboundary:\n" + entry + "\noutput:"))
+    r = fpmshell("run", path, "-o", os.path.join(WORK, name.replace(" ", "_"), "out"), "--quiet")
+    check(f"{name}: exit 2 with one sentence", r.returncode == 2 and
+          all(w in r.stderr for w in words) and len(r.stderr.strip().splitlines()) == 1, r.stderr)
+
+sys.exit(finish())
