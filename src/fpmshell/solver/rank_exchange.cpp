@@ -1,0 +1,146 @@
+// The exchanges of the explicit solver between the ranks of a distributed run
+// (solver/domain_decomposition.hpp, docs/architecture.md "On several ranks"): the contact
+// particles shared before the contact, the positions of the particles held around each rank's
+// own, and the gathers to rank 0 for output and restart.
+#include "fpmshell/core/byte_buffer.hpp"
+#include "fpmshell/core/communicator.hpp"
+#include "fpmshell/solver/explicit_solver.hpp"
+
+namespace fpmshell {
+
+void ExplicitSolver::share_contact_particles(std::vector<Vec3>& a, std::vector<Vec3>& b) {
+    const DomainDecomposition& d = decomposition_;
+    contact_send_.clear();
+    for (const Index p : contact_owned_[static_cast<std::size_t>(d.rank)])
+        for (const Vec3* v : {&a[static_cast<std::size_t>(p)], &b[static_cast<std::size_t>(p)]})
+            contact_send_.insert(contact_send_.end(), v->data(), v->data() + 3);
+    std::vector<int> counts;
+    for (const auto& owned : contact_owned_) counts.push_back(6 * static_cast<int>(owned.size()));
+    Communicator::world().allgather(contact_send_, counts, contact_all_);
+    std::size_t at = 0;
+    for (const auto& owned : contact_owned_)
+        for (const Index p : owned)
+            for (Vec3* v : {&a[static_cast<std::size_t>(p)], &b[static_cast<std::size_t>(p)]}) {
+                *v = Vec3(contact_all_[at], contact_all_[at + 1], contact_all_[at + 2]);
+                at += 3;
+            }
+}
+
+void ExplicitSolver::start_position_exchange() {
+    const DomainDecomposition& d = decomposition_;
+    const std::size_t n_peers = d.position_peers.size();
+    position_send_.resize(n_peers);
+    position_recv_.resize(n_peers);
+    for (std::size_t k = 0; k < n_peers; ++k) {
+        std::vector<Real>& out = position_send_[k];
+        out.resize(3 * d.position_send[k].size());
+        for (std::size_t i = 0; i < d.position_send[k].size(); ++i) {
+            const Vec3& x = s_.x[static_cast<std::size_t>(d.position_send[k][i])];
+            for (int c = 0; c < 3; ++c) out[3 * i + static_cast<std::size_t>(c)] = x[c];
+        }
+        position_recv_[k].resize(3 * d.position_recv[k].size());
+    }
+    positions_in_flight_ =
+        Communicator::world().start_exchange(d.position_peers, position_send_, position_recv_);
+}
+
+void ExplicitSolver::finish_position_exchange() {
+    if (!positions_in_flight_.active()) return;
+    const DomainDecomposition& d = decomposition_;
+    Communicator::world().wait(positions_in_flight_);
+    for (std::size_t k = 0; k < d.position_peers.size(); ++k)
+        for (std::size_t i = 0; i < d.position_recv[k].size(); ++i) {
+            Vec3& x = s_.x[static_cast<std::size_t>(d.position_recv[k][i])];
+            for (int c = 0; c < 3; ++c)
+                x[c] = position_recv_[k][3 * i + static_cast<std::size_t>(c)];
+        }
+}
+
+namespace {
+/// The arrays of a particle's state that the history rows read (driver/history_sampler.cpp).
+template <class F>
+void for_each_history_field(ParticleState& s, std::size_t p, F&& f) {
+    for (std::vector<Vec3>* a :
+         {&s.x0, &s.x, &s.v, &s.v_prev, &s.f_ext, &s.reaction, &s.reaction_moment})
+        f((*a)[p]);
+    f(s.rotation[p]);
+}
+/// Every array of a particle's state, in one order for writing and reading.
+template <class F>
+void for_each_particle_field(ParticleState& s, std::size_t p, F&& f) {
+    for (std::vector<Vec3>* a : {&s.x0,
+                                 &s.x,
+                                 &s.x_prev,
+                                 &s.v,
+                                 &s.v_prev,
+                                 &s.omega,
+                                 &s.omega_prev,
+                                 &s.dtheta,
+                                 &s.normal,
+                                 &s.drill_axis,
+                                 &s.f_int,
+                                 &s.m_int,
+                                 &s.f_ext,
+                                 &s.m_ext,
+                                 &s.f_ext_prev,
+                                 &s.m_ext_prev,
+                                 &s.reaction,
+                                 &s.reaction_moment,
+                                 &s.reaction_prev,
+                                 &s.reaction_moment_prev,
+                                 &s.f_contact,
+                                 &s.f_contact_prev})
+        f((*a)[p]);
+    f(s.rotation[p]);
+    f(s.mass[p]);
+    f(s.inertia[p]);
+    f(s.full_rotation[p]);
+}
+}  // namespace
+
+void ExplicitSolver::gather_to_root(Gather what) {
+    const Communicator& comm = Communicator::world();
+    if (!decomposition_.distributed()) return;
+    finish_position_exchange();
+    const DomainDecomposition& d = decomposition_;
+    const bool all = what == Gather::Everything;
+    if (!all && history_particle_.empty()) {
+        history_particle_.assign(s_.size(), 0);
+        for (const HistoryRequest& h : model_.output.histories)
+            for (const Index p : h.nodes) history_particle_[static_cast<std::size_t>(p)] = 1;
+    }
+    std::vector<char>& bytes = gather_bytes_;
+    bytes.clear();
+    for (const Index a : d.own_atoms)
+        for (Index k = d.atom_particle_begin[static_cast<std::size_t>(a)];
+             k < d.atom_particle_begin[static_cast<std::size_t>(a) + 1]; ++k) {
+            const auto p = static_cast<std::size_t>(d.atom_particles[static_cast<std::size_t>(k)]);
+            if (!all && !history_particle_[p]) continue;
+            append_bytes(bytes, static_cast<Index>(p));
+            if (all)
+                for_each_particle_field(s_, p, [&](auto& v) { append_bytes(bytes, v); });
+            else
+                for_each_history_field(s_, p, [&](auto& v) { append_bytes(bytes, v); });
+        }
+    const std::vector<std::vector<char>> particles = comm.gather(bytes);
+    const std::vector<std::vector<char>> elements =
+        all ? comm.gather(elements_.pack_state(true)) : std::vector<std::vector<char>>{};
+    if (!comm.root()) return;
+    for (std::size_t r = 1; r < particles.size(); ++r) {
+        const std::vector<char>& b = particles[r];
+        std::size_t at = 0;
+        while (at < b.size()) {
+            Index p = 0;
+            read_bytes(b, at, p);
+            if (all)
+                for_each_particle_field(s_, static_cast<std::size_t>(p),
+                                        [&](auto& v) { read_bytes(b, at, v); });
+            else
+                for_each_history_field(s_, static_cast<std::size_t>(p),
+                                       [&](auto& v) { read_bytes(b, at, v); });
+        }
+        if (all) elements_.unpack_state(elements[r]);
+    }
+}
+
+}  // namespace fpmshell
