@@ -4,8 +4,10 @@ history.csv bytes:
 
 - *BOUNDARY_PRESCRIBED_MOTION_RIGID: the hammer driven down at a velocity (DOF 3, VAD 0), turned
   about x (DOF 5), lowered by a displacement (VAD 2) -> `boundary` entries of type rigid_body;
+- *CONSTRAINED_EXTRA_NODES_NODE / _SET and *CONSTRAINED_RIGID_BODIES -> `constraints` entries over
+  a list of node sets;
 - refusals with exit 2 and one sentence naming the place: VAD 1, DOF 4 with a vector, a
-  rotation given as an angle, a part that is not rigid.
+  rotation given as an angle, a part that is not rigid; the YAML keys' errors.
 
 usage: deck_rigid_test.py FPMSHELL WORKDIR
 """
@@ -94,11 +96,73 @@ for k, (name, (cards, entries)) in enumerate(VARIANTS.items()):
         continue
     check(f"{name}: the same history.csv", read(h_deck) == read(h_twin), "the files differ")
     histories[name] = read(h_deck)
+# *CONSTRAINED_EXTRA_NODES (_NODE, _SET) and *CONSTRAINED_RIGID_BODIES: `constraints` entries over
+# the union of node sets. The plate's nodes 41 and 42 ride with the hammer; the doubler (part 2),
+# made rigid (*MAT_RIGID 3) and unwelded, joins the hammer, both thrown up at 5 m/s (joined at
+# different velocities, the merge would be an inelastic collision at t = 0)
+WELDS = deck[deck.index("*CONSTRAINED_SPOTWELD"):deck.index("*INITIAL_VELOCITY_GENERATION")]
+THROW = ("*INITIAL_VELOCITY_GENERATION\n$#      id      styp     omega        vx        vy        vz\n"
+         "         3         2       0.0       0.0       0.0     -10.0\n")
+assert THROW in deck
+RIGID_DOUBLER = (("*PART\ndoubler\n         2         1         1\n",
+                  "*PART\ndoubler\n         2         1         3\n*MAT_RIGID\n         3   78500.0   "
+                  "2.1e+11       0.3\n"), (WELDS, ""),
+                 (THROW, THROW.replace("-10.0", "  5.0") + "         0.0       0.0       0.0       0.0"
+                  "       0.0       0.0\n" + THROW.replace("-10.0", "  5.0").replace(
+                      "         3         2", "         2         2").split("\n", 2)[2]))
+TWIN_DOUBLER = (("  - {elements: part_2, material: steel, thickness: 0.002, thickness_points: 5, "
+                 "thickness_rule: gauss}\n", "  - {elements: part_2, material: mat_3, thickness: 0.002, "
+                 "thickness_points: 5, thickness_rule: gauss}\n"),
+                ("\nsections:", "  mat_3: {type: rigid, density: 78500, youngs_modulus: 2.1e11, "
+                 "poisson_ratio: 0.3}\n\nsections:"),
+                ("  - {nodes: part_3, velocity: [0, 0, -10]}\n",
+                 "  - {nodes: part_3, velocity: [0, 0, 5]}\n  - {nodes: part_2, velocity: [0, 0, 5]}\n"),
+                *[(f"  - {{type: rigid, nodes: weld_{w}}}\n", "") for w in "abcd"])
+assert all(a in deck for a, _ in RIGID_DOUBLER) and all(a in twin for a, _ in TWIN_DOUBLER)
+CONSTRAINT_VARIANTS = {  # name: (deck edits, cards, twin sets, twin constraints, twin edits)
+    "extra nodes (_NODE)": ((), "*CONSTRAINED_EXTRA_NODES_NODE\n         3        41\n         3        42\n",
+                            "  extra_nodes_3: {node_ids: [41, 42]}\n",
+                            "  - {type: rigid, nodes: [part_3, extra_nodes_3]}\n", ()),
+    "extra nodes (_SET)": ((), "*SET_NODE_LIST\n        77\n        41        42\n"
+                           "*CONSTRAINED_EXTRA_NODES_SET\n         3        77\n",
+                           "  riders: {node_ids: [41, 42]}\n",
+                           "  - {type: rigid, nodes: [part_3, riders]}\n", ()),
+    "rigid bodies joined": (RIGID_DOUBLER, "*CONSTRAINED_RIGID_BODIES\n         3         2\n", "",
+                            "  - {type: rigid, nodes: [part_3, part_2]}\n", TWIN_DOUBLER),
+}
+for k, (name, (edits, cards, sets, constraints, twin_edits)) in enumerate(CONSTRAINT_VARIANTS.items()):
+    folder = os.path.join(WORK, f"joined{k}")
+    d_text = deck
+    for a, b in edits:
+        d_text = d_text.replace(a, b)
+    t_text = twin.replace("\nsets:\n", "\nsets:\n" + sets).replace(
+        "\nconstraints:\n", "\nconstraints:\n" + constraints)
+    for a, b in twin_edits:
+        t_text = t_text.replace(a, b)
+    d = write(folder, "model.k", d_text[:-len(END)] + cards + END)
+    t = write(folder, "model.yaml", t_text)
+    r_deck, h_deck = run(d)
+    r_twin, h_twin = run(t)
+    check(f"{name}: deck and twin run", r_deck.returncode == 0 and r_twin.returncode == 0,
+          r_deck.stderr + r_twin.stderr)
+    if r_deck.returncode or r_twin.returncode:
+        continue
+    check(f"{name}: the same history.csv", read(h_deck) == read(h_twin), "the files differ")
+    histories[name] = read(h_deck)
+c = fpmshell("check", os.path.join(WORK, "joined2", "model.k"))
+check("rigid bodies joined: the hammer and the doubler one body, the plate's edge the other",
+      c.returncode == 0 and "nodal rigid bodies: 2 (" in c.stdout, c.stdout + c.stderr)
+
 r_free, h_free = run(write(os.path.join(WORK, "free"), "model.k", deck))
 if r_free.returncode == 0:
     histories["free"] = read(h_free)
-check("the drives change the run (each history differs)",
-      len(set(histories.values())) == len(histories) == len(VARIANTS) + 1,
+# the two forms of the extra nodes are the same model; every other variant is a run of its own
+check("extra nodes: _NODE and _SET give the same bytes",
+      histories.get("extra nodes (_NODE)") == histories.get("extra nodes (_SET)") is not None,
+      "they differ")
+histories.pop("extra nodes (_SET)", None)
+check("the drives and joins change the run (each history differs)",
+      len(set(histories.values())) == len(histories) == len(VARIANTS) + len(CONSTRAINT_VARIANTS),
       f"{len(set(histories.values()))} distinct of {len(histories)}")
 
 # the hammer's centre (node 205) under the velocity drive: z velocity -10 once the ramp is done
@@ -133,6 +197,10 @@ refused("angle", "*BOUNDARY_PRESCRIBED_MOTION_RIGID\n         3         6       
         "model.k:", "VAD 2", "angular velocity")
 refused("not rigid", "*BOUNDARY_PRESCRIBED_MOTION_RIGID\n         1         3         0         9\n",
         "model.k:", "*BOUNDARY_PRESCRIBED_MOTION_RIGID", "not of a rigid material")
+refused("extra nodes of a deformable part", "*CONSTRAINED_EXTRA_NODES_NODE\n         1        41\n",
+        "model.k:", "*CONSTRAINED_EXTRA_NODES_NODE", "PID 1: the part is not of *MAT_RIGID")
+refused("joined with a deformable part", "*CONSTRAINED_RIGID_BODIES\n         3         1\n",
+        "model.k:", "*CONSTRAINED_RIGID_BODIES", "PIDC 1: the part is not of *MAT_RIGID")
 
 # the YAML keys: exactly one of nodes and rigid_body; rotation axes only for a rigid body
 for name, entry, words in (

@@ -211,12 +211,25 @@ void read_constraints(const YamlValue& v, Model& model) {
         // `type` names the kind of constraint; rigid is the one fpmshell has
         static_cast<void>(
             m.at("type", "rigid (the nodes move as one rigid body)").choice({"rigid"}));
-        const YamlValue nodes = m.at("nodes", "a node set name");
+        const YamlValue nodes = m.at("nodes", "a node set name or a list of them");
         NodalRigidBody body;
-        body.nodes = named_node_set(model, nodes);
+        if (nodes.is_list()) {
+            // several sets: their union (LS-DYNA's *CONSTRAINED_RIGID_BODIES, _EXTRA_NODES)
+            const auto names = nodes.list("node set names");
+            if (names.empty()) nodes.fail("expected a node set name or a non-empty list of them");
+            for (const YamlValue& name : names) {
+                const auto& set = named_node_set(model, name);
+                body.nodes.insert(body.nodes.end(), set.begin(), set.end());
+            }
+            std::sort(body.nodes.begin(), body.nodes.end());
+            body.nodes.erase(std::unique(body.nodes.begin(), body.nodes.end()), body.nodes.end());
+        } else {
+            body.nodes = named_node_set(model, nodes);
+        }
         if (body.nodes.size() < 2)
-            nodes.fail("a rigid body needs at least two particles, the set '" + nodes.text() +
-                       "' has " + std::to_string(body.nodes.size()));
+            nodes.fail("a rigid body needs at least two particles, the set" +
+                       std::string(nodes.is_list() ? "s have " : " '" + nodes.text() + "' has ") +
+                       std::to_string(body.nodes.size()));
         for (const Index p : body.nodes)
             if (bounded[static_cast<std::size_t>(p)])
                 nodes.fail("particle " + std::to_string(p + 1) +

@@ -22,6 +22,67 @@ void DeckTranslator::nodal_rigid_body(const DeckBlock& b) {
         note(b, f.line(), "PNODE ignored: the body's motion is that of its nodes");
 }
 
+/// Part `pid` of card f: it must exist and be of *MAT_RIGID (`what` names the card's field).
+void DeckTranslator::require_rigid_part(const Card& f, long long pid, const char* what) {
+    const auto p = parts_.find(pid);
+    if (p == parts_.end())
+        f.fail(std::string(what) + " " + std::to_string(pid) + ": no *PART defines it");
+    const auto m = materials_.find(p->second.material);
+    if (m == materials_.end() || std::find(m->second.keys.begin(), m->second.keys.end(),
+                                           "type: rigid") == m->second.keys.end())
+        f.fail(std::string(what) + " " + std::to_string(pid) +
+               ": the part is not of *MAT_RIGID (the card joins rigid bodies)");
+}
+
+/// *CONSTRAINED_RIGID_BODIES: each card's constrained part PIDC joins the lead part PIDL in
+/// one rigid body (a `constraints` entry over both parts' nodes).
+void DeckTranslator::rigid_bodies_joined(const DeckBlock& b) {
+    if (b.keyword != "CONSTRAINED_RIGID_BODIES") refuse(b, unsupported_reason(b.keyword));
+    if (b.cards.empty()) required_card(b, 0, "PIDL, PIDC, IFLAG");
+    for (std::size_t c = 0; c < b.cards.size(); ++c) {
+        if (b.cards[c].blank()) continue;
+        const Card f = card(b, c);
+        const long long lead = f.id(0, "PIDL"), joined = f.id(1, "PIDC");
+        require_rigid_part(f, lead, "PIDL");
+        require_rigid_part(f, joined, "PIDC");
+        constraints_.push_back({"  - {type: rigid, nodes: [part_" + std::to_string(lead) +
+                                    ", part_" + std::to_string(joined) + "]}",
+                                {&b, f.line()}});
+        if (f.id(2, "IFLAG") != 0)
+            note(b, f.line(),
+                 "IFLAG ignored: the joined body's mass and inertia are those of all its "
+                 "particles");
+    }
+}
+
+/// *CONSTRAINED_EXTRA_NODES_NODE / _SET: nodes that move with the rigid part PID (a
+/// `constraints` entry over the part's nodes and them).
+void DeckTranslator::extra_nodes(const DeckBlock& b) {
+    const std::set<std::string> opt = options_of(b.keyword, 3);
+    const bool single = opt.count("NODE") != 0;
+    if (opt.size() != 1 || (!single && !opt.count("SET")))
+        refuse(b, "fpmshell reads *CONSTRAINED_EXTRA_NODES_NODE and _SET");
+    if (b.cards.empty()) required_card(b, 0, single ? "PID, NID, IFLAG" : "PID, NSID, IFLAG");
+    for (std::size_t c = 0; c < b.cards.size(); ++c) {
+        if (b.cards[c].blank()) continue;
+        const Card f = card(b, c);
+        const long long pid = f.id(0, "PID"), id = f.id(1, single ? "NID" : "NSID");
+        require_rigid_part(f, pid, "PID");
+        if (f.id(2, "IFLAG") != 0)
+            note(b, f.line(),
+                 "IFLAG ignored: the body's mass and inertia are those of all its particles");
+        const std::string part = "part_" + std::to_string(pid);
+        if (single)
+            add_node_to_group("extra_nodes_" + std::to_string(pid), id,
+                              "{type: rigid, nodes: [" + part + ", NODES]}", {&b, f.line()},
+                              constraints_);
+        else
+            constraints_.push_back({"  - {type: rigid, nodes: [" + part + ", " +
+                                        yaml_name(set_name(f, "node", id)) + "]}",
+                                    {&b, f.line()}});
+    }
+}
+
 /// *CONSTRAINED_SPOTWELD (_ID): each weld's two nodes move as one rigid body; the failure
 /// data is noted (a weld never fails).
 void DeckTranslator::spot_weld(const DeckBlock& b) {

@@ -50,6 +50,8 @@ const std::vector<CardReader>& card_readers() {
         {"CONTACT_SURFACE_TO_SURFACE", true, P::References, &T::contact},
         {"CONTACT_NODES_TO_SURFACE", true, P::References, &T::contact},
         {"CONSTRAINED_NODAL_RIGID_BODY", true, P::References, &T::nodal_rigid_body},
+        {"CONSTRAINED_RIGID_BODIES", true, P::References, &T::rigid_bodies_joined},
+        {"CONSTRAINED_EXTRA_NODES", true, P::References, &T::extra_nodes},
         {"CONSTRAINED_SPOTWELD", true, P::References, &T::spot_weld},
         {"CONSTRAINED_GENERALIZED_WELD", true, P::References, &T::generalized_spot_weld},
         {"CONTROL_", true, P::References, &T::control},

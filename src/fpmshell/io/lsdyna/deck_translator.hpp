@@ -210,6 +210,9 @@ public:
     void nodal_rigid_body(const DeckBlock& b);
     /// *CONSTRAINED_SPOTWELD (_ID): each weld's two nodes move as one rigid body; the failure
     /// data is noted (a weld never fails).
+    void rigid_bodies_joined(const DeckBlock& b);
+    void extra_nodes(const DeckBlock& b);
+    void require_rigid_part(const Card& f, long long pid, const char* what);
     void spot_weld(const DeckBlock& b);
     /// *CONSTRAINED_GENERALIZED_WELD_SPOT (_ID): the nodes of NSID move as one rigid body; the
     /// failure data is noted.
