@@ -87,6 +87,27 @@ def run_deck(fpm, deck_path, end_time, timeout):
     return "failed", "exit %d: %s" % (r.returncode, errors[0] if errors else (r.stdout + r.stderr)[-300:]), elements, wall
 
 
+def published_values(deck, results):
+    """For each published LS-DYNA value of the deck (manifest key `published`), fpmshell's from
+    its run's results: (entry, fpmshell value or None)."""
+    out = []
+    for entry in deck.get("published", []):
+        path = os.path.join(results, entry["file"])
+        value = None
+        if os.path.exists(path):
+            with open(path) as f:
+                rows = [line.rstrip("\n").split(",") for line in f if line.strip()]
+            if rows and entry["column"] in rows[0]:
+                k = rows[0].index(entry["column"])
+                column = [float(r[k]) for r in rows[1:]]
+                if column:
+                    take = entry["take"]
+                    value = (column[-1] if take == "final" else max(column) if take == "max" else
+                             min(column) if take == "min" else max(column, key=abs))
+        out.append((entry, value))
+    return out
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--fpmshell", default=os.path.join(ROOT, "build", "fpmshell"))
@@ -114,7 +135,9 @@ def main():
         as_promised = result == expected
         wrong += 0 if as_promised else 1
         detail = detail.replace(os.path.abspath(args.work) + os.sep, "")
-        rows.append((deck, result, detail, elements, wall, as_promised))
+        results = os.path.join(os.path.dirname(path), "results") if result == "ran" else ""
+        compared = published_values(deck, results) if result == "ran" and not args.end_time else []
+        rows.append((deck, result, detail, elements, wall, as_promised, compared))
         print("%-14s %-8s %s%s" % (deck["name"], result, "" if as_promised else "(NOT AS PROMISED) ",
                                   detail[:200]))
     lines = [
@@ -130,13 +153,26 @@ def main():
         "| deck | source | what | elements | scope | result | wall s | as promised |",
         "|---|---|---|---|---|---|---|---|",
     ]
-    for deck, result, detail, elements, wall, ok in rows:
+    for deck, result, detail, elements, wall, ok, _ in rows:
         source = "%s `%s` (%s)" % (deck["repo"], deck["files"][0], deck["licence"])
         text = result + (": " + detail.replace("|", "\\|") if detail else "")
         lines.append("| %s | %s | %s | %s | %s | %s | %s | %s |" % (
             deck["name"], source, deck["what"], elements if elements is not None else "",
             deck["scope"], text, "%.1f" % wall if result == "ran" else "", "yes" if ok else "**no**"))
     lines += ["", "%d of %d decks as promised." % (len(rows) - wrong, len(rows)), ""]
+    table = [r for r in rows if r[6]]
+    if table:
+        lines += ["## Published LS-DYNA results beside fpmshell's", "",
+                  "| deck | quantity | LS-DYNA | fpmshell | difference | source |", "|---|---|---|---|---|---|"]
+        for deck, *_, compared in table:
+            for entry, value in compared:
+                ref = entry["lsdyna"]
+                diff = "%+.1f %%" % (100 * (value - ref) / abs(ref)) if value is not None and ref else ""
+                lines.append("| %s | %s | %.6g %s | %s | %s | %s |" % (
+                    deck["name"], entry["quantity"], ref, entry["unit"],
+                    "%.6g %s" % (value, entry["unit"]) if value is not None else "not in the results",
+                    diff, deck.get("published_source", "")))
+        lines.append("")
     for note in json.load(open(args.manifest)).get("notes", []):
         lines += [note, ""]
     with open(args.output, "w") as f:

@@ -202,6 +202,22 @@ refused("extra nodes of a deformable part", "*CONSTRAINED_EXTRA_NODES_NODE\n    
 refused("joined with a deformable part", "*CONSTRAINED_RIGID_BODIES\n         3         1\n",
         "model.k:", "*CONSTRAINED_RIGID_BODIES", "PIDC 1: the part is not of *MAT_RIGID")
 
+# nodes that start behind a wall: LS-DYNA releases them from it; fpmshell leaves them out of the
+# wall's contact with a note (initially_inside: release), where a YAML model without the key is an
+# error that names the key. The floor raised to z = 2 mm, 0.5 mm above the plate.
+FLOOR = "       0.0       0.0       0.0       0.0       0.0       1.0       0.2\n"
+assert FLOOR in deck
+raised = write(os.path.join(WORK, "behind"), "model.k",
+               deck.replace(FLOOR, "       0.0       0.0     0.002       0.0       0.0     1.002       0.2\n"))
+r = fpmshell("check", raised)
+check("nodes behind a wall are released from it with a note", r.returncode == 0 and
+      "start inside its face" in r.stdout and "left out of this contact" in r.stdout, r.stdout + r.stderr)
+yaml_behind = write(os.path.join(WORK, "behind"), "model.yaml", twin.replace(
+    "point: [0, 0, 0], normal: [0, 0, 1], fixed: true", "point: [0, 0, 0.002], normal: [0, 0, 1], fixed: true"))
+r = fpmshell("check", yaml_behind)
+check("a YAML model: particles inside a rigid face are an error naming initially_inside",
+      r.returncode == 2 and "initially_inside: release" in r.stderr and "model.yaml:" in r.stderr, r.stderr)
+
 # the YAML keys: exactly one of nodes and rigid_body; rotation axes only for a rigid body
 for name, entry, words in (
         ("yaml both", "  - {nodes: part_3, rigid_body: part_3, fix: all}\n",

@@ -25,6 +25,8 @@ Model read_lsdyna_deck(const std::string& deck_path,
     DeckTranslation t =
         translate_lsdyna_deck(deck_path, std::filesystem::path(deck_path).filename().string());
     Model model = read_model_text(t.yaml, std::move(t.origins), deck_path, set_overrides);
+    // the translator's notes, then the model reader's (on the model the deck became)
+    t.notes.insert(t.notes.end(), model.notes.begin(), model.notes.end());
     model.notes = std::move(t.notes);
     return model;
 }

@@ -1,4 +1,6 @@
 // The `rigid_bodies` and `contact` blocks of the model file (see model_blocks.hpp).
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -185,9 +187,9 @@ void read_contact(const YamlValue& v, Model& model) {
             read_contact_method(m, c);
             read_friction(m, c);
         } else {
-            const YamlMap m =
-                item.map({"type", "body", "nodes", "method", "penalty_scale", "max_iterations",
-                          "friction", "friction_dynamic", "friction_decay", "offset"});
+            const YamlMap m = item.map({"type", "body", "nodes", "method", "penalty_scale",
+                                        "max_iterations", "friction", "friction_dynamic",
+                                        "friction_decay", "offset", "initially_inside"});
             c.type = ContactType::Rigid;
             c.body = named_rigid_body(model, m.at("body", "the name of a rigid body"));
             c.nodes = m.find("nodes") ? named_node_set(model, *m.find("nodes"))
@@ -196,22 +198,43 @@ void read_contact(const YamlValue& v, Model& model) {
             read_friction(m, c);
             c.offset = m.non_negative_or("offset", -1.0);
             // A particle that starts inside the face (its offset included) would be thrown out
-            // of it in one step.
+            // of it in one step: an error, or (`initially_inside: release`, as LS-DYNA's walls
+            // release the nodes that start behind them) left out of this contact, with a note.
+            const bool release =
+                m.choice_or("initially_inside", {"error", "release"}, "error") == "release";
             const RigidBody& rb = model.rigid_bodies[static_cast<std::size_t>(c.body)];
             const std::vector<Real> h = node_thickness(model);
+            std::vector<Index> kept;
+            long released = 0;
+            Real deepest = 0;
             for (const Index p : c.nodes) {
                 const auto up = static_cast<std::size_t>(p);
                 const RigidFacePoint face = rigid_face_point(rb, model.nodes[up], Vec3::Zero());
-                if (!face.faces) continue;
                 const Real offset = c.offset >= 0 ? c.offset : 0.5 * h[up];
-                const Real behind = offset - face.normal.dot(model.nodes[up] - face.anchor);
-                if (behind > 1e-9 * (1.0 + rb.point.norm()))
+                const Real behind =
+                    face.faces ? offset - face.normal.dot(model.nodes[up] - face.anchor) : 0.0;
+                if (!(behind > 1e-9 * (1.0 + rb.point.norm()))) {
+                    kept.push_back(p);
+                    continue;
+                }
+                if (!release)
                     item.fail(
                         "particle " + std::to_string(p + 1) + " starts " + std::to_string(behind) +
                         " inside the face of rigid body '" + rb.name +
                         "' (a particle touches it with a ball of half its thickness, or of the "
                         "contact's offset; the face normal points towards the shell); move the "
-                        "body by that much or check the sign of its normal");
+                        "body by that much, check the sign of its normal, or leave such "
+                        "particles out with initially_inside: release");
+                ++released;
+                deepest = std::max(deepest, behind);
+            }
+            if (released > 0) {
+                c.nodes = std::move(kept);
+                model.notes.push_back(fmt::format(
+                    "contact {} with rigid body '{}': {} particle(s) start inside its face (the "
+                    "deepest by {:.4g}): left out of this contact (initially_inside: release, as "
+                    "LS-DYNA releases the nodes that start behind a wall)",
+                    model.contacts.size() + 1, rb.name, released, deepest));
             }
         }
         model.contacts.push_back(c);

@@ -424,10 +424,11 @@ void DeckTranslator::write_walls(std::vector<Line>& out) {
     }
     std::vector<Line> contacts;
     for (const WallDef& w : walls_)
-        // LS-DYNA's walls act on the nodes themselves, not on their shells' thickness: offset 0
+        // LS-DYNA's walls act on the nodes themselves, not on their shells' thickness: offset 0;
+        // the nodes that start behind a wall are released from it (noted by the model reader)
         contacts.push_back({"  - {type: rigid, body: rigidwall" + std::to_string(w.id) +
                                 (w.nodes.empty() ? "" : ", nodes: " + yaml_name(w.nodes)) +
-                                ", offset: 0" +
+                                ", offset: 0, initially_inside: release" +
                                 (w.friction == 0   ? ""
                                  : w.friction == 1 ? ", friction: stick"
                                                    : ", friction: " + num(w.friction)) +
