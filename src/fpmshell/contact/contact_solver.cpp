@@ -188,13 +188,18 @@ void ContactSolver::search(Definition& d, const std::vector<Vec3>& x) {
     const std::size_t n_chunks = (n_slaves + k_collect_chunk - 1) / k_collect_chunk;
     if (search_chunks_.size() < n_chunks) search_chunks_.resize(n_chunks);
     d.candidate_start.assign(n_slaves + 1, 0);
+    // the first search (at the initial geometry) counts the particles that start closer to a
+    // face than their thickness offsets (initial penetrations, reported as LS-DYNA does)
+    const bool first = !d.searched;
+    long overlapping = 0;  // a count: the same for any thread count
     [[maybe_unused]] const bool parallel = n_slaves >= parallel_min_slaves_;
-#pragma omp parallel for schedule(dynamic) if (parallel)
+#pragma omp parallel for schedule(dynamic) reduction(+ : overlapping) if (parallel)
     for (std::size_t chunk = 0; chunk < n_chunks; ++chunk) {
         std::vector<Index>& found = search_chunks_[chunk];
         found.clear();
         for (std::size_t i = chunk * k_collect_chunk;
              i < std::min(n_slaves, (chunk + 1) * k_collect_chunk); ++i) {
+            bool overlaps = false;
             const Index s = d.slaves[i];
             const Vec3& xs = x[static_cast<std::size_t>(s)];
             const Vec3& xs0 = model_.nodes[static_cast<std::size_t>(s)];
@@ -225,12 +230,16 @@ void ContactSolver::search(Definition& d, const std::vector<Vec3>& x) {
                     closest_point_on_triangle(xs0, model_.nodes[static_cast<std::size_t>(t[0])],
                                               model_.nodes[static_cast<std::size_t>(t[1])],
                                               model_.nodes[static_cast<std::size_t>(t[2])], 0.0);
-                if ((xs0 - cp0.point).norm() < d.exclusion_radius) return;
+                const Real distance0 = (xs0 - cp0.point).norm();
+                if (first && distance0 < offset) overlaps = true;
+                if (distance0 < d.exclusion_radius) return;
                 found.push_back(e);
             });
             d.candidate_start[i + 1] = static_cast<std::int64_t>(found.size());  // in the chunk
+            if (overlaps) ++overlapping;
         }
     }
+    stats_.initial_penetrations += overlapping;
     d.candidates.clear();
     for (std::size_t chunk = 0; chunk < n_chunks; ++chunk) {
         const auto base = static_cast<std::int64_t>(d.candidates.size());
@@ -971,6 +980,7 @@ void ContactSolver::transfer_state(Archive& ar) {
     ContactStatistics& st = stats_;
     ar(st.active, st.max_active, st.sweeps, st.max_sweeps, st.unconverged_steps, st.searches);
     ar(st.held_penetrations, st.max_penetration, st.max_penetration_ratio, st.max_penetration_step);
+    ar(st.initial_penetrations);
     ar(st.max_penetration_particle, st.max_penetration_element, st.seconds);
     memory_.transfer(ar);
     ar(slave_force_);

@@ -45,6 +45,10 @@ struct ContactStatistics {
     Index max_penetration_particle = -1;
     Index max_penetration_element = -1;  ///< -1 when it was against a rigid body
     double seconds = 0;                  ///< wall time spent in contact (search + enforcement)
+    /// Self-contact particles that start closer to a face than their thickness offsets (initial
+    /// penetrations, counted at the first search; left out of the contact with those faces by
+    /// the exclusion radius, theory.md R8)
+    long initial_penetrations = 0;
     /// Self-contact pairs dropped by their clearance (theory.md eq. 8.1d) without being
     /// computed, over the run
     long pairs_skipped = 0;

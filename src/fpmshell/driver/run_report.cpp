@@ -62,6 +62,12 @@ void ClosingReport::finish(const ExplicitSolver& solver, const RunEnd& end) {
             "held inside, {} searches, {:.2f} s ({:.1f} % of the time loop)",
             c->max_active, c->max_sweeps, c->unconverged_steps, c->held_penetrations, c->searches,
             c->seconds, seconds > 0 ? 100 * c->seconds / seconds : 0.0);
+        if (c->initial_penetrations > 0)
+            log_.print(
+                "contact: {} particles started closer to a face than their thickness offsets "
+                "(initial penetrations); the contact leaves those pairs out (exclusion radius, "
+                "theory.md R8)",
+                c->initial_penetrations);
     }
     log_.print("results in {}", dir_.string());
 }

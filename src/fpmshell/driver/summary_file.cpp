@@ -66,6 +66,7 @@ JsonValue contact_json(const ContactStatistics& c, double wall) {
     cj.set("unconverged_steps", c.unconverged_steps);
     cj.set("searches", c.searches);
     cj.set("held_penetrations", c.held_penetrations);
+    cj.set("initial_penetrations", c.initial_penetrations);
     cj.set("seconds", c.seconds);
     cj.set("share_of_time_loop", wall > 0 ? c.seconds / wall : 0.0);
     return cj;

@@ -19,7 +19,7 @@ constexpr char k_magic[8] = {'F', 'P', 'M', 'S', 'H', 'R', 'S', 'T'};
 // section "mass_scaling", the masses mass scaling has added during the run; one section per
 // result file, "history", "energy" and "fields"; the contact forces on each definition's
 // slaves in the section "contact").
-constexpr std::uint32_t k_format_version = 7;
+constexpr std::uint32_t k_format_version = 8;
 
 /// Bytes of the checksum at the end of the file: the CRC-32 (zlib's, little-endian) of every
 /// byte before it. It turns a file damaged after it was written (cut short, a flipped bit, an

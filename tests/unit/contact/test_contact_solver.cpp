@@ -453,3 +453,33 @@ TEST(Contact, TheSlaveForceOfASelfContactIsTheWeightItCarries) {
     EXPECT_NEAR(s.contact_force(0).x(), 0.0, 1e-9 * weight);
     EXPECT_NEAR(s.state().x[4].z(), 0.01, 1e-3 * 0.01);  // h apart (half of each thickness)
 }
+
+// Initial penetrations (theory.md R8; LS-DYNA reports them): a 0.6 x 0.6 plate of 7 x 7
+// particles 0.5 h above a 1 x 1 plate, both h = 0.01, so every particle of the small plate and
+// the 7 x 7 of the big one below it start closer to a face than the offset h; the first search
+// counts them once (98), and the contact leaves those pairs out (the exclusion radius): the
+// plates pass through each other where they overlap, as the exclusion says, and no force acts.
+TEST(Contact, InitialPenetrationsAreCountedAtTheFirstSearch) {
+    PlateParams bottom;
+    bottom.nx = bottom.ny = 10;
+    PlateParams top;
+    top.length_x = top.length_y = 0.6;
+    top.nx = top.ny = 6;
+    top.origin = Vec3(0.2, 0.2, 0.005);
+    MeshData a = generate_plate(bottom), b = generate_plate(top);
+    MeshData both = a;
+    const auto offset = static_cast<Index>(a.nodes.size());
+    both.nodes.insert(both.nodes.end(), b.nodes.begin(), b.nodes.end());
+    for (auto t : b.triangles)
+        both.triangles.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
+    Model m = from_mesh(both, 0.01, k_steel);
+    ContactDefinition self;
+    self.elements = m.element_sets["all"];
+    m.contacts.push_back(self);
+    ExplicitSolver s(m);
+    for (int step = 0; step < 5; ++step) s.step(1e30);
+    ASSERT_NE(s.contact_statistics(), nullptr);
+    // the bottom plate's particles at x, y in [0.2, 0.8] (every 0.1: 7 x 7) and all 49 above
+    EXPECT_EQ(s.contact_statistics()->initial_penetrations, 98);
+    EXPECT_EQ(s.contact_statistics()->max_active, 0);
+}
