@@ -102,8 +102,9 @@ def published_values(deck, results):
                 column = [float(r[k]) for r in rows[1:]]
                 if column:
                     take = entry["take"]
+                    # "largest magnitude": sign conventions of wall forces differ between codes
                     value = (column[-1] if take == "final" else max(column) if take == "max" else
-                             min(column) if take == "min" else max(column, key=abs))
+                             min(column) if take == "min" else max(abs(v) for v in column))
         out.append((entry, value))
     return out
 

@@ -579,8 +579,11 @@ for keyword, words, count in [("*CONTACT_SINGLE_SURFACE", "the older single-surf
                               ("*CONTACT_SURFACE_TO_SURFACE", "a one-sided contact", 2),
                               ("*CONTACT_NODES_TO_SURFACE", "a one-sided contact", 2),
                               ("*CONTACT_AUTOMATIC_GENERAL", "general contact", 1),
-                              ("*CONTACT_AUTOMATIC_SINGLE_SURFACE_MORTAR", "_MORTAR", 1)]:
-    path, r = deck_case(keyword[1:].lower(), keyword + "\n         1         2         3         3\n",
+                              ("*CONTACT_AUTOMATIC_SINGLE_SURFACE_MORTAR", "_MORTAR", 1),
+                              ("*CONTACT_FORMING_ONE_WAY_SURFACE_TO_SURFACE", "a forming contact", 2),
+                              ("*CONTACT_FORMING_SURFACE_TO_SURFACE_ID", "a forming contact", 2)]:
+    cid = "         7\n" if keyword.endswith("_ID") else ""
+    path, r = deck_case(keyword[1:].lower(), keyword + "\n" + cid + "         1         2         3         3\n",
                         base=two_parts)
     check(f"{keyword}: read as the self-contact with a note", r.returncode == 0 and
           f"contact self over {count} elements" in r.stdout and words in r.stdout,

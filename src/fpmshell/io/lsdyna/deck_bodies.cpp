@@ -308,6 +308,14 @@ const ContactForm k_contact_forms[] = {
     {"CONTACT_NODES_TO_SURFACE", 4, false,
      "a one-sided contact (the side its segments' normals point to), read as the automatic, "
      "two-sided one"},
+    {"CONTACT_FORMING_ONE_WAY_SURFACE_TO_SURFACE", 7, false,
+     "a forming contact (a sheet against its tools, the tools' side only), read as the "
+     "automatic, two-sided one"},
+    {"CONTACT_FORMING_SURFACE_TO_SURFACE", 5, false,
+     "a forming contact (a sheet against its tools), read as the automatic, two-sided one"},
+    {"CONTACT_FORMING_NODES_TO_SURFACE", 5, false,
+     "a forming contact (a sheet's nodes against its tools), read as the automatic, two-sided "
+     "one"},
 };
 
 }  // namespace

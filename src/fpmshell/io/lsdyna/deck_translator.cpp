@@ -49,6 +49,9 @@ const std::vector<CardReader>& card_readers() {
         {"CONTACT_SINGLE_SURFACE", true, P::References, &T::contact},
         {"CONTACT_SURFACE_TO_SURFACE", true, P::References, &T::contact},
         {"CONTACT_NODES_TO_SURFACE", true, P::References, &T::contact},
+        {"CONTACT_FORMING_ONE_WAY_SURFACE_TO_SURFACE", true, P::References, &T::contact},
+        {"CONTACT_FORMING_SURFACE_TO_SURFACE", true, P::References, &T::contact},
+        {"CONTACT_FORMING_NODES_TO_SURFACE", true, P::References, &T::contact},
         {"CONSTRAINED_NODAL_RIGID_BODY", true, P::References, &T::nodal_rigid_body},
         {"CONSTRAINED_RIGID_BODIES", true, P::References, &T::rigid_bodies_joined},
         {"CONSTRAINED_EXTRA_NODES", true, P::References, &T::extra_nodes},
@@ -197,15 +200,16 @@ std::string DeckTranslator::unsupported_reason(const std::string& k) {
                "the model";
     if (starts_with(k, "CONSTRAINED_"))
         return "this constraint is not supported (fpmshell reads "
-               "*CONSTRAINED_NODAL_RIGID_BODY, *CONSTRAINED_SPOTWELD and "
-               "*CONSTRAINED_GENERALIZED_WELD_SPOT), and ignoring it would change the model";
+               "*CONSTRAINED_NODAL_RIGID_BODY, *CONSTRAINED_SPOTWELD, "
+               "*CONSTRAINED_GENERALIZED_WELD_SPOT, *CONSTRAINED_RIGID_BODIES and "
+               "*CONSTRAINED_EXTRA_NODES), and ignoring it would change the model";
     if (starts_with(k, "BOUNDARY_PRESCRIBED_MOTION"))
-        return "fpmshell reads *BOUNDARY_PRESCRIBED_MOTION_NODE and _SET (with _ID); a "
-               "rigid part's motion cannot be prescribed";
+        return "fpmshell reads *BOUNDARY_PRESCRIBED_MOTION_NODE, _SET and _RIGID (with _ID)";
     if (starts_with(k, "CONTACT_"))
         return "fpmshell reads *CONTACT_AUTOMATIC_SINGLE_SURFACE, _SURFACE_TO_SURFACE, "
-               "_NODES_TO_SURFACE, _GENERAL and *CONTACT_SINGLE_SURFACE, _SURFACE_TO_SURFACE, "
-               "_NODES_TO_SURFACE (as its shell self-contact)";
+               "_NODES_TO_SURFACE, _GENERAL, *CONTACT_SINGLE_SURFACE, _SURFACE_TO_SURFACE, "
+               "_NODES_TO_SURFACE and *CONTACT_FORMING_ (as its shell self-contact); tied "
+               "contacts are not supported";
     if (starts_with(k, "INITIAL_"))
         return "fpmshell reads *INITIAL_VELOCITY (with NSIDEX), *INITIAL_VELOCITY_NODE and "
                "*INITIAL_VELOCITY_GENERATION";
