@@ -5,7 +5,8 @@ history.csv bytes:
 - *BOUNDARY_PRESCRIBED_MOTION_RIGID: the hammer driven down at a velocity (DOF 3, VAD 0), turned
   about x (DOF 5), lowered by a displacement (VAD 2) -> `boundary` entries of type rigid_body;
 - *CONSTRAINED_EXTRA_NODES_NODE / _SET and *CONSTRAINED_RIGID_BODIES -> `constraints` entries over
-  a list of node sets;
+  a list of node sets; *CONTACT_TIED_SURFACE_TO_SURFACE_OFFSET -> a `constraints` entry of type
+  tied;
 - refusals with exit 2 and one sentence naming the place: VAD 1, DOF 4 with a vector, a
   rotation given as an angle, a part that is not rigid; the YAML keys' errors.
 
@@ -201,6 +202,40 @@ refused("extra nodes of a deformable part", "*CONSTRAINED_EXTRA_NODES_NODE\n    
         "model.k:", "*CONSTRAINED_EXTRA_NODES_NODE", "PID 1: the part is not of *MAT_RIGID")
 refused("joined with a deformable part", "*CONSTRAINED_RIGID_BODIES\n         3         1\n",
         "model.k:", "*CONSTRAINED_RIGID_BODIES", "PIDC 1: the part is not of *MAT_RIGID")
+
+# *CONTACT_TIED_SURFACE_TO_SURFACE_OFFSET: the doubler (part 2) tied to the plate (part 1) instead
+# of welded, lowered to 1.5 mm above the plate (within the tie's reach, the larger thickness,
+# 2 mm) -> `constraints` of type tied; a tiebreak is refused
+mesh_text = read(os.path.join(HAMMER, "plate_hammer_mesh.k"))
+lowered = "\n".join(
+    line[:40] + "           0.003" + line[56:]
+    if line[:8].strip().isdigit() and 101 <= int(line[:8]) <= 125 and line[40:56].strip() == "0.005"
+    else line for line in mesh_text.split("\n"))
+assert lowered != mesh_text
+TIE = ("*CONTACT_TIED_SURFACE_TO_SURFACE_OFFSET_ID\n         5doubler on plate\n"
+       "$#    ssid      msid     sstyp     mstyp\n         2         1         3         3\n\n")
+folder = os.path.join(WORK, "tied")
+d = write(folder, "model.k", deck.replace(WELDS, "")[:-len(END)] + TIE + END)
+t = write(folder, "model.yaml", twin.replace("\nconstraints:\n", "\nconstraints:\n"
+                                             "  - {type: tied, nodes: part_2, elements: part_1}\n")
+          .replace("".join(f"  - {{type: rigid, nodes: weld_{w}}}\n" for w in "abcd"), ""))
+with open(os.path.join(folder, "plate_hammer_mesh.k"), "w") as f:
+    f.write(lowered)
+r_deck, h_deck = run(d)
+r_twin, h_twin = run(t)
+check("tied contact: deck and twin run", r_deck.returncode == 0 and r_twin.returncode == 0,
+      r_deck.stderr + r_twin.stderr)
+if r_deck.returncode == 0 and r_twin.returncode == 0:
+    check("tied contact: the same history.csv", read(h_deck) == read(h_twin), "the files differ")
+c = fpmshell("check", d)
+check("tied contact: the doubler's 25 particles tied to the plate's faces",
+      c.returncode == 0 and "tied: 25 particles to faces" in c.stdout and
+      "keep their offset" not in c.stdout, c.stdout + c.stderr)
+r = fpmshell("check", write(os.path.join(WORK, "tiebreak"), "model.k", deck[:-len(END)] + TIE.replace(
+    "*CONTACT_TIED_SURFACE_TO_SURFACE_OFFSET_ID", "*CONTACT_TIEBREAK_SURFACE_TO_SURFACE_ID") + END))
+check("a tiebreak contact is refused with one sentence", r.returncode == 2 and
+      "*CONTACT_TIEBREAK_SURFACE_TO_SURFACE_ID" in r.stderr and "tiebreak" in r.stderr and
+      len(r.stderr.strip().splitlines()) == 1, r.stderr)
 
 # nodes that start behind a wall: LS-DYNA releases them from it; fpmshell leaves them out of the
 # wall's contact with a note (initially_inside: release), where a YAML model without the key is an

@@ -90,6 +90,12 @@ std::string model_summary(const Model& model) {
         out += fmt::format("\nnodal rigid bodies: {} ({} particles)", bodies.bodies().size(),
                            particles);
     }
+    if (const TiedSurfaces* tied = solver.tied_surfaces())
+        out += fmt::format(
+            "\ntied: {} particles to faces{}", tied->tied(),
+            tied->untied() > 0
+                ? fmt::format(", {} with no face within the tolerance (left free)", tied->untied())
+                : std::string());
     const Real dt = solver.stable_dt();
     out += fmt::format("\nstable time step {:.6g} (time_step_scale {} x critical)\n", dt,
                        model.control.time_step_scale);

@@ -223,6 +223,8 @@ void check_distributable(const Model& model, int ranks) {
         refuse("control.membrane", "the smoothed membrane");
     if (!model.nodal_rigid_bodies.empty())
         refuse("constraints", "a nodal rigid body (constraints of type rigid)");
+    if (!model.tied_surfaces.empty())
+        refuse("constraints", "a tied surface (constraints of type tied)");
     for (const Material& m : model.materials)
         if (m.rigid) refuse("materials", "a rigid material");
 }

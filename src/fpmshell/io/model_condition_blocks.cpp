@@ -200,6 +200,37 @@ void read_initial_conditions(const YamlValue& v, Model& model) {
     }
 }
 
+namespace {
+
+/// A `constraints` entry of type tied: nodes (a set or a list of sets), elements (the faces),
+/// tolerance (theory.md §6.12).
+void read_tied_surface(const YamlValue& item, Model& model) {
+    const YamlMap m = item.map({"type", "nodes", "elements", "tolerance"});
+    TiedSurface t;
+    const YamlValue nodes = m.at("nodes", "a node set name or a list of them");
+    for (const YamlValue& name :
+         nodes.is_list() ? nodes.list("node set names") : std::vector<YamlValue>{nodes}) {
+        const auto& set = named_node_set(model, name);
+        t.nodes.insert(t.nodes.end(), set.begin(), set.end());
+    }
+    const YamlValue elements = m.at("elements", "an element set name or a list of them");
+    for (const YamlValue& name : elements.is_list() ? elements.list("element set names")
+                                                    : std::vector<YamlValue>{elements}) {
+        const auto& set = named_element_set(model, name);
+        t.elements.insert(t.elements.end(), set.begin(), set.end());
+    }
+    for (auto* list : {&t.nodes, &t.elements}) {
+        std::sort(list->begin(), list->end());
+        list->erase(std::unique(list->begin(), list->end()), list->end());
+    }
+    if (t.nodes.empty()) nodes.fail("a tied constraint needs at least one particle");
+    if (t.elements.empty()) elements.fail("a tied constraint needs at least one element");
+    t.tolerance = m.non_negative_or("tolerance", 0.0);
+    model.tied_surfaces.push_back(std::move(t));
+}
+
+}  // namespace
+
 void read_constraints(const YamlValue& v, Model& model) {
     // the particles that have a boundary condition: a rigid body's motion is that of all its
     // particles, so one fixed or driven particle would have to move the others
@@ -207,10 +238,15 @@ void read_constraints(const YamlValue& v, Model& model) {
     for (const BoundaryCondition& bc : model.boundary)
         for (const Index p : bc.nodes) bounded[static_cast<std::size_t>(p)] = 1;
     for (const YamlValue& item : v.list("constraints")) {
+        const YamlMap any = item.open_map("a constraint");
+        const std::string type =
+            any.at("type", "rigid (the nodes move as one rigid body) or tied (to faces)")
+                .choice({"rigid", "tied"});
+        if (type == "tied") {
+            read_tied_surface(item, model);
+            continue;
+        }
         const YamlMap m = item.map({"type", "nodes"});
-        // `type` names the kind of constraint; rigid is the one fpmshell has
-        static_cast<void>(
-            m.at("type", "rigid (the nodes move as one rigid body)").choice({"rigid"}));
         const YamlValue nodes = m.at("nodes", "a node set name or a list of them");
         NodalRigidBody body;
         if (nodes.is_list()) {

@@ -203,6 +203,15 @@ struct NodalRigidBody {
     std::vector<Index> nodes;  ///< at least two, sorted
 };
 
+/// One entry of `constraints` of type tied: each particle of `nodes` stays at its initial place
+/// relative to the closest face of `elements` within `tolerance` (LS-DYNA's *CONTACT_TIED_*;
+/// solver/tied_surfaces.hpp, theory.md §6.12).
+struct TiedSurface {
+    std::vector<Index> nodes;     ///< the tied particles (slaves), sorted
+    std::vector<Index> elements;  ///< the faces they are tied to (masters), sorted
+    Real tolerance = 0;           ///< largest distance to a face; 0: each pair's larger thickness
+};
+
 enum class ContactType { Self, Rigid };
 enum class ContactMethod { LagrangeMultiplier, Penalty };
 
@@ -317,6 +326,7 @@ struct Model {
     std::vector<InitialVelocity> initial_conditions;
     std::vector<RigidBody> rigid_bodies;
     std::vector<NodalRigidBody> nodal_rigid_bodies;  ///< `constraints` of type rigid
+    std::vector<TiedSurface> tied_surfaces;          ///< `constraints` of type tied
     std::vector<ContactDefinition> contacts;
     Damping damping;
     Control control;

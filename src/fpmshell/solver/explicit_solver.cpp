@@ -97,12 +97,14 @@ ExplicitSolver::ExplicitSolver(const Model& model)
     bodies_ = RigidBodyState::from_model(model);
     for (const RigidBodyState& b : bodies_)
         energy_.external_work += 0.5 * b.mass * b.v.squaredNorm();
-    if (!model.contacts.empty()) {
+    if (!model.contacts.empty() || !model.tied_surfaces.empty()) {
         std::vector<Real> thickness(model.triangles.size());
         for (std::size_t e = 0; e < thickness.size(); ++e)
             thickness[e] = elements_.thickness(static_cast<Index>(e));
-        contact_ = std::make_unique<ContactSolver>(model, topology_,
-                                                   bc_->free_inverse_mass(s_.mass), thickness);
+        if (!model.contacts.empty())
+            contact_ = std::make_unique<ContactSolver>(model, topology_,
+                                                       bc_->free_inverse_mass(s_.mass), thickness);
+        if (!model.tied_surfaces.empty()) tied_ = std::make_unique<TiedSurfaces>(model, thickness);
     }
     refresh_contact_masses();
     if (contact_ && decomposition_.distributed()) {  // the contact runs whole on every rank
@@ -117,7 +119,8 @@ ExplicitSolver::ExplicitSolver(const Model& model)
     // the velocity update and the energy pass are one sweep over the particle arrays instead
     // of two (the same sums in the same order).
     fused_particle_pass_ = !bc_->has_prescribed_motions() &&
-                           !(contact_ && contact_->has_lagrange()) && nodal_rigid_bodies_.empty();
+                           !(contact_ && contact_->has_lagrange()) && nodal_rigid_bodies_.empty() &&
+                           !tied_;
 }
 
 Vec3 ExplicitSolver::body_acceleration(Index b) const {
@@ -159,9 +162,12 @@ void ExplicitSolver::cycle(const CyclePolicy& policy, Real load_time, Real dt_ca
         update_body_velocities(dt);
         const PrescribedMotionTimes at = prescribed_motion_times(policy, load_time, dt);
         nodal_rigid_bodies_.make_rigid(s_, at, model_.curves);  // 6b §6.11
+        if (tied_) tied_->impose(s_, *bc_);                     // 6c §6.12
         lagrange_contact(dt);                                   // 7 §8.3
-        if (contact_ && contact_->has_lagrange())               // what the contact moved (§6.11)
+        if (contact_ && contact_->has_lagrange()) {             // what the contact moved
             nodal_rigid_bodies_.make_rigid(s_, at, model_.curves);
+            if (tied_) tied_->impose(s_, *bc_);
+        }
         advance_particles(dt, particles);  // 8-9
     }
     book_energies(dt, particles);  // 8 §6.8

@@ -24,6 +24,7 @@
 #include "fpmshell/solver/nodal_rigid_bodies.hpp"
 #include "fpmshell/solver/particle_state.hpp"
 #include "fpmshell/solver/shell_elements.hpp"
+#include "fpmshell/solver/tied_surfaces.hpp"
 
 namespace fpmshell {
 
@@ -77,6 +78,8 @@ public:
     [[nodiscard]] Vec3 contact_force(Index k) const {
         return contact_ ? contact_->slave_force(static_cast<std::size_t>(k)) : Vec3::Zero();
     }
+    /// The ties of `constraints` of type tied (§6.12), nullptr without them.
+    [[nodiscard]] const TiedSurfaces* tied_surfaces() const { return tied_.get(); }
     [[nodiscard]] const ContactStatistics* contact_statistics() const {
         return contact_ ? &contact_->statistics() : nullptr;
     }
@@ -225,6 +228,7 @@ private:
     std::vector<RigidBodyState> bodies_;
     std::unique_ptr<ContactSolver> contact_;  ///< null without contact definitions
     NodalRigidBodies nodal_rigid_bodies_;     ///< `constraints` and rigid materials (§6.11)
+    std::unique_ptr<TiedSurfaces> tied_;      ///< `constraints` of type tied (§6.12)
     /// per particle, the mass the contact gives it (its body's, eq. 6.11-5); empty without
     /// contact or nodal rigid bodies
     std::vector<Real> contact_mass_;

@@ -561,8 +561,11 @@ TEST(ModelReader, ReadsNodalRigidBodies) {
     EXPECT_EQ(m.nodal_rigid_bodies[0].nodes.size(), 2u);  // x = 1, y = 0 and 0.5
     expect_error(replaced(yaml, "0.6, 1]", "0.1, 1]"), 12, "constraints.0.nodes",
                  "a rigid body needs at least two particles, the set 'weld' has 1");
-    expect_error(replaced(yaml, "type: rigid", "type: tied"), 12, "constraints.0.type",
-                 "expected one of rigid");
+    expect_error(replaced(yaml, "type: rigid", "type: glued"), 12, "constraints.0.type",
+                 "expected one of rigid, tied");
+    // a tie needs the faces it ties to
+    expect_error(replaced(yaml, "type: rigid", "type: tied"), 12, "constraints.0.elements",
+                 "is required");
     expect_error(yaml + "boundary:\n  - {nodes: weld, fix: [uz]}\n", 12, "constraints.0.nodes",
                  "of the rigid body also has a boundary condition");
 }

@@ -402,6 +402,58 @@ std::string DeckTranslator::contact_friction(const Card& g) {
     return keys;
 }
 
+/// *CONTACT_TIED_NODES_TO_SURFACE, _SHELL_EDGE_TO_SURFACE, _SURFACE_TO_SURFACE (_OFFSET,
+/// _CONSTRAINED_OFFSET, _ID, _TITLE, _MPP): a `constraints` entry of type tied, the slave side's
+/// nodes tied to the master side's faces (theory.md §6.12).
+void DeckTranslator::tied_contact(const DeckBlock& b) {
+    const bool edge = starts_with(b.keyword, "CONTACT_TIED_SHELL_EDGE_TO_SURFACE");
+    const std::set<std::string> opt = options_of(b.keyword, edge ? 6 : 5);
+    for (const std::string& o : opt)
+        if (o != "ID" && o != "TITLE" && o != "MPP" && o != "OFFSET" && o != "CONSTRAINED")
+            refuse(b, "*" + b.keyword + ": the option _" + o +
+                          " is not supported (_OFFSET, _CONSTRAINED_OFFSET, _ID, _TITLE)");
+    std::size_t c = (opt.count("ID") || opt.count("TITLE")) ? 1 : 0;
+    if (opt.count("MPP")) {
+        ++c;
+        if (c < b.cards.size() && trim(b.cards[c].text).rfind('&', 0) == 0) ++c;
+    }
+    const Card f = required_card(b, c, "SSID, MSID, SSTYP, MSTYP");
+    if (f.id(4, "SBOXID") != 0 || f.id(5, "MBOXID") != 0)
+        f.fail("SBOXID and MBOXID are not supported (0 only)");
+    const long long ssid = f.id(0, "SSID"), msid = f.id(1, "MSID");
+    const long long sstyp = f.id(2, "SSTYP"), mstyp = f.id(3, "MSTYP");
+    std::string slaves;
+    if (sstyp == 4)
+        slaves = set_name(f, "node", ssid);
+    else if (sstyp == 2)
+        slaves = set_name(f, "part", ssid);
+    else if (sstyp == 3)
+        slaves = "part_" + std::to_string(ssid);
+    else
+        f.fail("SSTYP " + std::to_string(sstyp) +
+               " is not supported for a tied contact: 4 (node set), 2 (part set) or 3 (part)");
+    std::string masters;
+    if (mstyp == 2)
+        masters = set_name(f, "part", msid);
+    else if (mstyp == 3)
+        masters = "part_" + std::to_string(msid);
+    else
+        f.fail("MSTYP " + std::to_string(mstyp) +
+               " is not supported for a tied contact: 2 (part set) or 3 (part); give the "
+               "master faces as a part or part set");
+    constraints_.push_back(
+        {"  - {type: tied, nodes: " + yaml_name(slaves) + ", elements: " + yaml_name(masters) + "}",
+         {&b, f.line()}});
+    if (!opt.count("OFFSET"))
+        note(b, f.line(),
+             "the slave nodes keep their offset from the master faces (LS-DYNA moves them onto "
+             "the faces first)");
+    if (edge) note(b, f.line(), "the shell edges' rotations are not tied (their translations are)");
+    note(b, f.line(),
+         "as a tie of each slave node to its closest master face within the larger of their "
+         "thicknesses (SST, MST and the friction fields not used)");
+}
+
 /// The element set of one side of a contact: SID of type TYP (1 shell set, 2 part set,
 /// 3 part, 5 all; SID 0 is all).
 std::string DeckTranslator::contact_side(const Card& f, long long sid, long long typ,

@@ -49,6 +49,9 @@ const std::vector<CardReader>& card_readers() {
         {"CONTACT_SINGLE_SURFACE", true, P::References, &T::contact},
         {"CONTACT_SURFACE_TO_SURFACE", true, P::References, &T::contact},
         {"CONTACT_NODES_TO_SURFACE", true, P::References, &T::contact},
+        {"CONTACT_TIED_NODES_TO_SURFACE", true, P::References, &T::tied_contact},
+        {"CONTACT_TIED_SHELL_EDGE_TO_SURFACE", true, P::References, &T::tied_contact},
+        {"CONTACT_TIED_SURFACE_TO_SURFACE", true, P::References, &T::tied_contact},
         {"CONTACT_FORMING_ONE_WAY_SURFACE_TO_SURFACE", true, P::References, &T::contact},
         {"CONTACT_FORMING_SURFACE_TO_SURFACE", true, P::References, &T::contact},
         {"CONTACT_FORMING_NODES_TO_SURFACE", true, P::References, &T::contact},
@@ -208,8 +211,9 @@ std::string DeckTranslator::unsupported_reason(const std::string& k) {
     if (starts_with(k, "CONTACT_"))
         return "fpmshell reads *CONTACT_AUTOMATIC_SINGLE_SURFACE, _SURFACE_TO_SURFACE, "
                "_NODES_TO_SURFACE, _GENERAL, *CONTACT_SINGLE_SURFACE, _SURFACE_TO_SURFACE, "
-               "_NODES_TO_SURFACE and *CONTACT_FORMING_ (as its shell self-contact); tied "
-               "contacts are not supported";
+               "_NODES_TO_SURFACE and *CONTACT_FORMING_ (as its shell self-contact), and "
+               "*CONTACT_TIED_NODES_TO_SURFACE, _SHELL_EDGE_TO_SURFACE, _SURFACE_TO_SURFACE "
+               "(tiebreak and failing ties are not supported)";
     if (starts_with(k, "INITIAL_"))
         return "fpmshell reads *INITIAL_VELOCITY (with NSIDEX), *INITIAL_VELOCITY_NODE and "
                "*INITIAL_VELOCITY_GENERATION";

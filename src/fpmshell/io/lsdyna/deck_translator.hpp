@@ -233,6 +233,7 @@ public:
     void contact(const DeckBlock& b);
     /// The element set of one side of a contact: SID of type TYP (1 shell set, 2 part set,
     /// 3 part, 5 all; SID 0 is all).
+    void tied_contact(const DeckBlock& b);
     std::string contact_friction(const Card& g);
     std::string contact_side(const Card& f, long long sid, long long typ, const char* name);
     void write_walls(std::vector<Line>& out);

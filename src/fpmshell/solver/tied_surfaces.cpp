@@ -1,0 +1,116 @@
+// Tied surfaces: the pairing of each slave with its closest face at t = 0 (a bucket grid over the
+// faces), and the velocity projection of eq. 6.12-1 (theory.md §6.12).
+#include "fpmshell/solver/tied_surfaces.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "fpmshell/contact/bucket_grid.hpp"
+#include "fpmshell/contact/closest_point.hpp"
+#include "fpmshell/model/node_thickness.hpp"
+#include "fpmshell/solver/boundary_conditions.hpp"
+#include "fpmshell/solver/particle_state.hpp"
+
+namespace fpmshell {
+
+TiedSurfaces::TiedSurfaces(const Model& model, const std::vector<Real>& element_thickness) {
+    if (model.tied_surfaces.empty()) return;
+    const std::vector<Real> node_h =
+        mean_node_thickness(model.triangles, element_thickness, model.nodes.size());
+    for (const TiedSurface& surface : model.tied_surfaces) {
+        // the faces' boxes grown by the largest reach a pair may have
+        Real h_max = 0;
+        for (const Index e : surface.elements)
+            h_max = std::max(h_max, element_thickness[static_cast<std::size_t>(e)]);
+        for (const Index p : surface.nodes)
+            h_max = std::max(h_max, node_h[static_cast<std::size_t>(p)]);
+        const Real reach = surface.tolerance > 0 ? surface.tolerance : h_max;
+        std::vector<Vec3> lo(surface.elements.size()), hi(surface.elements.size());
+        Real mean_extent = 0;
+        for (std::size_t i = 0; i < surface.elements.size(); ++i) {
+            const auto& t = model.triangles[static_cast<std::size_t>(surface.elements[i])];
+            const Vec3& a = model.nodes[static_cast<std::size_t>(t[0])];
+            const Vec3& b = model.nodes[static_cast<std::size_t>(t[1])];
+            const Vec3& c = model.nodes[static_cast<std::size_t>(t[2])];
+            lo[i] = a.cwiseMin(b).cwiseMin(c) - Vec3::Constant(reach);
+            hi[i] = a.cwiseMax(b).cwiseMax(c) + Vec3::Constant(reach);
+            mean_extent += (hi[i] - lo[i]).maxCoeff();
+        }
+        mean_extent /= static_cast<Real>(surface.elements.size());
+        BucketGrid grid;
+        grid.build(lo, hi, mean_extent);
+        for (const Index s : surface.nodes) {
+            const Vec3& x = model.nodes[static_cast<std::size_t>(s)];
+            Tie best;
+            Real best_distance = 0;
+            grid.for_each_near(x, [&](Index item) {
+                const auto ui = static_cast<std::size_t>(item);
+                if ((x.array() < lo[ui].array()).any() || (x.array() > hi[ui].array()).any())
+                    return;
+                const Index e = surface.elements[ui];
+                const auto& t = model.triangles[static_cast<std::size_t>(e)];
+                if (t[0] == s || t[1] == s || t[2] == s) return;  // its own face
+                const TriangleClosestPoint cp =
+                    closest_point_on_triangle(x, model.nodes[static_cast<std::size_t>(t[0])],
+                                              model.nodes[static_cast<std::size_t>(t[1])],
+                                              model.nodes[static_cast<std::size_t>(t[2])], 0.0);
+                const Real distance = (x - cp.point).norm();
+                const Real tolerance =
+                    surface.tolerance > 0
+                        ? surface.tolerance
+                        : std::max(node_h[static_cast<std::size_t>(s)],
+                                   element_thickness[static_cast<std::size_t>(e)]);
+                if (distance > tolerance) return;
+                // the closest face; of equally close ones the first in the element order (the
+                // buckets' order is that of the items, the same on every run)
+                if (best.slave >= 0 && !(distance < best_distance)) return;
+                best = {s, t, cp.xi};
+                best_distance = distance;
+            });
+            if (best.slave >= 0)
+                ties_.push_back(best);
+            else
+                ++untied_;
+        }
+    }
+}
+
+void TiedSurfaces::impose(ParticleState& s, const BoundaryConditions& bc) const {
+    if (ties_.empty()) return;
+    Real scale = 0;  // the largest velocity of the tied particles
+    for (const Tie& t : ties_) {
+        scale = std::max(scale, s.v[static_cast<std::size_t>(t.slave)].cwiseAbs().maxCoeff());
+        for (const Index k : t.corner)
+            scale = std::max(scale, s.v[static_cast<std::size_t>(k)].cwiseAbs().maxCoeff());
+    }
+    const Real tolerance = 1e-13 * scale;
+    for (int sweep = 0; sweep < k_max_sweeps; ++sweep) {
+        Real largest = 0;
+        for (const Tie& t : ties_) {
+            const auto us = static_cast<std::size_t>(t.slave);
+            Vec3 mismatch = -s.v[us];
+            for (std::size_t k = 0; k < 3; ++k)
+                mismatch += t.xi[k] * s.v[static_cast<std::size_t>(t.corner[k])];
+            largest = std::max(largest, mismatch.cwiseAbs().maxCoeff());
+            // the impulse J per direction: v_s + J / m_s = sum xi_k (v_k - xi_k J / m_k)
+            const Vec3 inv_s = bc.free_inverse_mass(us, s.mass[us]);
+            Vec3 weight = inv_s;
+            std::array<Vec3, 3> inv_k;
+            for (std::size_t k = 0; k < 3; ++k) {
+                const auto uk = static_cast<std::size_t>(t.corner[k]);
+                inv_k[k] = bc.free_inverse_mass(uk, s.mass[uk]);
+                weight += (t.xi[k] * t.xi[k]) * inv_k[k];
+            }
+            Vec3 impulse = Vec3::Zero();
+            for (Eigen::Index d = 0; d < 3; ++d)
+                if (weight[d] > 0) impulse[d] = mismatch[d] / weight[d];
+            s.v[us] += inv_s.cwiseProduct(impulse);
+            for (std::size_t k = 0; k < 3; ++k)
+                s.v[static_cast<std::size_t>(t.corner[k])] -=
+                    t.xi[k] * inv_k[k].cwiseProduct(impulse);
+        }
+        if (largest <= tolerance) break;
+    }
+}
+
+}  // namespace fpmshell

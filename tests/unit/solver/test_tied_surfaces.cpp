@@ -1,0 +1,162 @@
+// Tied surfaces (solver/tied_surfaces.hpp, theory.md §6.12): a T-joint, a web whose lower edge
+// is tied to the faces of a flange it shares no particle with,
+// - pulled up and sideways while the flange is clamped at its ends: the tied edge moves with the
+//   point of its face, to rounding, and the balance closes (the ties do no work);
+// - free, the web thrown sideways: the momentum of the whole is conserved and the flange is
+//   dragged along;
+// - a particle with no face within the tolerance stays free (counted).
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "fpmshell/contact/closest_point.hpp"
+#include "fpmshell/solver/explicit_solver.hpp"
+#include "fpmshell/solver/tied_surfaces.hpp"
+#include "one_section_model.hpp"
+
+using namespace fpmshell;
+
+namespace {
+
+constexpr Real k_h = 0.01;
+
+/// Flange: 1 x 0.4 in z = 0, 8 x 4 squares; web: x in [0.3, 0.7], z in [0, 0.3] at y = 0.25,
+/// 4 x 3 squares, its 5 lower particles tied to the flange's faces. Returns the model and the
+/// web's lower and upper particles.
+struct TJoint {
+    Model model;
+    std::vector<Index> edge, top;
+};
+
+TJoint t_joint(bool clamped) {
+    PlateParams pp;
+    pp.length_x = 1;
+    pp.length_y = 0.4;
+    pp.nx = 8;
+    pp.ny = 4;
+    pp.pattern = DiagonalPattern::Alternate;
+    MeshData mesh = generate_plate(pp);
+    const auto n_flange = static_cast<Index>(mesh.nodes.size());
+    const auto e_flange = static_cast<Index>(mesh.triangles.size());
+    TJoint t;
+    for (int j = 0; j <= 3; ++j)
+        for (int i = 0; i <= 4; ++i) {
+            const auto p = static_cast<Index>(mesh.nodes.size());
+            mesh.nodes.push_back(Vec3(0.3 + 0.1 * i, 0.25, 0.1 * j));
+            if (j == 0) t.edge.push_back(p);
+            if (j == 3) t.top.push_back(p);
+        }
+    for (int j = 0; j < 3; ++j)
+        for (int i = 0; i < 4; ++i) {
+            const Index a = n_flange + 5 * j + i, b = a + 1, c = a + 5, d = a + 6;
+            mesh.triangles.push_back({a, b, d});
+            mesh.triangles.push_back({a, d, c});
+        }
+    t.model = test::one_section_model(mesh, k_h);
+    Model& m = t.model;
+    m.control.end_time = 1;
+    TiedSurface tie;
+    tie.nodes = t.edge;
+    for (Index e = 0; e < e_flange; ++e) tie.elements.push_back(e);
+    m.tied_surfaces.push_back(tie);
+    if (clamped) {
+        BoundaryCondition clamp;
+        for (Index p = 0; p < n_flange; ++p) {
+            const Real x = m.nodes[static_cast<std::size_t>(p)].x();
+            if (x < 1e-9 || x > 1 - 1e-9) clamp.nodes.push_back(p);
+        }
+        clamp.fixed.fill(true);
+        m.boundary.push_back(clamp);
+    }
+    return t;
+}
+
+/// The point of the flange each edge particle is tied to, from the initial geometry.
+std::vector<std::pair<std::array<Index, 3>, std::array<Real, 3>>> tied_points(const TJoint& t,
+                                                                              Index e_flange) {
+    std::vector<std::pair<std::array<Index, 3>, std::array<Real, 3>>> out;
+    for (const Index s : t.edge) {
+        const Vec3& x = t.model.nodes[static_cast<std::size_t>(s)];
+        Real best = 1e30;
+        std::pair<std::array<Index, 3>, std::array<Real, 3>> pick;
+        for (Index e = 0; e < e_flange; ++e) {
+            const auto& tri = t.model.triangles[static_cast<std::size_t>(e)];
+            const TriangleClosestPoint cp =
+                closest_point_on_triangle(x, t.model.nodes[static_cast<std::size_t>(tri[0])],
+                                          t.model.nodes[static_cast<std::size_t>(tri[1])],
+                                          t.model.nodes[static_cast<std::size_t>(tri[2])], 0.0);
+            const Real d = (x - cp.point).norm();
+            if (d < best) {
+                best = d;
+                pick = {tri, cp.xi};
+            }
+        }
+        out.push_back(pick);
+    }
+    return out;
+}
+
+}  // namespace
+
+TEST(TiedSurfaces, TheTiedEdgeMovesWithItsFace) {
+    TJoint t = t_joint(true);
+    for (const Index p : t.top)
+        t.model.loads.push_back({LoadType::Force, {p}, {}, 0, Vec3(0, 300, 1000), -1});
+    const auto e_flange = static_cast<Index>(t.model.tied_surfaces[0].elements.size());
+    const auto points = tied_points(t, e_flange);
+    ExplicitSolver s(t.model);
+    ASSERT_NE(s.tied_surfaces(), nullptr);
+    EXPECT_EQ(s.tied_surfaces()->tied(), 5u);
+    EXPECT_EQ(s.tied_surfaces()->untied(), 0u);
+    Real moved = 0;
+    for (int step = 0; step < 400; ++step) {
+        s.step(1e30);
+        for (std::size_t i = 0; i < t.edge.size(); ++i) {
+            const auto& [tri, xi] = points[i];
+            Vec3 point = Vec3::Zero(), point0 = Vec3::Zero();
+            for (std::size_t k = 0; k < 3; ++k) {
+                point += xi[k] * s.state().x[static_cast<std::size_t>(tri[k])];
+                point0 += xi[k] * t.model.nodes[static_cast<std::size_t>(tri[k])];
+            }
+            const auto us = static_cast<std::size_t>(t.edge[i]);
+            const Vec3 offset0 = t.model.nodes[us] - point0;  // 0 here: the edge lies in the face
+            // positions of order 1 m moved by velocities tied to 1e-13 of the largest: rounding
+            EXPECT_LT((s.state().x[us] - point - offset0).norm(), 1e-9) << "step " << step;
+            moved = std::max(moved, (s.state().x[us] - t.model.nodes[us]).norm());
+        }
+    }
+    EXPECT_GT(moved, 1e-5);                         // the flange bent under the pull
+    EXPECT_LT(std::abs(s.energy().error()), 1e-6);  // the ties do no work
+}
+
+TEST(TiedSurfaces, AFreeTJointKeepsItsMomentum) {
+    TJoint t = t_joint(false);
+    std::vector<Index> web;
+    for (Index p = static_cast<Index>(t.model.nodes.size()) - 20; p < t.model.n_particles(); ++p)
+        web.push_back(p);
+    t.model.initial_conditions.push_back({web, Vec3(0, 2, 0), Vec3::Zero()});
+    ExplicitSolver s(t.model);
+    auto momentum = [&] {
+        Vec3 p = Vec3::Zero();
+        for (std::size_t i = 0; i < t.model.nodes.size(); ++i)
+            p += s.state().mass[i] * s.state().v[i];
+        return p;
+    };
+    // the web's initial momentum; the first step ties it to the flange
+    Real web_mass = 0;
+    for (const Index p : web) web_mass += s.state().mass[static_cast<std::size_t>(p)];
+    const Vec3 p0(0, 2 * web_mass, 0);
+    for (int step = 0; step < 300; ++step) s.step(1e30);
+    // velocities of ~1 m/s over ~300 steps: rounding of the impulses
+    EXPECT_LT((momentum() - p0).norm(), 1e-10 * p0.norm());
+    EXPECT_GT(s.state().v[0].y(), 0.0);  // a corner of the flange is dragged along
+}
+
+TEST(TiedSurfaces, AParticleWithNoFaceWithinTheToleranceStaysFree) {
+    TJoint t = t_joint(false);
+    t.model.tied_surfaces[0].nodes.push_back(t.top.front());  // 0.3 m above the flange
+    t.model.tied_surfaces[0].tolerance = 0.05;
+    const TiedSurfaces ties(t.model, std::vector<Real>(t.model.triangles.size(), k_h));
+    EXPECT_EQ(ties.tied(), 5u);
+    EXPECT_EQ(ties.untied(), 1u);
+}
