@@ -203,6 +203,20 @@ refused("extra nodes of a deformable part", "*CONSTRAINED_EXTRA_NODES_NODE\n    
 refused("joined with a deformable part", "*CONSTRAINED_RIGID_BODIES\n         3         1\n",
         "model.k:", "*CONSTRAINED_RIGID_BODIES", "PIDC 1: the part is not of *MAT_RIGID")
 
+# *INITIAL_VELOCITY_RIGID_BODY: the hammer thrown by it instead of _GENERATION is the same model:
+# the same history bytes as the deck as it is; a spin about the centre of mass is refused
+THROW_CARDS = THROW + "       0.0       0.0       0.0       0.0       0.0       0.0\n"
+assert THROW_CARDS in deck
+by_body = write(os.path.join(WORK, "rigid_body_velocity"), "model.k", deck.replace(
+    THROW_CARDS, "*INITIAL_VELOCITY_RIGID_BODY\n$#     pid        vx        vy        vz\n"
+    "         3       0.0       0.0     -10.0\n"))
+r_body, h_body = run(by_body)
+check("*INITIAL_VELOCITY_RIGID_BODY: the history of the deck with _GENERATION, byte for byte",
+      r_body.returncode == 0 and "free" in histories and read(h_body) == histories["free"],
+      r_body.stderr)
+refused("rigid body spin", "*INITIAL_VELOCITY_RIGID_BODY\n         3       0.0       0.0     -10.0"
+        "       1.0\n", "model.k:", "*INITIAL_VELOCITY_RIGID_BODY", "VXR, VYR, VZR")
+
 # *CONTACT_TIED_SURFACE_TO_SURFACE_OFFSET: the doubler (part 2) tied to the plate (part 1) instead
 # of welded, lowered to 1.5 mm above the plate (within the tie's reach, the larger thickness,
 # 2 mm) -> `constraints` of type tied; a tiebreak is refused

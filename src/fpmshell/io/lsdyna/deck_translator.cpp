@@ -215,8 +215,8 @@ std::string DeckTranslator::unsupported_reason(const std::string& k) {
                "*CONTACT_TIED_NODES_TO_SURFACE, _SHELL_EDGE_TO_SURFACE, _SURFACE_TO_SURFACE "
                "(tiebreak and failing ties are not supported)";
     if (starts_with(k, "INITIAL_"))
-        return "fpmshell reads *INITIAL_VELOCITY (with NSIDEX), *INITIAL_VELOCITY_NODE and "
-               "*INITIAL_VELOCITY_GENERATION";
+        return "fpmshell reads *INITIAL_VELOCITY (with NSIDEX), *INITIAL_VELOCITY_NODE, "
+               "*INITIAL_VELOCITY_GENERATION and *INITIAL_VELOCITY_RIGID_BODY";
     if (starts_with(k, "LOAD_"))
         return "fpmshell reads *LOAD_NODE_POINT, *LOAD_NODE_SET, *LOAD_SHELL_SET, "
                "*LOAD_SEGMENT and *LOAD_SEGMENT_SET";
