@@ -198,6 +198,10 @@ std::string DeckTranslator::unsupported_reason(const std::string& k) {
                "*MAT_PLASTIC_KINEMATIC (003), *MAT_JOHNSON_COOK (015), "
                "*MAT_POWER_LAW_PLASTICITY (018), *MAT_RIGID (020) and "
                "*MAT_PIECEWISE_LINEAR_PLASTICITY (024)";
+    if (starts_with(k, "SECTION_") && !starts_with(k, "SECTION_SHELL"))
+        return "fpmshell models shells only (*SECTION_SHELL); solid, beam, discrete and "
+               "thick-shell "
+               "sections, also of rigid parts, are not supported";
     if (starts_with(k, "ELEMENT_"))
         return "fpmshell models shells only (*ELEMENT_SHELL); this element kind would change "
                "the model";
