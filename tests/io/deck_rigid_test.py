@@ -239,12 +239,35 @@ r_deck, h_deck = run(d)
 r_twin, h_twin = run(t)
 check("tied contact: deck and twin run", r_deck.returncode == 0 and r_twin.returncode == 0,
       r_deck.stderr + r_twin.stderr)
+h_deck_tied = h_deck
 if r_deck.returncode == 0 and r_twin.returncode == 0:
     check("tied contact: the same history.csv", read(h_deck) == read(h_twin), "the files differ")
 c = fpmshell("check", d)
 check("tied contact: the doubler's 25 particles tied to the plate's faces",
       c.returncode == 0 and "tied: 25 particles to faces" in c.stdout and
       "keep their offset" not in c.stdout, c.stdout + c.stderr)
+# *CONTACT_TIEBREAK_NODES_TO_SURFACE: the same ties letting go at a normal force of 2 N or a shear
+# force of 1 N (the hammer's blow tears the doubler off) -> failure keys; the run differs from the
+# plain ties'
+BREAK = ("*CONTACT_TIEBREAK_NODES_TO_SURFACE_ID\n         6doubler glued\n"
+         "         2         1         3         3\n\n\n$#    nflf      sflf       nen       mes\n"
+         "       2.0       1.0\n")
+folder = os.path.join(WORK, "tiebreak_nodes")
+d = write(folder, "model.k", deck.replace(WELDS, "")[:-len(END)] + BREAK + END)
+t = write(folder, "model.yaml", twin.replace(
+    "\nconstraints:\n", "\nconstraints:\n  - {type: tied, nodes: part_2, elements: part_1, failure: "
+    "{normal_force: 2, shear_force: 1, normal_exponent: 2, shear_exponent: 2}}\n").replace(
+    "".join(f"  - {{type: rigid, nodes: weld_{w}}}\n" for w in "abcd"), ""))
+with open(os.path.join(folder, "plate_hammer_mesh.k"), "w") as f:
+    f.write(lowered)
+r_deck, h_break = run(d)
+r_twin, h_twin = run(t)
+check("tiebreak: deck and twin run", r_deck.returncode == 0 and r_twin.returncode == 0,
+      r_deck.stderr + r_twin.stderr)
+if r_deck.returncode == 0 and r_twin.returncode == 0:
+    check("tiebreak: the same history.csv", read(h_break) == read(h_twin), "the files differ")
+    check("tiebreak: the ties that let go change the run", read(h_break) != read(h_deck_tied),
+          "the same history as the plain ties")
 r = fpmshell("check", write(os.path.join(WORK, "tiebreak"), "model.k", deck[:-len(END)] + TIE.replace(
     "*CONTACT_TIED_SURFACE_TO_SURFACE_OFFSET_ID", "*CONTACT_TIEBREAK_SURFACE_TO_SURFACE_ID") + END))
 check("a tiebreak contact is refused with one sentence", r.returncode == 2 and

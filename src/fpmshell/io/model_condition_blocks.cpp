@@ -205,7 +205,7 @@ namespace {
 /// A `constraints` entry of type tied: nodes (a set or a list of sets), elements (the faces),
 /// tolerance (theory.md §6.12).
 void read_tied_surface(const YamlValue& item, Model& model) {
-    const YamlMap m = item.map({"type", "nodes", "elements", "tolerance"});
+    const YamlMap m = item.map({"type", "nodes", "elements", "tolerance", "failure"});
     TiedSurface t;
     const YamlValue nodes = m.at("nodes", "a node set name or a list of them");
     for (const YamlValue& name :
@@ -226,6 +226,19 @@ void read_tied_surface(const YamlValue& item, Model& model) {
     if (t.nodes.empty()) nodes.fail("a tied constraint needs at least one particle");
     if (t.elements.empty()) elements.fail("a tied constraint needs at least one element");
     t.tolerance = m.non_negative_or("tolerance", 0.0);
+    if (const auto f = m.find("failure")) {
+        // a tiebreak (eq. 6.12-2): the forces at which a tie lets go, and the exponents
+        const YamlMap fm =
+            f->map({"normal_force", "shear_force", "normal_exponent", "shear_exponent"});
+        t.normal_force = fm.non_negative_or("normal_force", 0.0);
+        t.shear_force = fm.non_negative_or("shear_force", 0.0);
+        t.normal_exponent = fm.positive_or("normal_exponent", 2.0);
+        t.shear_exponent = fm.positive_or("shear_exponent", 2.0);
+        if (t.normal_force == 0 && t.shear_force == 0)
+            f->fail(
+                "a tiebreak needs normal_force or shear_force > 0 (the force at which a tie "
+                "lets go)");
+    }
     model.tied_surfaces.push_back(std::move(t));
 }
 

@@ -210,6 +210,11 @@ struct TiedSurface {
     std::vector<Index> nodes;     ///< the tied particles (slaves), sorted
     std::vector<Index> elements;  ///< the faces they are tied to (masters), sorted
     Real tolerance = 0;           ///< largest distance to a face; 0: each pair's larger thickness
+    /// tiebreak (LS-DYNA's *CONTACT_TIEBREAK_NODES_TO_SURFACE NFLF, SFLF, NEN, MES): a tie lets
+    /// go for good once (f_n / normal_force)^normal_exponent + (f_s / shear_force)^shear_exponent
+    /// >= 1, f_n its force in tension and f_s in shear (eq. 6.12-2); 0 forces: it never does
+    Real normal_force = 0, shear_force = 0;
+    Real normal_exponent = 2, shear_exponent = 2;
 };
 
 enum class ContactType { Self, Rigid };

@@ -161,12 +161,12 @@ void ExplicitSolver::cycle(const CyclePolicy& policy, Real load_time, Real dt_ca
         impose_prescribed_motions(policy, load_time, dt);  // 6 §6.7
         update_body_velocities(dt);
         const PrescribedMotionTimes at = prescribed_motion_times(policy, load_time, dt);
-        nodal_rigid_bodies_.make_rigid(s_, at, model_.curves);  // 6b §6.11
-        if (tied_) tied_->impose(s_, *bc_);                     // 6c §6.12
-        lagrange_contact(dt);                                   // 7 §8.3
-        if (contact_ && contact_->has_lagrange()) {             // what the contact moved
+        nodal_rigid_bodies_.make_rigid(s_, at, model_.curves);      // 6b §6.11
+        if (tied_) tied_->impose(s_, *bc_, dt.c1 * dt.dt_n, true);  // 6c §6.12
+        lagrange_contact(dt);                                       // 7 §8.3
+        if (contact_ && contact_->has_lagrange()) {                 // what the contact moved
             nodal_rigid_bodies_.make_rigid(s_, at, model_.curves);
-            if (tied_) tied_->impose(s_, *bc_);
+            if (tied_) tied_->impose(s_, *bc_, dt.c1 * dt.dt_n, false);
         }
         advance_particles(dt, particles);  // 8-9
     }
@@ -557,6 +557,8 @@ void ExplicitSolver::save(RestartWriter& out) const {
     out.section("contact");
     out(static_cast<bool>(contact_));
     if (contact_) contact_->save(out);
+    out.section("ties");
+    if (tied_) self.tied_->transfer(out);
 }
 
 void ExplicitSolver::load(RestartReader& in) {
@@ -601,6 +603,11 @@ void ExplicitSolver::load(RestartReader& in) {
     if (has_contact != static_cast<bool>(contact_))
         in.fail("restart file of a model with other contact definitions");
     if (contact_) contact_->load(in);
+    in.section("ties");
+    if (tied_) {
+        tied_->transfer(in);
+        if (!tied_->restored()) in.fail("restart file of a model with other ties");
+    }
 }
 
 }  // namespace fpmshell

@@ -13,11 +13,13 @@
 
 namespace fpmshell {
 
-TiedSurfaces::TiedSurfaces(const Model& model, const std::vector<Real>& element_thickness) {
+TiedSurfaces::TiedSurfaces(const Model& model, const std::vector<Real>& element_thickness)
+    : model_(&model) {
     if (model.tied_surfaces.empty()) return;
     const std::vector<Real> node_h =
         mean_node_thickness(model.triangles, element_thickness, model.nodes.size());
-    for (const TiedSurface& surface : model.tied_surfaces) {
+    for (std::size_t entry = 0; entry < model.tied_surfaces.size(); ++entry) {
+        const TiedSurface& surface = model.tied_surfaces[entry];
         // the faces' boxes grown by the largest reach a pair may have
         Real h_max = 0;
         for (const Index e : surface.elements)
@@ -64,7 +66,14 @@ TiedSurfaces::TiedSurfaces(const Model& model, const std::vector<Real>& element_
                 // the closest face; of equally close ones the first in the element order (the
                 // buckets' order is that of the items, the same on every run)
                 if (best.slave >= 0 && !(distance < best_distance)) return;
-                best = {s, t, cp.xi};
+                // the side of the face the slave starts on (a tiebreak's tension, eq. 6.12-2)
+                const Vec3& a = model.nodes[static_cast<std::size_t>(t[0])];
+                const Vec3 n = (model.nodes[static_cast<std::size_t>(t[1])] - a)
+                                   .cross(model.nodes[static_cast<std::size_t>(t[2])] - a)
+                                   .normalized();
+                const Real off = n.dot(x - cp.point);
+                const int side = std::abs(off) > 1e-9 * (1 + x.norm()) ? (off > 0 ? 1 : -1) : 0;
+                best = {s, t, cp.xi, static_cast<Index>(entry), side};
                 best_distance = distance;
             });
             if (best.slave >= 0)
@@ -73,12 +82,30 @@ TiedSurfaces::TiedSurfaces(const Model& model, const std::vector<Real>& element_
                 ++untied_;
         }
     }
+    broken_.assign(ties_.size(), 0);
+    impulse_.assign(ties_.size(), Vec3::Zero());
+    tension_.assign(ties_.size(), 0.0);
+    shear_.assign(ties_.size(), 0.0);
 }
 
-void TiedSurfaces::impose(ParticleState& s, const BoundaryConditions& bc) const {
+std::size_t TiedSurfaces::broken() const {
+    return static_cast<std::size_t>(std::count(broken_.begin(), broken_.end(), 1));
+}
+
+std::vector<Index> TiedSurfaces::slaves() const {
+    std::vector<Index> out;
+    for (const Tie& t : ties_) out.push_back(t.slave);
+    return out;
+}
+
+void TiedSurfaces::impose(ParticleState& s, const BoundaryConditions& bc, Real impulse_time,
+                          bool new_step) {
     if (ties_.empty()) return;
     Real scale = 0;  // the largest velocity of the tied particles
-    for (const Tie& t : ties_) {
+    for (std::size_t i = 0; i < ties_.size(); ++i) {
+        if (new_step) impulse_[i].setZero();
+        if (broken_[i]) continue;
+        const Tie& t = ties_[i];
         scale = std::max(scale, s.v[static_cast<std::size_t>(t.slave)].cwiseAbs().maxCoeff());
         for (const Index k : t.corner)
             scale = std::max(scale, s.v[static_cast<std::size_t>(k)].cwiseAbs().maxCoeff());
@@ -86,7 +113,9 @@ void TiedSurfaces::impose(ParticleState& s, const BoundaryConditions& bc) const 
     const Real tolerance = 1e-13 * scale;
     for (int sweep = 0; sweep < k_max_sweeps; ++sweep) {
         Real largest = 0;
-        for (const Tie& t : ties_) {
+        for (std::size_t i = 0; i < ties_.size(); ++i) {
+            if (broken_[i]) continue;
+            const Tie& t = ties_[i];
             const auto us = static_cast<std::size_t>(t.slave);
             Vec3 mismatch = -s.v[us];
             for (std::size_t k = 0; k < 3; ++k)
@@ -104,12 +133,38 @@ void TiedSurfaces::impose(ParticleState& s, const BoundaryConditions& bc) const 
             Vec3 impulse = Vec3::Zero();
             for (Eigen::Index d = 0; d < 3; ++d)
                 if (weight[d] > 0) impulse[d] = mismatch[d] / weight[d];
+            impulse_[i] += impulse;
             s.v[us] += inv_s.cwiseProduct(impulse);
             for (std::size_t k = 0; k < 3; ++k)
                 s.v[static_cast<std::size_t>(t.corner[k])] -=
                     t.xi[k] * inv_k[k].cwiseProduct(impulse);
         }
         if (largest <= tolerance) break;
+    }
+    // eq. 6.12-2: each tie's force on its slave, f = J / (c1 dt_n), in tension (pulling the slave
+    // back to its side of the face; either way for a slave on the face) and in shear
+    for (std::size_t i = 0; i < ties_.size(); ++i) {
+        tension_[i] = shear_[i] = 0;
+        if (broken_[i]) continue;
+        const Tie& t = ties_[i];
+        const TiedSurface& surface = model_->tied_surfaces[static_cast<std::size_t>(t.surface)];
+        const Vec3& a = s.x[static_cast<std::size_t>(t.corner[0])];
+        const Vec3 n = (s.x[static_cast<std::size_t>(t.corner[1])] - a)
+                           .cross(s.x[static_cast<std::size_t>(t.corner[2])] - a)
+                           .normalized();
+        const Vec3 force = impulse_[i] / impulse_time;
+        const Real along = force.dot(n);
+        tension_[i] = t.side > 0   ? std::max(Real(0), -along)
+                      : t.side < 0 ? std::max(Real(0), along)
+                                   : std::abs(along);
+        shear_[i] = (force - along * n).norm();
+        if (surface.normal_force == 0 && surface.shear_force == 0) continue;
+        Real criterion = 0;
+        if (surface.normal_force > 0)
+            criterion += std::pow(tension_[i] / surface.normal_force, surface.normal_exponent);
+        if (surface.shear_force > 0)
+            criterion += std::pow(shear_[i] / surface.shear_force, surface.shear_exponent);
+        if (criterion >= 1) broken_[i] = 1;
     }
 }
 

@@ -7,6 +7,7 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
 #include <vector>
 
 #include "fpmshell/core/types.hpp"
@@ -33,7 +34,26 @@ public:
     /// the slave and -xi_k J on the corners, in the free directions of each (fixed and
     /// prescribed components take none); Gauss-Seidel sweeps in the ties' order until the
     /// largest mismatch is below 1e-13 of the largest velocity, at most k_max_sweeps.
-    void impose(ParticleState& s, const BoundaryConditions& bc) const;
+    /// impulse_time: c1 dt_n, over which the step's impulses J are the force J / impulse_time
+    /// (new_step: the first call of a step; a second one, after the contact, adds to them). A
+    /// tiebreak whose force reaches its criterion (eq. 6.12-2) lets go, after this call, for good.
+    void impose(ParticleState& s, const BoundaryConditions& bc, Real impulse_time, bool new_step);
+
+    /// Ties that have let go (tiebreaks).
+    [[nodiscard]] std::size_t broken() const;
+    /// Per tie, in tie order: its slave, and the force in tension and in shear at the last
+    /// impose (0 for a broken tie).
+    [[nodiscard]] std::vector<Index> slaves() const;
+    [[nodiscard]] const std::vector<Real>& tension() const { return tension_; }
+    [[nodiscard]] const std::vector<Real>& shear() const { return shear_; }
+
+    /// The broken ties, for a restart file (io/restart_archive.hpp).
+    template <class Archive>
+    void transfer(Archive& ar) {
+        ar(broken_);
+    }
+    /// Whether a loaded state fits these ties.
+    [[nodiscard]] bool restored() const { return broken_.size() == ties_.size(); }
 
     static constexpr int k_max_sweeps = 200;
 
@@ -42,9 +62,16 @@ private:
         Index slave = -1;
         std::array<Index, 3> corner{};
         std::array<Real, 3> xi{};
+        Index surface = -1;  ///< its entry of Model::tied_surfaces
+        /// +1 / -1: the slave starts on the side of the face normal / against it; 0 on the face
+        int side = 0;
     };
+    const Model* model_ = nullptr;
     std::vector<Tie> ties_;
     std::size_t untied_ = 0;
+    std::vector<std::uint8_t> broken_;  ///< per tie
+    std::vector<Vec3> impulse_;         ///< per tie: this step's (scratch)
+    std::vector<Real> tension_, shear_;
 };
 
 }  // namespace fpmshell

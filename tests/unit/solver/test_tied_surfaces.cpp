@@ -160,3 +160,47 @@ TEST(TiedSurfaces, AParticleWithNoFaceWithinTheToleranceStaysFree) {
     EXPECT_EQ(ties.tied(), 5u);
     EXPECT_EQ(ties.untied(), 1u);
 }
+
+// A tiebreak (eq. 6.12-2, LS-DYNA's *CONTACT_TIEBREAK_NODES_TO_SURFACE): the web pulled off the
+// clamped flange by a force that grows with time, its ties letting go at a normal force F_f.
+// Every tie holds while its tension is below F_f; the first to reach it lets go in that step and
+// stays loose; once all have, the web leaves the flange. With F_f out of reach none lets go.
+TEST(TiedSurfaces, ATiebreakLetsGoAtItsForce) {
+    const Real f_f = 40.0;  // N per tie; the pull reaches 5 x 200 N at 1 ms
+    for (const bool reachable : {true, false}) {
+        TJoint t = t_joint(true);
+        t.model.curves.push_back({"ramp", {{0, 0}, {1e-3, 1}}});
+        for (const Index p : t.top)
+            t.model.loads.push_back({LoadType::Force, {p}, {}, 0, Vec3(0, 0, 200), 0});
+        t.model.tied_surfaces[0].normal_force = reachable ? f_f : 1e9;
+        ExplicitSolver s(t.model);
+        const TiedSurfaces& ties = *s.tied_surfaces();
+        std::vector<std::uint8_t> gone(ties.tied(), 0);
+        Real highest = 0;
+        while (s.time() < 3e-3) {  // the pull held at 1 000 N from 1 ms on
+            const std::vector<std::uint8_t> before = gone;
+            s.step(1e30);
+            for (std::size_t i = 0; i < ties.tied(); ++i) {
+                if (before[i]) {
+                    EXPECT_EQ(ties.tension()[i], 0.0) << "a loose tie carries nothing";
+                    continue;
+                }
+                highest = std::max(highest, ties.tension()[i]);
+                // a tie that held had a tension below F_f; one that let go reached it
+                if (ties.tension()[i] >= f_f && reachable) gone[i] = 1;
+            }
+            std::size_t count = 0;
+            for (const std::uint8_t g : gone) count += g;
+            EXPECT_EQ(ties.broken(), reachable ? count : 0u) << "t " << s.time();
+        }
+        if (reachable) {
+            EXPECT_EQ(ties.broken(), ties.tied());  // all let go
+            // the web's edge has left the flange (it was tied at z = 0): pulled at ~100 m/s^2
+            // for over a millisecond
+            EXPECT_GT(s.state().x[static_cast<std::size_t>(t.edge[2])].z(), 1e-4);
+        } else {
+            EXPECT_EQ(ties.broken(), 0u);
+            EXPECT_GT(highest, f_f);  // the forces went past F_f: the tie held by choice
+        }
+    }
+}

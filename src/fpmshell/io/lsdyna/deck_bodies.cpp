@@ -407,6 +407,7 @@ std::string DeckTranslator::contact_friction(const Card& g) {
 /// nodes tied to the master side's faces (theory.md §6.12).
 void DeckTranslator::tied_contact(const DeckBlock& b) {
     const bool edge = starts_with(b.keyword, "CONTACT_TIED_SHELL_EDGE_TO_SURFACE");
+    const bool tiebreak = starts_with(b.keyword, "CONTACT_TIEBREAK_NODES_TO_SURFACE");
     const std::set<std::string> opt = options_of(b.keyword, edge ? 6 : 5);
     for (const std::string& o : opt)
         if (o != "ID" && o != "TITLE" && o != "MPP" && o != "OFFSET" && o != "CONSTRAINED")
@@ -441,9 +442,25 @@ void DeckTranslator::tied_contact(const DeckBlock& b) {
         f.fail("MSTYP " + std::to_string(mstyp) +
                " is not supported for a tied contact: 2 (part set) or 3 (part); give the "
                "master faces as a part or part set");
-    constraints_.push_back(
-        {"  - {type: tied, nodes: " + yaml_name(slaves) + ", elements: " + yaml_name(masters) + "}",
-         {&b, f.line()}});
+    std::string failure;
+    if (tiebreak) {
+        // the fourth card: NFLF, SFLF (the forces at which a tie lets go), NEN, MES (exponents)
+        const Card g = required_card(b, c + 3, "NFLF, SFLF, NEN, MES");
+        const Real nflf = g.real(0, "NFLF"), sflf = g.real(1, "SFLF");
+        Real nen = g.real(2, "NEN", 2.0), mes = g.real(3, "MES", 2.0);
+        if (nen == 0) nen = 2;  // LS-DYNA's default for a 0
+        if (mes == 0) mes = 2;
+        if (nflf < 0 || sflf < 0) g.fail("NFLF and SFLF must be >= 0");
+        if (!(nen > 0) || !(mes > 0)) g.fail("NEN and MES must be > 0");
+        if (nflf > 0 || sflf > 0)
+            failure = ", failure: {normal_force: " + num(nflf) + ", shear_force: " + num(sflf) +
+                      ", normal_exponent: " + num(nen) + ", shear_exponent: " + num(mes) + "}";
+        else
+            note(b, g.line(), "NFLF and SFLF are 0: the ties never let go");
+    }
+    constraints_.push_back({"  - {type: tied, nodes: " + yaml_name(slaves) +
+                                ", elements: " + yaml_name(masters) + failure + "}",
+                            {&b, f.line()}});
     if (!opt.count("OFFSET"))
         note(b, f.line(),
              "the slave nodes keep their offset from the master faces (LS-DYNA moves them onto "
