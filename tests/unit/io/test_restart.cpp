@@ -324,5 +324,44 @@ TEST(Restart, TheTubeWritesTheSameResultsOnOneAndTwoThreads) {
     fs::remove_all(two.output_dir);
 }
 
+// The ties' state (theory.md §6.12): plate_hammer.yaml with the doubler glued to the plate by
+// tiebreaks instead of welds, stopped after the hammer has torn some ties off (step 700, the
+// blow at about step 545) and resumed: the same bytes as the run that never stopped.
+TEST(Restart, BrokenTiesResumeBitForBit) {
+    Model model = read_model(std::string(FPMSHELL_SOURCE_DIR) +
+                             "/examples/decks/plate_hammer/plate_hammer.yaml");
+    model.nodal_rigid_bodies.resize(1);  // the plate's rigid edge; the four welds go
+    TiedSurface glue;
+    glue.nodes = model.node_sets.at("part_2");
+    glue.elements = model.element_sets.at("part_1");
+    glue.tolerance = 0.004;   // the doubler lies 3.5 mm above the plate
+    glue.normal_force = 600;  // N: 17 of the 25 ties let go by step 700
+    glue.shear_force = 300;
+    model.tied_surfaces.push_back(glue);
+    {
+        ExplicitSolver probe(model);
+        while (probe.steps() < 700) probe.step(1e30);
+        ASSERT_GT(probe.tied_surfaces()->broken(), 0u) << "no tie let go before the stop";
+        ASSERT_LT(probe.tied_surfaces()->broken(), probe.tied_surfaces()->tied());
+    }
+    RunOptions straight;
+    straight.output_dir = fresh_dir("straight_ties");
+    straight.echo = false;
+    straight.quiet = true;
+    ASSERT_EQ(run_model(model, straight), 0);
+    RunOptions first = straight;
+    first.output_dir = fresh_dir("pieces_ties");
+    first.stop_at_step = 700;
+    ASSERT_EQ(run_model(model, first), 0);
+    RunOptions second = first;
+    second.stop_at_step = 0;
+    second.resume = true;
+    ASSERT_EQ(run_model(model, second), 0);
+    for (const char* file : {"history.csv", "energy.csv"})
+        EXPECT_EQ(bytes_of(first.output_dir / file), bytes_of(straight.output_dir / file)) << file;
+    fs::remove_all(straight.output_dir);
+    fs::remove_all(first.output_dir);
+}
+
 }  // namespace
 }  // namespace fpmshell
