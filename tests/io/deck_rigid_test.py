@@ -274,6 +274,27 @@ check("a tiebreak contact is refused with one sentence", r.returncode == 2 and
       "*CONTACT_TIEBREAK_SURFACE_TO_SURFACE_ID" in r.stderr and "tiebreak" in r.stderr and
       len(r.stderr.strip().splitlines()) == 1, r.stderr)
 
+# *RIGIDWALL_PLANAR NSIDEX: the floor acts on every node but those of the plate's edge (node set
+# 1, `edge`) -> the rigid contact's except_nodes
+WALL_NSID = "$#    nsid\n         0\n"
+assert WALL_NSID in deck
+folder = os.path.join(WORK, "nsidex")
+d = write(folder, "model.k", deck.replace(WALL_NSID, "$#    nsid    nsidex\n         0         1\n"))
+t = write(folder, "model.yaml", twin.replace("  - {type: rigid, body: floor, offset: 0, friction: 0.2}",
+                                            "  - {type: rigid, body: floor, offset: 0, friction: 0.2, "
+                                            "except_nodes: edge}"))
+r_deck, h_deck = run(d)
+r_twin, h_twin = run(t)
+check("NSIDEX: deck and twin run", r_deck.returncode == 0 and r_twin.returncode == 0,
+      r_deck.stderr + r_twin.stderr)
+if r_deck.returncode == 0 and r_twin.returncode == 0:
+    check("NSIDEX: the same history.csv", read(h_deck) == read(h_twin), "the files differ")
+c_all, c_except = fpmshell("check", os.path.join(HAMMER, "plate_hammer.k")), fpmshell("check", d)
+count = lambda out: int(out.split("contact of ")[1].split(" particles")[0]) if "contact of " in out else -1
+check("NSIDEX: the floor acts on the particles of the deck but the edge's",
+      count(c_except.stdout) > 0 and count(c_all.stdout) - count(c_except.stdout) == 9,
+      (count(c_all.stdout), count(c_except.stdout)))
+
 # nodes that start behind a wall: LS-DYNA releases them from it; fpmshell leaves them out of the
 # wall's contact with a note (initially_inside: release), where a YAML model without the key is an
 # error that names the key. The floor raised to z = 2 mm, 0.5 mm above the plate.

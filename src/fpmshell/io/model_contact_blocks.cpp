@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <limits>
 #include <string>
 #include <vector>
@@ -187,13 +188,22 @@ void read_contact(const YamlValue& v, Model& model) {
             read_contact_method(m, c);
             read_friction(m, c);
         } else {
-            const YamlMap m = item.map({"type", "body", "nodes", "method", "penalty_scale",
-                                        "max_iterations", "friction", "friction_dynamic",
-                                        "friction_decay", "offset", "initially_inside"});
+            const YamlMap m =
+                item.map({"type", "body", "nodes", "method", "penalty_scale", "max_iterations",
+                          "friction", "friction_dynamic", "friction_decay", "offset",
+                          "initially_inside", "except_nodes"});
             c.type = ContactType::Rigid;
             c.body = named_rigid_body(model, m.at("body", "the name of a rigid body"));
             c.nodes = m.find("nodes") ? named_node_set(model, *m.find("nodes"))
                                       : model.node_sets.at("all");
+            if (const auto except = m.find("except_nodes")) {
+                // LS-DYNA's NSIDEX: the particles the body does not act on
+                const auto& left_out = named_node_set(model, *except);
+                std::vector<Index> kept;
+                std::set_difference(c.nodes.begin(), c.nodes.end(), left_out.begin(),
+                                    left_out.end(), std::back_inserter(kept));
+                c.nodes = std::move(kept);
+            }
             read_contact_method(m, c);
             read_friction(m, c);
             c.offset = m.non_negative_or("offset", -1.0);

@@ -151,8 +151,9 @@ void DeckTranslator::rigid_wall(const DeckBlock& b) {
     const Card f = required_card(b, c++, "NSID, NSIDEX, BOXID, OFFSET, BIRTH, DEATH");
     const Card g = required_card(b, c++, "XT, YT, ZT, XH, YH, ZH, FRIC, WVEL");
     const long long nsid = f.id(0, "NSID");
-    if (f.id(1, "NSIDEX") != 0 || f.id(2, "BOXID") != 0)
-        f.fail("NSIDEX and BOXID are not supported (0 only)");
+    if (f.id(2, "BOXID") != 0) f.fail("BOXID is not supported (0 only)");
+    if (const long long nsidex = f.id(1, "NSIDEX"); nsidex != 0)
+        w.except_nodes = set_name(f, "node", nsidex);
     if (f.real(3, "OFFSET") != 0)
         note(b, f.line(),
              "OFFSET: every node of NSID is tracked (LS-DYNA tracks those within OFFSET of the "
@@ -227,8 +228,9 @@ void DeckTranslator::geometric_wall(const DeckBlock& b) {
     const Card g = required_card(b, c++, "XT, YT, ZT, XH, YH, ZH");
     const Card s = required_card(b, c++, "the shape's card");
     const long long nsid = f.id(0, "NSID");
-    if (f.id(1, "NSIDEX") != 0 || f.id(2, "BOXID") != 0)
-        f.fail("NSIDEX and BOXID are not supported (0 only)");
+    if (f.id(2, "BOXID") != 0) f.fail("BOXID is not supported (0 only)");
+    if (const long long nsidex = f.id(1, "NSIDEX"); nsidex != 0)
+        w.except_nodes = set_name(f, "node", nsidex);
     if (f.real(3, "BIRTH") != 0 || (f.real(4, "DEATH") != 0 && f.real(4, "DEATH") < 1e20))
         f.fail("BIRTH and DEATH are not supported (the wall acts from start to end)");
     w.nodes = nsid == 0 ? "" : set_name(f, "node", nsid);
@@ -503,14 +505,16 @@ void DeckTranslator::write_walls(std::vector<Line>& out) {
     for (const WallDef& w : walls_)
         // LS-DYNA's walls act on the nodes themselves, not on their shells' thickness: offset 0;
         // the nodes that start behind a wall are released from it (noted by the model reader)
-        contacts.push_back({"  - {type: rigid, body: rigidwall" + std::to_string(w.id) +
-                                (w.nodes.empty() ? "" : ", nodes: " + yaml_name(w.nodes)) +
-                                ", offset: 0, initially_inside: release" +
-                                (w.friction == 0   ? ""
-                                 : w.friction == 1 ? ", friction: stick"
-                                                   : ", friction: " + num(w.friction)) +
-                                "}",
-                            w.at});
+        contacts.push_back(
+            {"  - {type: rigid, body: rigidwall" + std::to_string(w.id) +
+                 (w.nodes.empty() ? "" : ", nodes: " + yaml_name(w.nodes)) +
+                 (w.except_nodes.empty() ? "" : ", except_nodes: " + yaml_name(w.except_nodes)) +
+                 ", offset: 0, initially_inside: release" +
+                 (w.friction == 0   ? ""
+                  : w.friction == 1 ? ", friction: stick"
+                                    : ", friction: " + num(w.friction)) +
+                 "}",
+             w.at});
     contact_.insert(contact_.begin(), contacts.begin(), contacts.end());
 }
 

@@ -90,6 +90,7 @@ struct WallDef {
     Origin at;
     long long id = 0;
     std::string nodes;             ///< node set, "" for all
+    std::string except_nodes;      ///< NSIDEX: a node set the wall does not act on, "" none
     std::array<Real, 3> normal{};  ///< a planar wall's head - tail (a moving one moves along it)
     Real mass = 0, speed = 0;      ///< moving walls: mass and the speed along the normal
     bool moving = false;
