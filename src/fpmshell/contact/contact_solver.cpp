@@ -876,69 +876,6 @@ void ContactSolver::move_by(const Constraint& c, Real dl, std::vector<Vec3>& x_p
     }
 }
 
-Vec3 ContactSolver::tangential_slip(const Constraint& c, const std::vector<Vec3>& x,
-                                    const std::vector<Vec3>& x_pred,
-                                    const std::vector<Vec3>& body_u_pred,
-                                    const std::vector<RigidBodyState>& bodies) const {
-    const auto us = static_cast<std::size_t>(c.slave);
-    Vec3 slip = x_pred[us] - x[us];
-    if (c.element >= 0)
-        for (std::size_t k = 0; k < 3; ++k) {
-            const auto um = static_cast<std::size_t>(c.master[k]);
-            slip -= c.xi[k] * (x_pred[um] - x[um]);
-        }
-    if (c.body >= 0) {
-        const auto b = static_cast<std::size_t>(c.body);
-        slip -= body_u_pred[b] - bodies[b].u;
-    }
-    return slip - c.normal.dot(slip) * c.normal;
-}
-
-Vec3 ContactSolver::slide(const Constraint& c, Vec3& lambda_t, const std::vector<Vec3>& x,
-                          std::vector<Vec3>& x_pred, std::vector<Vec3>& body_u_pred,
-                          const std::vector<RigidBodyState>& bodies, Real beta_particle,
-                          Real beta_body, std::int64_t stamp) {
-    const auto us = static_cast<std::size_t>(c.slave);
-    const Real body_inv_mass = c.body >= 0 ? bodies[static_cast<std::size_t>(c.body)].inv_mass : 0;
-    // the slave's slip against the body or the face point over the step (eq. 8.4-1)
-    const Vec3 slip = tangential_slip(c, x, x_pred, body_u_pred, bodies);
-    Vec3 trial = lambda_t;
-    if (const Real length = slip.norm(); length > 0) {
-        // the multiplier that stops the slip, with the weight along it (eq. 8.4-2): the slave,
-        // the face's corners by their xi^2, the body
-        const Vec3 t = slip / length;
-        const Vec3 tt = t.cwiseProduct(t);
-        Real w = beta_particle * tt.dot(inv_mass_[us]) + beta_body * body_inv_mass;
-        if (c.element >= 0)
-            for (std::size_t k = 0; k < 3; ++k)
-                w += beta_particle * c.xi[k] * c.xi[k] *
-                     tt.dot(inv_mass_[static_cast<std::size_t>(c.master[k])]);
-        if (w > 0) trial += (length / w) * t;
-    }
-    // the Coulomb cone (eq. 8.4-3); no force without a normal one, whatever the coefficient
-    const Real bound = c.lambda > 0 ? c.friction * c.lambda : 0.0;
-    if (const Real size = trial.norm(); size > bound) trial *= bound / size;
-    const Vec3 change = trial - lambda_t;
-    if (change.squaredNorm() == 0) return change;
-    lambda_t = trial;
-    // the slave moves as under a force -change, the face's corners under xi_k change, the body
-    // under change (eq. 8.4-4)
-    x_pred[us] -= beta_particle * inv_mass_[us].cwiseProduct(change);
-    particle_moved_at_[us] = stamp;
-    if (c.element >= 0)
-        for (std::size_t k = 0; k < 3; ++k) {
-            const auto um = static_cast<std::size_t>(c.master[k]);
-            x_pred[um] += (beta_particle * c.xi[k]) * inv_mass_[um].cwiseProduct(change);
-            particle_moved_at_[um] = stamp;
-        }
-    if (body_inv_mass > 0) {
-        const auto b = static_cast<std::size_t>(c.body);
-        body_u_pred[b] += (beta_body * body_inv_mass) * change;
-        body_moved_at_[b] = stamp;
-    }
-    return change;
-}
-
 MultiplierMemory::Key ContactSolver::key_of(const Constraint& c) {
     return {c.slave, c.master[0], c.master[1], c.master[2], c.body};
 }
