@@ -92,6 +92,18 @@ for k, (name, (section, cards, keys)) in enumerate(VARIANTS.items()):
         continue
     check(f"{name}: the same history.csv", read(h_deck) == read(h_twin), "the files differ")
     histories[name] = read(h_deck)
+# card order is free for these cards too: *CONTROL_SHELL and *INTEGRATION_SHELL before the
+# sections that use them (after *KEYWORD) give the same bytes
+for k, name in ((2, "INTGRD 1, NIP 4 (Lobatto)"), (4, "QR -3, *INTEGRATION_SHELL of three points")):
+    section, cards, keys = VARIANTS[name]
+    early = deck.replace(SECTION, section).replace("*KEYWORD\n", "*KEYWORD\n" + cards, 1)
+    assert early != deck.replace(SECTION, section)
+    d = write(os.path.join(WORK, f"early{k}"), "model.k", early)
+    r_early, h_early = run(d)
+    check(f"{name}: the card first in the deck, the same history.csv",
+          r_early.returncode == 0 and name in histories and read(h_early) == histories[name],
+          r_early.stderr)
+
 check("the rules give different histories (the rule reaches the solver)",
       len(set(histories.values())) == len(histories), f"{len(set(histories.values()))} distinct")
 
