@@ -14,7 +14,6 @@ usage: deck_rigid_test.py FPMSHELL WORKDIR
 """
 import os
 import shutil
-import subprocess
 import sys
 
 FPM, WORK = sys.argv[1], sys.argv[2]
@@ -22,30 +21,15 @@ ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)
 HAMMER = os.path.join(ROOT, "examples", "decks", "plate_hammer")
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from check_tally import check, finish  # noqa: E402
+import deck_variant  # noqa: E402
+from deck_variant import fpmshell, read, run, twin_pair  # noqa: E402
+from deck_variant import write as write_beside  # noqa: E402
 
-
-def fpmshell(*args):
-    return subprocess.run([FPM, *args], capture_output=True, text=True, timeout=600)
-
-
-def read(path):
-    with open(path) as f:
-        return f.read()
+deck_variant.FPM = FPM
 
 
 def write(folder, name, text):
-    os.makedirs(folder, exist_ok=True)
-    shutil.copy(os.path.join(HAMMER, "plate_hammer_mesh.k"), folder)
-    path = os.path.join(folder, name)
-    with open(path, "w") as f:
-        f.write(text)
-    return path
-
-
-def run(model):
-    out = os.path.join(os.path.dirname(model), "out_" + os.path.basename(model).split(".")[1])
-    r = fpmshell("run", model, "-o", out, "--quiet", "--threads", "1", "--overwrite")
-    return r, os.path.join(out, "history.csv")
+    return write_beside(folder, name, text, os.path.join(HAMMER, "plate_hammer_mesh.k"))
 
 
 shutil.rmtree(WORK, ignore_errors=True)
@@ -89,14 +73,9 @@ for k, (name, (cards, entries)) in enumerate(VARIANTS.items()):
     d = write(folder, "model.k", deck[:-len(END)] + CURVE + cards + END)
     t = write(folder, "model.yaml", twin.replace("\noutput:", "\n" + TWIN_CURVE + "\nboundary:\n" +
                                                  entries + "\noutput:"))
-    r_deck, h_deck = run(d)
-    r_twin, h_twin = run(t)
-    check(f"{name}: deck and twin run", r_deck.returncode == 0 and r_twin.returncode == 0,
-          r_deck.stderr + r_twin.stderr)
-    if r_deck.returncode or r_twin.returncode:
-        continue
-    check(f"{name}: the same history.csv", read(h_deck) == read(h_twin), "the files differ")
-    histories[name] = read(h_deck)
+    history = twin_pair(name, d, t)
+    if history is not None:
+        histories[name] = history
 # *CONSTRAINED_EXTRA_NODES (_NODE, _SET) and *CONSTRAINED_RIGID_BODIES: `constraints` entries over
 # the union of node sets. The plate's nodes 41 and 42 ride with the hammer; the doubler (part 2),
 # made rigid (*MAT_RIGID 3) and unwelded, joins the hammer, both thrown up at 5 m/s (joined at
@@ -142,14 +121,9 @@ for k, (name, (edits, cards, sets, constraints, twin_edits)) in enumerate(CONSTR
         t_text = t_text.replace(a, b)
     d = write(folder, "model.k", d_text[:-len(END)] + cards + END)
     t = write(folder, "model.yaml", t_text)
-    r_deck, h_deck = run(d)
-    r_twin, h_twin = run(t)
-    check(f"{name}: deck and twin run", r_deck.returncode == 0 and r_twin.returncode == 0,
-          r_deck.stderr + r_twin.stderr)
-    if r_deck.returncode or r_twin.returncode:
-        continue
-    check(f"{name}: the same history.csv", read(h_deck) == read(h_twin), "the files differ")
-    histories[name] = read(h_deck)
+    history = twin_pair(name, d, t)
+    if history is not None:
+        histories[name] = history
 c = fpmshell("check", os.path.join(WORK, "joined2", "model.k"))
 check("rigid bodies joined: the hammer and the doubler one body, the plate's edge the other",
       c.returncode == 0 and "nodal rigid bodies: 2 (" in c.stdout, c.stdout + c.stderr)
@@ -245,20 +219,14 @@ t = write(folder, "model.yaml", twin.replace("\nconstraints:\n", "\nconstraints:
           .replace("".join(f"  - {{type: rigid, nodes: weld_{w}}}\n" for w in "abcd"), ""))
 with open(os.path.join(folder, "plate_hammer_mesh.k"), "w") as f:
     f.write(lowered)
-r_deck, h_deck = run(d)
-r_twin, h_twin = run(t)
-check("tied contact: deck and twin run", r_deck.returncode == 0 and r_twin.returncode == 0,
-      r_deck.stderr + r_twin.stderr)
-h_deck_tied = h_deck
-if r_deck.returncode == 0 and r_twin.returncode == 0:
-    check("tied contact: the same history.csv", read(h_deck) == read(h_twin), "the files differ")
+history_tied = twin_pair("tied contact", d, t)
 early_tie = write(os.path.join(WORK, "tied_first"), "model.k",
                   deck.replace(WELDS, "").replace("*KEYWORD\n", "*KEYWORD\n" + TIE, 1))
 with open(os.path.join(WORK, "tied_first", "plate_hammer_mesh.k"), "w") as f:
     f.write(lowered)
 r_early, h_early = run(early_tie)
 check("tied contact: the card first in the deck, the same history.csv",
-      r_early.returncode == 0 and r_deck.returncode == 0 and read(h_early) == read(h_deck),
+      r_early.returncode == 0 and history_tied is not None and read(h_early) == history_tied,
       r_early.stderr)
 c = fpmshell("check", d)
 check("tied contact: the doubler's 25 particles tied to the plate's faces",
@@ -278,13 +246,9 @@ t = write(folder, "model.yaml", twin.replace(
     "".join(f"  - {{type: rigid, nodes: weld_{w}}}\n" for w in "abcd"), ""))
 with open(os.path.join(folder, "plate_hammer_mesh.k"), "w") as f:
     f.write(lowered)
-r_deck, h_break = run(d)
-r_twin, h_twin = run(t)
-check("tiebreak: deck and twin run", r_deck.returncode == 0 and r_twin.returncode == 0,
-      r_deck.stderr + r_twin.stderr)
-if r_deck.returncode == 0 and r_twin.returncode == 0:
-    check("tiebreak: the same history.csv", read(h_break) == read(h_twin), "the files differ")
-    check("tiebreak: the ties that let go change the run", read(h_break) != read(h_deck_tied),
+history_break = twin_pair("tiebreak", d, t)
+if history_break is not None:
+    check("tiebreak: the ties that let go change the run", history_break != history_tied,
           "the same history as the plain ties")
 r = fpmshell("check", write(os.path.join(WORK, "tiebreak"), "model.k", deck[:-len(END)] + TIE.replace(
     "*CONTACT_TIED_SURFACE_TO_SURFACE_OFFSET_ID", "*CONTACT_TIEBREAK_SURFACE_TO_SURFACE_ID") + END))
@@ -301,12 +265,7 @@ d = write(folder, "model.k", deck.replace(WALL_NSID, "$#    nsid    nsidex\n    
 t = write(folder, "model.yaml", twin.replace("  - {type: rigid, body: floor, offset: 0, friction: 0.2}",
                                             "  - {type: rigid, body: floor, offset: 0, friction: 0.2, "
                                             "except_nodes: edge}"))
-r_deck, h_deck = run(d)
-r_twin, h_twin = run(t)
-check("NSIDEX: deck and twin run", r_deck.returncode == 0 and r_twin.returncode == 0,
-      r_deck.stderr + r_twin.stderr)
-if r_deck.returncode == 0 and r_twin.returncode == 0:
-    check("NSIDEX: the same history.csv", read(h_deck) == read(h_twin), "the files differ")
+twin_pair("NSIDEX", d, t)
 c_all, c_except = fpmshell("check", os.path.join(HAMMER, "plate_hammer.k")), fpmshell("check", d)
 count = lambda out: int(out.split("contact of ")[1].split(" particles")[0]) if "contact of " in out else -1
 check("NSIDEX: the floor acts on the particles of the deck but the edge's",

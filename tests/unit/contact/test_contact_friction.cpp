@@ -13,11 +13,13 @@
 #include <limits>
 
 #include "fpmshell/solver/explicit_solver.hpp"
+#include "run_to.hpp"
 #include "sliding_triangle.hpp"
 
 using namespace fpmshell;
 using test::k_g;
 using test::k_h;
+using test::run_to;
 using test::sliding_triangle;
 
 namespace {
@@ -26,17 +28,6 @@ Real total_mass(const ExplicitSolver& s) {
     Real m = 0;
     for (Real v : s.state().mass) m += v;
     return m;
-}
-
-/// Runs to time t, returns the largest step taken.
-Real run_to(ExplicitSolver& s, Real t) {
-    Real dt_max = 0;
-    while (s.time() < t) {
-        const Real before = s.time();
-        s.step(1e30);
-        dt_max = std::max(dt_max, s.time() - before);
-    }
-    return dt_max;
 }
 
 }  // namespace

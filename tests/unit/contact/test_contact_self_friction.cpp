@@ -14,8 +14,10 @@
 
 #include "fpmshell/solver/explicit_solver.hpp"
 #include "one_section_model.hpp"
+#include "run_to.hpp"
 
 using namespace fpmshell;
+using test::run_to;
 
 namespace {
 
@@ -78,17 +80,6 @@ Real slider_mass(const ExplicitSolver& s) {
     Real m = 0;
     for (Index p : k_slider) m += s.state().mass[static_cast<std::size_t>(p)];
     return m;
-}
-
-/// Runs to time t, returns the largest step taken.
-Real run_to(ExplicitSolver& s, Real t) {
-    Real dt_max = 0;
-    while (s.time() < t) {
-        const Real before = s.time();
-        s.step(1e30);
-        dt_max = std::max(dt_max, s.time() - before);
-    }
-    return dt_max;
 }
 
 /// The time at which the slider's velocity along x first falls to 0 (to a step).
