@@ -139,6 +139,53 @@ def plate_hammer():
           quads(2, 2, hids, 3, first_element=201) + node_set(1, "edge", [ids[i, 0] for i in range(n + 1)]))
 
 
+def solid_card(eid, pid, n):
+    return f"{eid:8d}{pid:8d}" + "".join(f"{k:8d}" for k in n)
+
+
+def block_drop():
+    # a 100 x 100 mm plate (part 1, 10 x 10 quadrangles, nodes 1-121) in z = 0, its edge a node
+    # set; a rigid 40 x 40 x 40 mm block (part 2) 1.5 mm above it: 2 x 2 x 2 hexahedra (nodes
+    # 201-227, node 214 inside), a roof of four pentahedra (N5 = N6, N7 = N8; ridges along y 10 mm
+    # up, nodes 301-306; written in the two-card form) and a tetrahedron on one outer gable
+    # (apex node 307)
+    n, a = 10, 0.1
+    plate, ids = grid(n, n, lambda i, j: (a * i / n, a * j / n, 0.0))
+    edge = sorted(ids[i, j] for i in range(n + 1) for j in range(n + 1) if i in (0, n) or j in (0, n))
+    xs, zs = [0.03, 0.05, 0.07], [0.0015, 0.0215, 0.0415]
+    block, hid = [], {}
+    for k in range(3):
+        for j in range(3):
+            for i in range(3):
+                hid[i, j, k] = 201 + i + 3 * j + 9 * k
+                block.append(node_card(hid[i, j, k], xs[i], xs[j], zs[k]))
+    ridge = {}
+    for r, (im, j) in enumerate((im, j) for im in range(2) for j in range(3)):
+        ridge[im, j] = 301 + r
+        block.append(node_card(ridge[im, j], 0.04 + 0.02 * im, xs[j], 0.0515))
+    block.append(node_card(307, 0.04, 0.02, 0.045))
+    solids, eid = [], 201
+    for k in range(2):
+        for j in range(2):
+            for i in range(2):
+                c = [hid[i, j, k], hid[i + 1, j, k], hid[i + 1, j + 1, k], hid[i, j + 1, k]]
+                t = [hid[i, j, k + 1], hid[i + 1, j, k + 1], hid[i + 1, j + 1, k + 1],
+                     hid[i, j + 1, k + 1]]
+                solids.append(solid_card(eid, 2, c + t))
+                eid += 1
+    eid = 211
+    for j in range(2):
+        for i in range(2):
+            base = [hid[i, j, 2], hid[i + 1, j, 2], hid[i + 1, j + 1, 2], hid[i, j + 1, 2]]
+            top = [ridge[i, j], ridge[i, j], ridge[i, j + 1], ridge[i, j + 1]]
+            solids += [f"{eid:8d}{2:8d}", "".join(f"{k:8d}" for k in base + top)]
+            eid += 1
+    tet = [hid[0, 0, 2], hid[1, 0, 2], ridge[0, 0], 307]
+    solids.append(solid_card(221, 2, tet + [307] * 4))
+    write("block_drop", ["*NODE"] + plate + block + ["*ELEMENT_SHELL"] + quads(n, n, ids, 1) +
+          ["*ELEMENT_SOLID"] + solids + node_set(1, "edge", edge))
+
+
 if __name__ == "__main__":
     plate_drop()
     clamped_beam()
@@ -146,3 +193,4 @@ if __name__ == "__main__":
     pressure_panel()
     strip_pull()
     plate_hammer()
+    block_drop()

@@ -188,7 +188,7 @@ refused("joined with a deformable part", "*CONSTRAINED_RIGID_BODIES\n         3 
         "model.k:", "*CONSTRAINED_RIGID_BODIES", "PIDC 1: the part is not of *MAT_RIGID")
 
 # *INITIAL_VELOCITY_RIGID_BODY: the hammer thrown by it instead of _GENERATION is the same model:
-# the same history bytes as the deck as it is; a spin about the centre of mass is refused
+# the same history bytes as the deck as it is
 THROW_CARDS = THROW + "       0.0       0.0       0.0       0.0       0.0       0.0\n"
 assert THROW_CARDS in deck
 by_body = write(os.path.join(WORK, "rigid_body_velocity"), "model.k", deck.replace(
@@ -198,8 +198,19 @@ r_body, h_body = run(by_body)
 check("*INITIAL_VELOCITY_RIGID_BODY: the history of the deck with _GENERATION, byte for byte",
       r_body.returncode == 0 and "free" in histories and read(h_body) == histories["free"],
       r_body.stderr)
-refused("rigid body spin", "*INITIAL_VELOCITY_RIGID_BODY\n         3       0.0       0.0     -10.0"
-        "       1.0\n", "model.k:", "*INITIAL_VELOCITY_RIGID_BODY", "VXR, VYR, VZR")
+# a spin VXR..VZR about the body's centre of mass: `rotation: {centre: mass, ...}` in the twin
+spun = write(os.path.join(WORK, "rigid_body_spin"), "model.k", deck.replace(
+    THROW_CARDS, "*INITIAL_VELOCITY_RIGID_BODY\n$#     pid        vx        vy        vz       vxr"
+    "       vyr       vzr\n         3       0.0       0.0     -10.0       0.0       0.0      30.0\n"))
+THROW_TWIN = "  - {nodes: part_3, velocity: [0, 0, -10]}\n"
+assert THROW_TWIN in twin
+spun_twin = write(os.path.join(WORK, "rigid_body_spin"), "model.yaml", twin.replace(
+    THROW_TWIN, "  - {nodes: part_3, velocity: [0, 0, -10], rotation: {centre: mass, "
+    "angular_velocity: [0, 0, 30]}}\n"))
+spin_history = twin_pair("*INITIAL_VELOCITY_RIGID_BODY with a spin about the centre of mass", spun,
+                         spun_twin)
+check("the spin changes the run", spin_history is not None and spin_history != histories.get("free"),
+      "the same history")
 
 # *CONTACT_TIED_SURFACE_TO_SURFACE_OFFSET: the doubler (part 2) tied to the plate (part 1) instead
 # of welded, lowered to 1.5 mm above the plate (within the tie's reach, the larger thickness,

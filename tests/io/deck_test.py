@@ -414,7 +414,12 @@ REFUSED = {  # card: what its message must say
     "*CONSTRAINED_JOINT_SPHERICAL\n         1         2\n": "this constraint is not supported",
     "*CONSTRAINED_NODAL_RIGID_BODY_INERTIA\n         1\n": "its inertia or constraints would change the model",
     "*CONSTRAINED_GENERALIZED_WELD_FILLET\n         1\n": "reads *CONSTRAINED_GENERALIZED_WELD_SPOT only",
-    "*ELEMENT_SOLID\n         1         1         1         2         3\n": "shells only",
+    "*ELEMENT_SOLID\n         1         1         1         2         3\n": "need a *SECTION_SOLID",
+    "*ELEMENT_SOLID_ORTHO\n         1         1         1         2         3\n": "not this form of it",
+    ("*SECTION_SOLID\n         9         1\n*PART\nsolid\n         9         9         1\n"
+     "*ELEMENT_SOLID\n     901       9       1       2       3       4\n"):
+        "and solids of rigid parts (*MAT_RIGID)",
+    "*SECTION_BEAM\n         1         1\n": "beam, discrete and thick-shell sections",
     "*CONTACT_TIED_SURFACE_TO_SURFACE_FAILURE\n         1         1\n": "the option _FAILURE is not supported",
     "*CONTACT_TIEBREAK_SURFACE_TO_SURFACE\n         1         1\n": "other tiebreak forms are not supported",
     "*MAT_HONEYCOMB\n         2\n": "this material is not supported",

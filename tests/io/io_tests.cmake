@@ -38,3 +38,10 @@ add_test(NAME io.deck_rigid_bodies
          COMMAND ${FPMSHELL_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/io/deck_rigid_test.py
                  $<TARGET_FILE:fpmshell> ${CMAKE_BINARY_DIR}/deck_rigid_test_work)
 set_tests_properties(io.deck_rigid_bodies PROPERTIES LABELS io TIMEOUT ${_timeout_300s})
+
+# Rigid parts of solids and *PART_INERTIA in decks against YAML twins, the two-card form of
+# *ELEMENT_SOLID, and their refusals (tests/io/deck_solid_test.py).
+add_test(NAME io.deck_rigid_solids
+         COMMAND ${FPMSHELL_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/io/deck_solid_test.py
+                 $<TARGET_FILE:fpmshell> ${CMAKE_BINARY_DIR}/deck_solid_test_work)
+set_tests_properties(io.deck_rigid_solids PROPERTIES LABELS io TIMEOUT ${_timeout_300s})

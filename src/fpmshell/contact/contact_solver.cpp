@@ -10,6 +10,7 @@
 #include "fpmshell/contact/closest_point.hpp"
 #include "fpmshell/io/restart_archive.hpp"
 #include "fpmshell/model/node_thickness.hpp"
+#include "fpmshell/model/rigid_body_partition.hpp"
 #include "fpmshell/model/rigid_face.hpp"
 
 namespace fpmshell {
@@ -98,6 +99,7 @@ ContactSolver::ContactSolver(const Model& model, const MeshTopology& topology,
     // h_s of a particle: the mean thickness of its elements.
     const std::size_t np = model.nodes.size();
     node_thickness_ = mean_node_thickness(model.triangles, element_thickness, np);
+    rigid_body_of_ = rigid_body_partition(model).body_of_particle;
 
     for (const ContactDefinition& def : model.contacts) {
         Definition d;
@@ -213,6 +215,11 @@ void ContactSolver::search(Definition& d, const std::vector<Vec3>& x) {
                 const Index e = d.def.elements[static_cast<std::size_t>(item)];
                 const auto& t = tri[static_cast<std::size_t>(e)];
                 if (t[0] == s || t[1] == s || t[2] == s) return;
+                if (const Index body = rigid_body_of_[static_cast<std::size_t>(s)];
+                    body >= 0 && rigid_body_of_[static_cast<std::size_t>(t[0])] == body &&
+                    rigid_body_of_[static_cast<std::size_t>(t[1])] == body &&
+                    rigid_body_of_[static_cast<std::size_t>(t[2])] == body)
+                    return;  // a rigid body's own face
                 for (std::int64_t k = d.neighbour_start[i]; k < d.neighbour_start[i + 1]; ++k) {
                     const Index nb = d.neighbours[static_cast<std::size_t>(k)];
                     if (t[0] == nb || t[1] == nb || t[2] == nb) return;
@@ -232,7 +239,12 @@ void ContactSolver::search(Definition& d, const std::vector<Vec3>& x) {
                                               model_.nodes[static_cast<std::size_t>(t[2])], 0.0);
                 const Real distance0 = (xs0 - cp0.point).norm();
                 if (first && distance0 < offset) overlaps = true;
-                if (distance0 < d.exclusion_radius) return;
+                // A rigid solid's faces (thickness 0) are no shell: nothing holds them to what
+                // they start near, so they are never excluded.
+                if (distance0 < d.exclusion_radius &&
+                    element_thickness_[static_cast<std::size_t>(e)] > 0 &&
+                    node_thickness_[static_cast<std::size_t>(s)] > 0)
+                    return;
                 found.push_back(e);
             });
             d.candidate_start[i + 1] = static_cast<std::int64_t>(found.size());  // in the chunk
@@ -346,7 +358,8 @@ void ContactSolver::collect_self(Definition& d, const std::vector<Vec3>& x,
                 c.element = e;
                 c.master = t;
                 c.offset = offset;
-                c.thickness = 2 * d.slave_offset[i];
+                // the slave's thickness; a face of a rigid solid has none: the pair's distance
+                c.thickness = d.slave_offset[i] > 0 ? 2 * d.slave_offset[i] : 2 * offset;
                 if (lagrange) c.friction = d.def.friction;
                 // Positions the gap is measured at: the predictor (Lagrange multipliers, normal and
                 // weights frozen there, §8.2) or t_n (penalty).
@@ -573,7 +586,7 @@ Real ContactSolver::weight(const Constraint& c, Real beta_particle, Real beta_bo
 void ContactSolver::note_penetration(Real penetration, const Constraint& c, long step) {
     if (!(penetration > stats_.max_penetration)) return;
     stats_.max_penetration = penetration;
-    stats_.max_penetration_ratio = penetration / c.thickness;
+    stats_.max_penetration_ratio = c.thickness > 0 ? penetration / c.thickness : 0.0;
     stats_.max_penetration_step = step;
     stats_.max_penetration_particle = c.slave;
     stats_.max_penetration_element = c.element;

@@ -241,6 +241,9 @@ private:
     std::vector<std::int64_t> island_updates_;  ///< scratch, per island
     std::vector<Real> element_thickness_;
     std::vector<Real> node_thickness_;
+    /// per particle, its rigid body (model/rigid_body_partition.hpp), -1 outside them: a body's
+    /// particles never touch its own faces
+    std::vector<Index> rigid_body_of_;
     std::vector<Definition> definitions_;
     std::vector<Vec3> slave_force_;  ///< per definition: the force on its slaves at t_n
     bool has_penalty_ = false, has_lagrange_ = false;

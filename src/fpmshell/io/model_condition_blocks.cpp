@@ -192,7 +192,14 @@ void read_initial_conditions(const YamlValue& v, Model& model) {
                     "give the particles' spin either as angular_velocity or through "
                     "`rotation`, not both");
             const YamlMap rot = r->map({"centre", "angular_velocity"});
-            ic.spin_centre = rot.at("centre", "a point [x, y, z] of the rotation axis").vec3();
+            const YamlValue centre =
+                rot.at("centre", "a point [x, y, z] of the rotation axis, or `mass`");
+            if (centre.is_scalar()) {  // the centre of mass of the set's particles
+                (void)centre.choice({"mass"});
+                ic.spin_about_mass_centre = true;
+            } else {
+                ic.spin_centre = centre.vec3();
+            }
             ic.spin =
                 rot.at("angular_velocity", "the rotation vector [wx, wy, wz] (rad/time)").vec3();
         }

@@ -1,6 +1,7 @@
 // The `materials` and `sections` blocks of the model file (see model_blocks.hpp).
 #include <fmt/format.h>
 
+#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
 #include <string>
@@ -11,6 +12,8 @@
 #include "fpmshell/io/model_blocks.hpp"
 #include "fpmshell/io/model_names.hpp"
 #include "fpmshell/materials/flow_table.hpp"
+#include "fpmshell/model/enclosed_solid.hpp"
+#include "fpmshell/model/rigid_inertia_shares.hpp"
 
 namespace fpmshell {
 namespace {
@@ -307,6 +310,51 @@ void read_thickness_rule(const YamlMap& m, Section& s) {
     }
 }
 
+namespace {
+
+/// A rigid section's `inertia` (LS-DYNA's *PART_INERTIA; eq. 6.11-8 for `enclosed`): its
+/// body's mass, centre and tensor [Ixx, Ixy, Ixz, Iyy, Iyz, Izz] about the centre, or those of
+/// the solid its closed faces enclose.
+void read_rigid_inertia(const YamlValue& v, const Model& model, const std::vector<Index>& elements,
+                        Section& s) {
+    const Material& mat = model.materials[static_cast<std::size_t>(s.material)];
+    if (!mat.rigid) v.fail("inertia is given to sections of a rigid material only (`type: rigid`)");
+    s.has_inertia = true;
+    if (v.is_scalar()) {
+        (void)v.choice({"enclosed"});  // the one word; a map gives the numbers
+        std::vector<std::array<Index, 3>> faces;
+        faces.reserve(elements.size());
+        for (const Index e : elements)
+            faces.push_back(model.triangles[static_cast<std::size_t>(e)]);
+        if (const auto open = open_surface_edge(faces))
+            v.fail(
+                "`enclosed` needs the section's faces to close a solid, each edge shared by two "
+                "of them oriented the same way round; " +
+                *open);
+        s.inertia = enclosed_solid_inertia(faces, model.nodes, mat.density);
+        if (!(s.inertia.mass > 0)) v.fail("the faces enclose no volume (or the density is 0)");
+        return;
+    }
+    const YamlMap m = v.map({"mass", "centre", "tensor"});
+    s.inertia.mass = m.at("mass", "a number > 0").positive();
+    s.inertia.centre = m.at("centre", "[x, y, z]").vec3();
+    const auto items = m.at("tensor", "[Ixx, Ixy, Ixz, Iyy, Iyz, Izz]")
+                           .list_of(6, "a component", "[Ixx, Ixy, Ixz, Iyy, Iyz, Izz]");
+    const Real ixx = items[0].real(), ixy = items[1].real(), ixz = items[2].real();
+    const Real iyy = items[3].real(), iyz = items[4].real(), izz = items[5].real();
+    s.inertia.tensor << ixx, ixy, ixz, ixy, iyy, iyz, ixz, iyz, izz;
+    const Eigen::SelfAdjointEigenSolver<Mat3> eigen(s.inertia.tensor);
+    const Vec3 principal = eigen.eigenvalues();  // ascending
+    // a body's principal moments are positive, each at most the sum of the other two
+    if (!(principal[0] > 0) || principal[2] > principal[0] + principal[1] + 1e-9 * principal[2])
+        m.at("tensor").fail(fmt::format(
+            "the principal moments {:.6g}, {:.6g}, {:.6g} are not those of a body (each must be "
+            "positive and at most the sum of the other two)",
+            principal[0], principal[1], principal[2]));
+}
+
+}  // namespace
+
 void read_sections(const YamlValue& v, Model& model) {
     const auto items = v.list("sections");
     if (items.empty())
@@ -314,9 +362,10 @@ void read_sections(const YamlValue& v, Model& model) {
             "at least one section is required, e.g. - {elements: all, material: steel, "
             "thickness: 1.0}");
     model.element_section.assign(model.triangles.size(), -1);
+    std::vector<std::pair<Index, YamlValue>> given_inertia;  // checked once every section is in
     for (const YamlValue& item : items) {
         const YamlMap m = item.map({"elements", "material", "thickness", "thickness_points",
-                                    "thickness_rule", "inplane_points"});
+                                    "thickness_rule", "inplane_points", "inertia"});
         const auto& elements =
             named_element_set(model, m.at("elements", "an element set name such as all"));
         Section s;
@@ -325,8 +374,12 @@ void read_sections(const YamlValue& v, Model& model) {
             s.thickness_points = 5;  // Lobatto: the surfaces yield first (theory.md §7.5)
             s.inplane_points = 3;    // docs/option-studies.md: 7 changes no tested row by > 0.4 %
         }
-        s.thickness = m.at("thickness", "a number > 0").positive();
+        const auto inertia = m.find("inertia");
+        // the faces of a rigid solid have no thickness of their own (their contact has none)
+        s.thickness = inertia ? m.at("thickness", "a number >= 0").non_negative()
+                              : m.at("thickness", "a number > 0").positive();
         read_thickness_rule(m, s);
+        if (inertia) read_rigid_inertia(*inertia, model, elements, s);
         if (const auto ip = m.find("inplane_points")) {
             const long long n = ip->integer(3, 7);
             if (n != 3 && n != 7)
@@ -334,6 +387,7 @@ void read_sections(const YamlValue& v, Model& model) {
             s.inplane_points = static_cast<int>(n);
         }
         const auto index = static_cast<Index>(model.sections.size());
+        if (inertia) given_inertia.emplace_back(index, *inertia);
         model.sections.push_back(s);
         for (const Index e : elements) model.element_section[static_cast<std::size_t>(e)] = index;
     }
@@ -346,6 +400,9 @@ void read_sections(const YamlValue& v, Model& model) {
                " more) has no section; every element needs one, e.g. start with an entry "
                "for `elements: all`");
     }
+    for (const auto& [index, value] : given_inertia)  // eq. 6.11-9
+        if (const auto problem = rigid_inertia_shares(model, index).problem)
+            value.fail("the section's particles cannot carry its inertia: " + *problem);
     auto rigid = [&](Index s) {
         return model
             .materials[static_cast<std::size_t>(

@@ -108,6 +108,9 @@ std::vector<Index> nodes_numbered(const MeshData& mesh, const YamlValue& ids) {
     for (const YamlValue& id : ids.list("node numbers")) {
         const long long number = id.integer(1, std::numeric_limits<long long>::max());
         const auto it = std::lower_bound(mesh.node_tag.begin(), mesh.node_tag.end(), number);
+        if ((it == mesh.node_tag.end() || *it != number) &&
+            std::binary_search(mesh.inner_node_tag.begin(), mesh.inner_node_tag.end(), number))
+            continue;  // inside a rigid part of solids: its body's outer faces carry it
         if (it == mesh.node_tag.end() || *it != number)
             id.fail("node " + std::to_string(number) +
                     " is not a node of the mesh's shells (the mesh file does not define it, or "

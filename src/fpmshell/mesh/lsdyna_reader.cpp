@@ -11,6 +11,7 @@
 #include "fpmshell/core/text.hpp"
 #include "fpmshell/mesh/keyword_deck.hpp"
 #include "fpmshell/mesh/raw_mesh.hpp"
+#include "fpmshell/mesh/solid_faces.hpp"
 
 namespace fpmshell {
 namespace {
@@ -58,7 +59,7 @@ std::vector<std::string> card_fields(const std::string& line,
     return split_blanks(line);
 }
 
-enum class Block { Skip, Node, Shell, NodeSet, ShellSet, PartSet };
+enum class Block { Skip, Node, Shell, Solid, NodeSet, ShellSet, PartSet };
 
 class LsDynaReader {
 public:
@@ -73,6 +74,7 @@ public:
             for (const DeckCard& c : block.cards) card(c.text, c.line);
         }
         raw_.path = main_path_;
+        add_solid_faces();
         // The triangles in element-number order, whatever order the cards and included files
         // come in (LS-DYNA reads a deck as a whole): a reordered deck is the same model.
         const auto by_id = [](const auto& a, const auto& b) { return a.id < b.id; };
@@ -86,7 +88,16 @@ public:
                     members.insert(members.end(), it->second.begin(), it->second.end());
             }
         }
-        return finish_raw_mesh(raw_);
+        MeshData mesh = finish_raw_mesh(raw_);
+        for (const SolidElement& e : solids_)
+            for (const long long n : e.nodes)
+                if (!std::binary_search(mesh.node_tag.begin(), mesh.node_tag.end(), n))
+                    mesh.inner_node_tag.push_back(n);
+        std::sort(mesh.inner_node_tag.begin(), mesh.inner_node_tag.end());
+        mesh.inner_node_tag.erase(
+            std::unique(mesh.inner_node_tag.begin(), mesh.inner_node_tag.end()),
+            mesh.inner_node_tag.end());
+        return mesh;
     }
 
 private:
@@ -114,6 +125,9 @@ private:
         }
         if (name == "NODE") {
             block_ = Block::Node;
+        } else if (name == "ELEMENT_SOLID") {
+            block_ = Block::Solid;
+            solid_waiting_ = false;
         } else if (name.rfind("ELEMENT_SHELL", 0) == 0) {
             block_ = Block::Shell;
             const std::set<std::string> options(parts.begin() + 2, parts.end());
@@ -160,6 +174,7 @@ private:
         // set's title, a shell's thickness card) it is a card of defaults.
         const bool record_start =
             block_ == Block::Node || (block_ == Block::Shell && card_ % cards_per_element_ == 0) ||
+            (block_ == Block::Solid && !solid_waiting_) ||
             ((block_ == Block::NodeSet || block_ == Block::ShellSet || block_ == Block::PartSet) &&
              !(title_ && card_ == 0));
         if (record_start && std::all_of(line.begin(), line.end(),
@@ -214,6 +229,9 @@ private:
                 raw_.set_lines.try_emplace(part, number);
                 return;
             }
+            case Block::Solid:
+                solid_card(line, number);
+                return;
             case Block::NodeSet:
             case Block::ShellSet:
             case Block::PartSet: {
@@ -273,7 +291,82 @@ private:
         }
     }
 
+    /// A card of *ELEMENT_SOLID: EID, PID, N1..N8; or EID and PID alone, the nodes N1..N8 on
+    /// the next card (LS-DYNA's two-card form).
+    void solid_card(const std::string& line, int number) {
+        const auto f =
+            card_fields(line, std::vector<std::size_t>(10, width(8)),
+                        [](std::size_t, const std::string& s) { return blank_or_id(s); });
+        std::vector<long long> v;
+        for (const std::string& field : f) {
+            long long n = 0;
+            if (!field.empty() && !parse_whole(field, n))
+                raw_.fail(number,
+                          "expected a number in an *ELEMENT_SOLID card, got '" + field + "'");
+            v.push_back(n);
+        }
+        std::size_t first_node = 2;
+        if (!solid_waiting_) {
+            if (v.size() < 2 || v[0] <= 0 || v[1] <= 0)
+                raw_.fail(number, "an *ELEMENT_SOLID card needs: EID, PID, N1, ..., N8");
+            solid_ = SolidElement{v[0], v[1], {}, number};
+            if (v.size() < 3 || v[2] == 0) {  // the nodes follow on the next card
+                solid_waiting_ = true;
+                return;
+            }
+        } else {
+            first_node = 0;
+            solid_waiting_ = false;
+        }
+        std::size_t given = 0;
+        for (std::size_t k = 0; k < 8; ++k) {
+            const std::size_t at = first_node + k;
+            solid_.nodes[k] = at < v.size() ? v[at] : 0;
+            if (solid_.nodes[k] > 0) ++given;
+        }
+        if (given < 4 || solid_.nodes[0] <= 0 || solid_.nodes[1] <= 0 || solid_.nodes[2] <= 0 ||
+            solid_.nodes[3] <= 0)
+            raw_.fail(number, "solid " + std::to_string(solid_.id) +
+                                  " needs at least its nodes N1 to N4 (a tetrahedron)");
+        for (std::size_t k = 4; k < 8; ++k)  // blank N5..N8: a tetrahedron's repeated N4
+            if (solid_.nodes[k] <= 0) solid_.nodes[k] = solid_.nodes[3];
+        for (std::size_t at = first_node + 8; at < v.size(); ++at)
+            if (v[at] != 0) raw_.fail(number, "solids with more than 8 nodes are not supported");
+        solids_.push_back(solid_);
+    }
+
+    /// The outer faces of each part of solids, as its shells (numbered after every shell and
+    /// solid of the file, in the solids' order).
+    void add_solid_faces() {
+        if (solids_.empty()) return;
+        std::unordered_map<long long, Vec3> at;
+        long long next = 0;
+        for (const SolidElement& e : solids_) {
+            next = std::max(next, e.id);
+            for (const long long n : e.nodes) {
+                const auto it = raw_.nodes.find(n);
+                if (it == raw_.nodes.end())
+                    raw_.fail(e.line, "solid " + std::to_string(e.id) + " refers to node " +
+                                          std::to_string(n) + ", which no *NODE card defines");
+                at.emplace(n, it->second.x);
+            }
+        }
+        for (const auto& shell : raw_.shells) next = std::max(next, shell.id);
+        std::map<long long, int> first_line;
+        for (const SolidElement& e : solids_) first_line.try_emplace(e.part, e.line);
+        for (const SolidFace& face : outer_solid_faces(solids_, at)) {
+            const long long id = ++next;
+            raw_.add_shell(id, face.nodes, first_line[face.part]);
+            const std::string part = "part_" + std::to_string(face.part);
+            raw_.element_sets[part].push_back(id);
+            raw_.set_lines.try_emplace(part, first_line[face.part]);
+        }
+    }
+
     RawMesh raw_;
+    std::vector<SolidElement> solids_;
+    SolidElement solid_;
+    bool solid_waiting_ = false;
     Block block_ = Block::Skip;
     Format format_ = Format::Standard;
     int card_ = 0;

@@ -25,6 +25,10 @@ struct MeshData {
     /// For meshes read from an Abaqus or LS-DYNA file: the node number in the file of each node,
     /// increasing (sets of `node_ids` refer to them). Empty for generators and Gmsh files.
     std::vector<std::int64_t> node_tag;
+    /// For LS-DYNA files with solids: the numbers of the nodes inside the parts of solids (on no
+    /// outer face, no shell), increasing. A set that names one means the rigid body of its solids,
+    /// which its outer faces' particles carry: the member is left out.
+    std::vector<std::int64_t> inner_node_tag;
 };
 
 }  // namespace fpmshell

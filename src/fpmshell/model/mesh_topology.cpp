@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "fpmshell/elements/lumped_inertia.hpp"
+#include "fpmshell/model/rigid_inertia_shares.hpp"
 
 namespace fpmshell {
 namespace {
@@ -103,9 +104,23 @@ MeshTopology::MeshTopology(const Model& model) {
             std::min({(p1 - p0).squaredNorm(), (p2 - p1).squaredNorm(), (p0 - p2).squaredNorm()}));
         const NodeInertiaShare share = node_inertia_share(model.control.rotary_inertia, mat.density,
                                                           sec.thickness, area, shortest_edge);
-        element_node_mass[e] = share.mass;
-        element_node_inertia[e] = share.inertia;
-        element_gyration2[e] = share.gyration2;
+        // a rigid section with a given inertia shares its mass by eq. 6.11-9 instead
+        element_node_mass[e] = sec.has_inertia ? 0.0 : share.mass;
+        element_node_inertia[e] = sec.has_inertia ? 0.0 : share.inertia;
+        element_gyration2[e] = sec.has_inertia ? 0.0 : share.gyration2;
+    }
+    for (std::size_t s = 0; s < model.sections.size(); ++s) {
+        if (!model.sections[s].has_inertia) continue;
+        const RigidInertiaShares shares = rigid_inertia_shares(model, static_cast<Index>(s));
+        for (std::size_t k = 0; k < shares.particles.size(); ++k) {
+            const auto p = static_cast<std::size_t>(shares.particles[k]);
+            if (inertia_share_mass.empty()) {
+                inertia_share_mass.assign(np, 0.0);
+                inertia_share_inertia.assign(np, 0.0);
+            }
+            inertia_share_mass[p] += shares.mass[k];
+            inertia_share_inertia[p] += shares.inertia[k];
+        }
     }
     sum_particle_shares();
 }
@@ -125,6 +140,10 @@ void MeshTopology::sum_particle_shares() {
             auto& inertia = particle_inertia[static_cast<std::size_t>(p)];
             inertia = std::fma(element_node_mass[e], element_gyration2[e], inertia);
         }
+    }
+    for (std::size_t p = 0; p < inertia_share_mass.size(); ++p) {
+        particle_mass[p] += inertia_share_mass[p];
+        particle_inertia[p] += inertia_share_inertia[p];
     }
 }
 

@@ -57,6 +57,9 @@ struct MeshTopology {
     /// Per element, its share at each of its corners (the same for the three), and the
     /// share's inertia / mass.
     std::vector<Real> element_node_mass, element_node_inertia, element_gyration2;
+    /// per particle, its shares of the rigid sections with a given inertia (eq. 6.11-9);
+    /// empty without such sections
+    std::vector<Real> inertia_share_mass, inertia_share_inertia;
 
 private:
     /// particle_mass and particle_inertia from the element shares, in element order.

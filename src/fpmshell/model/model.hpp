@@ -72,6 +72,15 @@ struct Material {
 /// default of model-format.md: Gauss for 1 or 2 points, Lobatto for 3 or more.
 enum class ThicknessRule { ByCount, Gauss, Lobatto, User };
 
+/// The mass properties a section of a rigid material gives its rigid body in place of its
+/// elements' (LS-DYNA's *PART_INERTIA; a rigid part meshed with solids, theory.md §6.11):
+/// its mass, centre of mass and inertia tensor about that centre in global axes, at t = 0.
+struct RigidInertia {
+    Real mass = 0;
+    Vec3 centre = Vec3::Zero();
+    Mat3 tensor = Mat3::Zero();  ///< symmetric positive definite
+};
+
 /// Shell section of a group of elements.
 struct Section {
     Index material = -1;       ///< index into Model::materials
@@ -81,6 +90,11 @@ struct Section {
     ThicknessRule thickness_rule = ThicknessRule::ByCount;
     /// a user rule: (zeta in [-1, 1], weight), the weights summing to 2 as the built-in rules'
     std::vector<std::pair<Real, Real>> thickness_user_points{};
+    /// rigid materials: the body's share from this section, given or computed from the solid
+    /// its closed surface encloses (`inertia: enclosed`); its elements then add no mass of
+    /// their own, and their thickness may be 0 (the contact surface of a solid)
+    bool has_inertia = false;
+    RigidInertia inertia{};
 };
 
 enum class PrescribedKind { None, Displacement, Velocity, AngularVelocity };
@@ -128,6 +142,9 @@ struct InitialVelocity {
     /// *INITIAL_VELOCITY_GENERATION)
     Vec3 spin = Vec3::Zero();
     Vec3 spin_centre = Vec3::Zero();
+    /// `centre: mass`: the axis passes through the centre of mass of the set's particles (a
+    /// rigid body's spin about its centre, LS-DYNA's *INITIAL_VELOCITY_RIGID_BODY VXR..VZR)
+    bool spin_about_mass_centre = false;
 };
 
 /// Rayleigh damping (theory.md §6.5): a_m (1/s) on mass, a_s (s) on stiffness.

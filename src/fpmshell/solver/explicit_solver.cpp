@@ -67,21 +67,37 @@ ExplicitSolver::ExplicitSolver(const Model& model)
             if (n.dot(s_.normal[static_cast<std::size_t>(p)]) < k_kink_cosine)
                 s_.full_rotation[static_cast<std::size_t>(p)] = 1;
     }
+    // the particles of rigid sections with a given inertia turn about all three axes (§6.11)
+    for (const Index p : nodal_rigid_bodies_.full_rotation_particles())
+        s_.full_rotation[static_cast<std::size_t>(p)] = 1;
     // Boundary conditions (§6.7) and the drill axes they leave (§2.6, eq. 2.6c).
     bc_ = std::make_unique<BoundaryConditions>(model, s_.full_rotation);
     // the particles of driven rigid bodies have reactions (eq. 6.11-7)
     bc_->add_reactions(nodal_rigid_bodies_.driven_particles());
     for (std::size_t p = 0; p < np; ++p) s_.drill_axis[p] = bc_->drill_axis(p, s_.normal[p]);
     // Initial conditions: v^0, w^0 (the first cycle uses v^{-1/2} := v^0).
-    for (const InitialVelocity& ic : model.initial_conditions)
+    for (const InitialVelocity& ic : model.initial_conditions) {
+        Vec3 spin_centre = ic.spin_centre;
+        if (ic.spin_about_mass_centre) {  // the centre of mass of the set's particles
+            Real mass = 0;
+            Vec3 first = Vec3::Zero();
+            for (const Index p : ic.nodes) {
+                mass += s_.mass[static_cast<std::size_t>(p)];
+                first +=
+                    s_.mass[static_cast<std::size_t>(p)] * model.nodes[static_cast<std::size_t>(p)];
+            }
+            if (mass > 0) spin_centre = first / mass;
+        }
         for (Index p : ic.nodes) {
             // normal_velocity: along the initial surface normal of the particle (§1.3); spin: a
             // rigid rotation of the set
             const auto up = static_cast<std::size_t>(p);
             s_.v[up] = ic.velocity + ic.normal_velocity * s_.normal[up] +
-                       ic.spin.cross(model.nodes[up] - ic.spin_centre);
+                       ic.spin.cross(model.nodes[up] - spin_centre);
             s_.omega[up] = ic.angular_velocity + ic.spin;
         }
+    }
+    nodal_rigid_bodies_.make_initial_motion_rigid(s_);  // §6.11
     for (std::size_t p = 0; p < np; ++p) {
         s_.v[p] = bc_->without_fixed_translation(p, s_.v[p]);
         s_.v_prev[p] = s_.v[p];
@@ -89,6 +105,7 @@ ExplicitSolver::ExplicitSolver(const Model& model)
         energy_.external_work += 0.5 * s_.mass[p] * s_.v[p].squaredNorm() +
                                  0.5 * s_.inertia[p] * s_.omega[p].squaredNorm();
     }
+    energy_.external_work += nodal_rigid_bodies_.extra_kinetic_energy(s_);  // eq. 6.11-10
     loads_ = std::make_unique<ExternalLoads>(model, topology_);
     if (decomposition_.distributed())
         loads_->set_subset(&decomposition_.near_elements, &decomposition_.held_particles);
@@ -165,7 +182,7 @@ void ExplicitSolver::cycle(const CyclePolicy& policy, Real load_time, Real dt_ca
         if (tied_) tied_->impose(s_, *bc_, dt.c1 * dt.dt_n, true);  // 6c §6.12
         lagrange_contact(dt);                                       // 7 §8.3
         if (contact_ && contact_->has_lagrange()) {                 // what the contact moved
-            nodal_rigid_bodies_.make_rigid(s_, at, model_.curves);
+            nodal_rigid_bodies_.make_rigid(s_, at, model_.curves, true);
             if (tied_) tied_->impose(s_, *bc_, dt.c1 * dt.dt_n, false);
         }
         advance_particles(dt, particles);  // 8-9
@@ -385,6 +402,7 @@ void ExplicitSolver::book_energies(const StepLengths& dt, const ParticleSums& pa
         kinetic += 0.5 * b.mass * b.v_prev.dot(b.v);
         if (b.inv_mass == 0) external_work -= body_work;  // what drives a fixed body on
     }
+    kinetic += nodal_rigid_bodies_.extra_kinetic_energy(s_);  // eq. 6.11-10
     energy_.kinetic = kinetic + particles.kinetic;
     energy_.contact -=
         contact_work + particles.contact_work;  // dissipated (multipliers) or stored (penalty)

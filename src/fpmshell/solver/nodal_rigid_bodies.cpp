@@ -5,10 +5,12 @@
 #include <Eigen/Eigenvalues>
 #include <Eigen/Geometry>
 #include <algorithm>
+#include <map>
 #include <numeric>
 
 #include "fpmshell/core/errors.hpp"
 #include "fpmshell/model/rigid_body_partition.hpp"
+#include "fpmshell/model/rigid_inertia_shares.hpp"
 #include "fpmshell/solver/particle_state.hpp"
 
 namespace fpmshell {
@@ -20,6 +22,7 @@ NodalRigidBodies::NodalRigidBodies(const Model& model) {
                          partition.problem->second);
     bodies_ = std::move(partition.bodies);
     fixed_ = std::move(partition.held);
+    set_inertia_corrections(model, partition.body_of_particle);
     for (std::size_t b = 0; b < bodies_.size(); ++b)
         for (const RigidPrescription& pr : partition.prescribed[b])
             if (pr.kind != PrescribedKind::None) {
@@ -29,6 +32,127 @@ NodalRigidBodies::NodalRigidBodies(const Model& model) {
                 }
                 driven_[b] = 1;
             }
+}
+
+namespace {
+
+/// [a - o, b - o, (a - o) x (b - o)]: a rigid motion turns it by its rotation.
+Mat3 frame(const Vec3& o, const Vec3& a, const Vec3& b) {
+    Mat3 f;
+    f.col(0) = a - o;
+    f.col(1) = b - o;
+    f.col(2) = (a - o).cross(b - o);
+    return f;
+}
+
+}  // namespace
+
+void NodalRigidBodies::set_inertia_corrections(const Model& model,
+                                               const std::vector<Index>& body_of_particle) {
+    std::map<std::size_t, InertiaCorrection> by_body;
+    for (std::size_t sec = 0; sec < model.sections.size(); ++sec) {
+        const Section& section = model.sections[sec];
+        if (!section.has_inertia) continue;
+        const RigidInertiaShares shares = rigid_inertia_shares(model, static_cast<Index>(sec));
+        if (shares.particles.empty()) continue;
+        const auto body = static_cast<std::size_t>(
+            body_of_particle[static_cast<std::size_t>(shares.particles.front())]);
+        InertiaCorrection& c = by_body[body];
+        c.body = body;
+        // eq. 6.11-10: the section's tensor less what its shares carry about its centre
+        c.delta0 += section.inertia.tensor;
+        for (std::size_t k = 0; k < shares.particles.size(); ++k) {
+            const Vec3 r =
+                model.nodes[static_cast<std::size_t>(shares.particles[k])] - section.inertia.centre;
+            c.delta0 -= shares.mass[k] * (r.squaredNorm() * Mat3::Identity() - r * r.transpose()) +
+                        shares.inertia[k] * Mat3::Identity();
+            full_rotation_.push_back(shares.particles[k]);
+        }
+        if (c.o >= 0) continue;
+        // eq. 6.11-11: o, the particle farthest from o, the one farthest off their line
+        const auto at = [&](Index p) { return model.nodes[static_cast<std::size_t>(p)]; };
+        c.o = shares.particles.front();
+        Real best = -1;
+        for (const Index p : shares.particles)
+            if (const Real d = (at(p) - at(c.o)).squaredNorm(); d > best) {
+                best = d;
+                c.a = p;
+            }
+        best = -1;
+        for (const Index p : shares.particles)
+            if (const Real d = (at(p) - at(c.o)).cross(at(c.a) - at(c.o)).squaredNorm(); d > best) {
+                best = d;
+                c.b = p;
+            }
+        c.frame0_inverse = frame(at(c.o), at(c.a), at(c.b)).inverse();
+    }
+    for (auto& [body, c] : by_body) corrections_.push_back(c);
+    std::sort(full_rotation_.begin(), full_rotation_.end());
+    full_rotation_.erase(std::unique(full_rotation_.begin(), full_rotation_.end()),
+                         full_rotation_.end());
+}
+
+Mat3 NodalRigidBodies::rotation_of(const InertiaCorrection& c, const std::vector<Vec3>& x) {
+    return frame(x[static_cast<std::size_t>(c.o)], x[static_cast<std::size_t>(c.a)],
+                 x[static_cast<std::size_t>(c.b)]) *
+           c.frame0_inverse;
+}
+
+std::vector<Index> NodalRigidBodies::full_rotation_particles() const { return full_rotation_; }
+
+Real NodalRigidBodies::extra_kinetic_energy(const ParticleState& s) const {
+    Real energy = 0;
+    for (const InertiaCorrection& c : corrections_) {
+        const Mat3 turn = rotation_of(c, s.x);
+        const auto o = static_cast<std::size_t>(c.o);
+        energy += 0.5 * s.omega_prev[o].dot(turn * c.delta0 * turn.transpose() * s.omega[o]);
+    }
+    return energy;
+}
+
+void NodalRigidBodies::make_initial_motion_rigid(ParticleState& s) const {
+    for (std::size_t b = 0; b < bodies_.size(); ++b) {
+        const std::vector<Index>& body = bodies_[b];
+        Real mass = 0;
+        Vec3 centre = Vec3::Zero(), momentum = Vec3::Zero();
+        for (const Index ip : body) {
+            const auto p = static_cast<std::size_t>(ip);
+            mass += s.mass[p];
+            centre += s.mass[p] * s.x[p];
+            momentum += s.mass[p] * s.v[p];
+        }
+        centre /= mass;
+        const Vec3 velocity = momentum / mass;
+        Vec3 spin = Vec3::Zero();
+        Mat3 inertia = Mat3::Zero();
+        for (const Index ip : body) {
+            const auto p = static_cast<std::size_t>(ip);
+            const Vec3 r = s.x[p] - centre;
+            spin += s.mass[p] * r.cross(s.v[p] - velocity) + s.inertia[p] * s.omega[p];
+            inertia += s.mass[p] * (r.squaredNorm() * Mat3::Identity() - r * r.transpose());
+            const Vec3& n = s.normal[p];
+            inertia += s.full_rotation[p]
+                           ? Mat3(s.inertia[p] * Mat3::Identity())
+                           : Mat3(s.inertia[p] * (Mat3::Identity() - n * n.transpose()));
+        }
+        for (const InertiaCorrection& c : corrections_)
+            if (c.body == b) {  // eq. 6.11-10 at t = 0
+                inertia += c.delta0;
+                spin += c.delta0 * s.omega[static_cast<std::size_t>(c.o)];
+            }
+        const Eigen::SelfAdjointEigenSolver<Mat3> eigen(inertia);
+        const Vec3 values = eigen.eigenvalues();
+        const Real floor = 1e-12 * std::max(values.maxCoeff(), Real(0));
+        Vec3 projected = eigen.eigenvectors().transpose() * spin;
+        for (int k = 0; k < 3; ++k) projected[k] = values[k] > floor ? projected[k] / values[k] : 0;
+        const Vec3 omega = eigen.eigenvectors() * projected;
+        for (const Index ip : body) {
+            const auto p = static_cast<std::size_t>(ip);
+            s.v[p] = velocity + omega.cross(s.x[p] - centre);
+            const Vec3& n = s.normal[p];
+            s.omega[p] = s.full_rotation[p] ? omega : Vec3(omega - n.dot(omega) * n);
+        }
+    }
 }
 
 std::vector<Index> NodalRigidBodies::driven_particles() const {
@@ -74,7 +198,7 @@ std::vector<Real> NodalRigidBodies::contact_masses(const std::vector<Real>& mass
 }
 
 void NodalRigidBodies::make_rigid(ParticleState& s, const PrescribedMotionTimes& at,
-                                  const std::vector<Curve>& curves) const {
+                                  const std::vector<Curve>& curves, bool again) const {
     const Real dt_new = at.dt_new;
     const auto n_bodies = static_cast<std::ptrdiff_t>(bodies_.size());
 #pragma omp parallel for schedule(static) if (n_bodies >= 64)
@@ -123,34 +247,106 @@ void NodalRigidBodies::make_rigid(ParticleState& s, const PrescribedMotionTimes&
         // axes' block of I takes their part of L less I_fh omega_h; the held rows and columns
         // become the largest inertia times the identity.
         Vec3 held_omega = Vec3::Zero();
-        if (fixed[3] || fixed[4] || fixed[5]) {
+        const bool held_rotation = fixed[3] || fixed[4] || fixed[5];
+        if (held_rotation)
             for (std::size_t k = 0; k < 3; ++k)
                 if (fixed[3 + k])
                     held_omega[static_cast<Eigen::Index>(k)] =
                         prescribed_value(b, 3 + k, centre, centre0, at, curves);
-            if (driven) spin -= inertia * held_omega;
-            const Real scale = std::max(inertia.trace(), Real(0));
-            for (int k = 0; k < 3; ++k) {
-                if (!fixed[static_cast<std::size_t>(3 + k)]) continue;
-                inertia.row(k).setZero();
-                inertia.col(k).setZero();
-                inertia(k, k) = scale;
-                spin[k] = 0;
+        const auto solve = [&](Mat3 tensor, Vec3 l) {
+            if (held_rotation) {
+                if (driven) l -= tensor * held_omega;
+                const Real scale = std::max(tensor.trace(), Real(0));
+                for (int k = 0; k < 3; ++k) {
+                    if (!fixed[static_cast<std::size_t>(3 + k)]) continue;
+                    tensor.row(k).setZero();
+                    tensor.col(k).setZero();
+                    tensor(k, k) = scale;
+                    l[k] = 0;
+                }
+            }
+            const Eigen::SelfAdjointEigenSolver<Mat3> eigen(tensor);
+            const Vec3 values = eigen.eigenvalues();
+            const Real floor = 1e-12 * std::max(values.maxCoeff(), Real(0));
+            Vec3 projected = eigen.eigenvectors().transpose() * l;
+            for (int k = 0; k < 3; ++k)
+                projected[k] = values[k] > floor ? projected[k] / values[k] : 0;
+            Vec3 w = eigen.eigenvectors() * projected;
+            for (int k = 0; k < 3; ++k)
+                if (fixed[static_cast<std::size_t>(3 + k)]) w[k] = held_omega[k];  // exactly
+            return w;
+        };
+        // A body with a given inertia (eq. 6.11-10): dJ(t) = R dJ0 R^T is what its particles
+        // leave out. Its angular momentum is stepped as a rigid body's (eq. 6.11-12):
+        // L^{n+1/2} = I^{n-1/2} w^{n-1/2} plus the step's impulses, and w^{n+1/2} =
+        // (I^{n+1/2})^-1 L^{n+1/2}, I at a half step being I(t_n) turned by half the step's
+        // rotation (a few fixed-point passes); w^{n-1/2} is on particle o (it turns about all
+        // three axes). The particles' chord velocities carry w only to O(w dt): summed step
+        // after step, that would turn the axis of a free spin away.
+        const InertiaCorrection* correction = nullptr;
+        Mat3 delta = Mat3::Zero();
+        Vec3 omega_before_step = Vec3::Zero();
+        if (!corrections_.empty()) {
+            const auto it = std::lower_bound(
+                corrections_.begin(), corrections_.end(), b,
+                [](const InertiaCorrection& c, std::size_t key) { return c.body < key; });
+            if (it != corrections_.end() && it->body == b) correction = &*it;
+        }
+        Vec3 omega;
+        if (correction == nullptr) {
+            omega = solve(inertia, spin);
+        } else {
+            const Mat3 turn_n = rotation_of(*correction, s.x);
+            delta = turn_n * correction->delta0 * turn_n.transpose();
+            inertia += delta;
+            omega_before_step = s.omega_prev[static_cast<std::size_t>(correction->o)];
+            const auto half_turn = [](const Vec3& w, Real dt) {
+                const Real angle = 0.5 * dt * w.norm();  // negative: back
+                return angle != 0
+                           ? Mat3(Eigen::AngleAxisd(angle, w.normalized()).toRotationMatrix())
+                           : Mat3(Mat3::Identity());
+            };
+            if (!again) {  // from w^{n-1/2}: the impulses are the changes of the step
+                const Real dt_prev = std::max(2 * at.dt_n - dt_new, Real(0));
+                const Mat3 back = half_turn(omega_before_step, -dt_prev);
+                spin = back * inertia * back.transpose() * omega_before_step;
+                for (const Index ip : body) {
+                    const auto p = static_cast<std::size_t>(ip);
+                    spin += s.mass[p] * (s.x[p] - centre).cross(s.v[p] - s.v_prev[p]) +
+                            s.inertia[p] * (s.omega[p] - s.omega_prev[p]);
+                }
+            } else {  // from the first pass's w: the impulses are what the contact changed
+                const Vec3 w1 = s.omega[static_cast<std::size_t>(correction->o)];
+                const Mat3 ahead = half_turn(w1, dt_new);
+                spin = ahead * inertia * ahead.transpose() * w1;
+                const Real angle1 = dt_new * w1.norm();
+                const Mat3 turn1 =
+                    angle1 > 0 ? Mat3(Eigen::AngleAxisd(angle1, w1.normalized()).toRotationMatrix())
+                               : Mat3(Mat3::Identity());
+                for (const Index ip : body) {
+                    const auto p = static_cast<std::size_t>(ip);
+                    const Vec3 r = s.x[p] - centre;
+                    const Vec3& n = s.normal[p];
+                    const Vec3 w1_p = s.full_rotation[p] ? w1 : Vec3(w1 - n.dot(w1) * n);
+                    spin += s.mass[p] * r.cross(s.v[p] - (turn1 * r - r) / dt_new) +
+                            s.inertia[p] * (s.omega[p] - w1_p);
+                }
+                omega_before_step = w1;
+            }
+            omega = omega_before_step;
+            for (int pass = 0; pass < 4; ++pass) {
+                const Mat3 ahead = half_turn(omega, dt_new);
+                omega = solve(ahead * inertia * ahead.transpose(), spin);
             }
         }
-        const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(inertia);
-        const Vec3 values = eigen.eigenvalues();
-        const Real floor = 1e-12 * std::max(values.maxCoeff(), Real(0));
-        Vec3 projected = eigen.eigenvectors().transpose() * spin;
-        for (int k = 0; k < 3; ++k) projected[k] = values[k] > floor ? projected[k] / values[k] : 0;
-        Vec3 omega = eigen.eigenvectors() * projected;
-        for (int k = 0; k < 3; ++k)
-            if (fixed[static_cast<std::size_t>(3 + k)]) omega[k] = held_omega[k];  // exactly
         // each particle moves with the body, the rotation over the step exact (eq. 6.11-4)
         const Real angle = dt_new * omega.norm();
         const Eigen::Matrix3d turn =
             angle > 0 ? Eigen::AngleAxisd(angle, omega.normalized()).toRotationMatrix()
                       : Eigen::Matrix3d::Identity();
+        if (driven && correction != nullptr)  // the drive's reaction on the inertia dJ
+            s.reaction_moment[static_cast<std::size_t>(correction->o)] +=
+                (delta * (omega - omega_before_step)) / (at.c1 * at.dt_n);
         for (const Index ip : body) {
             const auto p = static_cast<std::size_t>(ip);
             const Vec3 r = s.x[p] - centre;

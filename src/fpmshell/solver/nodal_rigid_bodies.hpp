@@ -37,6 +37,17 @@ public:
     /// in make_rigid are reactions that do work (the energy balance books them, §6.8).
     [[nodiscard]] std::vector<Index> driven_particles() const;
 
+    /// The initial velocities of every body's particles made one rigid motion of the same
+    /// linear and angular momentum (eqs. 6.11-1 to 6.11-3 with v = V + w x r): a deck that gives
+    /// a body's nodes uneven velocities starts, and books its kinetic energy, as that motion.
+    void make_initial_motion_rigid(ParticleState& s) const;
+    /// The particles of the rigid sections with a given inertia: they turn about all three axes
+    /// (their rotary inertia is part of the body's, eq. 6.11-10).
+    [[nodiscard]] std::vector<Index> full_rotation_particles() const;
+    /// The kinetic energy of the bodies' inertia that their particles do not carry (eq.
+    /// 6.11-10): 1/2 w^{n-1/2} . dJ(t_n) w^{n+1/2} summed over the bodies with a given inertia.
+    [[nodiscard]] Real extra_kinetic_energy(const ParticleState& s) const;
+
     /// The mass the contact gives each particle (eq. 6.11-5): that of its body, or its own
     /// (`mass`) outside the bodies.
     [[nodiscard]] std::vector<Real> contact_masses(const std::vector<Real>& mass) const;
@@ -47,8 +58,10 @@ public:
     /// about the centre of mass at x^n, such that x^{n+1} = x^n + dt v is that rigid motion
     /// exactly. A driven body's particles add the change of their velocities to their reactions.
     /// The bodies run in parallel (each writes its own particles).
+    /// `again`: the second pass of a step, after the contact changed the velocities the first
+    /// pass made rigid.
     void make_rigid(ParticleState& s, const PrescribedMotionTimes& at,
-                    const std::vector<Curve>& curves) const;
+                    const std::vector<Curve>& curves, bool again = false) const;
 
 private:
     /// The velocity (k < 3) or angular velocity (k >= 3) component k of body b at this step,
@@ -57,7 +70,22 @@ private:
                                         const Vec3& centre0, const PrescribedMotionTimes& at,
                                         const std::vector<Curve>& curves) const;
 
+    /// A body with sections of a given inertia (eq. 6.11-10): the part dJ of its inertia
+    /// tensor that its particles' masses and rotary inertias leave out, at t = 0, and three of
+    /// its particles that give its rotation R(t) (eq. 6.11-11); dJ(t) = R dJ0 R^T.
+    struct InertiaCorrection {
+        std::size_t body = 0;
+        Mat3 delta0 = Mat3::Zero();
+        Index o = -1, a = -1, b = -1;  ///< o also carries the body's angular velocity
+        Mat3 frame0_inverse = Mat3::Identity();
+    };
+    void set_inertia_corrections(const Model& model, const std::vector<Index>& body_of_particle);
+    /// R(t) of correction c from its particles' positions (eq. 6.11-11).
+    [[nodiscard]] static Mat3 rotation_of(const InertiaCorrection& c, const std::vector<Vec3>& x);
+
     std::vector<std::vector<Index>> bodies_;
+    std::vector<InertiaCorrection> corrections_;  ///< ascending in body
+    std::vector<Index> full_rotation_;
     std::vector<std::array<bool, 6>> fixed_;
     std::vector<std::array<RigidPrescription, 6>> prescribed_;  ///< per body; empty: none anywhere
     std::vector<std::uint8_t> driven_;                          ///< per body: some value prescribed

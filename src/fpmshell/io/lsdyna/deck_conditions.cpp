@@ -215,20 +215,21 @@ void DeckTranslator::initial_velocity(const DeckBlock& b) {
         }
     } else if (k == "INITIAL_VELOCITY_RIGID_BODY") {
         // PID, VX, VY, VZ, VXR, VYR, VZR, ICID: the rigid part's translation (a part-level
-        // velocity, as _GENERATION's); a spin about its centre of mass is not read yet
+        // velocity, as _GENERATION's) and its spin about its centre of mass
         for (const DeckCard& dc : b.cards) {
             if (dc.blank()) continue;
             const Card f(deck_, b, dc, k_ten);
             if (f.id(7, "ICID") != 0) f.fail("ICID: only global directions (0) are supported");
-            if (f.real(4, "VXR") != 0 || f.real(5, "VYR") != 0 || f.real(6, "VZR") != 0)
-                f.fail(
-                    "VXR, VYR, VZR: a rigid body's initial spin about its centre of mass is "
-                    "not supported (give it with *INITIAL_VELOCITY_GENERATION and the centre)");
             const long long pid = f.id(0, "PID");
             require_rigid_part(f, pid, "PID");
+            const Real wx = f.real(4, "VXR"), wy = f.real(5, "VYR"), wz = f.real(6, "VZR");
             initial_generated_.push_back(
                 {"  - {nodes: part_" + std::to_string(pid) +
-                     ", velocity: " + vec(f.real(1, "VX"), f.real(2, "VY"), f.real(3, "VZ")) + "}",
+                     ", velocity: " + vec(f.real(1, "VX"), f.real(2, "VY"), f.real(3, "VZ")) +
+                     (wx != 0 || wy != 0 || wz != 0
+                          ? ", rotation: {centre: mass, angular_velocity: " + vec(wx, wy, wz) + "}"
+                          : std::string()) +
+                     "}",
                  {&b, f.line()}});
         }
     } else {

@@ -20,6 +20,61 @@ void DeckTranslator::part(const DeckBlock& b) {
     }
 }
 
+/// *PART_INERTIA: per part, a heading card, PID SECID MID ..., XC YC ZC TM IRCS NODEID,
+/// IXX IXY IXZ IYY IYZ IZZ (global axes, about the centre), VTX VTY VTZ VRX VRY VRZ.
+void DeckTranslator::part_inertia(const DeckBlock& b) {
+    constexpr std::size_t k_cards = 5;
+    if (b.cards.size() < k_cards) required_card(b, b.cards.size(), "the cards of *PART_INERTIA");
+    for (std::size_t c = 0; c + k_cards <= b.cards.size(); c += k_cards) {
+        const Card f = required_card(b, c + 1, "PID, SECID, MID");
+        const Card g = required_card(b, c + 2, "XC, YC, ZC, TM, IRCS, NODEID");
+        const Card h = required_card(b, c + 3, "IXX, IXY, IXZ, IYY, IYZ, IZZ");
+        const Card v = required_card(b, c + 4, "VTX, VTY, VTZ, VRX, VRY, VRZ");
+        const long long pid = f.id(0, "PID");
+        if (g.id(4, "IRCS") != 0)
+            g.fail(
+                "IRCS 1: an inertia tensor in local axes is not supported (give it in global "
+                "axes, IRCS 0)");
+        if (g.id(5, "NODEID") != 0)
+            g.fail("NODEID: a node as the centre of mass is not supported (give XC, YC, ZC)");
+        const Real tm = g.real(3, "TM");
+        if (!(tm > 0)) g.fail("TM must be the body's mass, > 0");
+        const Real xc = g.real(0, "XC"), yc = g.real(1, "YC"), zc = g.real(2, "ZC");
+        PartDef p{{&b, f.line()}, f.id(1, "SECID"), f.id(2, "MID")};
+        p.inertia = "inertia: {mass: " + num(tm) + ", centre: " + vec(xc, yc, zc) + ", tensor: [" +
+                    num(h.real(0, "IXX")) + ", " + num(h.real(1, "IXY")) + ", " +
+                    num(h.real(2, "IXZ")) + ", " + num(h.real(3, "IYY")) + ", " +
+                    num(h.real(4, "IYZ")) + ", " + num(h.real(5, "IZZ")) + "]}";
+        p.inertia_at = {&b, g.line()};
+        if (const auto other = parts_.find(pid); other != parts_.end())
+            f.fail("part " + std::to_string(pid) + " is defined twice (first at " +
+                   place(other->second.at) + ")");
+        parts_[pid] = p;
+        const Real vt[3] = {v.real(0, "VTX"), v.real(1, "VTY"), v.real(2, "VTZ")};
+        const Real vr[3] = {v.real(3, "VRX"), v.real(4, "VRY"), v.real(5, "VRZ")};
+        if (vt[0] != 0 || vt[1] != 0 || vt[2] != 0 || vr[0] != 0 || vr[1] != 0 || vr[2] != 0) {
+            initial_bodies_.push_back({"  - {nodes: part_" + std::to_string(pid) +
+                                           ", velocity: " + vec(vt[0], vt[1], vt[2]) +
+                                           ", rotation: {centre: " + vec(xc, yc, zc) +
+                                           ", angular_velocity: " + vec(vr[0], vr[1], vr[2]) + "}}",
+                                       {&b, v.line()}});
+            note(b, v.line(),
+                 "VTX..VRZ: the rigid body's initial velocity, replacing those its nodes are "
+                 "given elsewhere");
+        }
+    }
+}
+
+std::string DeckTranslator::given_inertia(const PartDef& part, const MaterialDef& m) {
+    if (part.inertia.empty()) return "";
+    if (m.keyword != "MAT_RIGID")
+        deck_fail(*part.inertia_at.block, part.inertia_at.line,
+                  "the inertia of a part is given for rigid parts (*MAT_RIGID) only, and this "
+                  "part is of *" +
+                      m.keyword);
+    return part.inertia;
+}
+
 void DeckTranslator::material(const DeckBlock& b) {
     static const std::map<std::string, std::string> aliases = {
         {"MAT_001", "MAT_ELASTIC"},
@@ -261,7 +316,7 @@ void DeckTranslator::define_table(const DeckBlock& b) {
 void DeckTranslator::write_materials(std::vector<Line>& out) {
     std::set<long long> used;
     for (const auto& [pid, p] : parts_)
-        if (element_parts_.count(pid)) used.insert(p.material);
+        if (element_parts_.count(pid) || solid_parts_.count(pid)) used.insert(p.material);
     bool first = true;
     for (const auto& [mid, m] : materials_) {
         if (!used.count(mid)) continue;

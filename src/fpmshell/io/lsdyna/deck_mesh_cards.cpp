@@ -4,6 +4,26 @@
 
 namespace fpmshell::deck {
 
+void DeckTranslator::element_solid(const DeckBlock& b) {
+    const std::size_t w = b.format == DeckFormat::WideId ? 10 : 8;
+    for (std::size_t c = 0; c < b.cards.size(); ++c) {
+        if (b.cards[c].blank()) continue;
+        std::vector<std::string> ids = deck_fields(b, b.cards[c], std::vector<std::size_t>(3, w));
+        long long eid = 0, pid = 0, n1 = 0;
+        if (!text_mesh::parse_whole(ids[0], eid) || !text_mesh::parse_whole(ids[1], pid)) {
+            ids = text_mesh::split_blanks(b.cards[c].text);
+            ids.resize(std::max<std::size_t>(ids.size(), 3));
+            if (!text_mesh::parse_whole(ids[1], pid)) continue;  // the mesh reader says why
+        }
+        // EID and PID alone: the nodes are on the next card (LS-DYNA's two-card form)
+        if (ids[2].empty() || !text_mesh::parse_whole(ids[2], n1) || n1 == 0) ++c;
+        auto& p = solid_parts_[pid];
+        if (p.count == 0)
+            p.first = {&b, b.line};  // the card's block (the mesh reader checks cards)
+        ++p.count;
+    }
+}
+
 void DeckTranslator::element_shell(const DeckBlock& b) {
     const std::set<std::string> opt = options_of(b.keyword, 2);
     const bool thickness = opt.count("THICKNESS") != 0;

@@ -146,7 +146,10 @@ void DeckTranslator::write_sections(std::vector<Line>& out) {
         const auto s = sections_.find(part.section);
         if (s == sections_.end())
             deck_fail(*part.at.block, part.at.line,
-                      "SECID " + std::to_string(part.section) + ": no *SECTION_SHELL defines it");
+                      "SECID " + std::to_string(part.section) +
+                          (solid_sections_.count(part.section)
+                               ? ": a *SECTION_SOLID, but the part's elements are shells"
+                               : ": no *SECTION_SHELL defines it"));
         const auto m = materials_.find(part.material);
         if (m == materials_.end())
             deck_fail(*part.at.block, part.at.line,
@@ -158,18 +161,67 @@ void DeckTranslator::write_sections(std::vector<Line>& out) {
                       "T1 is 0 and the elements of part " + std::to_string(pid) +
                           " give no thickness of their own (*ELEMENT_SHELL_THICKNESS)");
         const std::string rule = thickness_rule_keys(s->second, m->second, pid);
+        const std::string inertia = given_inertia(part, m->second);
         if (first) add(out, "sections:", part.at);
         first = false;
         add(out,
             "  - {elements: part_" + std::to_string(pid) + ", material: mat_" +
                 std::to_string(part.material) + ", thickness: " + num(thickness) + ", " + rule +
-                "}",
+                (inertia.empty() ? "" : ", " + inertia) + "}",
             part.at);
     }
+    for (const auto& [pid, e] : solid_parts_) write_solid_section(out, pid, e, first);
     for (const auto& [pid, p] : parts_)
-        if (!element_parts_.count(pid))
+        if (!element_parts_.count(pid) && !solid_parts_.count(pid))
             note(*p.at.block, p.at.line,
                  "part " + std::to_string(pid) + " has no shell elements: left out");
+}
+
+void DeckTranslator::section_solid(const DeckBlock& b) {
+    const std::size_t first = b.keyword == "SECTION_SOLID_TITLE" ? 1 : 0;
+    const Card f = required_card(b, first, "SECID, ELFORM, AET");
+    const long long id = f.id(0, "SECID");
+    if (const auto other = solid_sections_.find(id); other != solid_sections_.end())
+        f.fail("section " + std::to_string(id) + " is defined twice (first at " +
+               place(other->second) + ")");
+    solid_sections_[id] = {&b, b.line};
+}
+
+void DeckTranslator::write_solid_section(std::vector<Line>& out, long long pid,
+                                         const ElementPartInfo& e, bool& first) {
+    const auto p = parts_.find(pid);
+    if (p == parts_.end())
+        deck_fail(*e.first.block, e.first.line,
+                  "an element of part " + std::to_string(pid) + ", which no *PART defines");
+    const PartDef& part = p->second;
+    const auto s = solid_sections_.find(part.section);
+    if (s == solid_sections_.end())
+        deck_fail(*e.first.block, e.first.line,
+                  "the solids of part " + std::to_string(pid) + " need a *SECTION_SOLID (SECID " +
+                      std::to_string(part.section) + " is none)");
+    const auto m = materials_.find(part.material);
+    if (m == materials_.end())
+        deck_fail(*part.at.block, part.at.line,
+                  "MID " + std::to_string(part.material) + ": no *MAT card defines it");
+    if (m->second.keyword != "MAT_RIGID")
+        deck_fail(*s->second.block, s->second.line,
+                  "part " + std::to_string(pid) + " is meshed with solids of " + "*" +
+                      m->second.keyword +
+                      ": fpmshell models shells only, and solids of rigid parts (*MAT_RIGID)");
+    const std::string inertia = given_inertia(part, m->second);
+    if (first) add(out, "sections:", part.at);
+    first = false;
+    add(out,
+        "  - {elements: part_" + std::to_string(pid) + ", material: mat_" +
+            std::to_string(part.material) + ", thickness: 0, " +
+            (inertia.empty() ? "inertia: enclosed" : inertia) + "}",
+        part.at);
+    note(*e.first.block, e.first.line,
+         fmt::format("the {} solids of rigid part {} are its outer faces (a contact surface "
+                     "without thickness) and {}",
+                     e.count, pid,
+                     inertia.empty() ? "the mass and inertia of the solid they enclose"
+                                     : "the mass and inertia its *PART_INERTIA gives"));
 }
 
 }  // namespace fpmshell::deck

@@ -24,12 +24,16 @@ const std::vector<CardReader>& card_readers() {
         {"TITLE", false, P::Definitions, &T::title},
         {"NODE", false, P::Definitions, &T::mesh_only},
         {"ELEMENT_SHELL", true, P::Definitions, &T::element_shell},
+        {"ELEMENT_SOLID", false, P::Definitions, &T::element_solid},
         {"SET_NODE", true, P::Definitions, &T::set_header},
         {"SET_SHELL", true, P::Definitions, &T::set_header},
         {"SET_PART", true, P::Definitions, &T::set_header},
         {"SET_SEGMENT", true, P::Definitions, &T::segment_set},
         {"PART", false, P::Definitions, &T::part},
+        {"PART_INERTIA", false, P::Definitions, &T::part_inertia},
         {"SECTION_SHELL", true, P::Definitions, &T::section_shell},
+        {"SECTION_SOLID", false, P::Definitions, &T::section_solid},
+        {"SECTION_SOLID_TITLE", false, P::Definitions, &T::section_solid},
         {"INTEGRATION_SHELL", false, P::Definitions, &T::integration_shell},
         {"MAT_", true, P::Definitions, &T::material},
         {"DEFINE_CURVE", true, P::Definitions, &T::define_curve},
@@ -200,12 +204,13 @@ std::string DeckTranslator::unsupported_reason(const std::string& k) {
                "*MAT_POWER_LAW_PLASTICITY (018), *MAT_RIGID (020) and "
                "*MAT_PIECEWISE_LINEAR_PLASTICITY (024)";
     if (starts_with(k, "SECTION_") && !starts_with(k, "SECTION_SHELL"))
-        return "fpmshell models shells only (*SECTION_SHELL); solid, beam, discrete and "
-               "thick-shell "
-               "sections, also of rigid parts, are not supported";
+        return "fpmshell models shells only (*SECTION_SHELL, and *SECTION_SOLID for parts of "
+               "*MAT_RIGID); beam, discrete and thick-shell sections are not supported";
+    if (starts_with(k, "ELEMENT_SOLID"))
+        return "fpmshell reads *ELEMENT_SOLID (8 nodes, of rigid parts) but not this form of it";
     if (starts_with(k, "ELEMENT_"))
-        return "fpmshell models shells only (*ELEMENT_SHELL); this element kind would change "
-               "the model";
+        return "fpmshell models shells only (*ELEMENT_SHELL, and *ELEMENT_SOLID of rigid parts); "
+               "this element kind would change the model";
     if (starts_with(k, "CONSTRAINED_"))
         return "this constraint is not supported (fpmshell reads "
                "*CONSTRAINED_NODAL_RIGID_BODY, *CONSTRAINED_SPOTWELD, "
@@ -249,6 +254,7 @@ DeckTranslation DeckTranslator::write() {
     std::vector<Line> initial = initial_sets_;  // the more specific cards later (they win)
     initial.insert(initial.end(), initial_generated_.begin(), initial_generated_.end());
     initial.insert(initial.end(), initial_nodes_.begin(), initial_nodes_.end());
+    initial.insert(initial.end(), initial_bodies_.begin(), initial_bodies_.end());
     write_list(out, "initial_conditions", initial);
     write_list(out, "constraints", constraints_);
     write_walls(out);

@@ -67,9 +67,19 @@ struct IntegrationRuleDef {
     std::vector<std::pair<Real, Real>> points;
 };
 
+/// The elements of one part: where the first is, how many, the thicknesses they give.
+struct ElementPartInfo {
+    Origin first;
+    long long count = 0;
+    std::set<Real> thickness;
+};
+
 struct PartDef {
     Origin at;
     long long section = 0, material = 0;
+    /// *PART_INERTIA: the section's `inertia: {...}` key, and where the card is ("" none)
+    std::string inertia{};
+    Origin inertia_at{};
 };
 
 struct Segment {
@@ -149,6 +159,8 @@ public:
 
     // ---- shells, sets and segments (deck_mesh_cards.cpp)
     void element_shell(const DeckBlock& b);
+    /// *ELEMENT_SOLID: the parts of the solids (the mesh reader makes their outer faces).
+    void element_solid(const DeckBlock& b);
     void set_header(const DeckBlock& b);
     /// The name of set `sid` of `kind` (node, shell, part), which the deck must define.
     std::string set_name(const Card& f, const std::string& kind, long long sid) const;
@@ -170,7 +182,19 @@ public:
     // ---- parts, sections, materials, curves and tables (deck_materials.cpp)
     /// Parts: a heading card and a data card each (one *PART may define several).
     void part(const DeckBlock& b);
+    /// *PART_INERTIA: a rigid part's mass, centre and inertia tensor (IRCS 0, XC..ZC), and its
+    /// initial velocity VTX..VRZ.
+    void part_inertia(const DeckBlock& b);
+    /// The `inertia: {...}` key of a part of *PART_INERTIA, "" for another (refused where the
+    /// part's material is not *MAT_RIGID).
+    std::string given_inertia(const PartDef& part, const MaterialDef& m);
     void section_shell(const DeckBlock& b);
+    /// *SECTION_SOLID: read for the parts of *MAT_RIGID only (their solids are a rigid body).
+    void section_solid(const DeckBlock& b);
+    /// The `sections` entry of a part meshed with solids: a rigid material, its outer faces
+    /// without thickness, its inertia that of the solid they enclose.
+    void write_solid_section(std::vector<Line>& out, long long pid, const ElementPartInfo& e,
+                             bool& first);
     void integration_shell(const DeckBlock& b);
     void material(const DeckBlock& b);
     static std::string points_text(const std::vector<Point2>& points);
@@ -250,11 +274,7 @@ public:
     void write_output(std::vector<Line>& out);
 
 private:
-    struct ElementPart {
-        Origin first;
-        long long count = 0;
-        std::set<Real> thickness;
-    };
+    using ElementPart = ElementPartInfo;
     struct NodeGroup {
         Origin at;
         std::vector<long long> ids;
@@ -265,6 +285,8 @@ private:
     std::vector<std::string> notes_;
     std::string title_;
     std::map<long long, ElementPart> element_parts_;
+    std::map<long long, ElementPart> solid_parts_;  ///< parts of *ELEMENT_SOLID
+    std::map<long long, Origin> solid_sections_;    ///< *SECTION_SOLID by SECID
     long long quadrangles_ = 0;
     Origin first_quadrangle_;
     std::map<std::string, std::map<long long, std::string>> set_names_;
@@ -292,7 +314,8 @@ private:
     std::vector<Line> boundary_, loads_, contact_, control_, constraints_;
     /// initial velocities of *INITIAL_VELOCITY, _GENERATION and _NODE, written in that order
     std::vector<Line> initial_sets_, initial_generated_, initial_nodes_;
-    long long welds_ = 0;  ///< spot welds read (their sets are numbered by it)
+    std::vector<Line> initial_bodies_;  ///< of *PART_INERTIA: written last (they win)
+    long long welds_ = 0;               ///< spot welds read (their sets are numbered by it)
     std::vector<WallDef> walls_;
     std::optional<Line> end_time_, damping_, every_, fields_every_;
     Real every_value_ = 0;

@@ -1,0 +1,113 @@
+"""Rigid parts of solids and given inertias in decks (README, "LS-DYNA decks"; theory.md §6.11),
+variants of examples/decks/block_drop against YAML twins, the same history.csv bytes:
+
+- *PART_INERTIA for the block of solids: its TM, XC..ZC, IXX..IZZ as the section's `inertia`
+  (instead of the solid's), its VTX..VRZ as the body's initial velocity and spin about the centre
+  (they replace those *INITIAL_VELOCITY_NODE gives its nodes);
+- the deck's solids written with their nodes on a second card everywhere (LS-DYNA's two-card
+  form) is the same model;
+- refusals with exit 2 and one sentence naming the place: *PART_INERTIA of a deformable part,
+  IRCS 1, NODEID, TM 0.
+
+usage: deck_solid_test.py FPMSHELL WORKDIR
+"""
+import os
+import shutil
+import sys
+
+FPM, WORK = sys.argv[1], sys.argv[2]
+ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+BLOCK = os.path.join(ROOT, "examples", "decks", "block_drop")
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from check_tally import check, finish  # noqa: E402
+import deck_variant  # noqa: E402
+from deck_variant import fpmshell, read, run, twin_pair  # noqa: E402
+from deck_variant import write as write_beside  # noqa: E402
+
+deck_variant.FPM = FPM
+MESH = os.path.join(BLOCK, "block_drop_mesh.k")
+
+
+def write(folder, name, text, mesh=MESH):
+    return write_beside(folder, name, text, mesh)
+
+
+shutil.rmtree(WORK, ignore_errors=True)
+deck, twin = read(os.path.join(BLOCK, "block_drop.k")), read(os.path.join(BLOCK, "block_drop.yaml"))
+PART = "*PART\nblock\n         2         2         2\n"
+VELOCITY = deck[deck.index("*INITIAL_VELOCITY_NODE"):deck.index("*CONTROL_TERMINATION")]
+TWIN_SECTION = "  - {elements: part_2, material: block, thickness: 0, inertia: enclosed}\n"
+TWIN_VELOCITY = "  - {nodes: block_nodes, velocity: [0, 0, -5]}\n"
+assert PART in deck and TWIN_SECTION in twin and TWIN_VELOCITY in twin
+
+# a heavier block (1.2 kg, its centre 2 mm off the middle, products of inertia), thrown down at
+# 5 m/s and spun at 40 rad/s about z and 10 about x
+INERTIA = ("*PART_INERTIA\nblock\n         2         2         2\n"
+           "$#      xc        yc        zc        tm      ircs    nodeid\n"
+           "     0.052     0.049     0.022       1.2         0         0\n"
+           "$#     ixx       ixy       ixz       iyy       iyz       izz\n"
+           "   3.2e-04   1.0e-05  -2.0e-05   3.0e-04   5.0e-06   2.8e-04\n"
+           "$#     vtx       vty       vtz       vrx       vry       vrz\n"
+           "       0.0       0.0      -5.0      10.0       0.0      40.0\n")
+TWIN_INERTIA = ("  - {elements: part_2, material: block, thickness: 0, inertia: {mass: 1.2, "
+                "centre: [0.052, 0.049, 0.022], tensor: [3.2e-04, 1.0e-05, -2.0e-05, 3.0e-04, "
+                "5.0e-06, 2.8e-04]}}\n")
+TWIN_THROW = ("  - {nodes: part_2, velocity: [0, 0, -5], rotation: {centre: [0.052, 0.049, 0.022], "
+              "angular_velocity: [10, 0, 40]}}\n")
+d = write(os.path.join(WORK, "inertia"), "model.k", deck.replace(PART, INERTIA))
+t = write(os.path.join(WORK, "inertia"), "model.yaml",
+          twin.replace(TWIN_SECTION, TWIN_INERTIA).replace(TWIN_VELOCITY, TWIN_VELOCITY + TWIN_THROW))
+given = twin_pair("*PART_INERTIA: the given body and its velocity", d, t)
+r_as_is, h_as_is = run(write(os.path.join(WORK, "as_is"), "model.k", deck))
+check("*PART_INERTIA changes the run", r_as_is.returncode == 0 and given is not None and
+      read(h_as_is) != given, r_as_is.stderr)
+c = fpmshell("check", d)
+check("*PART_INERTIA: the total mass is the plate's and the given body's",
+      c.returncode == 0 and "total mass 1.357" in c.stdout, c.stdout + c.stderr)
+
+# the two-card form of *ELEMENT_SOLID: EID and PID alone, then the nodes
+mesh = read(MESH)
+head, rest = mesh.split("*ELEMENT_SOLID\n", 1)
+body, tail = rest.split("*SET_NODE_LIST", 1)
+cards, nodes_next = [], False
+for line in body.splitlines():
+    if not nodes_next and len(line) > 16 and line[16:].strip():
+        cards += [line[:16], line[16:]]
+    else:  # a heading of the two-card form already, or the nodes after one
+        cards.append(line)
+        nodes_next = not nodes_next and bool(line.strip())
+two_card = head + "*ELEMENT_SOLID\n" + "\n".join(cards) + "\n*SET_NODE_LIST" + tail
+folder = os.path.join(WORK, "two_card")
+os.makedirs(folder, exist_ok=True)
+with open(os.path.join(folder, "block_drop_mesh.k"), "w") as f:
+    f.write(two_card)
+with open(os.path.join(folder, "model.k"), "w") as f:
+    f.write(deck)
+r_two, h_two = run(os.path.join(folder, "model.k"))
+check("the two-card form of every solid: the same history.csv",
+      r_two.returncode == 0 and r_as_is.returncode == 0 and read(h_two) == read(h_as_is),
+      r_two.stderr)
+
+
+def refused(name, text, *words):
+    path = write(os.path.join(WORK, name.replace(" ", "_")), "model.k", text)
+    r = fpmshell("check", path)
+    check(f"{name}: exit 2, one sentence naming the place",
+          r.returncode == 2 and all(w in r.stderr for w in words) and
+          len(r.stderr.strip().splitlines()) == 1, r.stderr)
+
+
+PLATE = "*PART\nplate\n         1         1         1\n"
+assert PLATE in deck
+refused("inertia of a deformable part",
+        deck.replace(PLATE, INERTIA.replace("block\n         2         2         2",
+                                            "plate\n         1         1         1")),
+        "model.k:", "*PART_INERTIA", "rigid parts (*MAT_RIGID) only")
+refused("local axes", deck.replace(PART, INERTIA.replace("1.2         0", "1.2         1")),
+        "model.k:", "*PART_INERTIA", "IRCS 1")
+refused("a node as the centre", deck.replace(PART, INERTIA.replace("0         0\n$#     ixx",
+                                                                   "0       205\n$#     ixx")),
+        "model.k:", "*PART_INERTIA", "NODEID")
+refused("no mass", deck.replace(PART, INERTIA.replace("       1.2", "       0.0")),
+        "model.k:", "*PART_INERTIA", "TM")
+sys.exit(finish())
