@@ -363,5 +363,31 @@ TEST(Restart, BrokenTiesResumeBitForBit) {
     fs::remove_all(first.output_dir);
 }
 
+TEST(Restart, ARigidSolidResumesBitForBit) {
+    // the block of solids in the middle of its impact (contact from step 85): its angular
+    // momentum is stepped from the state (w on a particle, x^{n-1}), nothing of its own kept
+    Model model =
+        read_model(std::string(FPMSHELL_SOURCE_DIR) + "/examples/decks/block_drop/block_drop.yaml");
+    model.initial_conditions[0].spin = Vec3(30, 0, 20);  // a spin too: every part of (6.11-12)
+    model.initial_conditions[0].spin_about_mass_centre = true;
+    RunOptions straight;
+    straight.output_dir = fresh_dir("straight_solid");
+    straight.echo = false;
+    straight.quiet = true;
+    ASSERT_EQ(run_model(model, straight), 0);
+    RunOptions first = straight;
+    first.output_dir = fresh_dir("pieces_solid");
+    first.stop_at_step = 300;
+    ASSERT_EQ(run_model(model, first), 0);
+    RunOptions second = first;
+    second.stop_at_step = 0;
+    second.resume = true;
+    ASSERT_EQ(run_model(model, second), 0);
+    for (const char* file : {"history.csv", "energy.csv"})
+        EXPECT_EQ(bytes_of(first.output_dir / file), bytes_of(straight.output_dir / file)) << file;
+    fs::remove_all(straight.output_dir);
+    fs::remove_all(first.output_dir);
+}
+
 }  // namespace
 }  // namespace fpmshell
