@@ -173,6 +173,31 @@ if h_deck:
     check("power law: the strip yields", '"plastic_work"' in summary and
           float(summary.split('"plastic_work"')[1].split(":")[1].split(",")[0]) > 0, summary[:400])
 
+# ---- *MAT_TRANSVERSELY_ANISOTROPIC_ELASTIC_PLASTIC (037): the strip in a sheet steel of
+# Lankford ratio 2 on a flow curve (HLCID), against its twin (normal_anisotropy, flow_curve); an
+# R < 0 read as its magnitude (noted); the same strip with R = 1 is another run
+mat_037 = ("*MAT_TRANSVERSELY_ANISOTROPIC_ELASTIC_PLASTIC\n"
+           "$#     mid        ro         e        pr      sigy      etan         r     hlcid\n"
+           "         1    7850.0   2.1e+11       0.3       0.0       0.0      -2.0        77\n"
+           "*DEFINE_CURVE\n        77\n                 0.0             3.0e+08\n"
+           "                 0.1             4.0e+08\n                 0.5             5.0e+08\n")
+yaml_037 = ("  steel: {type: tabulated, density: 7850, youngs_modulus: 2.1e11, poisson_ratio: 0.3,\n"
+            "          normal_anisotropy: 2, flow_curve: [[0, 3.0e8], [0.1, 4.0e8], [0.5, 5.0e8]]}\n\n")
+folder = os.path.join(WORK, "mat_037")
+h_hill = deck_against_twin("*MAT_037", folder, os.path.join(STRIP, "strip_pull_mesh.k"),
+                           strip_deck.replace(mat_024, mat_037),
+                           strip_twin.replace(yaml_024, yaml_037))
+c = fpmshell("check", os.path.join(folder, "model.k"))
+check("*MAT_037: R < 0 is noted", "R < 0 read as its magnitude 2" in c.stdout + c.stderr,
+      c.stdout + c.stderr)
+folder = os.path.join(WORK, "mat_037_r1")
+h_iso = deck_against_twin("*MAT_037 with R = 1", folder, os.path.join(STRIP, "strip_pull_mesh.k"),
+                          strip_deck.replace(mat_024, mat_037.replace("-2.0", " 1.0")),
+                          strip_twin.replace(yaml_024, yaml_037.replace("anisotropy: 2",
+                                                                        "anisotropy: 1")))
+check("*MAT_037: R = 2 and R = 1 are different runs",
+      h_hill and h_iso and read(h_hill) != read(h_iso), "the same history")
+
 # ---- geometric rigid walls: plate_drop.k on a fixed sphere and on a finite flat face, against
 # its twin with the same body written in YAML
 DROP = os.path.join(DECKS, "plate_drop")
@@ -436,9 +461,31 @@ for k, (card, words) in enumerate(REFUSED.items()):
           r.stderr.startswith("error: " + where) and words in r.stderr and
           r.stderr.count("\n") == 1, r.stderr)
 
+# refused at a field: the message names the field's card (the line after the keyword + k)
+FIELD_REFUSED = {  # card: (its card with the field, 1 = the first after the keyword; words)
+    ("*MAT_TRANSVERSELY_ANISOTROPIC_ELASTIC_PLASTIC\n         9    7850.0   2.1e+11       0.3"
+     "   3.0e+08  -1.0e+08       1.5\n"): (1, "ETAN < 0"),
+    ("*MAT_037\n         9    7850.0   2.1e+11       0.3   3.0e+08       0.0       1.5\n"
+     "         1\n"): (2, "IDSCALE, EA, COE, ICFLD, STRAINLT"),
+    "*CONTROL_RIGID\n         0         0         0         0         0         1         0         1\n":
+        (1, "RBSMS"),
+}
+for k, (card, (offset, words)) in enumerate(FIELD_REFUSED.items()):
+    path, r = deck_case(f"field_refused{k}", card)
+    keyword = card.split("\n")[0]
+    where = f"{path}:{line_of(path, keyword) + offset}: {keyword}:"
+    check(f"{keyword} ({words}) is refused with exit 2", r.returncode == 2, r.stdout + r.stderr)
+    check(f"{keyword} ({words}): the message names file, the field's line and card",
+          r.stderr.startswith("error: " + where) and words in r.stderr and
+          r.stderr.count("\n") == 1, r.stderr)
+
 NOTED = ["*DATABASE_MATSUM\n1.0e-4\n", "*CONTROL_HOURGLASS\n         1\n", "*HOURGLASS\n         1\n",
          "*SENSOR_DEFINE_NODE\n         1\n", "*EOS_GRUNEISEN\n         1\n",
-         "*KEYWORD_ID\nmodel_2024  06-12-2026\n", "*CONTROL_UNITS\n         m        kg         s\n"]
+         "*KEYWORD_ID\nmodel_2024  06-12-2026\n", "*CONTROL_UNITS\n         m        kg         s\n",
+         "*CONTROL_ADAPTIVE\n2.50000E-4       5.0         2         3\n",
+         "*CONTROL_ADAPSTEP\n       1.0      0.01\n",
+         "*CONTROL_RIGID\n         0         0         0         0         0         1\n",
+         "*INTERFACE_SPRINGBACK_LSDYNA\n        11       100\n"]
 for k, card in enumerate(NOTED):
     path, r = deck_case(f"noted{k}", card)
     keyword = card.split("\n")[0]

@@ -161,7 +161,7 @@ void read_materials(const YamlValue& v, Model& model) {
                 for (const char* plastic :
                      {"yield_stress", "tangent_modulus", "hardening_mix", "cowper_symonds", "A",
                       "B", "n", "C", "reference_strain_rate", "m", "room_temperature",
-                      "melt_temperature", "flow_curve", "flow_curves", "k"})
+                      "melt_temperature", "flow_curve", "flow_curves", "k", "normal_anisotropy"})
                     if (key == plastic)
                         value.fail(
                             "belongs to plastic materials (type: j2_plastic, johnson_cook, "
@@ -183,6 +183,7 @@ void read_materials(const YamlValue& v, Model& model) {
                 cs->fail("is a rate factor for j2_plastic; johnson_cook has its own rate term C");
             keys.insert(keys.end(), {"A", "B", "n", "C", "reference_strain_rate", "hardening_mix"});
         }
+        if (t != "elastic" && t != "rigid") keys.push_back("normal_anisotropy");
         const YamlMap m = def.map(keys);
         Material mat;
         mat.name = name;
@@ -200,6 +201,8 @@ void read_materials(const YamlValue& v, Model& model) {
         if (!(mat.poisson_ratio > -1 && mat.poisson_ratio < 0.5))
             nu.fail("must be greater than -1 and less than 0.5, got " + nu.describe());
         if (mat.plastic()) {
+            if (const auto r = m.find("normal_anisotropy"))  // Hill's R (eq. 7.1-3)
+                mat.normal_anisotropy = r->positive();
             if (const auto mix = m.find("hardening_mix")) {
                 mat.hardening_mix = mix->real();
                 if (!(mat.hardening_mix >= 0 && mat.hardening_mix <= 1))

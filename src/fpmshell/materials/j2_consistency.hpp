@@ -33,8 +33,14 @@ struct J2ReturnConstants {
          c33 = 0;        ///< plane-stress C: [[c11, c12, 0], [c12, c11, 0], [0, 0, c33]]
     Real bulk_term = 0;  ///< E / (3 (1 - nu)), the A1 coefficient of §7.3 without H_k
     Real two_g = 0;      ///< 2 G, the A2 coefficient without H_k
-    Real beta = 1;       ///< hardening mix of §7.2: 1 isotropic, 0 kinematic
-    Real tolerance = 0;  ///< J2Plastic::k_yield_tolerance
+    /// xi^T P xi = p_sum s^2 + p_diff d^2 + p_shear xi12^2, s = xi11 + xi22, d = xi22 - xi11
+    /// (§7.1: 1/6, 1/2, 2 for von Mises; Hill's normal anisotropy R, eq. 7.1-3: 1 / (3 (1 + R)),
+    /// (1 + 2R) / (3 (1 + R)), 4 (1 + 2R) / (3 (1 + R))); bulk_term and two_g then carry the
+    /// factors 2 p_sum / (1/3) and 2 p_diff
+    Real p_sum = 1.0 / 6.0, p_diff = 0.5, p_shear = 2.0;
+    bool anisotropic = false;  ///< R != 1: P xi from the coefficients (von Mises: its own form)
+    Real beta = 1;             ///< hardening mix of §7.2: 1 isotropic, 0 kinematic
+    Real tolerance = 0;        ///< J2Plastic::k_yield_tolerance
     FlowStress flow;
     /// the rate selects a curve of flow.table (RateFactor::Kind::Table): the r of a point is its
     /// position among the rates, its yield radius that curve's (isotropic hardening only)

@@ -7,7 +7,7 @@
 namespace fpmshell {
 
 J2Plastic::J2Plastic(Real youngs_modulus, Real poisson_ratio, const FlowStress& flow,
-                     const RateFactor& rate, Real hardening_mix)
+                     const RateFactor& rate, Real hardening_mix, Real normal_anisotropy)
     : e_(youngs_modulus), nu_(poisson_ratio), flow_(flow), rate_(rate), beta_(hardening_mix) {
     const Real f = e_ / (1.0 - nu_ * nu_);
     c_ << f, f * nu_, 0, f * nu_, f, 0, 0, 0, f * (1.0 - nu_) * 0.5;
@@ -16,6 +16,16 @@ J2Plastic::J2Plastic(Real youngs_modulus, Real poisson_ratio, const FlowStress& 
     constants_.c33 = c_(2, 2);
     constants_.bulk_term = e_ / (3.0 * (1.0 - nu_));
     constants_.two_g = 2.0 * (e_ / (2.0 * (1.0 + nu_)));
+    if (normal_anisotropy != 1.0) {  // eq. 7.1-3: Hill's P in the (s, d, shear) axes of C
+        const Real r = normal_anisotropy, third = 1.0 / (3.0 * (1.0 + r));
+        constants_.p_sum = third;
+        constants_.p_diff = (1.0 + 2.0 * r) * third;
+        constants_.p_shear = 4.0 * (1.0 + 2.0 * r) * third;
+        // A1, A2: the eigenvalues of C P, E / (1 - nu) 2 p_sum and 2 G 2 p_diff
+        constants_.bulk_term = e_ / (1.0 - nu_) * (2.0 * constants_.p_sum);
+        constants_.two_g = 2.0 * (e_ / (2.0 * (1.0 + nu_))) * (2.0 * constants_.p_diff);
+        constants_.anisotropic = true;
+    }
     constants_.beta = beta_;
     constants_.tolerance = k_yield_tolerance;
     if (rate_.selects_curve() && (flow_.kind != FlowStress::Kind::Tabulated || beta_ != 1.0 ||

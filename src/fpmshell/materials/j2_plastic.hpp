@@ -23,8 +23,10 @@ public:
     static constexpr Real k_rate_filter = 0.1;
 
     /// hardening_mix: beta of §7.2, 1 isotropic, 0 kinematic.
+    /// normal_anisotropy: Hill's R (the Lankford ratio of width to thickness strain, the same
+    /// in every direction of the sheet, eq. 7.1-3); 1 is von Mises.
     J2Plastic(Real youngs_modulus, Real poisson_ratio, const FlowStress& flow,
-              const RateFactor& rate, Real hardening_mix);
+              const RateFactor& rate, Real hardening_mix, Real normal_anisotropy = 1);
 
     /// Elastic plane-stress matrix C (engineering shear strain).
     [[nodiscard]] const Mat3& stiffness() const { return c_; }

@@ -36,11 +36,12 @@ struct J2Return {
 
 namespace j2_detail {
 
-/// x^T P x (§7.1) = (x11 + x22)^2 / 6 + (x22 - x11)^2 / 2 + 2 x12^2, i.e. 2 J2.
+/// x^T P x (§7.1) = (x11 + x22)^2 / 6 + (x22 - x11)^2 / 2 + 2 x12^2, i.e. 2 J2 (von Mises),
+/// or with the coefficients of Hill's normal anisotropy (eq. 7.1-3).
 template <class T>
-[[nodiscard]] FPMSHELL_INLINE T p_norm2(const std::array<T, 3>& x) {
+[[nodiscard]] FPMSHELL_INLINE T p_norm2(const J2ReturnConstants& c, const std::array<T, 3>& x) {
     const T s = x[0] + x[1], d = x[1] - x[0];
-    return s * s * (1.0 / 6.0) + 0.5 * d * d + 2.0 * x[2] * x[2];
+    return s * s * c.p_sum + c.p_diff * d * d + c.p_shear * x[2] * x[2];
 }
 
 }  // namespace j2_detail
@@ -80,7 +81,7 @@ template <class T>
     // point's rate (the stored radius is the first curve's, the smallest)
     const T kappa_n = c.rate_table ? table_flow(c.flow.table, alpha_n, r).value : r * flow_radius_n;
     const T third_k2 = kappa_n * kappa_n * (1.0 / 3.0);
-    const T f_tr = 0.5 * p_norm2(tr.xi_tr) - third_k2;
+    const T f_tr = 0.5 * p_norm2(c, tr.xi_tr) - third_k2;
     // member by member: an aggregate assignment copies the mask through an 8-byte load of the
     // byte just stored, which stalls store forwarding (perf: a tenth of the Johnson-Cook kernel)
     tr.out.state = {sigma_tr, old.back_stress, alpha_n, flow_radius_n, flow_slope_n};
@@ -101,8 +102,8 @@ template <class T>
     tr.s_tr = tr.xi_tr[0] + tr.xi_tr[1];
     tr.d_tr = tr.xi_tr[1] - tr.xi_tr[0];
     TrialReturn<T>& t = tr.t;
-    t.a1_sq = tr.s_tr * tr.s_tr * (1.0 / 6.0);                            // A1
-    t.a2_sq = 0.5 * tr.d_tr * tr.d_tr + 2.0 * tr.xi_tr[2] * tr.xi_tr[2];  // A2
+    t.a1_sq = tr.s_tr * tr.s_tr * c.p_sum;                                           // A1
+    t.a2_sq = c.p_diff * tr.d_tr * tr.d_tr + c.p_shear * tr.xi_tr[2] * tr.xi_tr[2];  // A2
     t.a1 = c.bulk_term + (2.0 / 3.0) * tr.h_k;
     t.a2 = c.two_g + (2.0 / 3.0) * tr.h_k;
     const T fbar2_tr = t.a1_sq + t.a2_sq;
@@ -146,8 +147,11 @@ template <class T>
     // d_eps_p = dgamma P xi (engineering shear). Dissipation by the trapezoidal rule, like the
     // element's strain work: then strain work - plastic work = the exact change of the elastic
     // energy 1/2 sigma C^-1 sigma, never negative whatever the increment.
-    const std::array<T, 3> p_xi{(2.0 * xi[0] - xi[1]) * (1.0 / 3.0),
-                                (2.0 * xi[1] - xi[0]) * (1.0 / 3.0), 2.0 * xi[2]};
+    const std::array<T, 3> p_xi =
+        c.anisotropic ? std::array<T, 3>{c.p_sum * s - c.p_diff * d, c.p_sum * s + c.p_diff * d,
+                                         c.p_shear * xi[2]}
+                      : std::array<T, 3>{(2.0 * xi[0] - xi[1]) * (1.0 / 3.0),
+                                         (2.0 * xi[1] - xi[0]) * (1.0 / 3.0), 2.0 * xi[2]};
     const T work = dg * (0.5 * (old.stress[0] + next.stress[0]) * p_xi[0] +
                          0.5 * (old.stress[1] + next.stress[1]) * p_xi[1] +
                          0.5 * (old.stress[2] + next.stress[2]) * p_xi[2]);

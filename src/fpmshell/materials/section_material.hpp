@@ -59,7 +59,8 @@ using SectionMaterial = std::variant<LinearElastic, J2Plastic>;
         rate.d = m.cs_d;
         rate.q = m.cs_q;
     }
-    return J2Plastic(m.youngs_modulus, m.poisson_ratio, flow, rate, m.hardening_mix);
+    return J2Plastic(m.youngs_modulus, m.poisson_ratio, flow, rate, m.hardening_mix,
+                     m.normal_anisotropy);
 }
 
 [[nodiscard]] inline const Mat3& elastic_stiffness(const SectionMaterial& m) {

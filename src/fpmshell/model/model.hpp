@@ -56,6 +56,10 @@ struct Material {
     Real power_k = 0, power_n = 1, power_strain_offset = 0;
     bool cowper_symonds = false;  ///< j2_plastic, tabulated, power_law: Cowper-Symonds factor on
     Real cs_d = 0, cs_q = 1;      ///< its D and q
+    /// plastic materials: Hill's normal anisotropy R, the ratio of width to thickness plastic
+    /// strain in a tension test, the same in every direction of the sheet (eq. 7.1-3; LS-DYNA's
+    /// *MAT_037 R); 1: von Mises
+    Real normal_anisotropy = 1;
     /// tabulated: one flow curve, or one per strain rate (rates increasing)
     std::vector<FlowCurvePoints> flow_curves{};
     /// `type: rigid` (an elastic material here): each section of it moves as one rigid body

@@ -67,6 +67,18 @@ void DeckTranslator::control(const DeckBlock& b) {
         note(b, b.line, "IDRFLG 0: no dynamic relaxation, so its parameters are not used");
     } else if (k == "CONTROL_STRUCTURED" || k == "CONTROL_STRUCTURED_TERM") {
         note(b, b.line, "ignored: it asks for a structured copy of the input, not a model change");
+    } else if (k == "CONTROL_ADAPTIVE" || k == "CONTROL_ADAPSTEP") {
+        note(b, b.line,
+             "ignored: fpmshell does not refine the mesh during a run (adaptive remeshing); the "
+             "parts keep the deck's mesh, coarser than the one LS-DYNA would refine it to");
+    } else if (k == "CONTROL_RIGID") {
+        // LMF, JNTF, ORTHMD, PARTM, SPARSE, METALF, PLOTEL, RBSMS: joint formulations, a
+        // faster update for forming tools, plotting, mass scaling of rigid bodies
+        if (f.id(7, "RBSMS") != 0)
+            f.fail("RBSMS: mass scaling that changes rigid bodies is not supported");
+        note(b, b.line,
+             "ignored: joint and update options of rigid bodies (fpmshell has no joints and "
+             "moves its rigid bodies exactly)");
     } else if (k == "CONTROL_OUTPUT" || k == "CONTROL_ENERGY" || k == "CONTROL_HOURGLASS" ||
                k == "CONTROL_BULK_VISCOSITY" || k == "CONTROL_CONTACT" || k == "CONTROL_ACCURACY" ||
                k == "CONTROL_CPU" || k == "CONTROL_PARALLEL" || starts_with(k, "CONTROL_MPP")) {

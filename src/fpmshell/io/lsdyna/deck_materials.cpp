@@ -82,6 +82,7 @@ void DeckTranslator::material(const DeckBlock& b) {
         {"MAT_015", "MAT_JOHNSON_COOK"},
         {"MAT_018", "MAT_POWER_LAW_PLASTICITY"},
         {"MAT_024", "MAT_PIECEWISE_LINEAR_PLASTICITY"},
+        {"MAT_037", "MAT_TRANSVERSELY_ANISOTROPIC_ELASTIC_PLASTIC"},
         {"MAT_020", "MAT_RIGID"}};
     std::string name = b.keyword;
     bool titled = false;
@@ -211,6 +212,37 @@ void DeckTranslator::material(const DeckBlock& b) {
         }
         if (c > 0 || p > 0)
             m.keys.push_back("cowper_symonds: {D: " + num(c) + ", q: " + num(p) + "}");
+    } else if (name == "MAT_TRANSVERSELY_ANISOTROPIC_ELASTIC_PLASTIC") {
+        // Hill's normal anisotropy R (theory.md eq. 7.1-3) on a bilinear curve (SIGY, ETAN) or
+        // the flow curve HLCID
+        const Card f = required_card(b, first, "MID, RO, E, PR, SIGY, ETAN, R, HLCID");
+        const Card g = card(b, first + 1);
+        mid = f.id(0, "MID");
+        m.plastic = true;
+        m.at = {&b, f.line()};
+        for (std::size_t k = 0; k < 5; ++k)
+            if (g.real(k, "IDSCALE, EA, COE, ICFLD, STRAINLT") != 0)
+                g.fail(
+                    "IDSCALE, EA, COE, ICFLD, STRAINLT (a modulus that changes with plastic "
+                    "strain, a forming limit) are not supported");
+        Real r = f.real(6, "R");
+        if (r < 0) {
+            r = -r;
+            note(b, f.line(), "R < 0 read as its magnitude " + num(r));
+        }
+        if (!(r > 0)) f.fail("R must be the sheet's Lankford ratio, not 0");
+        if (f.real(5, "ETAN") < 0)
+            f.fail("ETAN < 0 (through-thickness normal stresses) is not supported");
+        m.lcss = f.id(7, "HLCID");
+        m.keys.push_back(m.lcss != 0 ? "type: tabulated" : "type: j2_plastic");
+        elastic(f, f.real(2, "E"), f.real(3, "PR"));
+        if (m.lcss == 0) {
+            m.keys.push_back("yield_stress: " + num(f.real(4, "SIGY")));
+            m.keys.push_back("tangent_modulus: " + num(f.real(5, "ETAN")));
+        } else if (f.real(4, "SIGY") != 0 || f.real(5, "ETAN") != 0) {
+            note(b, f.line(), "SIGY and ETAN ignored: the curve HLCID gives the flow stress");
+        }
+        m.keys.push_back("normal_anisotropy: " + num(r));
     } else if (name == "MAT_RIGID") {
         // a part of it moves as one rigid body (its section's particles, theory.md §6.11)
         const Card f = required_card(b, first, "MID, RO, E, PR, N, COUPLE, M, ALIAS");

@@ -75,6 +75,7 @@ const std::vector<CardReader>& card_readers() {
         {"COMMENT", false, P::References, &T::ignored},
         {"KEYWORD_ID", false, P::References, &T::ignored},
         {"DEFINE_BOX", true, P::References, &T::ignored},
+        {"INTERFACE_SPRINGBACK", true, P::References, &T::ignored},
         {"DEFINE_COORDINATE", true, P::References, &T::ignored},
     };
     return readers;
@@ -194,6 +195,9 @@ std::string DeckTranslator::ignored_reason(const std::string& k) {
         return "ignored: contact parameters per part (fpmshell's contact takes each shell's "
                "thickness)";
     if (k == "KEYWORD_ID") return "ignored: the deck's identification, not a model card";
+    if (starts_with(k, "INTERFACE_SPRINGBACK"))
+        return "ignored: it asks for the formed state as the input of a springback run "
+               "(a dynain file), an output fpmshell does not write";
     return "ignored: only the cards that use it would need it, and fpmshell refuses those";
 }
 
@@ -201,8 +205,9 @@ std::string DeckTranslator::unsupported_reason(const std::string& k) {
     if (starts_with(k, "MAT_"))
         return "this material is not supported; fpmshell reads *MAT_ELASTIC (001), "
                "*MAT_PLASTIC_KINEMATIC (003), *MAT_JOHNSON_COOK (015), "
-               "*MAT_POWER_LAW_PLASTICITY (018), *MAT_RIGID (020) and "
-               "*MAT_PIECEWISE_LINEAR_PLASTICITY (024)";
+               "*MAT_POWER_LAW_PLASTICITY (018), *MAT_RIGID (020), "
+               "*MAT_PIECEWISE_LINEAR_PLASTICITY (024) and "
+               "*MAT_TRANSVERSELY_ANISOTROPIC_ELASTIC_PLASTIC (037)";
     if (starts_with(k, "SECTION_") && !starts_with(k, "SECTION_SHELL"))
         return "fpmshell models shells only (*SECTION_SHELL, and *SECTION_SOLID for parts of "
                "*MAT_RIGID); beam, discrete and thick-shell sections are not supported";
