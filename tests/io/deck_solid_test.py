@@ -7,7 +7,8 @@ variants of examples/decks/block_drop against YAML twins, the same history.csv b
 - the deck's solids written with their nodes on a second card everywhere (LS-DYNA's two-card
   form) is the same model;
 - refusals with exit 2 and one sentence naming the place: *PART_INERTIA of a deformable part,
-  IRCS 1, NODEID, TM 0.
+  IRCS 1, NODEID, TM 0;
+- *PART_MOVE: the block lifted before the run -> `moves`, against its twin; CID refused.
 
 usage: deck_solid_test.py FPMSHELL WORKDIR
 """
@@ -95,6 +96,28 @@ def refused(name, text, *words):
     check(f"{name}: exit 2, one sentence naming the place",
           r.returncode == 2 and all(w in r.stderr for w in words) and
           len(r.stderr.strip().splitlines()) == 1, r.stderr)
+
+
+# *PART_MOVE: the block lifted 5 mm before the run (after the cards that refer to it: order is
+# free) -> `moves`; the same as the twin that moves it, and a later impact than the deck's
+MOVE = "*PART_MOVE\n$#   pid            xmov            ymov            zmov     cid   ifset\n" \
+       "       2             0.0             0.0           0.005       0       0\n"
+d = write(os.path.join(WORK, "moved"), "model.k", deck.replace("*END", MOVE + "*END"))
+t = write(os.path.join(WORK, "moved"), "model.yaml",
+          twin.replace("\nmaterials:", "\nmoves:\n  - {nodes: part_2, by: [0, 0, 0.005]}\n\nmaterials:"))
+moved = twin_pair("*PART_MOVE: the block lifted before the run", d, t)
+rows = [line.split(",") for line in (moved or "").splitlines()]
+if rows and "node205_uz" in rows[0]:
+    k = rows[0].index("node205_uz")
+    # 5 mm higher, the block falls 5.5 mm before it meets the plate's surface (at 1.1 ms), not
+    # 0.5 mm (at 0.1 ms)
+    early = [float(r[k]) for r in rows[1:] if float(r[0]) <= 1.0e-3]
+    check("*PART_MOVE: the lifted block falls freely for 1 ms",
+          early and all(abs(u + 5 * float(r[0])) < 1e-9 for u, r in zip(early, rows[1:])),
+          early[-3:])
+refused("a move in local axes", deck.replace("*END", MOVE.replace("       0       0\n",
+                                                                     "       3       0\n") + "*END"),
+        "model.k:", "*PART_MOVE", "CID")
 
 
 PLATE = "*PART\nplate\n         1         1         1\n"

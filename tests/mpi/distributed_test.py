@@ -7,7 +7,7 @@ For each model, `fpmshell run --threads 1` and `MPIEXEC -np 2 fpmshell run --thr
 the elastic cap, -np 1 and -np 3 with 2 threads each) must write byte-identical history.csv, energy.csv
 and last field frame; summary.json says how many ranks ran. A run stopped at t1 and resumed on 2
 ranks must equal the same on one process; so must the tube with contact, with and without mass
-scaling. A relaxation is refused (exit 2, one message).
+scaling, and with friction (static, dynamic and its decay). A relaxation is refused (exit 2, one message).
 Exit status 0 when every check passes; each failure is printed.
 """
 import json
@@ -93,6 +93,17 @@ scaled_tube = os.path.join(WORK, "tube_mass_scaled.yaml")
 with open(scaled_tube, "w") as f:
     f.write(scaled)
 check("tube_mass_scaled", scaled_tube, quick + ["control.end_time=1.5e-3"])
+# friction with LS-DYNA's static-dynamic decay in the self-contact and against the striker
+with open(tube) as f:
+    rubbing = f.read().replace(
+        "  - {type: self, elements: all}\n  - {type: rigid, body: striker, nodes: all}\n",
+        "  - {type: self, elements: all, friction: 0.3, friction_dynamic: 0.2, friction_decay: 0.1}\n"
+        "  - {type: rigid, body: striker, nodes: all, friction: 0.2}\n", 1)
+assert "friction_decay" in rubbing
+friction_tube = os.path.join(WORK, "tube_friction.yaml")
+with open(friction_tube, "w") as f:
+    f.write(rubbing)
+check("tube_friction", friction_tube, quick + ["control.end_time=1.5e-3"])
 
 # What is not distributed yet is refused before the run, with one message naming the key.
 relaxed = os.path.join(ROOT, "validation/pinched_cylinder/model.yaml")

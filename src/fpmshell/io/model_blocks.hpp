@@ -38,6 +38,8 @@ void read_curves(const YamlValue& v, Model& model);
 void read_boundary(const YamlValue& v, Model& model);
 void read_loads(const YamlValue& v, Model& model);
 void read_initial_conditions(const YamlValue& v, Model& model);
+/// `moves`: node sets translated before the run (LS-DYNA's *PART_MOVE), in their order.
+void read_moves(const YamlValue& v, Model& model);
 /// `constraints`, after `boundary` (a particle of a nodal rigid body takes no boundary
 /// condition).
 void read_constraints(const YamlValue& v, Model& model);

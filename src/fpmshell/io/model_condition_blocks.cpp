@@ -172,6 +172,15 @@ void read_loads(const YamlValue& v, Model& model) {
     }
 }
 
+void read_moves(const YamlValue& v, Model& model) {
+    for (const YamlValue& item : v.list("moves")) {
+        const YamlMap m = item.map({"nodes", "by"});
+        const auto& nodes = named_node_set(model, m.at("nodes", "a node set name"));
+        const Vec3 by = m.at("by", "the translation [dx, dy, dz]").vec3();
+        for (const Index p : nodes) model.nodes[static_cast<std::size_t>(p)] += by;
+    }
+}
+
 void read_initial_conditions(const YamlValue& v, Model& model) {
     for (const YamlValue& item : v.list("initial conditions")) {
         const YamlMap m =

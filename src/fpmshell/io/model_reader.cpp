@@ -30,7 +30,8 @@ const std::vector<std::string> k_top_keys = {"title",       "mesh",         "set
                                              "materials",   "sections",     "boundary",
                                              "curves",      "loads",        "initial_conditions",
                                              "constraints", "rigid_bodies", "contact",
-                                             "damping",     "control",      "output"};
+                                             "damping",     "control",      "output",
+                                             "moves"};
 
 YAML::Node load_yaml(const std::string& path) {
     std::error_code ec;
@@ -117,6 +118,9 @@ Model read_model_tree(YamlContext& ctx, YAML::Node root, const std::string& path
     auto& all_elements = model.element_sets["all"];
     for (Index e = 0; e < model.n_elements(); ++e) all_elements.push_back(e);
 
+    // the parts moved into place before anything reads the geometry (sets by position were
+    // taken on the mesh as read)
+    if (const auto mv = top.find("moves")) read_moves(*mv, model);
     read_materials(top.at("materials"), model);
     if (const auto c = top.find("curves")) read_curves(*c, model);
     read_sections(top.at("sections"), model);

@@ -323,4 +323,24 @@ void DeckTranslator::segment_load(const DeckBlock& b) {
     }
 }
 
+/// *PART_MOVE: PID XMOV YMOV ZMOV CID IFSET (I8, 3 x E16, I8, I8), one part per card.
+void DeckTranslator::part_move(const DeckBlock& b) {
+    for (const DeckCard& dc : b.cards) {
+        if (dc.blank()) continue;
+        const Card f(deck_, b, dc, {8, 16, 16, 16, 8, 8});
+        const long long pid = f.id(0, "PID");
+        if (f.id(4, "CID") != 0)
+            f.fail(
+                "CID: a move in a local coordinate system is not supported (give it in global "
+                "axes, CID 0)");
+        const long long ifset = f.id(5, "IFSET");
+        if (ifset != 0 && ifset != 1) f.fail("IFSET must be 0 (a part) or 1 (a part set)");
+        const std::string nodes =
+            ifset == 1 ? set_name(f, "part", pid) : "part_" + std::to_string(pid);
+        moves_.push_back({"  - {nodes: " + yaml_name(nodes) + ", by: " +
+                              vec(f.real(1, "XMOV"), f.real(2, "YMOV"), f.real(3, "ZMOV")) + "}",
+                          {&b, f.line()}});
+    }
+}
+
 }  // namespace fpmshell::deck

@@ -31,6 +31,7 @@ const std::vector<CardReader>& card_readers() {
         {"SET_SEGMENT", true, P::Definitions, &T::segment_set},
         {"PART", false, P::Definitions, &T::part},
         {"PART_INERTIA", false, P::Definitions, &T::part_inertia},
+        {"PART_MOVE", false, P::References, &T::part_move},
         {"SECTION_SHELL", true, P::Definitions, &T::section_shell},
         {"SECTION_SOLID", false, P::Definitions, &T::section_solid},
         {"SECTION_SOLID_TITLE", false, P::Definitions, &T::section_solid},
@@ -251,6 +252,7 @@ DeckTranslation DeckTranslator::write() {
     add(out, "title: " + yaml_name(title), top);
     add(out, "mesh: {file: " + yaml_name(mesh_file_) + "}", top);
     write_sets(out);
+    write_list(out, "moves", moves_);
     write_materials(out);
     write_sections(out);
     write_curves(out);

@@ -185,6 +185,8 @@ public:
     /// *PART_INERTIA: a rigid part's mass, centre and inertia tensor (IRCS 0, XC..ZC), and its
     /// initial velocity VTX..VRZ.
     void part_inertia(const DeckBlock& b);
+    /// *PART_MOVE: a part or part set translated before the run (`moves`).
+    void part_move(const DeckBlock& b);
     /// The `inertia: {...}` key of a part of *PART_INERTIA, "" for another (refused where the
     /// part's material is not *MAT_RIGID).
     std::string given_inertia(const PartDef& part, const MaterialDef& m);
@@ -312,6 +314,7 @@ private:
     /// the model line of a load or prescribed motion on single nodes -> the set of its nodes
     std::map<std::string, std::string> node_group_of_text_;
     std::vector<Line> boundary_, loads_, contact_, control_, constraints_;
+    std::vector<Line> moves_;  ///< *PART_MOVE
     /// initial velocities of *INITIAL_VELOCITY, _GENERATION and _NODE, written in that order
     std::vector<Line> initial_sets_, initial_generated_, initial_nodes_;
     std::vector<Line> initial_bodies_;  ///< of *PART_INERTIA: written last (they win)
