@@ -104,13 +104,20 @@ void read_boundary(const YamlValue& v, Model& model) {
                 if (r != a) bc.fixed[3 + r] = true;
         }
         if (const auto pre = m.find("prescribe")) {
-            const YamlMap p =
-                pre->map({"displacement", "velocity", "angular_velocity", "curve", "components"});
-            if (p.count({"displacement", "velocity", "angular_velocity"}) != 1)
+            const YamlMap p = pre->map({"displacement", "velocity", "acceleration",
+                                        "angular_velocity", "curve", "components"});
+            if (p.count({"displacement", "velocity", "acceleration", "angular_velocity"}) != 1)
                 pre->fail(
-                    "needs exactly one of displacement, velocity or angular_velocity "
-                    "(a list of 3 numbers), optionally with a curve");
-            if (const auto d = p.find("displacement")) {
+                    "needs exactly one of displacement, velocity, acceleration or "
+                    "angular_velocity (a list of 3 numbers), optionally with a curve");
+            if (const auto acc = p.find("acceleration")) {
+                if (model.control.mode == SolutionMode::Relaxation)
+                    acc->fail(
+                        "an acceleration is a dynamic drive: control.mode relaxation takes a "
+                        "displacement or a velocity");
+                bc.prescribed = PrescribedKind::Acceleration;
+                bc.value = acc->vec3();
+            } else if (const auto d = p.find("displacement")) {
                 bc.prescribed = PrescribedKind::Displacement;
                 bc.value = d->vec3();
             } else if (const auto vel = p.find("velocity")) {

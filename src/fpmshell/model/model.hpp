@@ -101,7 +101,9 @@ struct Section {
     RigidInertia inertia{};
 };
 
-enum class PrescribedKind { None, Displacement, Velocity, AngularVelocity };
+/// Acceleration: the velocity steps by dt_n a(t_n) from the one before (the central difference
+/// with the acceleration given instead of the forces; LS-DYNA's VAD 1).
+enum class PrescribedKind { None, Displacement, Velocity, AngularVelocity, Acceleration };
 
 /// One entry of `boundary`. Fixed degrees of freedom are global: ux uy uz rx ry rz.
 /// `symmetry: x` becomes fixed = {ux, ry, rz}; `fix: all` = all six.

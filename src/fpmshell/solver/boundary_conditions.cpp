@@ -88,7 +88,10 @@ void BoundaryConditions::impose_prescribed_motions(ParticleState& s,
         }
         const Vec3 v_before = s.v[p];
         Vec3 v_imposed;
-        if (pr.kind == PrescribedKind::Velocity && !at.relaxation) {
+        if (pr.kind == PrescribedKind::Acceleration) {  // v^{n+1/2} = v^{n-1/2} + dt_n a(t_n)
+            v_imposed =
+                s.v_prev[p] + (at.dt_n * curve_factor(curves, pr.curve, at.load_time)) * pr.value;
+        } else if (pr.kind == PrescribedKind::Velocity && !at.relaxation) {
             v_imposed = curve_factor(curves, pr.curve, at.t_half) * pr.value;
         } else {  // a displacement, or in relaxation the integral of a velocity
             const Real factor = pr.kind == PrescribedKind::Velocity

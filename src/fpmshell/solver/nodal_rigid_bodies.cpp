@@ -164,7 +164,8 @@ std::vector<Index> NodalRigidBodies::driven_particles() const {
 }
 
 Real NodalRigidBodies::prescribed_value(std::size_t b, std::size_t k, const Vec3& centre,
-                                        const Vec3& centre0, const PrescribedMotionTimes& at,
+                                        const Vec3& centre0, const Vec3& velocity_prev,
+                                        const PrescribedMotionTimes& at,
                                         const std::vector<Curve>& curves) const {
     if (prescribed_.empty()) return 0;
     const RigidPrescription& pr = prescribed_[b][k];
@@ -183,6 +184,9 @@ Real NodalRigidBodies::prescribed_value(std::size_t b, std::size_t k, const Vec3
         case PrescribedKind::Displacement:
             return (centre0[d] + pr.value * curve_factor(curves, pr.curve, at.t_next) - centre[d]) /
                    at.dt_new;
+        case PrescribedKind::Acceleration:  // V^{n+1/2} = V^{n-1/2} + dt_n a(t_n)
+            return velocity_prev[d] +
+                   at.dt_n * pr.value * curve_factor(curves, pr.curve, at.load_time);
     }
     return 0;
 }
@@ -209,21 +213,26 @@ void NodalRigidBodies::make_rigid(ParticleState& s, const PrescribedMotionTimes&
         // mass, centre of mass at x^n, linear momentum (eq. 6.11-1)
         Real mass = 0;
         Vec3 centre = Vec3::Zero(), momentum = Vec3::Zero(), centre0 = Vec3::Zero();
+        Vec3 velocity_prev = Vec3::Zero();  // V^{n-1/2}, for a prescribed acceleration
         for (const Index ip : body) {
             const auto p = static_cast<std::size_t>(ip);
             mass += s.mass[p];
             centre += s.mass[p] * s.x[p];
             momentum += s.mass[p] * s.v[p];
-            if (driven) centre0 += s.mass[p] * s.x0[p];
+            if (driven) {
+                centre0 += s.mass[p] * s.x0[p];
+                velocity_prev += s.mass[p] * s.v_prev[p];
+            }
         }
         centre /= mass;
         centre0 /= mass;
+        velocity_prev /= mass;
         const std::array<bool, 6>& fixed = fixed_[b];
         Vec3 velocity = momentum / mass;
         for (std::size_t k = 0; k < 3; ++k)  // eqs. 6.11-6, 6.11-7
             if (fixed[k])
                 velocity[static_cast<Eigen::Index>(k)] =
-                    prescribed_value(b, k, centre, centre0, at, curves);
+                    prescribed_value(b, k, centre, centre0, velocity_prev, at, curves);
         // angular momentum and inertia tensor about the centre (eq. 6.11-2); a shell particle
         // turns in its tangent plane only, so its own inertia has no part about its normal
         Vec3 spin = Vec3::Zero();
@@ -252,7 +261,7 @@ void NodalRigidBodies::make_rigid(ParticleState& s, const PrescribedMotionTimes&
             for (std::size_t k = 0; k < 3; ++k)
                 if (fixed[3 + k])
                     held_omega[static_cast<Eigen::Index>(k)] =
-                        prescribed_value(b, 3 + k, centre, centre0, at, curves);
+                        prescribed_value(b, 3 + k, centre, centre0, velocity_prev, at, curves);
         const auto solve = [&](Mat3 tensor, Vec3 l) {
             if (held_rotation) {
                 if (driven) l -= tensor * held_omega;

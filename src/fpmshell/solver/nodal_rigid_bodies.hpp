@@ -65,9 +65,11 @@ public:
 
 private:
     /// The velocity (k < 3) or angular velocity (k >= 3) component k of body b at this step,
-    /// its centre of mass at x^n `centre` and at t = 0 `centre0`.
+    /// its centre of mass at x^n `centre` and at t = 0 `centre0`, its velocity V^{n-1/2}
+    /// `velocity_prev`.
     [[nodiscard]] Real prescribed_value(std::size_t b, std::size_t k, const Vec3& centre,
-                                        const Vec3& centre0, const PrescribedMotionTimes& at,
+                                        const Vec3& centre0, const Vec3& velocity_prev,
+                                        const PrescribedMotionTimes& at,
                                         const std::vector<Curve>& curves) const;
 
     /// A body with sections of a given inertia (eq. 6.11-10): the part dJ of its inertia

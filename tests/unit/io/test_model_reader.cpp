@@ -858,7 +858,8 @@ TEST(ModelReader, EveryErrorNamesFileLineAndKey) {
          "expected one of x, y, z"},
         {k_base + "boundary:\n  - {nodes: all, prescribe: {velocity: [1, 0, 0], displacement: [0, "
                   "0, 1]}}\n",
-         10, "boundary.0.prescribe", "exactly one of displacement, velocity or angular_velocity"},
+         10, "boundary.0.prescribe",
+         "exactly one of displacement, velocity, acceleration or angular_velocity"},
         {k_base + "boundary:\n  - {nodes: all, prescribe: {velocity: [1, 0]}}\n", 10,
          "boundary.0.prescribe.velocity", "3 numbers"},
         {k_base + "curves:\n  c: [[0, 0], [1, 1], [1, 2]]\n", 10, "curves.c.2.0",

@@ -3,8 +3,8 @@
 //   the free axis of a symmetry plane, all three axes of a kink particle, nothing of a clamp;
 // - the drill axis that follows (eq. 2.6c): the normal, the normal turned into the symmetry
 //   plane, or none;
-// - prescribed velocities, displacements and angular velocities reach their targets, with the
-//   reactions m / (c1 dt_n) times the change they make.
+// - prescribed velocities, displacements, accelerations and angular velocities reach their
+//   targets, with the reactions m / (c1 dt_n) times the change they make.
 #include <gtest/gtest.h>
 
 #include "fpmshell/solver/boundary_conditions.hpp"
@@ -168,4 +168,39 @@ TEST(BoundaryConditions, PrescribedComponentsLeaveTheOthersFree) {
     EXPECT_DOUBLE_EQ(s.v[1].y(), 0.25);
     EXPECT_NEAR(s.x[1].z() + at.dt_new * s.v[1].z(), 0.3, 1e-15);  // reaches its displacement
     EXPECT_DOUBLE_EQ(s.reaction[1].y(), 0.0);
+}
+
+// A prescribed acceleration (LS-DYNA's VAD 1): the half-step velocity steps by dt_n a(t_n) from
+// the one before, whatever the forces gave, and the change is the reaction's.
+TEST(BoundaryConditions, APrescribedAccelerationStepsTheVelocity) {
+    Model m = four_particles();
+    m.curves.push_back({"ramp", {{0.0, 0.0}, {1.0, 1.0}}});
+    BoundaryCondition push;
+    push.nodes = {3};
+    push.prescribed = PrescribedKind::Acceleration;
+    push.value = Vec3(0, 4.0, 0);
+    push.curve = 0;
+    push.components = {false, true, false};
+    m.boundary = {push};
+    BoundaryConditions bc(m, std::vector<std::uint8_t>(4, 0));
+    EXPECT_TRUE(bc.prescribed_translation(3));
+    ParticleState s;
+    s.resize(4);
+    s.x0 = s.x = m.nodes;
+    s.mass.assign(4, 2.0);
+    s.inertia.assign(4, 0.5);
+    s.v_prev[3] = Vec3(1.0, -3.0, 0.5);
+    s.v[3] = Vec3(1.5, 7.0, 0.5);  // what the forces gave: x and z stay, y is prescribed
+    PrescribedMotionTimes at;
+    at.load_time = 0.5;
+    at.t_half = 0.55;
+    at.t_next = 0.6;
+    at.dt_n = 0.1;
+    at.dt_new = 0.1;
+    at.c1 = 1.0;
+    bc.impose_prescribed_motions(s, m.curves, at);
+    EXPECT_DOUBLE_EQ(s.v[3].y(), -3.0 + 0.1 * 0.5 * 4.0);  // v^{n-1/2} + dt_n ramp(t_n) a
+    EXPECT_EQ(s.v[3].x(), 1.5);
+    EXPECT_EQ(s.v[3].z(), 0.5);
+    EXPECT_DOUBLE_EQ(s.reaction[3].y(), 2.0 / 0.1 * (-3.0 + 0.2 - 7.0));
 }

@@ -37,7 +37,8 @@ void DeckTranslator::spc(const DeckBlock& b) {
     }
 }
 
-/// *BOUNDARY_PRESCRIBED_MOTION_NODE / _SET: a velocity (VAD 0) or a displacement (VAD 2)
+/// *BOUNDARY_PRESCRIBED_MOTION_NODE / _SET: a velocity (VAD 0), an acceleration (VAD 1) or a
+/// displacement (VAD 2)
 /// along x, y or z (DOF 1, 2, 3), the curve times SF; the node's other directions stay free.
 void DeckTranslator::prescribed_motion(const DeckBlock& b) {
     const std::set<std::string> opt = options_of(b.keyword, 3);
@@ -57,9 +58,10 @@ void DeckTranslator::prescribed_motion(const DeckBlock& b) {
         if (dof < 1 || dof > 3)
             f.fail("DOF " + std::to_string(dof) +
                    ": fpmshell prescribes the translations along x, y or z (1, 2, 3)");
-        if (vad != 0 && vad != 2)
+        if (vad != 0 && vad != 1 && vad != 2)
             f.fail("VAD " + std::to_string(vad) +
-                   ": fpmshell prescribes a velocity (0) or a displacement (2)");
+                   ": fpmshell prescribes a velocity (0), an acceleration (1) or a displacement "
+                   "(2)");
         if (f.id(5, "VID") != 0) f.fail("VID: a direction vector is not supported (0 only)");
         const Real death = f.real(6, "DEATH");
         if (f.real(7, "BIRTH") != 0 || (death != 0 && death < 1e20))
@@ -69,8 +71,10 @@ void DeckTranslator::prescribed_motion(const DeckBlock& b) {
             vec(axis == 0 ? sf : 0.0, axis == 1 ? sf : 0.0, axis == 2 ? sf : 0.0);
         static const char* names[3] = {"ux", "uy", "uz"};
         const std::string text = std::string("{nodes: NODES, prescribe: {") +
-                                 (vad == 0 ? "velocity: " : "displacement: ") + value +
-                                 ", curve: " + curve_ref(b, f, f.id(3, "LCID")) +
+                                 (vad == 0   ? "velocity: "
+                                  : vad == 1 ? "acceleration: "
+                                             : "displacement: ") +
+                                 value + ", curve: " + curve_ref(b, f, f.id(3, "LCID")) +
                                  ", components: [" + names[axis] + "]}}";
         if (single) {
             auto& group = node_group_of_text_[text];
@@ -84,8 +88,8 @@ void DeckTranslator::prescribed_motion(const DeckBlock& b) {
     }
 }
 
-/// *BOUNDARY_PRESCRIBED_MOTION_RIGID: the velocity (VAD 0) or displacement (VAD 2) of a rigid
-/// part's centre of mass along x, y or z (DOF 1-3), or its angular velocity about x, y or z
+/// *BOUNDARY_PRESCRIBED_MOTION_RIGID: the velocity (VAD 0), acceleration (1) or displacement (2) of
+/// a rigid part's centre of mass along x, y or z (DOF 1-3), or its angular velocity about x, y or z
 /// (DOF 5-7, VAD 0), the curve times SF; the body's other components stay free (theory.md eq.
 /// 6.11-7: `boundary` entries of type rigid_body).
 void DeckTranslator::prescribed_rigid_motion(const DeckBlock& b, const std::set<std::string>& opt) {
@@ -104,11 +108,12 @@ void DeckTranslator::prescribed_rigid_motion(const DeckBlock& b, const std::set<
             f.fail("DOF " + std::to_string(dof) +
                    ": fpmshell prescribes a rigid part's translation along x, y or z (1, 2, 3) "
                    "or its rotation about x, y or z (5, 6, 7)");
-        if (vad != 0 && !(vad == 2 && !rotation))
+        if (vad != 0 && !((vad == 1 || vad == 2) && !rotation))
             f.fail("VAD " + std::to_string(vad) +
                    (rotation ? ": fpmshell prescribes a rigid part's rotation as an angular "
                                "velocity (VAD 0)"
-                             : ": fpmshell prescribes a velocity (0) or a displacement (2)"));
+                             : ": fpmshell prescribes a velocity (0), an acceleration (1) or a "
+                               "displacement (2)"));
         if (f.id(5, "VID") != 0)
             f.fail("VID: a direction vector or local system is not supported (0 only)");
         const Real death = f.real(6, "DEATH");
@@ -119,8 +124,10 @@ void DeckTranslator::prescribed_rigid_motion(const DeckBlock& b, const std::set<
             vec(axis == 0 ? sf : 0.0, axis == 1 ? sf : 0.0, axis == 2 ? sf : 0.0);
         static const char* translations[3] = {"ux", "uy", "uz"};
         static const char* rotations[3] = {"rx", "ry", "rz"};
-        const char* kind =
-            rotation ? "angular_velocity: " : (vad == 0 ? "velocity: " : "displacement: ");
+        const char* kind = rotation   ? "angular_velocity: "
+                           : vad == 0 ? "velocity: "
+                           : vad == 1 ? "acceleration: "
+                                      : "displacement: ";
         boundary_.push_back({"  - {rigid_body: part_" + std::to_string(pid) + ", prescribe: {" +
                                  kind + value + ", curve: " + curve_ref(b, f, f.id(3, "LCID")) +
                                  ", components: [" +
