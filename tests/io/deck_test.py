@@ -203,6 +203,21 @@ check("*MAT_037: R = 2 and R = 1 are different runs",
 DROP = os.path.join(DECKS, "plate_drop")
 drop_deck, drop_twin = read(os.path.join(DROP, "plate_drop.k")), read(os.path.join(DROP, "plate_drop.yaml"))
 planar = drop_deck[drop_deck.index("*RIGIDWALL_PLANAR_ID"):drop_deck.index("*CONTROL_TERMINATION")]
+
+# ---- ICID: plate_drop.k's velocity given in a local system whose x axis is the global -z
+# (*DEFINE_COORDINATE_SYSTEM, or _VECTOR): the same model as the twin's global velocity
+generation = ("         1         2       0.0       0.0       0.0      -5.0\n")
+assert generation in drop_deck
+for name, system in {
+        "_SYSTEM": ("*DEFINE_COORDINATE_SYSTEM\n         7       0.0       0.0       0.0       0.0"
+                    "       0.0      -1.0\n       1.0       0.0       0.0\n"),
+        "_VECTOR": ("*DEFINE_COORDINATE_VECTOR\n         7       0.0       0.0      -1.0       1.0"
+                    "       0.0       0.0\n")}.items():
+    local = drop_deck.replace(generation, "         1         2       0.0       5.0       0.0"
+                              "       0.0         0         7\n").replace("*END", system + "*END")
+    deck_against_twin(f"ICID in a local system ({name})", os.path.join(WORK, "icid" + name),
+                      os.path.join(DROP, "plate_drop_mesh.k"), local, drop_twin)
+
 twin_body = "  - {name: floor, point: [0, 0, 0], normal: [0, 0, 1], fixed: true}\n"
 WALLS = {  # name: (deck card, twin body)
     "sphere": ("*RIGIDWALL_GEOMETRIC_SPHERE_ID\n         1ball\n         0\n"
@@ -469,6 +484,11 @@ FIELD_REFUSED = {  # card: (its card with the field, 1 = the first after the key
      "         1\n"): (2, "IDSCALE, EA, COE, ICFLD, STRAINLT"),
     "*CONTROL_RIGID\n         0         0         0         0         0         1         0         1\n":
         (1, "RBSMS"),
+    ("*INITIAL_VELOCITY_NODE\n         1       0.0       0.0       1.0       0.0       0.0"
+     "       0.0         9\n"): (1, "ICID 9: no *DEFINE_COORDINATE_SYSTEM or _VECTOR defines it"),
+    ("*INITIAL_VELOCITY_NODE\n         1       0.0       0.0       1.0       0.0       0.0"
+     "       0.0         9\n*DEFINE_COORDINATE_NODES\n         9         1         2         3\n"):
+        (1, "*DEFINE_COORDINATE_NODES (axes from node positions) is not supported here"),
 }
 for k, (card, (offset, words)) in enumerate(FIELD_REFUSED.items()):
     path, r = deck_case(f"field_refused{k}", card)

@@ -172,15 +172,16 @@ void DeckTranslator::initial_velocity(const DeckBlock& b) {
         const Card f = required_card(b, 0, "NSID, NSIDEX, BOXID, IRIGID, ICID");
         const Card v = required_card(b, 1, "VX, VY, VZ, VXR, VYR, VZR");
         const long long nsid = f.id(0, "NSID"), nsidex = f.id(1, "NSIDEX");
-        if (f.id(2, "BOXID") != 0 || f.id(4, "ICID") != 0)
-            f.fail("BOXID and ICID are not supported (0 only)");
+        if (f.id(2, "BOXID") != 0) f.fail("BOXID is not supported (0 only)");
+        const long long icid = f.id(4, "ICID");
         const std::string nodes = nsid == 0 ? "all" : set_name(f, "node", nsid);
         initial_sets_.push_back(
-            {"  - {nodes: " + yaml_name(nodes) + ", " + velocities(v, 0) + "}", {&b, v.line()}});
+            {"  - {nodes: " + yaml_name(nodes) + ", " + velocities(v, 0, icid) + "}",
+             {&b, v.line()}});
         if (nsidex != 0) {  // the exempted nodes take the velocities of the third card
             const Card e = card(b, 2);
             initial_sets_.push_back({"  - {nodes: " + yaml_name(set_name(f, "node", nsidex)) +
-                                         ", " + velocities(e, 0) + "}",
+                                         ", " + velocities(e, 0, icid) + "}",
                                      {&b, e.line()}});
         }
     } else if (k == "INITIAL_VELOCITY_NODE") {
@@ -188,8 +189,7 @@ void DeckTranslator::initial_velocity(const DeckBlock& b) {
         for (const DeckCard& dc : b.cards) {
             if (dc.blank()) continue;
             const Card f(deck_, b, dc, k_ten);
-            if (f.id(7, "ICID") != 0) f.fail("ICID: only global directions (0) are supported");
-            const std::string text = "{nodes: NODES, " + velocities(f, 1) + "}";
+            const std::string text = "{nodes: NODES, " + velocities(f, 1, f.id(7, "ICID")) + "}";
             auto& group = node_group_of_text_[text];
             if (group.empty())
                 group = "velocity_nodes_" + std::to_string(node_group_of_text_.size());
@@ -202,17 +202,20 @@ void DeckTranslator::initial_velocity(const DeckBlock& b) {
             if (c >= b.cards.size()) break;
             const Card f = card(b, c);
             const Card g = card(b, c + 1);
-            if (f.id(7, "ICID") != 0) f.fail("ICID: only global directions (0) are supported");
+            // ICID: VX, VY, VZ and the axis NX, NY, NZ in the local system (XC, YC, ZC global)
+            const long long icid = f.id(7, "ICID");
             if (f.id(6, "IVATN") != 0 || g.id(7, "IRIGID") != 0)
                 f.fail("IVATN and IRIGID are not supported (0 only)");
             const std::string nodes = nodes_of_velocity(f, f.id(0, "ID"), f.id(1, "STYP"));
-            std::string text = "  - {nodes: " + yaml_name(nodes) + ", velocity: " +
-                               vec(f.real(3, "VX"), f.real(4, "VY"), f.real(5, "VZ"));
+            const std::array<Real, 3> v =
+                to_global(f, icid, {f.real(3, "VX"), f.real(4, "VY"), f.real(5, "VZ")});
+            std::string text =
+                "  - {nodes: " + yaml_name(nodes) + ", velocity: " + vec(v[0], v[1], v[2]);
             if (const Real omega = f.real(2, "OMEGA"); omega != 0) {
                 std::array<Real, 3> axis{g.real(3, "NX"), g.real(4, "NY"), g.real(5, "NZ")};
                 if (axis == std::array<Real, 3>{})
                     g.fail("NX, NY, NZ: the axis of OMEGA must not be zero");
-                axis = unit(axis);
+                axis = unit(to_global(f, icid, axis));
                 text += ", rotation: {centre: " +
                         vec(g.real(0, "XC"), g.real(1, "YC"), g.real(2, "ZC")) +
                         ", angular_velocity: " +
@@ -226,13 +229,17 @@ void DeckTranslator::initial_velocity(const DeckBlock& b) {
         for (const DeckCard& dc : b.cards) {
             if (dc.blank()) continue;
             const Card f(deck_, b, dc, k_ten);
-            if (f.id(7, "ICID") != 0) f.fail("ICID: only global directions (0) are supported");
+            const long long icid = f.id(7, "ICID");
             const long long pid = f.id(0, "PID");
             require_rigid_part(f, pid, "PID");
-            const Real wx = f.real(4, "VXR"), wy = f.real(5, "VYR"), wz = f.real(6, "VZR");
+            const std::array<Real, 3> v =
+                to_global(f, icid, {f.real(1, "VX"), f.real(2, "VY"), f.real(3, "VZ")});
+            const std::array<Real, 3> w =
+                to_global(f, icid, {f.real(4, "VXR"), f.real(5, "VYR"), f.real(6, "VZR")});
+            const Real wx = w[0], wy = w[1], wz = w[2];
             initial_generated_.push_back(
                 {"  - {nodes: part_" + std::to_string(pid) +
-                     ", velocity: " + vec(f.real(1, "VX"), f.real(2, "VY"), f.real(3, "VZ")) +
+                     ", velocity: " + vec(v[0], v[1], v[2]) +
                      (wx != 0 || wy != 0 || wz != 0
                           ? ", rotation: {centre: mass, angular_velocity: " + vec(wx, wy, wz) + "}"
                           : std::string()) +
@@ -245,11 +252,12 @@ void DeckTranslator::initial_velocity(const DeckBlock& b) {
 }
 
 /// "velocity: [VX, VY, VZ], angular_velocity: [VXR, VYR, VZR]" from fields first ... first + 5.
-std::string DeckTranslator::velocities(const Card& f, std::size_t first) {
-    return "velocity: " +
-           vec(f.real(first, "VX"), f.real(first + 1, "VY"), f.real(first + 2, "VZ")) +
-           ", angular_velocity: " +
-           vec(f.real(first + 3, "VXR"), f.real(first + 4, "VYR"), f.real(first + 5, "VZR"));
+std::string DeckTranslator::velocities(const Card& f, std::size_t first, long long cid) const {
+    const std::array<Real, 3> v =
+        to_global(f, cid, {f.real(first, "VX"), f.real(first + 1, "VY"), f.real(first + 2, "VZ")});
+    const std::array<Real, 3> w = to_global(
+        f, cid, {f.real(first + 3, "VXR"), f.real(first + 4, "VYR"), f.real(first + 5, "VZR")});
+    return "velocity: " + vec(v[0], v[1], v[2]) + ", angular_velocity: " + vec(w[0], w[1], w[2]);
 }
 
 /// The model's name of load curve `lcid` (written out if some card uses it).

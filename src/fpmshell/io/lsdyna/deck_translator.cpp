@@ -77,7 +77,7 @@ const std::vector<CardReader>& card_readers() {
         {"KEYWORD_ID", false, P::References, &T::ignored},
         {"DEFINE_BOX", true, P::References, &T::ignored},
         {"INTERFACE_SPRINGBACK", true, P::References, &T::ignored},
-        {"DEFINE_COORDINATE", true, P::References, &T::ignored},
+        {"DEFINE_COORDINATE", true, P::Definitions, &T::define_coordinate},
     };
     return readers;
 }

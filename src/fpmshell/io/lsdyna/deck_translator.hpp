@@ -74,6 +74,14 @@ struct ElementPartInfo {
     std::set<Real> thickness;
 };
 
+/// A local coordinate system: its unit axes x, y, z in global components (from_nodes: a
+/// *DEFINE_COORDINATE_NODES system, whose axes need node positions).
+struct CoordinateSystemDef {
+    Origin at;
+    std::array<std::array<Real, 3>, 3> axes{};
+    bool from_nodes = false;
+};
+
 struct PartDef {
     Origin at;
     long long section = 0, material = 0;
@@ -224,7 +232,15 @@ public:
                            const Origin& at, std::vector<Line>& lines);
     std::string nodes_of_velocity(const Card& f, long long id, long long styp);
     void initial_velocity(const DeckBlock& b);
-    static std::string velocities(const Card& f, std::size_t first);
+    /// "velocity: [VX, VY, VZ], angular_velocity: [VXR, VYR, VZR]" from fields first ...
+    /// first + 5, given in the local system cid (0: global) and written in global components.
+    std::string velocities(const Card& f, std::size_t first, long long cid = 0) const;
+    /// *DEFINE_COORDINATE_SYSTEM / _VECTOR / _NODES (deck_coordinates.cpp).
+    void define_coordinate(const DeckBlock& b);
+    /// The global components of a vector given in the local system cid (0: global itself); a
+    /// system that is not defined, or is of _NODES, is an error at card f.
+    [[nodiscard]] std::array<Real, 3> to_global(const Card& f, long long cid,
+                                                const std::array<Real, 3>& local) const;
     /// The model's name of load curve `lcid` (written out if some card uses it).
     std::string curve_ref(const DeckBlock& b, const Card& f, long long lcid);
     void load(const DeckBlock& b);
@@ -294,6 +310,7 @@ private:
     std::map<std::string, std::map<long long, std::string>> set_names_;
     std::map<long long, PartDef> parts_;
     std::map<long long, SectionDef> sections_;
+    std::map<long long, CoordinateSystemDef> coordinate_systems_;
     std::map<long long, IntegrationRuleDef> integration_rules_;
     std::optional<Origin> lobatto_shells_;  ///< *CONTROL_SHELL INTGRD 1
     std::map<long long, MaterialDef> materials_;
