@@ -20,6 +20,7 @@ struct Sliding {
     Vec3 body_velocity = Vec3::Zero();
     Real body_mass = 0;  ///< 0: a fixed plane
     Real lift = 0;       ///< initial gap to the plane (0: resting on it)
+    ContactMethod method = ContactMethod::LagrangeMultiplier;
 };
 
 /// A flat triangle (legs 1 m) on the plane z = 0 (normal +z), pressed by m_i g per node, its
@@ -53,6 +54,7 @@ inline Model sliding_triangle(const Sliding& c) {
     contact.body = 0;
     contact.nodes = all;
     contact.friction = c.friction;
+    contact.method = c.method;
     m.contacts.push_back(contact);
     return m;
 }

@@ -1,6 +1,10 @@
 // Coulomb friction of the Lagrange-multiplier contacts (theory.md §8.4): the slip of a
 // constraint's slave against its body or face point, and the tangential multiplier that stops it
 // within the Coulomb cone, applied in the same Gauss-Seidel sweep as the normal one.
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
 #include "fpmshell/contact/contact_solver.hpp"
 
 namespace fpmshell {
@@ -66,6 +70,43 @@ Vec3 ContactSolver::slide(const Constraint& c, Vec3& lambda_t, const std::vector
         body_moved_at_[b] = stamp;
     }
     return change;
+}
+
+Vec3 ContactSolver::penalty_friction(const Constraint& c, const std::vector<Vec3>& v,
+                                     const std::vector<RigidBodyState>& bodies, Real beta_particle,
+                                     Real beta_body, Real dt_new) const {
+    const ContactDefinition& def = definitions_[c.definition].def;
+    if (!(def.friction > 0) || !(c.lambda > 0) || !(dt_new > 0)) return Vec3::Zero();
+    // the slave's velocity v^{n-1/2} against the face point's or the body's, in the tangent plane
+    const auto us = static_cast<std::size_t>(c.slave);
+    Vec3 relative = v[us];
+    if (c.element >= 0)
+        for (std::size_t k = 0; k < 3; ++k)
+            relative -= c.xi[k] * v[static_cast<std::size_t>(c.master[k])];
+    Real body_inv_mass = 0;
+    if (c.body >= 0) {
+        const RigidBodyState& b = bodies[static_cast<std::size_t>(c.body)];
+        relative -= b.v;
+        body_inv_mass = b.inv_mass;
+    }
+    const Vec3 sliding = relative - c.normal.dot(relative) * c.normal;
+    const Real speed = sliding.norm();
+    if (!(speed > 0)) return Vec3::Zero();
+    // eq. 8.4-6: Coulomb's mu lambda, at most the force that stops the sliding within the step
+    // (the weight along it as eq. 8.4-2's), so that friction never turns the slip round
+    const Vec3 t = sliding / speed;
+    const Vec3 tt = t.cwiseProduct(t);
+    Real w = beta_particle * tt.dot(inv_mass_[us]) + beta_body * body_inv_mass;
+    if (c.element >= 0)
+        for (std::size_t k = 0; k < 3; ++k)
+            w += beta_particle * c.xi[k] * c.xi[k] *
+                 tt.dot(inv_mass_[static_cast<std::size_t>(c.master[k])]);
+    const Real mu = def.friction_decay > 0
+                        ? def.friction_dynamic + (def.friction - def.friction_dynamic) *
+                                                     std::exp(-def.friction_decay * speed)
+                        : def.friction;
+    const Real stop = w > 0 ? speed * dt_new / w : std::numeric_limits<Real>::infinity();
+    return -std::min(mu * c.lambda, stop) * t;
 }
 
 }  // namespace fpmshell

@@ -592,9 +592,10 @@ void ContactSolver::note_penetration(Real penetration, const Constraint& c, long
     stats_.max_penetration_element = c.element;
 }
 
-void ContactSolver::penalty_forces(const std::vector<Vec3>& x, const std::vector<Vec3>& body_u,
+void ContactSolver::penalty_forces(const std::vector<Vec3>& x, const std::vector<Vec3>& v,
+                                   const std::vector<Vec3>& body_u,
                                    std::vector<RigidBodyState>& bodies, Real beta_particle,
-                                   Real beta_body, Real motion, long step,
+                                   Real beta_body, Real dt_new, Real motion, long step,
                                    std::vector<Vec3>& f_contact) {
     Stopwatch watch(stats_.seconds);
     constraints_.clear();
@@ -619,12 +620,14 @@ void ContactSolver::penalty_forces(const std::vector<Vec3>& x, const std::vector
         }
     }
     for (const Constraint& c : constraints_) {
-        f_contact[static_cast<std::size_t>(c.slave)] += c.lambda * c.normal;
-        slave_force_[c.definition] += c.lambda * c.normal;
+        const Vec3 force =
+            c.lambda * c.normal + penalty_friction(c, v, bodies, beta_particle, beta_body, dt_new);
+        f_contact[static_cast<std::size_t>(c.slave)] += force;
+        slave_force_[c.definition] += force;
         if (c.element >= 0)
             for (std::size_t k = 0; k < 3; ++k)
-                f_contact[static_cast<std::size_t>(c.master[k])] -= c.lambda * c.xi[k] * c.normal;
-        if (c.body >= 0) bodies[static_cast<std::size_t>(c.body)].force -= c.lambda * c.normal;
+                f_contact[static_cast<std::size_t>(c.master[k])] -= c.xi[k] * force;
+        if (c.body >= 0) bodies[static_cast<std::size_t>(c.body)].force -= force;
     }
     stats_.active =
         static_cast<long>(std::count_if(constraints_.begin(), constraints_.end(),

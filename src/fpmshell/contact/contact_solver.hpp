@@ -76,12 +76,14 @@ public:
     [[nodiscard]] std::vector<Index> particles() const;
 
     /// Penalty definitions: forces at t_n from the positions x^n, added to f_contact and to
-    /// the bodies' force. beta_* = c1 dt_n dt_{n+1/2} (the position change per unit force
-    /// times the mass) of the particles and of the bodies. motion: the largest particle
-    /// displacement since the last call (sets the search cadence).
-    void penalty_forces(const std::vector<Vec3>& x, const std::vector<Vec3>& body_u,
-                        std::vector<RigidBodyState>& bodies, Real beta_particle, Real beta_body,
-                        Real motion, long step, std::vector<Vec3>& f_contact);
+    /// the bodies' force, with their friction against the velocities v^{n-1/2} (eq. 8.4-6).
+    /// beta_* = c1 dt_n dt_{n+1/2} (the position change per unit force times the mass) of the
+    /// particles and of the bodies. motion: the largest particle displacement since the last
+    /// call (sets the search cadence).
+    void penalty_forces(const std::vector<Vec3>& x, const std::vector<Vec3>& v,
+                        const std::vector<Vec3>& body_u, std::vector<RigidBodyState>& bodies,
+                        Real beta_particle, Real beta_body, Real dt_new, Real motion, long step,
+                        std::vector<Vec3>& f_contact);
 
     /// Lagrange-multiplier definitions: corrects the predicted positions x_pred (particles)
     /// and body_u_pred (bodies) so that no gap is negative at t_{n+1}, and adds the forces
@@ -201,6 +203,11 @@ private:
     /// §8.4: the tangential multiplier `lambda_t` of constraint c (at x: the positions x^n)
     /// moves to the one that stops the slave's slip against the body or face over the step,
     /// within the Coulomb cone |lambda_t| <= mu lambda; returns its change.
+    /// The friction force on the slave of a penalty constraint (eq. 8.4-6): Coulomb's
+    /// mu lambda against its sliding velocity, at most what stops the sliding in the step.
+    [[nodiscard]] Vec3 penalty_friction(const Constraint& c, const std::vector<Vec3>& v,
+                                        const std::vector<RigidBodyState>& bodies,
+                                        Real beta_particle, Real beta_body, Real dt_new) const;
     Vec3 slide(const Constraint& c, Vec3& lambda_t, const std::vector<Vec3>& x,
                std::vector<Vec3>& x_pred, std::vector<Vec3>& body_u_pred,
                const std::vector<RigidBodyState>& bodies, Real beta_particle, Real beta_body,

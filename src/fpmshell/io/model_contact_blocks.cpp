@@ -132,10 +132,6 @@ void read_friction(const YamlMap& m, ContactDefinition& c) {
     if (f) {
         c.friction = f->is_scalar() && f->text() == "stick" ? std::numeric_limits<Real>::infinity()
                                                             : f->non_negative();
-        if (c.friction > 0 && c.method == ContactMethod::Penalty)
-            f->fail(
-                "friction is modelled with the Lagrange multipliers only (method: "
-                "lagrange); remove `friction` or `method: penalty`");
     }
     const auto fd = m.find("friction_dynamic");
     const auto dc = m.find("friction_decay");

@@ -329,8 +329,9 @@ void ExplicitSolver::penalty_contact(const StepLengths& dt) {
     if (decomposition_.distributed()) share_contact_particles(s_.x, s_.x_prev);
     body_u_pred_.resize(bodies_.size());  // here: the bodies at t_n
     for (std::size_t b = 0; b < bodies_.size(); ++b) body_u_pred_[b] = bodies_[b].u;
-    contact_->penalty_forces(s_.x, body_u_pred_, bodies_, dt.c1 * dt.dt_n * dt.dt_new,
-                             dt.dt_n * dt.dt_new, std::sqrt(motion2), steps_, s_.f_contact);
+    contact_->penalty_forces(s_.x, s_.v, body_u_pred_, bodies_, dt.c1 * dt.dt_n * dt.dt_new,
+                             dt.dt_n * dt.dt_new, dt.dt_new, std::sqrt(motion2), steps_,
+                             s_.f_contact);
 }
 
 PrescribedMotionTimes ExplicitSolver::prescribed_motion_times(const CyclePolicy& policy,

@@ -811,11 +811,6 @@ TEST(ModelReader, EveryErrorNamesFileLineAndKey) {
         {k_base + "rigid_bodies:\n  - {name: w, mass: 1, point: [0, 0, 1], normal: [0, 0, -1]}\n"
                   "contact:\n  - {type: rigid, body: w, friction: sticky}\n",
          12, "contact.0.friction", "expected a number, got 'sticky'"},
-        {k_base + "rigid_bodies:\n  - {name: w, mass: 1, point: [0, 0, 1], normal: [0, 0, -1]}\n"
-                  "contact:\n  - {type: rigid, body: w, method: penalty, friction: 0.2}\n",
-         12, "contact.0.friction", "friction is modelled with the Lagrange multipliers only"},
-        {k_base + "contact: [{type: self, method: penalty, friction: 0.2}]\n", 9,
-         "contact.0.friction", "friction is modelled with the Lagrange multipliers only"},
         {k_base + "output:\n  histories:\n    - {name: s, quantity: rigid_striker_uz}\n", 11,
          "output.histories.0.quantity", "the model has no rigid_bodies"},
         {k_base + "rigid_bodies:\n  - {name: w, mass: 1, point: [0, 0, 1], normal: [0, 0, -1]}\n"
