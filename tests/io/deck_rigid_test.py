@@ -236,7 +236,7 @@ check("the spin changes the run", spin_history is not None and spin_history != h
 
 # *CONTACT_TIED_SURFACE_TO_SURFACE_OFFSET: the doubler (part 2) tied to the plate (part 1) instead
 # of welded, lowered to 1.5 mm above the plate (within the tie's reach, the larger thickness,
-# 2 mm) -> `constraints` of type tied; a tiebreak is refused
+# 2 mm) -> `constraints` of type tied
 mesh_text = read(os.path.join(HAMMER, "plate_hammer_mesh.k"))
 lowered = "\n".join(
     line[:40] + "           0.003" + line[56:]
@@ -283,10 +283,28 @@ history_break = twin_pair("tiebreak", d, t)
 if history_break is not None:
     check("tiebreak: the ties that let go change the run", history_break != history_tied,
           "the same history as the plain ties")
-r = fpmshell("check", write(os.path.join(WORK, "tiebreak"), "model.k", deck[:-len(END)] + TIE.replace(
-    "*CONTACT_TIED_SURFACE_TO_SURFACE_OFFSET_ID", "*CONTACT_TIEBREAK_SURFACE_TO_SURFACE_ID") + END))
-check("a tiebreak contact is refused with one sentence", r.returncode == 2 and
-      "*CONTACT_TIEBREAK_SURFACE_TO_SURFACE_ID" in r.stderr and "tiebreak" in r.stderr and
+# *CONTACT_TIEBREAK_SURFACE_TO_SURFACE: the same glue given as stresses, NFLS 12.8 kPa and SFLS
+# 6.4 kPa: times each doubler node's area (an inner node's 12.5 mm x 12.5 mm) the nodes version's
+# 2 N and 1 N -> failure {normal_stress, shear_stress} (eq. 6.12-3)
+BREAK_S = ("*CONTACT_TIEBREAK_SURFACE_TO_SURFACE_ID\n         7doubler glued\n"
+           "         2         1         3         3\n\n\n$#    nfls      sfls    tblcid    thkoff\n"
+           "   12800.0    6400.0\n")
+folder = os.path.join(WORK, "tiebreak_surfaces")
+d = write(folder, "model.k", deck.replace(WELDS, "")[:-len(END)] + BREAK_S + END)
+t = write(folder, "model.yaml", twin.replace(
+    "\nconstraints:\n", "\nconstraints:\n  - {type: tied, nodes: part_2, elements: part_1, failure: "
+    "{normal_stress: 12800, shear_stress: 6400}}\n").replace(
+    "".join(f"  - {{type: rigid, nodes: weld_{w}}}\n" for w in "abcd"), ""))
+with open(os.path.join(folder, "plate_hammer_mesh.k"), "w") as f:
+    f.write(lowered)
+history_break_s = twin_pair("tiebreak by stresses", d, t)
+if history_break_s is not None:
+    check("tiebreak by stresses: the ties that let go change the run",
+          history_break_s != history_tied, "the same history as the plain ties")
+r = fpmshell("check", write(os.path.join(WORK, "tiebreak_table"), "model.k",
+                            deck[:-len(END)] + BREAK_S.replace("    6400.0\n", "    6400.0         3\n") + END))
+check("a tiebreak's table of stresses is refused with one sentence", r.returncode == 2 and
+      "*CONTACT_TIEBREAK_SURFACE_TO_SURFACE_ID" in r.stderr and "TBLCID" in r.stderr and
       len(r.stderr.strip().splitlines()) == 1, r.stderr)
 
 # *RIGIDWALL_PLANAR NSIDEX: the floor acts on every node but those of the plate's edge (node set

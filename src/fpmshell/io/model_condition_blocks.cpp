@@ -251,16 +251,25 @@ void read_tied_surface(const YamlValue& item, Model& model) {
     t.tolerance = m.non_negative_or("tolerance", 0.0);
     if (const auto f = m.find("failure")) {
         // a tiebreak (eq. 6.12-2): the forces at which a tie lets go, and the exponents
-        const YamlMap fm =
-            f->map({"normal_force", "shear_force", "normal_exponent", "shear_exponent"});
+        const YamlMap fm = f->map({"normal_force", "shear_force", "normal_stress", "shear_stress",
+                                   "normal_exponent", "shear_exponent"});
         t.normal_force = fm.non_negative_or("normal_force", 0.0);
         t.shear_force = fm.non_negative_or("shear_force", 0.0);
+        t.normal_stress = fm.non_negative_or("normal_stress", 0.0);  // eq. 6.12-3
+        t.shear_stress = fm.non_negative_or("shear_stress", 0.0);
         t.normal_exponent = fm.positive_or("normal_exponent", 2.0);
         t.shear_exponent = fm.positive_or("shear_exponent", 2.0);
-        if (t.normal_force == 0 && t.shear_force == 0)
+        const bool forces = fm.count({"normal_force", "shear_force"}) > 0;
+        const bool stresses = fm.count({"normal_stress", "shear_stress"}) > 0;
+        if (forces && stresses)
+            f->fail(
+                "give the tiebreak's limits as forces (normal_force, shear_force) or as "
+                "stresses (normal_stress, shear_stress), not both");
+        if (t.normal_force == 0 && t.shear_force == 0 && t.normal_stress == 0 &&
+            t.shear_stress == 0)
             f->fail(
                 "a tiebreak needs normal_force or shear_force > 0 (the force at which a tie "
-                "lets go)");
+                "lets go), or normal_stress or shear_stress > 0");
     }
     model.tied_surfaces.push_back(std::move(t));
 }

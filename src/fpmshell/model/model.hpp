@@ -238,6 +238,9 @@ struct TiedSurface {
     /// >= 1, f_n its force in tension and f_s in shear (eq. 6.12-2); 0 forces: it never does
     Real normal_force = 0, shear_force = 0;
     Real normal_exponent = 2, shear_exponent = 2;
+    /// or by stresses (LS-DYNA's *CONTACT_TIEBREAK_SURFACE_TO_SURFACE NFLS, SFLS): each tie's
+    /// forces are these times its slave's area, a third of its triangles' (eq. 6.12-3)
+    Real normal_stress = 0, shear_stress = 0;
 };
 
 enum class ContactType { Self, Rigid };

@@ -82,6 +82,17 @@ TiedSurfaces::TiedSurfaces(const Model& model, const std::vector<Real>& element_
                 ++untied_;
         }
     }
+    // eq. 6.12-3: each slave's area, for the limits given as stresses
+    std::vector<Real> node_area(model.nodes.size(), 0.0);
+    for (const auto& t : model.triangles) {
+        const Vec3& a = model.nodes[static_cast<std::size_t>(t[0])];
+        const Real third = (model.nodes[static_cast<std::size_t>(t[1])] - a)
+                               .cross(model.nodes[static_cast<std::size_t>(t[2])] - a)
+                               .norm() /
+                           6.0;
+        for (const Index p : t) node_area[static_cast<std::size_t>(p)] += third;
+    }
+    for (Tie& t : ties_) t.area = node_area[static_cast<std::size_t>(t.slave)];
     broken_.assign(ties_.size(), 0);
     impulse_.assign(ties_.size(), Vec3::Zero());
     tension_.assign(ties_.size(), 0.0);
@@ -158,12 +169,16 @@ void TiedSurfaces::impose(ParticleState& s, const BoundaryConditions& bc, Real i
                       : t.side < 0 ? std::max(Real(0), along)
                                    : std::abs(along);
         shear_[i] = (force - along * n).norm();
-        if (surface.normal_force == 0 && surface.shear_force == 0) continue;
+        // the limits: forces, or stresses times the slave's area (eq. 6.12-3)
+        const Real normal_limit =
+            surface.normal_force > 0 ? surface.normal_force : surface.normal_stress * t.area;
+        const Real shear_limit =
+            surface.shear_force > 0 ? surface.shear_force : surface.shear_stress * t.area;
+        if (normal_limit == 0 && shear_limit == 0) continue;
         Real criterion = 0;
-        if (surface.normal_force > 0)
-            criterion += std::pow(tension_[i] / surface.normal_force, surface.normal_exponent);
-        if (surface.shear_force > 0)
-            criterion += std::pow(shear_[i] / surface.shear_force, surface.shear_exponent);
+        if (normal_limit > 0)
+            criterion += std::pow(tension_[i] / normal_limit, surface.normal_exponent);
+        if (shear_limit > 0) criterion += std::pow(shear_[i] / shear_limit, surface.shear_exponent);
         if (criterion >= 1) broken_[i] = 1;
     }
 }

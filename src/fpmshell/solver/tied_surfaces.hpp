@@ -65,6 +65,7 @@ private:
         Index surface = -1;  ///< its entry of Model::tied_surfaces
         /// +1 / -1: the slave starts on the side of the face normal / against it; 0 on the face
         int side = 0;
+        Real area = 0;  ///< the slave's area: a third of its triangles' at t = 0 (eq. 6.12-3)
     };
     const Model* model_ = nullptr;
     std::vector<Tie> ties_;

@@ -4,7 +4,8 @@
 //   point of its face, to rounding, and the balance closes (the ties do no work);
 // - free, the web thrown sideways: the momentum of the whole is conserved and the flange is
 //   dragged along;
-// - a particle with no face within the tolerance stays free (counted).
+// - a particle with no face within the tolerance stays free (counted);
+// - a tiebreak lets go at its force, or at its stress times the slave's area.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -203,4 +204,44 @@ TEST(TiedSurfaces, ATiebreakLetsGoAtItsForce) {
             EXPECT_GT(highest, f_f);  // the forces went past F_f: the tie held by choice
         }
     }
+}
+
+// A tiebreak given by stresses (eq. 6.12-3, LS-DYNA's *CONTACT_TIEBREAK_SURFACE_TO_SURFACE NFLS):
+// each tie's limit is the stress times its slave's area, a third of the web's triangles at it
+// (the inner edge particles 0.005 m^2, the end ones 0.0033 and 0.0017): the same pull, every tie
+// letting go exactly when its own tension reaches its own limit.
+TEST(TiedSurfaces, ATiebreakByStressLetsGoAtItsStressTimesTheArea) {
+    const Real sigma_f = 8000;  // Pa: 40 N on an inner particle
+    TJoint t = t_joint(true);
+    t.model.curves.push_back({"ramp", {{0, 0}, {1e-3, 1}}});
+    for (const Index p : t.top)
+        t.model.loads.push_back({LoadType::Force, {p}, {}, 0, Vec3(0, 0, 200), 0});
+    t.model.tied_surfaces[0].normal_stress = sigma_f;
+    std::vector<Real> area(t.model.nodes.size(), 0.0);
+    for (const auto& tri : t.model.triangles) {
+        const Vec3& a = t.model.nodes[static_cast<std::size_t>(tri[0])];
+        const Real third = (t.model.nodes[static_cast<std::size_t>(tri[1])] - a)
+                               .cross(t.model.nodes[static_cast<std::size_t>(tri[2])] - a)
+                               .norm() /
+                           6;
+        for (const Index p : tri) area[static_cast<std::size_t>(p)] += third;
+    }
+    ExplicitSolver s(t.model);
+    const TiedSurfaces& ties = *s.tied_surfaces();
+    const std::vector<Index> slaves = ties.slaves();
+    EXPECT_NEAR(area[static_cast<std::size_t>(t.edge[2])], 0.005, 1e-15);
+    std::vector<std::uint8_t> gone(ties.tied(), 0);
+    while (s.time() < 3e-3) {
+        const std::vector<std::uint8_t> before = gone;
+        s.step(1e30);
+        for (std::size_t i = 0; i < ties.tied(); ++i) {
+            if (before[i]) continue;
+            if (ties.tension()[i] >= sigma_f * area[static_cast<std::size_t>(slaves[i])])
+                gone[i] = 1;
+        }
+        std::size_t count = 0;
+        for (const std::uint8_t g : gone) count += g;
+        EXPECT_EQ(ties.broken(), count) << "t " << s.time();
+    }
+    EXPECT_EQ(ties.broken(), ties.tied());
 }

@@ -410,6 +410,7 @@ std::string DeckTranslator::contact_friction(const Card& g) {
 void DeckTranslator::tied_contact(const DeckBlock& b) {
     const bool edge = starts_with(b.keyword, "CONTACT_TIED_SHELL_EDGE_TO_SURFACE");
     const bool tiebreak = starts_with(b.keyword, "CONTACT_TIEBREAK_NODES_TO_SURFACE");
+    const bool tiebreak_surface = starts_with(b.keyword, "CONTACT_TIEBREAK_SURFACE_TO_SURFACE");
     const std::set<std::string> opt = options_of(b.keyword, edge ? 6 : 5);
     for (const std::string& o : opt)
         if (o != "ID" && o != "TITLE" && o != "MPP" && o != "OFFSET" && o != "CONSTRAINED")
@@ -459,6 +460,25 @@ void DeckTranslator::tied_contact(const DeckBlock& b) {
                       ", normal_exponent: " + num(nen) + ", shear_exponent: " + num(mes) + "}";
         else
             note(b, g.line(), "NFLF and SFLF are 0: the ties never let go");
+    }
+    if (tiebreak_surface) {
+        // the fourth card: NFLS, SFLS (the stresses at which a tie lets go, eq. 6.12-3: times
+        // each slave node's area), TBLCID, THKOFF
+        const Card g = required_card(b, c + 3, "NFLS, SFLS, TBLCID, THKOFF");
+        const Real nfls = g.real(0, "NFLS"), sfls = g.real(1, "SFLS");
+        if (g.id(2, "TBLCID") != 0)
+            g.fail("TBLCID: a table of the failure stresses is not supported (NFLS, SFLS)");
+        if (g.id(3, "THKOFF") != 0)
+            g.fail("THKOFF: thickness offsets of the tie are not supported (0 only)");
+        if (nfls < 0 || sfls < 0) g.fail("NFLS and SFLS must be >= 0");
+        if (nfls > 0 || sfls > 0)
+            failure =
+                ", failure: {normal_stress: " + num(nfls) + ", shear_stress: " + num(sfls) + "}";
+        else
+            note(b, g.line(), "NFLS and SFLS are 0: the ties never let go");
+        note(b, g.line(),
+             "once a tie lets go its faces are free of each other unless another contact "
+             "covers them (LS-DYNA's tiebreak goes on as a surface-to-surface contact)");
     }
     constraints_.push_back({"  - {type: tied, nodes: " + yaml_name(slaves) +
                                 ", elements: " + yaml_name(masters) + failure + "}",

@@ -58,6 +58,7 @@ const std::vector<CardReader>& card_readers() {
         {"CONTACT_TIED_SHELL_EDGE_TO_SURFACE", true, P::References, &T::tied_contact},
         {"CONTACT_TIED_SURFACE_TO_SURFACE", true, P::References, &T::tied_contact},
         {"CONTACT_TIEBREAK_NODES_TO_SURFACE", true, P::References, &T::tied_contact},
+        {"CONTACT_TIEBREAK_SURFACE_TO_SURFACE", true, P::References, &T::tied_contact},
         {"CONTACT_FORMING_ONE_WAY_SURFACE_TO_SURFACE", true, P::References, &T::contact},
         {"CONTACT_FORMING_SURFACE_TO_SURFACE", true, P::References, &T::contact},
         {"CONTACT_FORMING_NODES_TO_SURFACE", true, P::References, &T::contact},
@@ -229,7 +230,8 @@ std::string DeckTranslator::unsupported_reason(const std::string& k) {
                "_NODES_TO_SURFACE, _GENERAL, *CONTACT_SINGLE_SURFACE, _SURFACE_TO_SURFACE, "
                "_NODES_TO_SURFACE and *CONTACT_FORMING_ (as its shell self-contact), and "
                "*CONTACT_TIED_NODES_TO_SURFACE, _SHELL_EDGE_TO_SURFACE, _SURFACE_TO_SURFACE and "
-               "*CONTACT_TIEBREAK_NODES_TO_SURFACE (other tiebreak forms are not supported)";
+               "*CONTACT_TIEBREAK_NODES_TO_SURFACE and _SURFACE_TO_SURFACE (other tiebreak forms "
+               "are not supported)";
     if (starts_with(k, "INITIAL_"))
         return "fpmshell reads *INITIAL_VELOCITY (with NSIDEX), *INITIAL_VELOCITY_NODE, "
                "*INITIAL_VELOCITY_GENERATION and *INITIAL_VELOCITY_RIGID_BODY";
