@@ -37,15 +37,9 @@ Vec3 ContactSolver::slide(const Constraint& c, Vec3& lambda_t, const std::vector
     const Vec3 slip = tangential_slip(c, x, x_pred, body_u_pred, bodies);
     Vec3 trial = lambda_t;
     if (const Real length = slip.norm(); length > 0) {
-        // the multiplier that stops the slip, with the weight along it (eq. 8.4-2): the slave,
-        // the face's corners by their xi^2, the body
+        // the multiplier that stops the slip, with the weight along it (eq. 8.4-2)
         const Vec3 t = slip / length;
-        const Vec3 tt = t.cwiseProduct(t);
-        Real w = beta_particle * tt.dot(inv_mass_[us]) + beta_body * body_inv_mass;
-        if (c.element >= 0)
-            for (std::size_t k = 0; k < 3; ++k)
-                w += beta_particle * c.xi[k] * c.xi[k] *
-                     tt.dot(inv_mass_[static_cast<std::size_t>(c.master[k])]);
+        const Real w = weight_along(c, t, beta_particle, beta_body, bodies);
         if (w > 0) trial += (length / w) * t;
     }
     // the Coulomb cone (eq. 8.4-3); no force without a normal one, whatever the coefficient
@@ -83,24 +77,14 @@ Vec3 ContactSolver::penalty_friction(const Constraint& c, const std::vector<Vec3
     if (c.element >= 0)
         for (std::size_t k = 0; k < 3; ++k)
             relative -= c.xi[k] * v[static_cast<std::size_t>(c.master[k])];
-    Real body_inv_mass = 0;
-    if (c.body >= 0) {
-        const RigidBodyState& b = bodies[static_cast<std::size_t>(c.body)];
-        relative -= b.v;
-        body_inv_mass = b.inv_mass;
-    }
+    if (c.body >= 0) relative -= bodies[static_cast<std::size_t>(c.body)].v;
     const Vec3 sliding = relative - c.normal.dot(relative) * c.normal;
     const Real speed = sliding.norm();
     if (!(speed > 0)) return Vec3::Zero();
     // eq. 8.4-6: Coulomb's mu lambda, at most the force that stops the sliding within the step
     // (the weight along it as eq. 8.4-2's), so that friction never turns the slip round
     const Vec3 t = sliding / speed;
-    const Vec3 tt = t.cwiseProduct(t);
-    Real w = beta_particle * tt.dot(inv_mass_[us]) + beta_body * body_inv_mass;
-    if (c.element >= 0)
-        for (std::size_t k = 0; k < 3; ++k)
-            w += beta_particle * c.xi[k] * c.xi[k] *
-                 tt.dot(inv_mass_[static_cast<std::size_t>(c.master[k])]);
+    const Real w = weight_along(c, t, beta_particle, beta_body, bodies);
     const Real mu = def.friction_decay > 0
                         ? def.friction_dynamic + (def.friction - def.friction_dynamic) *
                                                      std::exp(-def.friction_decay * speed)

@@ -558,9 +558,9 @@ void ContactSolver::collect_rigid(const Definition& d, const std::vector<Vec3>& 
         out.insert(out.end(), collect_chunks_[chunk].out.begin(), collect_chunks_[chunk].out.end());
 }
 
-Real ContactSolver::weight(const Constraint& c, Real beta_particle, Real beta_body,
-                           const std::vector<RigidBodyState>& bodies) const {
-    const Vec3 n2 = c.normal.cwiseProduct(c.normal);
+Real ContactSolver::weight_along(const Constraint& c, const Vec3& along, Real beta_particle,
+                                 Real beta_body, const std::vector<RigidBodyState>& bodies) const {
+    const Vec3 n2 = along.cwiseProduct(along);
     Real w = beta_particle * n2.dot(inv_mass_[static_cast<std::size_t>(c.slave)]);
     if (c.element >= 0)
         for (std::size_t k = 0; k < 3; ++k)

@@ -186,7 +186,14 @@ private:
                        const std::vector<Vec3>& body_u, bool lagrange,
                        std::vector<Constraint>& out);
     [[nodiscard]] Real weight(const Constraint& c, Real beta_particle, Real beta_body,
-                              const std::vector<RigidBodyState>& bodies) const;
+                              const std::vector<RigidBodyState>& bodies) const {
+        return weight_along(c, c.normal, beta_particle, beta_body, bodies);
+    }
+    /// The position change per unit force of constraint c along the unit direction `along`
+    /// (eqs. 8.3-2, 8.4-2): the slave, the face's corners by their xi^2, the body.
+    [[nodiscard]] Real weight_along(const Constraint& c, const Vec3& along, Real beta_particle,
+                                    Real beta_body,
+                                    const std::vector<RigidBodyState>& bodies) const;
     void note_penetration(Real penetration, const Constraint& c, long step);
     /// The predicted positions after constraint c's multiplier grows by dl (§8.3): its particles
     /// and body move by beta dl M^-1 G; with stamp >= 0 the sweeps' bookkeeping records that

@@ -1,10 +1,11 @@
 // Particle shares of a rigid section with a given inertia (see rigid_inertia_shares.hpp).
 #include "fpmshell/model/rigid_inertia_shares.hpp"
 
-#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
 #include <map>
+
+#include "fpmshell/core/symmetric_solve.hpp"
 
 namespace fpmshell {
 
@@ -39,12 +40,7 @@ RigidInertiaShares rigid_inertia_shares(const Model& model, Index section) {
         spread += (a / area_sum) * r * r.transpose();
     }
     // a = S^+ (c - xbar): the pseudo-inverse, as the particles of a flat part span a plane only
-    const Eigen::SelfAdjointEigenSolver<Mat3> eigen(spread);
-    const Vec3 values = eigen.eigenvalues();
-    const Real floor = 1e-12 * std::max(values.maxCoeff(), Real(0));
-    Vec3 projected = eigen.eigenvectors().transpose() * (body.centre - mean);
-    for (int k = 0; k < 3; ++k) projected[k] = values[k] > floor ? projected[k] / values[k] : 0;
-    const Vec3 tilt = eigen.eigenvectors() * projected;
+    const Vec3 tilt = symmetric_pseudo_solve(spread, body.centre - mean);
     // the rotary inertia: the mass share times the faces' mean area / 8 (§6.2 option B, h = 0)
     const Real gyration2 = area_sum / static_cast<Real>(n_faces) / 8.0;
     Vec3 first = Vec3::Zero();
@@ -61,7 +57,7 @@ RigidInertiaShares rigid_inertia_shares(const Model& model, Index section) {
                 "particle " +
                 std::to_string(p + 1) + " would get a negative share of its mass";
     }
-    const Real size = std::sqrt(std::max(values.maxCoeff(), Real(0)));
+    const Real size = std::sqrt(std::max(spread.trace(), Real(0)));
     if (!out.problem && (first / body.mass - body.centre).norm() > 1e-9 * std::max(size, 1e-300))
         out.problem = "its centre of mass lies off the plane of its particles";
     return out;

@@ -9,6 +9,7 @@
 #include <numeric>
 
 #include "fpmshell/core/errors.hpp"
+#include "fpmshell/core/symmetric_solve.hpp"
 #include "fpmshell/model/rigid_body_partition.hpp"
 #include "fpmshell/model/rigid_inertia_shares.hpp"
 #include "fpmshell/solver/particle_state.hpp"
@@ -140,12 +141,7 @@ void NodalRigidBodies::make_initial_motion_rigid(ParticleState& s) const {
                 inertia += c.delta0;
                 spin += c.delta0 * s.omega[static_cast<std::size_t>(c.o)];
             }
-        const Eigen::SelfAdjointEigenSolver<Mat3> eigen(inertia);
-        const Vec3 values = eigen.eigenvalues();
-        const Real floor = 1e-12 * std::max(values.maxCoeff(), Real(0));
-        Vec3 projected = eigen.eigenvectors().transpose() * spin;
-        for (int k = 0; k < 3; ++k) projected[k] = values[k] > floor ? projected[k] / values[k] : 0;
-        const Vec3 omega = eigen.eigenvectors() * projected;
+        const Vec3 omega = symmetric_pseudo_solve(inertia, spin);
         for (const Index ip : body) {
             const auto p = static_cast<std::size_t>(ip);
             s.v[p] = velocity + omega.cross(s.x[p] - centre);
@@ -274,13 +270,7 @@ void NodalRigidBodies::make_rigid(ParticleState& s, const PrescribedMotionTimes&
                     l[k] = 0;
                 }
             }
-            const Eigen::SelfAdjointEigenSolver<Mat3> eigen(tensor);
-            const Vec3 values = eigen.eigenvalues();
-            const Real floor = 1e-12 * std::max(values.maxCoeff(), Real(0));
-            Vec3 projected = eigen.eigenvectors().transpose() * l;
-            for (int k = 0; k < 3; ++k)
-                projected[k] = values[k] > floor ? projected[k] / values[k] : 0;
-            Vec3 w = eigen.eigenvectors() * projected;
+            Vec3 w = symmetric_pseudo_solve(tensor, l);
             for (int k = 0; k < 3; ++k)
                 if (fixed[static_cast<std::size_t>(3 + k)]) w[k] = held_omega[k];  // exactly
             return w;

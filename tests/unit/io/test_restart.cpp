@@ -327,6 +327,28 @@ TEST(Restart, TheTubeWritesTheSameResultsOnOneAndTwoThreads) {
 // The ties' state (theory.md §6.12): plate_hammer.yaml with the doubler glued to the plate by
 // tiebreaks instead of welds, stopped after the hammer has torn some ties off (step 700, the
 // blow at about step 545) and resumed: the same bytes as the run that never stopped.
+/// The model run straight, and stopped at step `stop` then resumed from its restart file: the
+/// same history.csv and energy.csv bytes.
+void expect_resume_bit_for_bit(const Model& model, const std::string& name, long stop) {
+    RunOptions straight;
+    straight.output_dir = fresh_dir("straight_" + name);
+    straight.echo = false;
+    straight.quiet = true;
+    ASSERT_EQ(run_model(model, straight), 0);
+    RunOptions first = straight;
+    first.output_dir = fresh_dir("pieces_" + name);
+    first.stop_at_step = stop;
+    ASSERT_EQ(run_model(model, first), 0);
+    RunOptions second = first;
+    second.stop_at_step = 0;
+    second.resume = true;
+    ASSERT_EQ(run_model(model, second), 0);
+    for (const char* file : {"history.csv", "energy.csv"})
+        EXPECT_EQ(bytes_of(first.output_dir / file), bytes_of(straight.output_dir / file)) << file;
+    fs::remove_all(straight.output_dir);
+    fs::remove_all(first.output_dir);
+}
+
 TEST(Restart, BrokenTiesResumeBitForBit) {
     Model model = read_model(std::string(FPMSHELL_SOURCE_DIR) +
                              "/examples/decks/plate_hammer/plate_hammer.yaml");
@@ -344,23 +366,7 @@ TEST(Restart, BrokenTiesResumeBitForBit) {
         ASSERT_GT(probe.tied_surfaces()->broken(), 0u) << "no tie let go before the stop";
         ASSERT_LT(probe.tied_surfaces()->broken(), probe.tied_surfaces()->tied());
     }
-    RunOptions straight;
-    straight.output_dir = fresh_dir("straight_ties");
-    straight.echo = false;
-    straight.quiet = true;
-    ASSERT_EQ(run_model(model, straight), 0);
-    RunOptions first = straight;
-    first.output_dir = fresh_dir("pieces_ties");
-    first.stop_at_step = 700;
-    ASSERT_EQ(run_model(model, first), 0);
-    RunOptions second = first;
-    second.stop_at_step = 0;
-    second.resume = true;
-    ASSERT_EQ(run_model(model, second), 0);
-    for (const char* file : {"history.csv", "energy.csv"})
-        EXPECT_EQ(bytes_of(first.output_dir / file), bytes_of(straight.output_dir / file)) << file;
-    fs::remove_all(straight.output_dir);
-    fs::remove_all(first.output_dir);
+    expect_resume_bit_for_bit(model, "ties", 700);
 }
 
 TEST(Restart, ARigidSolidResumesBitForBit) {
@@ -370,23 +376,7 @@ TEST(Restart, ARigidSolidResumesBitForBit) {
         read_model(std::string(FPMSHELL_SOURCE_DIR) + "/examples/decks/block_drop/block_drop.yaml");
     model.initial_conditions[0].spin = Vec3(30, 0, 20);  // a spin too: every part of (6.11-12)
     model.initial_conditions[0].spin_about_mass_centre = true;
-    RunOptions straight;
-    straight.output_dir = fresh_dir("straight_solid");
-    straight.echo = false;
-    straight.quiet = true;
-    ASSERT_EQ(run_model(model, straight), 0);
-    RunOptions first = straight;
-    first.output_dir = fresh_dir("pieces_solid");
-    first.stop_at_step = 300;
-    ASSERT_EQ(run_model(model, first), 0);
-    RunOptions second = first;
-    second.stop_at_step = 0;
-    second.resume = true;
-    ASSERT_EQ(run_model(model, second), 0);
-    for (const char* file : {"history.csv", "energy.csv"})
-        EXPECT_EQ(bytes_of(first.output_dir / file), bytes_of(straight.output_dir / file)) << file;
-    fs::remove_all(straight.output_dir);
-    fs::remove_all(first.output_dir);
+    expect_resume_bit_for_bit(model, "solid", 300);
 }
 
 }  // namespace
