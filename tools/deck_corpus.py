@@ -164,13 +164,16 @@ def main():
     table = [r for r in rows if r[6]]
     if table:
         lines += ["## Published LS-DYNA results beside fpmshell's", "",
-                  "| deck | quantity | LS-DYNA | fpmshell | difference | source |", "|---|---|---|---|---|---|"]
+                  "| deck | quantity | LS-DYNA | LS-DYNA's runs spread | fpmshell | difference | source |",
+                  "|---|---|---|---|---|---|---|"]
         for deck, *_, compared in table:
             for entry, value in compared:
                 ref = entry["lsdyna"]
                 diff = "%+.1f %%" % (100 * (value - ref) / abs(ref)) if value is not None and ref else ""
-                lines.append("| %s | %s | %.6g %s | %s | %s | %s |" % (
-                    deck["name"], entry["quantity"], ref, entry["unit"],
+                spread = ("%.6g to %.6g" % tuple(entry["lsdyna_range"])
+                          if "lsdyna_range" in entry else "")
+                lines.append("| %s | %s | %.6g %s | %s | %s | %s | %s |" % (
+                    deck["name"], entry["quantity"], ref, entry["unit"], spread,
                     "%.6g %s" % (value, entry["unit"]) if value is not None else "not in the results",
                     diff, deck.get("published_source", "")))
         lines.append("")

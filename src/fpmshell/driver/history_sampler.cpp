@@ -110,11 +110,14 @@ std::vector<Real> sample_histories(const Model& model, const ExplicitSolver& sol
                                                                   : f.z());
             continue;
         }
-        Real acc = 0;
+        Real acc = 0, weighted = 0, mass = 0;
         Real lo = std::numeric_limits<Real>::infinity(), hi = -lo;
         for (Index p : h.nodes) {
             const Real v = particle_quantity(solver, h.quantity, p);
+            const Real m = solver.state().mass[static_cast<std::size_t>(p)];
             acc += v;
+            weighted += m * v;
+            mass += m;
             lo = std::min(lo, v);
             hi = std::max(hi, v);
         }
@@ -125,6 +128,9 @@ std::vector<Real> sample_histories(const Model& model, const ExplicitSolver& sol
                 break;
             case Reduce::Mean:
                 out.push_back(h.nodes.empty() ? 0 : acc / static_cast<Real>(h.nodes.size()));
+                break;
+            case Reduce::MassMean:
+                out.push_back(mass > 0 ? weighted / mass : 0);
                 break;
             case Reduce::Max:
                 out.push_back(hi);

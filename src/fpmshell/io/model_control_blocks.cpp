@@ -180,7 +180,11 @@ void read_output(const std::optional<YamlValue>& v, Model& model) {
     std::vector<std::string> quantity_names;
     for (const auto& [name, q] : quantities) quantity_names.push_back(name);
     static const std::vector<std::pair<std::string, Reduce>> reductions = {
-        {"sum", Reduce::Sum}, {"max", Reduce::Max}, {"min", Reduce::Min}, {"mean", Reduce::Mean}};
+        {"sum", Reduce::Sum},
+        {"max", Reduce::Max},
+        {"min", Reduce::Min},
+        {"mean", Reduce::Mean},
+        {"mass_mean", Reduce::MassMean}};
 
     for (const YamlValue& item : h->list("history requests")) {
         const YamlMap r = item.map({"name", "nodes", "quantity", "reduce"});
@@ -227,12 +231,12 @@ void read_output(const std::optional<YamlValue>& v, Model& model) {
         for (const auto& [n, quantity] : quantities)
             if (n == chosen) req.quantity = quantity;
         if (const auto red = r.find("reduce")) {
-            const std::string rn = red->choice({"sum", "max", "min", "mean"});
+            const std::string rn = red->choice({"sum", "max", "min", "mean", "mass_mean"});
             for (const auto& [n, reduce] : reductions)
                 if (n == rn) req.reduce = reduce;
         } else if (req.nodes.size() > 1) {
             nodes.fail("the set '" + nodes.name() + "' has " + std::to_string(req.nodes.size()) +
-                       " nodes, so the history needs `reduce: sum`, max, min or mean");
+                       " nodes, so the history needs `reduce: sum`, max, min, mean or mass_mean");
         }
         o.histories.push_back(req);
     }

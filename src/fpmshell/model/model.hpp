@@ -312,7 +312,9 @@ enum class Quantity {
     ContactForceY,
     ContactForceZ
 };
-enum class Reduce { Single, Sum, Max, Min, Mean };
+/// How a history reduces its set: MassMean weighs each particle by its mass (for velocities, the
+/// set's momentum over its mass: LS-DYNA's MATSUM rigid-body velocity of a part).
+enum class Reduce { Single, Sum, Max, Min, Mean, MassMean };
 
 struct HistoryRequest {
     std::string name;

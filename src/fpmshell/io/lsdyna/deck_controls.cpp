@@ -126,6 +126,18 @@ void DeckTranslator::database(const DeckBlock& b) {
         if (k == "DATABASE_RCFORC") contact_forces_ = true;
         return;
     }
+    if (k == "DATABASE_MATSUM") {  // of its columns, each part's rigid-body velocity
+        if (dt > 0 && (!every_ || dt < every_value_)) {
+            every_value_ = dt;
+            every_ = Line{num(dt), {&b, f.line()}};
+        }
+        part_velocities_ = Origin{&b, f.line()};
+        note(b, b.line,
+             "each part's velocity (its momentum over its mass, MATSUM's rigid-body "
+             "velocity) as the histories part<PID>_vx, _vy, _vz; its energies are in "
+             "energy.csv for the whole model only");
+        return;
+    }
     note(b, b.line,
          "ignored: an output fpmshell does not write (it writes history.csv, "
          "energy.csv and VTU frames)");
@@ -166,6 +178,16 @@ void DeckTranslator::write_output(std::vector<Line>& out) {
                                          "rigid_rigidwall{}_force_{}}}",
                                          w.id, c, w.id, c),
                              w.at});
+    std::set<long long> parts;  // of shells, and of rigid solids (their faces)
+    for (const auto& [pid, part] : element_parts_) parts.insert(pid);
+    for (const auto& [pid, part] : solid_parts_) parts.insert(pid);
+    if (part_velocities_)
+        for (const long long pid : parts)
+            for (const char* c : {"x", "y", "z"})
+                h.push_back({fmt::format("    - {{name: part{}_v{}, nodes: part_{}, quantity: v{}, "
+                                         "reduce: mass_mean}}",
+                                         pid, c, pid, c),
+                             *part_velocities_});
     // the contact definitions come after the walls' in the model (write_walls)
     if (contact_forces_)
         for (std::size_t k = 0; k < contact_ids_.size(); ++k)

@@ -342,6 +342,7 @@ private:
     long long fields_every_npltc_ = 0;
     bool wall_forces_ = false;
     bool contact_forces_ = false;  ///< *DATABASE_RCFORC: a history of each contact's force
+    std::optional<Origin> part_velocities_;  ///< *DATABASE_MATSUM: each part's momentum velocity
     std::vector<std::pair<long long, Origin>> contact_ids_;  ///< per contact card: its number
     std::vector<std::pair<long long, Origin>> history_nodes_;
     std::map<const DeckBlock*, long long> reading_numbers_;
