@@ -95,6 +95,7 @@ struct ElasticTriangleLoads {
     std::array<T, 3> membrane_force, bending_moment;  ///< N, M averaged over the element
     std::array<T, 3> membrane_resultant;  ///< smoothed membrane only: N plus its viscous part
     T characteristic_length;              ///< L_c = 2A / l_max of the current triangle (§6.4)
+    T current_area;                       ///< A of the current triangle (eq. 6.4-2)
     MaskOf<T> valid;                      ///< lanes inside the bounds above
 };
 
@@ -361,6 +362,7 @@ template <class T, class ReturnMapping = NoReturnMapping>
     ElasticTriangleLoads<T> out = local_triangle_loads(local, valid, sec, thickness, stress,
                                                        viscous_rate, yield, return_mapping);
     out.characteristic_length = checks.characteristic_length;
+    out.current_area = checks.area_ratio * local.area;
     return out;
 }
 

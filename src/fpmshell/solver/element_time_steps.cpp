@@ -56,6 +56,12 @@ ElementTimeSteps::ElementTimeSteps(const Model& model, const MeshTopology& topol
     for (const Section& sec : model.sections)
         rigid_section_.push_back(model.materials[static_cast<std::size_t>(sec.material)].rigid ? 1
                                                                                                : 0);
+    initial_volume_.resize(model.triangles.size());
+    for (std::size_t e = 0; e < model.triangles.size(); ++e) {
+        const auto [p0, p1, p2] = corners_of(model.triangles[e], model.nodes);
+        initial_volume_[e] = 0.5 * (p1 - p0).cross(p2 - p0).norm() *
+                             model.sections[static_cast<std::size_t>(section_[e])].thickness;
+    }
     share_initial_ratios(model);
 }
 
@@ -145,7 +151,9 @@ std::vector<Real> ElementTimeSteps::mass_scaling_factors(
     std::vector<Real> factor(triangles.size(), 1.0);
     for (std::size_t e = 0; e < triangles.size(); ++e) {
         const auto [p0, p1, p2] = corners_of(triangles[e], x);
-        const Real dt = undamped_dt(static_cast<Index>(e), characteristic_length(p0, p1, p2));
+        // at the set-up's positions every element has its initial volume
+        const Real dt = undamped_dt(static_cast<Index>(e), characteristic_length(p0, p1, p2),
+                                    initial_volume_[e]);
         if (dt > 0 && dt < needed) factor[e] = (needed / dt) * (needed / dt);
     }
     return factor;

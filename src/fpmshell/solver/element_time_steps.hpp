@@ -28,17 +28,18 @@ public:
     ElementTimeSteps(const Model& model, const MeshTopology& topology, std::vector<Real> wave_speed,
                      std::vector<Mat3> bending_rigidity);
 
-    /// Critical step of element e of current length lc (§6.4), unscaled. (Inline, as
-    /// refresh: the element loop calls both for every element of every step.)
-    [[nodiscard]] Real critical_dt(Index e, Real lc) const {
-        return with_stiffness_damping(undamped_dt(e, lc));
+    /// Critical step of element e of current length lc and current volume A h (§6.4),
+    /// unscaled. (Inline, as refresh: the element loop calls both for every element of every
+    /// step.)
+    [[nodiscard]] Real critical_dt(Index e, Real lc, Real volume) const {
+        return with_stiffness_damping(undamped_dt(e, lc, volume));
     }
     /// critical_dt with §6.10's mass scaling during the run: an element whose step has fallen
     /// below the target of enable_run_scaling is given the step of the target, and its mass
     /// factor is kept for take_pending_scaling (element e only writes entry e: the element
     /// loop may call it from several threads). `scaled` counts the elements so given.
-    [[nodiscard]] Real scaled_critical_dt(Index e, Real lc, Index& scaled) {
-        Real dt = undamped_dt(e, lc);
+    [[nodiscard]] Real scaled_critical_dt(Index e, Real lc, Real volume, Index& scaled) {
+        Real dt = undamped_dt(e, lc, volume);
         // eq. 6.10a (an element scaled already may be an ulp below the target: not again)
         if (dt < run_target_ * (1.0 - 1e-12) && dt > 0) {
             pending_[static_cast<std::size_t>(e)] = (run_target_ / dt) * (run_target_ / dt);
@@ -114,16 +115,21 @@ private:
     void scale_element(std::size_t e, Real f);
     /// Sets every element's ratio at the initial geometry, shared within shape classes.
     void share_initial_ratios(const Model& model);
-    /// The step of element e of length lc before the reduction for stiffness damping (§6.4).
-    [[nodiscard]] Real undamped_dt(Index e, Real lc) const {
+    /// The step of element e of length lc and volume A h before the reduction for stiffness
+    /// damping (§6.4).
+    [[nodiscard]] Real undamped_dt(Index e, Real lc, Real volume) const {
         const auto ue = static_cast<std::size_t>(e);
         // an element of a rigid section moves rigidly (§6.11): no step of its own
         if (rigid_section_[static_cast<std::size_t>(section_[ue])])
             return std::numeric_limits<Real>::infinity();
         // §6.4 membrane step L_c / c; the bending modes of thick elements (h / L_c > ~0.5) are
-        // slower to integrate, bend_ratio_ < 1 (bending_time_step.hpp).
-        Real dt = lc / wave_speed_[static_cast<std::size_t>(section_[ue])] *
-                  std::min(Real{1}, bend_ratio_[ue]);
+        // slower to integrate, bend_ratio_ < 1 (bending_time_step.hpp). Eq. 6.4-2: the mass
+        // stays on the particles, so an element whose volume has grown past its initial one
+        // (stretched with its thickness kept) is as dense as rho V_0 / (A h).
+        Real factor = std::min(Real{1}, bend_ratio_[ue]);
+        if (volume > initial_volume_[ue])
+            factor = std::min(factor, std::sqrt(initial_volume_[ue] / volume));
+        Real dt = lc / wave_speed_[static_cast<std::size_t>(section_[ue])] * factor;
         if (!mass_scale_.empty()) dt *= mass_scale_[ue];  // §6.10: sqrt(f_e)
         return dt;
     }
@@ -143,7 +149,8 @@ private:
     std::vector<Real> wave_speed_;             ///< per section
     std::vector<Mat3> bending_rigidity_;       ///< per section
     std::vector<Real> node_mass_,
-        node_inertia_;  ///< per element, its share at each corner (§6.1-6.2)
+        node_inertia_;                  ///< per element, its share at each corner (§6.1-6.2)
+    std::vector<Real> initial_volume_;  ///< per element, A_0 h_0 (eq. 6.4-2)
     BendingKernel bending_kernel_ = BendingKernel::Dkt;
     Real stiffness_damping_ = 0;
     std::vector<Real> bend_ratio_;  ///< per element, bending critical step / (L_c / c)

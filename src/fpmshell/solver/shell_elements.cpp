@@ -122,6 +122,17 @@ Real ShellElements::current_length(Index e, const std::vector<Vec3>& x) const {
                                  x[static_cast<std::size_t>(t[2])]);
 }
 
+Real ShellElements::current_volume(Index e, const std::vector<Vec3>& x) const {
+    const auto ue = static_cast<std::size_t>(e);
+    const auto& t = tri_[ue];
+    const Vec3& p0 = x[static_cast<std::size_t>(t[0])];
+    return 0.5 *
+           (x[static_cast<std::size_t>(t[1])] - p0)
+               .cross(x[static_cast<std::size_t>(t[2])] - p0)
+               .norm() *
+           thickness_[ue];
+}
+
 Real ShellElements::plastic_strain(Index e, int k) const {
     const std::size_t ue = static_cast<std::size_t>(e);
     const ElementGroup& group = group_of(ue);
@@ -251,7 +262,9 @@ ShellElements::ElementTotals ShellElements::compute_element(Index e, ParticleSta
     const Real lc = rt.checks.characteristic_length;  // §6.4, once per element and step
     time_steps_.refresh(e, tri_[ue], s.x, lc);
     ElementTotals totals;
-    totals.dt = time_steps_.scaled_critical_dt(e, lc, totals.mass_scaled);
+    // eq. 6.4-2: the current area A_b = (A_b / A_a) A_a, the thickness of the step's start
+    const Real volume = rt.checks.area_ratio * rt.local.area * thickness_[ue];
+    totals.dt = time_steps_.scaled_critical_dt(e, lc, volume, totals.mass_scaled);
     totals.dt_element = e;
     // the 3 slots across the sides exist (and are gathered) only with the smoothed membrane
     constexpr auto w = static_cast<std::size_t>(k_lanes);
@@ -401,12 +414,14 @@ void ShellElements::compute_block(Index b, ParticleState& s, Real viscous_rate, 
         }
         const Real lc = lane(loads.characteristic_length, l);
         time_steps_.refresh(static_cast<Index>(ue), tri_[ue], s.x, lc);
+        // eq. 6.4-2 with the thickness of the step's start, as compute_element
+        const Real volume = lane(loads.current_area, l) * thickness_[ue];
         if (thickness_update_) thickness_[ue] *= 1.0 + lane(loads.thickness_strain, l);  // §3.4
         ElementTotals t;
         t.strain_work = lane(loads.strain_work, l);
         t.damping_work = lane(loads.damping_work, l);
         t.plastic_work = lane(loads.plastic_work, l);
-        t.dt = time_steps_.scaled_critical_dt(static_cast<Index>(ue), lc, t.mass_scaled);
+        t.dt = time_steps_.scaled_critical_dt(static_cast<Index>(ue), lc, volume, t.mass_scaled);
         t.dt_element = static_cast<Index>(ue);
         totals.add(t);
     }

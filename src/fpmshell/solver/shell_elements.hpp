@@ -58,7 +58,7 @@ public:
     [[nodiscard]] Real min_critical_dt(const std::vector<Vec3>& x, Index* where = nullptr) const;
     /// Critical step of element e at positions x (§6.4), unscaled.
     [[nodiscard]] Real critical_dt(Index e, const std::vector<Vec3>& x) const {
-        return time_steps_.critical_dt(e, current_length(e, x));
+        return time_steps_.critical_dt(e, current_length(e, x), current_volume(e, x));
     }
 
     /// The elements' critical steps (§6.4), for the set-up's mass scaling (§6.10).
@@ -78,6 +78,11 @@ public:
     /// Equivalent plastic strain of element e averaged over its in-plane points, at the
     /// thickness point of index k (0 = bottom, n-1 = top).
     [[nodiscard]] Real plastic_strain(Index e, int k) const;
+    /// The state of point p of element e (the points of its section's rule, in-plane major).
+    [[nodiscard]] MaterialPoint point_state(Index e, std::size_t p) const {
+        const auto ue = static_cast<std::size_t>(e);
+        return group_of(ue).point_state(place_of(ue), p);
+    }
     [[nodiscard]] int thickness_points(Index e) const {
         return static_cast<int>(group_of(static_cast<std::size_t>(e)).rule().through.size());
     }
@@ -123,6 +128,8 @@ private:
     [[nodiscard]] GroupPlace place_of(std::size_t e) const;
     /// L_c = 2A / l_max of element e at positions x (§6.4).
     [[nodiscard]] Real current_length(Index e, const std::vector<Vec3>& x) const;
+    /// A h of element e at positions x, h its current thickness (eq. 6.4-2).
+    [[nodiscard]] Real current_volume(Index e, const std::vector<Vec3>& x) const;
     /// Path element of element e (§2).
     [[nodiscard]] ReversedTriangle reverse_element(std::size_t e, const ParticleState& s) const;
     /// Smoothed membrane, first pass: every element's path element and CST strain increment.
