@@ -357,6 +357,27 @@ if h_deck:
           all(columns[f"part1_v{c}"][0] == 0 for c in "xyz") and columns["part1_vz"][-1] < 0,
           [columns["part1_vz"][k] for k in (0, -1)])
 
+# ---- *MAT_JOHNSON_COOK with CP > 0: tube_crush.k's steel softened by adiabatic heating (M, TM,
+# TR, CP; theory.md eq. 7.4-2), against the twin with thermal_softening; it changes the crush
+CP_LINE = "$#      cp        pc     spall        it        d1        d2        d3        d4\n       0.0\n"
+JC_TWIN = "    reference_strain_rate: 1.0\n"
+assert CP_LINE in tube_deck and JC_TWIN in tube_twin
+h_hot = deck_against_twin(
+    "thermal softening", os.path.join(WORK, "thermal"), os.path.join(TUBE, "tube_crush_mesh.k"),
+    tube_deck.replace(CP_LINE, CP_LINE.replace("       0.0\n", "     477.0\n")),
+    tube_twin.replace(JC_TWIN, JC_TWIN + "    thermal_softening: {m: 1, melt_temperature: 1800, "
+                      "room_temperature: 293, specific_heat: 477}\n"))
+h_cold = deck_against_twin(
+    "isothermal", os.path.join(WORK, "isothermal"), os.path.join(TUBE, "tube_crush_mesh.k"),
+    tube_deck, tube_twin)
+if h_hot and h_cold:
+    hot, cold = columns_by_name(h_hot), columns_by_name(h_cold)
+    def mean_force(c):
+        return sum(abs(f) for f in c["rigidwall1_force_z"]) / len(c["rigidwall1_force_z"])
+    # the crush heats the folds by tens of kelvin (T* ~ 0.02): a softer tube, by about 0.6 %
+    check("thermal softening: the heated tube resists the wall less on average",
+          mean_force(hot) < 0.998 * mean_force(cold), (mean_force(hot), mean_force(cold)))
+
 # ---- friction in a *CONTACT_ card: plate_hammer.k's self-contact (the hammer on the doubler and
 # the plate) with FS 0.2, FD 0.1, DC 5 (LS-DYNA's decay, theory.md eq. 8.4-5), against the twin
 # with the same keys; FS < 0 refused, VC noted

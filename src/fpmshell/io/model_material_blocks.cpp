@@ -20,10 +20,6 @@ namespace {
 
 std::string fmt_real(Real x) { return fmt::format("{:g}", x); }
 
-std::string not_supported(const std::string& what) {
-    return what + " is not supported yet in this version of fpmshell";
-}
-
 /// `[[plastic strain, flow stress], ...]`: two points at least, from plastic strain 0, the
 /// strains increasing, the stresses > 0 and not decreasing (the return mapping brackets its
 /// solution on a curve that does not soften, theory.md §7.3a).
@@ -136,6 +132,31 @@ void read_power_law(const YamlMap& m, Material& mat) {
         m.at("k", "").fail("gives no finite elastic strain at yield with this n and yield stress");
 }
 
+/// johnson_cook's `thermal_softening: {m, melt_temperature, room_temperature, specific_heat,
+/// taylor_quinney}` (theory.md eq. 7.4-2).
+void read_thermal_softening(const YamlValue& v, Material& mat) {
+    const YamlMap t =
+        v.map({"m", "melt_temperature", "room_temperature", "specific_heat", "taylor_quinney"});
+    mat.thermal = true;
+    mat.jc_m = t.at("m", "the exponent m of T*, a number > 0").positive();
+    mat.room_temperature =
+        t.at("room_temperature", "the temperature T_r the material starts at").real();
+    const YamlValue melt = t.at("melt_temperature", "the melting temperature T_m > T_r");
+    mat.melt_temperature = melt.real();
+    if (!(mat.melt_temperature > mat.room_temperature))
+        melt.fail("must be above room_temperature (" + fmt_real(mat.room_temperature) + "), got " +
+                  melt.describe());
+    mat.specific_heat =
+        t.at("specific_heat", "the specific heat c_p (energy per mass and degree), a number > 0")
+            .positive();
+    if (const auto chi = t.find("taylor_quinney")) {
+        mat.taylor_quinney = chi->positive();
+        if (mat.taylor_quinney > 1)
+            chi->fail("is the fraction of the plastic work that heats, in (0, 1]; got " +
+                      chi->describe());
+    }
+}
+
 }  // namespace
 
 void read_materials(const YamlValue& v, Model& model) {
@@ -160,8 +181,8 @@ void read_materials(const YamlValue& v, Model& model) {
             for (const auto& [key, value] : any.entries())
                 for (const char* plastic :
                      {"yield_stress", "tangent_modulus", "hardening_mix", "cowper_symonds", "A",
-                      "B", "n", "C", "reference_strain_rate", "m", "room_temperature",
-                      "melt_temperature", "flow_curve", "flow_curves", "k", "normal_anisotropy"})
+                      "B", "n", "C", "reference_strain_rate", "thermal_softening", "flow_curve",
+                      "flow_curves", "k", "normal_anisotropy"})
                     if (key == plastic)
                         value.fail(
                             "belongs to plastic materials (type: j2_plastic, johnson_cook, "
@@ -175,13 +196,10 @@ void read_materials(const YamlValue& v, Model& model) {
         } else if (t == "power_law") {
             keys.insert(keys.end(), {"k", "n", "yield_stress", "hardening_mix", "cowper_symonds"});
         } else {
-            for (const char* thermal : {"m", "room_temperature", "melt_temperature"})
-                if (const auto th = any.find(thermal))
-                    th->fail(not_supported("the thermal softening term of Johnson-Cook") +
-                             "; remove m, room_temperature and melt_temperature");
             if (const auto cs = any.find("cowper_symonds"))
                 cs->fail("is a rate factor for j2_plastic; johnson_cook has its own rate term C");
-            keys.insert(keys.end(), {"A", "B", "n", "C", "reference_strain_rate", "hardening_mix"});
+            keys.insert(keys.end(), {"A", "B", "n", "C", "reference_strain_rate", "hardening_mix",
+                                     "thermal_softening"});
         }
         if (t != "elastic" && t != "rigid") keys.push_back("normal_anisotropy");
         const YamlMap m = def.map(keys);
@@ -264,6 +282,7 @@ void read_materials(const YamlValue& v, Model& model) {
             mat.jc_n = m.at("n", "the Johnson-Cook hardening exponent n, a number > 0").positive();
             mat.jc_c = m.non_negative_or("C", 0.0);
             mat.reference_strain_rate = m.positive_or("reference_strain_rate", 1.0);
+            if (const auto th = m.find("thermal_softening")) read_thermal_softening(*th, mat);
         }
         model.materials.push_back(mat);
     }

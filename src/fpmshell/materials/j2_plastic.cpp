@@ -7,8 +7,14 @@
 namespace fpmshell {
 
 J2Plastic::J2Plastic(Real youngs_modulus, Real poisson_ratio, const FlowStress& flow,
-                     const RateFactor& rate, Real hardening_mix, Real normal_anisotropy)
-    : e_(youngs_modulus), nu_(poisson_ratio), flow_(flow), rate_(rate), beta_(hardening_mix) {
+                     const RateFactor& rate, Real hardening_mix, Real normal_anisotropy,
+                     const ThermalSoftening& thermal)
+    : e_(youngs_modulus),
+      nu_(poisson_ratio),
+      flow_(flow),
+      rate_(rate),
+      thermal_(thermal),
+      beta_(hardening_mix) {
     const Real f = e_ / (1.0 - nu_ * nu_);
     c_ << f, f * nu_, 0, f * nu_, f, 0, 0, 0, f * (1.0 - nu_) * 0.5;
     constants_.c11 = c_(0, 0);
@@ -28,6 +34,9 @@ J2Plastic::J2Plastic(Real youngs_modulus, Real poisson_ratio, const FlowStress& 
     }
     constants_.beta = beta_;
     constants_.tolerance = k_yield_tolerance;
+    if (thermal_.active && (rate_.selects_curve() || flow_.kind != FlowStress::Kind::JohnsonCook))
+        throw std::invalid_argument(
+            "J2Plastic: thermal softening is Johnson-Cook's, on its own flow curve");
     if (rate_.selects_curve() && (flow_.kind != FlowStress::Kind::Tabulated || beta_ != 1.0 ||
                                   rate_.table_rates.size() != flow_.table.size()))
         throw std::invalid_argument(
@@ -59,6 +68,8 @@ void J2Plastic::update(const MaterialPoint& old_state, const Voigt3& d_eps, Real
                (1.0 - k_rate_filter) * rate;
         r = rate_.value(rate);  // frozen during the return (§7.4 option a)
     }
+    // eq. 7.4-2 at the temperature of the step's start, frozen during the return as R
+    if (thermal_.active) r *= thermal_.factor(old_state.plastic_work);
     const J2PointState<Real> old{
         {old_state.stress(0), old_state.stress(1), old_state.stress(2)},
         {old_state.back_stress(0), old_state.back_stress(1), old_state.back_stress(2)},

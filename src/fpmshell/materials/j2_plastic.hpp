@@ -9,6 +9,7 @@
 #include "fpmshell/materials/j2_return_mapping.hpp"
 #include "fpmshell/materials/material_point.hpp"
 #include "fpmshell/materials/strain_rate.hpp"
+#include "fpmshell/materials/thermal_softening.hpp"
 
 namespace fpmshell {
 
@@ -25,8 +26,11 @@ public:
     /// hardening_mix: beta of §7.2, 1 isotropic, 0 kinematic.
     /// normal_anisotropy: Hill's R (the Lankford ratio of width to thickness strain, the same
     /// in every direction of the sheet, eq. 7.1-3); 1 is von Mises.
+    /// thermal: Johnson-Cook's softening by adiabatic heating (eq. 7.4-2), a factor on the
+    /// yield radius like the rate factor's, at the temperature of the step's start.
     J2Plastic(Real youngs_modulus, Real poisson_ratio, const FlowStress& flow,
-              const RateFactor& rate, Real hardening_mix, Real normal_anisotropy = 1);
+              const RateFactor& rate, Real hardening_mix, Real normal_anisotropy = 1,
+              const ThermalSoftening& thermal = {});
 
     /// Elastic plane-stress matrix C (engineering shear strain).
     [[nodiscard]] const Mat3& stiffness() const { return c_; }
@@ -88,6 +92,7 @@ public:
     /// Whether the yield radius depends on the strain rate (then every update filters the rate).
     [[nodiscard]] bool rate_dependent() const { return rate_.active(); }
     [[nodiscard]] const RateFactor& rate_factor() const { return rate_; }
+    [[nodiscard]] const ThermalSoftening& thermal_softening() const { return thermal_; }
     /// The constants of the return mapping (materials/j2_return_mapping.hpp), for the element
     /// blocks that run it on k_lanes points at once.
     [[nodiscard]] const J2ReturnConstants& return_constants() const { return constants_; }
@@ -97,6 +102,7 @@ private:
     Mat3 c_;
     FlowStress flow_;
     RateFactor rate_;
+    ThermalSoftening thermal_;
     Real beta_;
     J2ReturnConstants constants_;
 };

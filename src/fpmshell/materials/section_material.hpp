@@ -19,7 +19,14 @@ using SectionMaterial = std::variant<LinearElastic, J2Plastic>;
     if (!m.plastic()) return LinearElastic(m.youngs_modulus, m.poisson_ratio);
     FlowStress flow;
     RateFactor rate;
+    ThermalSoftening thermal;
     if (m.type == MaterialType::JohnsonCook) {
+        if (m.thermal) {  // eq. 7.4-2
+            thermal.active = true;
+            thermal.m = m.jc_m;
+            thermal.heating = m.taylor_quinney / (m.density * m.specific_heat *
+                                                  (m.melt_temperature - m.room_temperature));
+        }
         flow.kind = FlowStress::Kind::JohnsonCook;
         flow.a = m.jc_a;
         flow.b = m.jc_b;
@@ -60,7 +67,7 @@ using SectionMaterial = std::variant<LinearElastic, J2Plastic>;
         rate.q = m.cs_q;
     }
     return J2Plastic(m.youngs_modulus, m.poisson_ratio, flow, rate, m.hardening_mix,
-                     m.normal_anisotropy);
+                     m.normal_anisotropy, thermal);
 }
 
 [[nodiscard]] inline const Mat3& elastic_stiffness(const SectionMaterial& m) {

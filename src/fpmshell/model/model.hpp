@@ -52,6 +52,11 @@ struct Material {
     Real hardening_mix = 1;  ///< beta: 1 isotropic, 0 kinematic
     Real jc_a = 0, jc_b = 0, jc_n = 1, jc_c = 0;  ///< johnson_cook A, B, n, C
     Real reference_strain_rate = 1;               ///< johnson_cook eps_dot_0
+    /// johnson_cook: thermal softening by adiabatic heating (theory.md eq. 7.4-2), the flow
+    /// stress times 1 - T*^m, T* = (T - T_r) / (T_m - T_r), T = T_r + chi W_p / (rho c_p)
+    bool thermal = false;
+    Real jc_m = 1, melt_temperature = 0, room_temperature = 0, specific_heat = 0;
+    Real taylor_quinney = 0.9;  ///< chi, the fraction of the plastic work that heats
     /// power_law: sigma = k (eps_0 + eps_p)^n, eps_0 the elastic strain at yield (eq. 7.2-6)
     Real power_k = 0, power_n = 1, power_strain_offset = 0;
     bool cowper_symonds = false;  ///< j2_plastic, tabulated, power_law: Cowper-Symonds factor on

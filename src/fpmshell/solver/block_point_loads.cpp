@@ -30,13 +30,24 @@ ElasticTriangleLoads<RealPack> block_point_loads(const J2Plastic& material, cons
     std::array<RealPack, 3 * k_max_block_points> back_stress;
     std::array<RealPack, k_max_block_points> third_k2, strain_rate, new_strain_rate, plastic_strain;
     YieldSurfaces<RealPack> yield{back_stress.data(), third_k2.data(), J2::k_yield_tolerance};
+    // eq. 7.4-2: the thermal factor of each point at its temperature of the step's start, on
+    // the yield radius of the check and, with R, on the return's (1 without thermal softening)
+    const ThermalSoftening& thermal = material.thermal_softening();
+    std::array<RealPack, k_max_block_points> theta;
     for (std::size_t p = 0; p < n_points; ++p) {
         for (std::size_t r = 0; r < 3; ++r)
             back_stress[3 * p + r] = kinematic ? field(p, J2::k_back_stress + r) : RealPack(0.0);
-        const RealPack kappa = field(
+        RealPack kappa = field(
             p, J2::k_flow_radius);  // sigma_f(0) before the first yield (J2Plastic::write_point)
+        if (thermal.active) {
+            theta[p] = thermal.factor(field(p, J2::k_plastic_work));
+            kappa *= theta[p];
+        }
         third_k2[p] = kappa * kappa * (1.0 / 3.0);
     }
+    auto softened = [&](const RealPack& r, std::size_t p) {
+        return thermal.active ? r * theta[p] : r;
+    };
     if (material.rate_dependent()) {
         yield.rate = &material.rate_factor();
         yield.strain_rate = strain_rate.data();
@@ -94,7 +105,7 @@ ElasticTriangleLoads<RealPack> block_point_loads(const J2Plastic& material, cons
             const std::array<J2Return<RealPack>, K> ret = j2_return_mapping_points<RealPack, K>(
                 constants, array_of<K>([&](std::size_t k) { return old_state(p[k]); }),
                 array_of<K>([&](std::size_t k) { return d_eps[p[k]]; }),
-                array_of<K>([&](std::size_t k) { return rate_factor[p[k]]; }),
+                array_of<K>([&](std::size_t k) { return softened(rate_factor[p[k]], p[k]); }),
                 array_of<K>([&](std::size_t k) { return yielding[p[k]]; }));
             for (std::size_t k = 0; k < K; ++k) store(p[k], ret[k]);
         };
@@ -159,7 +170,7 @@ ElasticTriangleLoads<RealPack> block_point_loads(const J2Plastic& material, cons
                 in[6][i] = lane(field(p, J2::k_plastic_strain), l);
                 in[7][i] = lane(field(p, J2::k_flow_radius), l);
                 in[8][i] = lane(field(p, J2::k_flow_slope), l);
-                in[12][i] = lane(rate_factor[p], l);
+                in[12][i] = lane(softened(rate_factor[p], p), l);
                 batch_point[i] = p;
                 batch_lane[i] = l;
                 if (++n == w) run_batch();

@@ -692,12 +692,20 @@ TEST(ModelReader, EveryErrorNamesFileLineAndKey) {
          "materials.steel.poisson_ratio", "greater than -1"},
         {replaced(k_base, ", poisson_ratio: 0.3", ""), 4, "materials.steel.poisson_ratio",
          "is required"},
-        // not supported yet
         {replaced(k_base, "type: elastic", "type: johnson_cook"), 4, "materials.steel.A",
          "is required but missing"},
         {replaced(replaced(k_base, "type: elastic", "type: johnson_cook"), steel,
                   "poisson_ratio: 0.3, A: 300, B: 200, n: 0.3, m: 1}"),
-         4, "materials.steel.m", "thermal softening term of Johnson-Cook is not supported yet"},
+         4, "materials.steel.m", "unknown key"},
+        {replaced(replaced(k_base, "type: elastic", "type: johnson_cook"), steel,
+                  "poisson_ratio: 0.3, A: 300, B: 200, n: 0.3, thermal_softening: {m: 1, "
+                  "room_temperature: 300, melt_temperature: 290, specific_heat: 450}}"),
+         4, "materials.steel.thermal_softening.melt_temperature", "must be above room_temperature"},
+        {replaced(replaced(k_base, "type: elastic", "type: johnson_cook"), steel,
+                  "poisson_ratio: 0.3, A: 300, B: 200, n: 0.3, thermal_softening: {m: 1, "
+                  "room_temperature: 300, melt_temperature: 1800, specific_heat: 450, "
+                  "taylor_quinney: 1.5}}"),
+         4, "materials.steel.thermal_softening.taylor_quinney", "in (0, 1]"},
         // plastic materials
         {replaced(k_base, "type: elastic", "type: j2_plastic"), 4, "materials.steel.yield_stress",
          "is required but missing"},

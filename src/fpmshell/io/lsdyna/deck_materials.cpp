@@ -149,12 +149,20 @@ void DeckTranslator::material(const DeckBlock& b) {
             m.keys.push_back("C: " + num(c));
             m.keys.push_back("reference_strain_rate: " + num(eps0));
         }
-        if (m_exp != 0 && tm != 0 && h.real(0, "CP") != 0)
-            g.fail(
-                "thermal softening (M, TM with CP) is not modelled; set M = 0 for an "
-                "isothermal material");
-        if (m_exp != 0 || tm != 0)
-            note(b, g.line(), "isothermal: the temperature terms (M, TM, TR) are not modelled");
+        const Real cp = h.real(0, "CP"), tr = g.real(6, "TR");
+        if (m_exp != 0 && tm != 0 && cp != 0) {  // theory.md eq. 7.4-2
+            if (!(m_exp > 0)) g.fail("M must be > 0 (the exponent of the homologous temperature)");
+            if (!(tm > tr)) g.fail("TM must be above TR (the melting and the room temperature)");
+            if (!(cp > 0)) h.fail("CP must be > 0 (the specific heat)");
+            m.keys.push_back("thermal_softening: {m: " + num(m_exp) +
+                             ", melt_temperature: " + num(tm) + ", room_temperature: " + num(tr) +
+                             ", specific_heat: " + num(cp) + "}");
+            note(b, h.line(),
+                 "thermal softening by adiabatic heating: 0.9 of the plastic work heats (the "
+                 "Taylor-Quinney fraction; the card has no field for it)");
+        } else if (m_exp != 0 || tm != 0) {
+            note(b, g.line(), "isothermal: the temperature terms (M, TM, TR) need CP > 0 to act");
+        }
         bool damage = false;
         for (std::size_t k = 4; k < 8; ++k) damage = damage || h.real(k, "D1..D4") != 0;
         damage = damage || i.real(0, "D5") != 0;
