@@ -33,7 +33,7 @@ void vtu_frame(benchmark::State& state) {
     const std::filesystem::path dir =
         std::filesystem::path(tmp != nullptr && *tmp != '\0' ? tmp : "/tmp");
     const std::string stem = "fpmshell_bench_frame_" + std::to_string(::getpid()) + "_";
-    const std::vector<OutputField> fields = standard_fields();
+    const std::vector<OutputField> fields = standard_fields(m);
     FieldFrame frame;  // reused from frame to frame, as FieldSeries does
     double bytes = 0;
     long n_frame = 0;
@@ -59,7 +59,7 @@ void vtu_frame_gather(benchmark::State& state) {
     const Model m = bench::elastic_plate_model(static_cast<Index>(state.range(0)));
     ExplicitSolver solver(m);
     for (int i = 0; i < 3; ++i) solver.step(1e30);
-    const std::vector<OutputField> fields = standard_fields();
+    const std::vector<OutputField> fields = standard_fields(m);
     FieldFrame frame;
     for (auto _ : state) {
         field_frame(fields, {m, solver, solver.state().x}, solver.time(), frame);

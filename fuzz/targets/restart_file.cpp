@@ -53,7 +53,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         ObserverList results;
         results.add<HistoryFile>(model, dir);
         results.add<EnergyFile>(model, dir);
-        results.add<FieldSeries>(model, dir, standard_fields(), [](const std::string&) {});
+        results.add<FieldSeries>(model, dir, standard_fields(model), [](const std::string&) {});
         RestartFiles::resume(path, solver, schedule, results);
         for (int k = 0; k < 2; ++k) {
             solver.step(model.control.end_time);

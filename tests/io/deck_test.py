@@ -11,6 +11,7 @@
 
 usage: deck_test.py FPMSHELL WORKDIR
 """
+import json
 import os
 import shutil
 import subprocess
@@ -377,6 +378,25 @@ if h_hot and h_cold:
     # the crush heats the folds by tens of kelvin (T* ~ 0.02): a softer tube, by about 0.6 %
     check("thermal softening: the heated tube resists the wall less on average",
           mean_force(hot) < 0.998 * mean_force(cold), (mean_force(hot), mean_force(cold)))
+
+# ---- *MAT_024 FAIL: strip_pull.k's steel fails at a plastic strain of 1 % (theory.md §7.6),
+# against the twin with failure: {plastic_strain}; elements erode (summary.json)
+STRIP_MAT = "$#     mid        ro         e        pr      sigy\n         1    7850.0   2.1e+11       0.3   3.0e+08\n"
+assert STRIP_MAT in strip_deck and "    poisson_ratio: 0.3\n    flow_curves:" in strip_twin
+h_fail = deck_against_twin(
+    "failure strain", os.path.join(WORK, "failure"), os.path.join(STRIP, "strip_pull_mesh.k"),
+    strip_deck.replace(STRIP_MAT, STRIP_MAT.replace("sigy\n", "sigy      etan      fail\n").replace(
+        "3.0e+08\n", "3.0e+08       0.0      0.01\n")),
+    strip_twin.replace("    poisson_ratio: 0.3\n    flow_curves:",
+                       "    poisson_ratio: 0.3\n    failure: {plastic_strain: 0.01}\n    flow_curves:"))
+if h_fail:
+    with open(os.path.join(os.path.dirname(h_fail), "summary.json")) as f:
+        eroded = json.load(f).get("eroded_elements", 0)
+    check("failure strain: the strip's elements erode", eroded > 0, eroded)
+    with open(os.path.join(os.path.dirname(h_fail), "energy.csv")) as f:
+        header = f.readline()
+    check("failure strain: energy.csv has the column eroded_internal", "eroded_internal" in header,
+          header)
 
 # ---- friction in a *CONTACT_ card: plate_hammer.k's self-contact (the hammer on the doubler and
 # the plate) with FS 0.2, FD 0.1, DC 5 (LS-DYNA's decay, theory.md eq. 8.4-5), against the twin

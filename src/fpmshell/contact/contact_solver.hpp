@@ -127,6 +127,11 @@ public:
 
     /// The state carried from step to step (search cadence, candidates, statistics), for a
     /// restart file (io/restart_archive.hpp).
+    /// Theory.md §7.6: the faces of the eroded elements `eroded` leave the self-contacts
+    /// (their particles stay as slaves). With search_again the next step searches anew (the
+    /// candidates found before may hold those faces); a resumed run's loaded candidates were
+    /// found after the erosion, and stay.
+    void drop_faces(const std::vector<Index>& eroded, bool search_again);
     void save(RestartWriter& out) const;
     void load(RestartReader& in);
 

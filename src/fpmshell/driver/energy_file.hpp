@@ -18,6 +18,7 @@ private:
     [[nodiscard]] std::vector<Real> row(const ExplicitSolver& solver, Real time,
                                         std::optional<bool> converged) const override;
     bool mass_scaling_;
+    bool erosion_;  ///< a material can fail: the column eroded_internal (theory.md §7.6)
 };
 
 }  // namespace fpmshell

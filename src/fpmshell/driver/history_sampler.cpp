@@ -103,6 +103,10 @@ std::vector<Real> sample_histories(const Model& model, const ExplicitSolver& sol
             out.push_back(body_quantity(solver, h.quantity, h.body));
             continue;
         }
+        if (h.model_wide) {  // eroded_elements
+            out.push_back(static_cast<Real>(solver.eroded_elements()));
+            continue;
+        }
         if (h.contact >= 0) {  // the force on the definition's slaves (contact_<n>_force_<c>)
             const Vec3 f = solver.contact_force(h.contact);
             out.push_back(h.quantity == Quantity::ContactForceX   ? f.x()

@@ -4,6 +4,7 @@
 #include <algorithm>
 
 #include "fpmshell/core/rotation.hpp"
+#include "fpmshell/failure/element_erosion.hpp"
 #include "fpmshell/model/model.hpp"
 #include "fpmshell/solver/explicit_solver.hpp"
 
@@ -40,9 +41,9 @@ OutputField plastic_strain_field(std::string name, ShellSurface surface) {
 
 }  // namespace
 
-std::vector<OutputField> standard_fields() {
+std::vector<OutputField> standard_fields(const Model& model) {
     using L = FieldLocation;
-    return {
+    std::vector<OutputField> fields{
         {"displacement", 3, L::Point, three_components([](const FieldSource& s, Index p) {
              return Vec3(s.positions[at(p)] - s.solver.state().x0[at(p)]);
          })},
@@ -67,6 +68,13 @@ std::vector<OutputField> standard_fields() {
         plastic_strain_field("plastic_strain_middle", ShellSurface::Middle),
         plastic_strain_field("plastic_strain_bottom", ShellSurface::Bottom),
     };
+    if (model_can_erode(model))
+        fields.push_back({"eroded", 1, L::Cell,
+                          [](const FieldSource& s, Index first, Index last, std::span<Real> out) {
+                              for (Index e = first; e < last; ++e)
+                                  out[at(e - first)] = s.solver.elements().eroded(e) ? 1.0 : 0.0;
+                          }});
+    return fields;
 }
 
 void field_frame(const std::vector<OutputField>& fields, const FieldSource& source, Real time,

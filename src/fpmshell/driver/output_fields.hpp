@@ -1,7 +1,7 @@
 // The fields of the VTU frames (model-format.md "Results in DIR", VTU point and cell data),
 // each declared once: its name, its number of components, whether it lives on the particles or
 // on the triangles, and how its values come from the model and the solver state. A frame holds
-// the fields of the list in list order; a new field is one more entry in standard_fields().
+// the fields of the list in list order; a new field is one more entry in standard_fields(model).
 #pragma once
 
 #include <functional>
@@ -43,8 +43,9 @@ struct OutputField {
 
 /// The fields of every frame, in the order they appear in the .vtu files: point data
 /// displacement, velocity, rotation; cell data membrane_force, bending_moment, thickness,
-/// plastic_strain_top, plastic_strain_middle, plastic_strain_bottom.
-[[nodiscard]] std::vector<OutputField> standard_fields();
+/// plastic_strain_top, plastic_strain_middle, plastic_strain_bottom; where a material of the
+/// model can fail, then `eroded` (1 on an eroded element, 0 elsewhere; theory.md §7.6).
+[[nodiscard]] std::vector<OutputField> standard_fields(const Model& model);
 
 /// The frame at `time`: the source's positions, the model's triangles and one array per field.
 [[nodiscard]] FieldFrame field_frame(const std::vector<OutputField>& fields,

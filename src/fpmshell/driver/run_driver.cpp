@@ -197,7 +197,7 @@ const RestartFiles* add_result_files(ObserverList& out, const Model& model, cons
     out.add<ProgressReport>(log, model.control.end_time, opt.quiet);
     const HistoryFile& history = out.add<HistoryFile>(model, opt.output_dir);
     out.add<EnergyFile>(model, opt.output_dir);
-    out.add<FieldSeries>(model, opt.output_dir, standard_fields(),
+    out.add<FieldSeries>(model, opt.output_dir, standard_fields(model),
                          [&log](const std::string& line) { log.line(line); });
     out.add<SummaryFile>(model, opt.output_dir, history);
     const RestartFiles* restart = nullptr;

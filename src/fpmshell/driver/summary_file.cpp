@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "fpmshell/driver/output_fields.hpp"
+#include "fpmshell/failure/element_erosion.hpp"
 #include "fpmshell/io/summary_json.hpp"
 #include "fpmshell/solver/explicit_solver.hpp"
 
@@ -137,6 +138,11 @@ void SummaryFile::finish(const ExplicitSolver& solver, const RunEnd& end) {
     if (!model_.rigid_bodies.empty()) j.set("rigid_bodies", rigid_bodies_json(model_, solver));
     if (model_.control.mass_scaling.time_step > 0)
         j.set("mass_scaling", mass_scaling_json(model_, solver.added_mass()));
+    if (model_can_erode(model_)) {  // theory.md §7.6
+        j.set("eroded_elements", solver.eroded_elements());
+        if (solver.eroded_elements() > 0) j.set("first_erosion_time", solver.first_erosion_time());
+        j.set("eroded_internal", solver.energy().eroded_internal);
+    }
     j.set("version", FPMSHELL_VERSION);
     j.set("exit_reason", end.reason);
     write_json_file(dir_ / "summary.json", j);

@@ -214,6 +214,16 @@ void read_output(const std::optional<YamlValue>& v, Model& model) {
             o.histories.push_back(req);
             continue;
         }
+        if (qn == "eroded_elements") {  // theory.md §7.6: the count over the run
+            req.quantity = Quantity::ErodedElements;
+            req.model_wide = true;
+            for (const char* key : {"nodes", "reduce"})
+                if (const auto k = r.find(key))
+                    k->fail("eroded_elements is one count of the whole model; remove `" +
+                            std::string(key) + "`");
+            o.histories.push_back(req);
+            continue;
+        }
         if (qn.rfind("contact_", 0) == 0) {
             contact_quantity(model, q, req);
             if (const auto n = r.find("nodes"))

@@ -157,6 +157,16 @@ void read_thermal_softening(const YamlValue& v, Material& mat) {
     }
 }
 
+/// A plastic material's `failure: {plastic_strain, points}` (theory.md §7.6).
+void read_failure(const YamlValue& v, Material& mat) {
+    const YamlMap f = v.map({"plastic_strain", "points"});
+    mat.failure.plastic_strain =
+        f.at("plastic_strain", "the plastic strain at which a point fails, a number > 0")
+            .positive();
+    if (const auto n = f.find("points"))
+        mat.failure.points = static_cast<int>(n->integer(1, 7 * k_max_thickness_points));
+}
+
 }  // namespace
 
 void read_materials(const YamlValue& v, Model& model) {
@@ -182,7 +192,7 @@ void read_materials(const YamlValue& v, Model& model) {
                 for (const char* plastic :
                      {"yield_stress", "tangent_modulus", "hardening_mix", "cowper_symonds", "A",
                       "B", "n", "C", "reference_strain_rate", "thermal_softening", "flow_curve",
-                      "flow_curves", "k", "normal_anisotropy"})
+                      "flow_curves", "k", "normal_anisotropy", "failure"})
                     if (key == plastic)
                         value.fail(
                             "belongs to plastic materials (type: j2_plastic, johnson_cook, "
@@ -201,7 +211,10 @@ void read_materials(const YamlValue& v, Model& model) {
             keys.insert(keys.end(), {"A", "B", "n", "C", "reference_strain_rate", "hardening_mix",
                                      "thermal_softening"});
         }
-        if (t != "elastic" && t != "rigid") keys.push_back("normal_anisotropy");
+        if (t != "elastic" && t != "rigid") {
+            keys.push_back("normal_anisotropy");
+            keys.push_back("failure");
+        }
         const YamlMap m = def.map(keys);
         Material mat;
         mat.name = name;
@@ -221,6 +234,7 @@ void read_materials(const YamlValue& v, Model& model) {
         if (mat.plastic()) {
             if (const auto r = m.find("normal_anisotropy"))  // Hill's R (eq. 7.1-3)
                 mat.normal_anisotropy = r->positive();
+            if (const auto f = m.find("failure")) read_failure(*f, mat);
             if (const auto mix = m.find("hardening_mix")) {
                 mat.hardening_mix = mix->real();
                 if (!(mat.hardening_mix >= 0 && mat.hardening_mix <= 1))

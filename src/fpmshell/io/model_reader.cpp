@@ -142,6 +142,17 @@ Model read_model_tree(YamlContext& ctx, YAML::Node root, const std::string& path
                         "load ramp (and some mass damping) for a quasi-static plastic path");
         }
     }
+    if (model.control.membrane == MembraneKernel::Smoothed)
+        for (const Section& sec : model.sections)  // §3.5 averages over the neighbours
+            if (const Material& mat = model.materials[static_cast<std::size_t>(sec.material)];
+                mat.failure.active())
+                top.at("control")
+                    .open_map("control settings")
+                    .at("membrane")
+                    .fail(
+                        "the smoothed membrane averages each element's strain with its "
+                        "neighbours', which erosion would take away: material '" +
+                        mat.name + "' can fail, so use membrane: cst");
     if (const auto b = top.find("boundary")) read_boundary(*b, model);
     if (const auto l = top.find("loads")) read_loads(*l, model);
     if (const auto i = top.find("initial_conditions")) read_initial_conditions(*i, model);

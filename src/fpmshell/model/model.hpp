@@ -38,6 +38,18 @@ struct FlowCurvePoints {
     std::vector<Real> strain, stress;
 };
 
+/// How a plastic material's points fail and its elements erode (theory.md §7.6;
+/// failure/element_erosion.hpp).
+struct MaterialFailure {
+    /// a point fails once its equivalent plastic strain reaches it; 0: never
+    Real plastic_strain = 0;
+    /// failed points that erode an element; 0: every point through the thickness at one of
+    /// its in-plane points
+    int points = 0;
+
+    [[nodiscard]] bool active() const { return plastic_strain > 0; }
+};
+
 /// Material constants (units as in the model file; never converted).
 struct Material {
     std::string name;
@@ -73,6 +85,9 @@ struct Material {
     /// rigid: the body's velocity components held at zero, translations along x, y, z then
     /// rotations about x, y, z (global axes; LS-DYNA's *MAT_RIGID CMO = 1 with CON1, CON2)
     std::array<bool, 6> rigid_fixed{};
+
+    /// plastic materials: failure and erosion (none by default)
+    MaterialFailure failure{};
 
     [[nodiscard]] bool plastic() const { return type != MaterialType::Elastic; }
 };
@@ -315,7 +330,9 @@ enum class Quantity {
     // contact definitions (contact_<n>_force_<x|y|z>): the contact force on their slaves
     ContactForceX,
     ContactForceY,
-    ContactForceZ
+    ContactForceZ,
+    // the whole model (theory.md §7.6): elements eroded so far
+    ErodedElements
 };
 /// How a history reduces its set: MassMean weighs each particle by its mass (for velocities, the
 /// set's momentum over its mass: LS-DYNA's MATSUM rigid-body velocity of a part).
@@ -326,6 +343,7 @@ struct HistoryRequest {
     std::vector<Index> nodes;  ///< empty for rigid-body quantities
     Index body = -1;           ///< rigid-body quantities: index into Model::rigid_bodies
     Index contact = -1;        ///< contact quantities: index into Model::contacts
+    bool model_wide = false;   ///< a quantity of the whole model (eroded_elements)
     Quantity quantity = Quantity::Uz;
     Reduce reduce = Reduce::Single;  ///< Single only when the set has one node
 };

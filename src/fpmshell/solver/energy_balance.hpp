@@ -15,27 +15,29 @@ struct EnergyBalance {
     Real external_work = 0;  ///< work of loads and supports, plus the initial kinetic energy
     Real damping = 0;        ///< dissipated by Rayleigh damping
     Real contact = 0;        ///< dissipated by contact (0 without contact)
+    /// the strain work of the elements eroded so far (theory.md §7.6), no longer in `internal`
+    Real eroded_internal = 0;
     /// What rounding alone can put into the balance so far (theory.md eq. 6.8-2): the steps
     /// taken times this step's rounding of the works. Not a result: it is recomputed every step
     /// (and not kept in restart files).
     Real rounding = 0;
 
-    /// (kinetic + internal - external work + damping + contact) / max(kinetic, internal,
-    /// external, rounding) (theory.md eq. 6.8-1). The rounding floor keeps the ratio of a model
-    /// that does not move (held by friction, in equilibrium) from being a ratio of rounding
+    /// (kinetic + internal + eroded internal - external work + damping + contact) / max(kinetic,
+    /// internal, external, rounding) (theory.md eq. 6.8-1). The rounding floor keeps the ratio of a
+    /// model that does not move (held by friction, in equilibrium) from being a ratio of rounding
     /// errors: there every energy is of the order of the last bits of the positions.
     [[nodiscard]] Real error() const {
         const Real scale =
             std::max({std::abs(kinetic), std::abs(internal), std::abs(external_work), rounding});
         if (scale <= 0) return 0;
-        return (kinetic + internal - external_work + damping + contact) / scale;
+        return (kinetic + internal + eroded_internal - external_work + damping + contact) / scale;
     }
 };
 
 /// Members for a restart file (io/restart_archive.hpp).
 template <class Archive>
 void transfer(Archive& ar, EnergyBalance& e) {
-    ar(e.kinetic, e.internal, e.plastic, e.external_work, e.damping, e.contact);
+    ar(e.kinetic, e.internal, e.plastic, e.external_work, e.damping, e.contact, e.eroded_internal);
 }
 
 }  // namespace fpmshell

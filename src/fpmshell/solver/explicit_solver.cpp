@@ -215,10 +215,33 @@ ShellElements::StepTotals ExplicitSolver::compute_internal_loads(const CyclePoli
     min_dt_element_ = tot.min_dt_element;
     if (tot.failed_element >= 0) report_failed_element(tot.failed_element);
     if (tot.mass_scaled > 0) add_scaled_mass();
-    energy_.internal += tot.strain_work;  // includes the plastic dissipation, like LS-DYNA's
-    energy_.plastic += tot.plastic_work;  // internal energy; reported on its own as well
+    // the strain work of the elements eroded this step leaves the internal energy for the
+    // eroded one, as LS-DYNA's glstat books it (theory.md §7.6)
+    energy_.internal += tot.strain_work - tot.eroded_work;  // includes the plastic dissipation,
+    energy_.plastic += tot.plastic_work;  // like LS-DYNA's internal energy; also on its own
+    energy_.eroded_internal += tot.eroded_work;
+    if (tot.eroded_elements > 0) {
+        if (eroded_elements_ == 0) first_erosion_time_ = time_;
+        eroded_elements_ += tot.eroded_elements;
+        if (contact_) drop_eroded_faces();
+    }
     energy_.damping += tot.damping_work;
     return tot;
+}
+
+// §7.6: the faces of the elements eroded this step leave the self-contacts before this step's
+// contact; a distributed run's contact is whole on every rank, so the ranks' lists are joined.
+void ExplicitSolver::drop_eroded_faces() {
+    std::vector<Index> eroded = elements_.eroded_in_last_step();
+    if (decomposition_.distributed()) {
+        const Communicator& comm = Communicator::world();
+        const std::vector<Real> mine(eroded.begin(), eroded.end());
+        const std::vector<int> counts = comm.allgather(static_cast<int>(mine.size()));
+        std::vector<Real> all;
+        comm.allgather(mine, counts, all);
+        eroded.assign(all.begin(), all.end());
+    }
+    contact_->drop_faces(eroded, true);
 }
 
 // §6.10 during the run: the corners of the elements the loop scaled gain their mass and inertia
@@ -561,6 +584,7 @@ ExplicitSolver::RelaxResult ExplicitSolver::relax(Real load_time) {
 template <class Archive>
 void ExplicitSolver::transfer_state(Archive& ar) {
     ar(time_, dt_half_, dt_half_prev_, dt_center_, steps_, restart_, element_steps_);
+    ar(eroded_elements_, first_erosion_time_);
     ar(s_, energy_, bodies_, bc_->prescribed_rotation_applied());
 }
 
@@ -621,7 +645,11 @@ void ExplicitSolver::load(RestartReader& in) {
     in(has_contact);
     if (has_contact != static_cast<bool>(contact_))
         in.fail("restart file of a model with other contact definitions");
-    if (contact_) contact_->load(in);
+    if (contact_) {
+        contact_->load(in);
+        // §7.6: the faces eroded before the stop; the loaded candidates are already without
+        contact_->drop_faces(elements_.eroded_so_far(), false);
+    }
     in.section("ties");
     if (tied_) {
         tied_->transfer(in);

@@ -63,6 +63,9 @@ public:
     [[nodiscard]] const ParticleState& state() const { return s_; }
     [[nodiscard]] const ShellElements& elements() const { return elements_; }
     [[nodiscard]] const EnergyBalance& energy() const { return energy_; }
+    /// Elements eroded so far (theory.md §7.6), and the time of the first erosion (-1: none).
+    [[nodiscard]] Index eroded_elements() const { return eroded_elements_; }
+    [[nodiscard]] Real first_erosion_time() const { return first_erosion_time_; }
     [[nodiscard]] const Model& model() const { return model_; }
     /// The mass added by control.mass_scaling per section (§6.10; zero without it).
     [[nodiscard]] const AddedMass& added_mass() const { return added_mass_; }
@@ -133,6 +136,8 @@ private:
     /// 1 (§6.10) the mass and inertia the element loop added to the elements whose step fell
     /// below the target of control.mass_scaling, given to their particles.
     void add_scaled_mass();
+    /// §7.6: the faces of the elements eroded this step leave the self-contacts.
+    void drop_eroded_faces();
     /// The contact's inverse masses of the nodal rigid bodies' particles: their bodies'
     /// (eq. 6.11-5), after the masses changed.
     void refresh_contact_masses();
@@ -246,7 +251,9 @@ private:
     Real dt_half_prev_ = 0;  ///< the step before dt_half_
     Real dt_center_ = 0;     ///< dt_n of the last cycle
     long steps_ = 0;
-    bool restart_ = false;  ///< next cycle restarts from rest (kinetic damping)
+    Index eroded_elements_ = 0;     ///< §7.6, over the run
+    Real first_erosion_time_ = -1;  ///< §7.6, -1 until an element erodes
+    bool restart_ = false;          ///< next cycle restarts from rest (kinetic damping)
     long element_steps_ = 0;
     Real residual2_ = 0, reference2_ = 0;  ///< relaxation residual of the last cycle
     Index min_dt_element_ = -1;            ///< the element of the last step's smallest step

@@ -81,6 +81,22 @@ ShellElements::ShellElements(const Model& model, const MeshTopology& topology,
     thickness_.resize(ne);
     for (std::size_t e = 0; e < ne; ++e)
         thickness_[e] = model.sections[static_cast<std::size_t>(section_[e])].thickness;
+    // §7.6: the erosion rule of each section, and the per-element state where one can fail
+    bool can_fail = false;
+    for (std::size_t g = 0; g < groups_.size(); ++g) {
+        const Material& mat = model.materials[static_cast<std::size_t>(model.sections[g].material)];
+        const ShellRule& rule = groups_[g]->rule();
+        erosion_.emplace_back(mat.failure, static_cast<int>(rule.inplane.size()),
+                              static_cast<int>(rule.through.size()));
+        can_fail = can_fail || erosion_.back().active();
+    }
+    if (can_fail) {
+        eroded_.assign(ne, 0);
+        element_work_.assign(ne, 0.0);
+        last_loads_.assign(ne, std::array<Real, 18>{});
+    } else {
+        erosion_.clear();
+    }
     if (smoothed_membrane_) {
         reversed_.resize(ne);
         cst_strain_.assign(ne, Voigt3::Zero());
@@ -150,6 +166,7 @@ Real ShellElements::min_critical_dt(const std::vector<Vec3>& x, Index* where) co
     Real best = std::numeric_limits<Real>::infinity();
     Index arg = -1;
     for (Index e = 0; e < size(); ++e) {
+        if (eroded(e)) continue;  // §7.6: no step of its own
         const Real dt = critical_dt(e, x);
         if (dt < best) {
             best = dt;
@@ -258,6 +275,18 @@ void ShellElements::add_neighbour_loads(std::size_t ue, const LocalTriangle<Real
 ShellElements::ElementTotals ShellElements::compute_element(Index e, ParticleState& s,
                                                             Real viscous_rate, Real dt) {
     const std::size_t ue = static_cast<std::size_t>(e);
+    if (!eroded_.empty() && eroded_[ue]) {  // §7.6: no loads, no step
+        ElementTotals totals;
+        book_last_half_step(ue, s, totals);
+        constexpr auto lanes = static_cast<std::size_t>(k_lanes);
+        const std::size_t used =
+            assembly_.blocks().block_lane[ue] >= 0 ? 3 : assembly_.slots_per_alone();
+        for (std::size_t k = 0; k < used; ++k)
+            for (std::size_t c = 0, at = assembly_.slot_offset(ue, k); c < k_slot_components; ++c)
+                assembly_.slots()[at + c * lanes] = 0;
+        set_resultants(ue, Voigt3::Zero(), Voigt3::Zero());
+        return totals;
+    }
     const ReversedTriangle rt = smoothed_membrane_ ? reversed_[ue] : reverse_element(ue, s);
     const Real lc = rt.checks.characteristic_length;  // §6.4, once per element and step
     time_steps_.refresh(e, tri_[ue], s.x, lc);
@@ -297,6 +326,15 @@ ShellElements::ElementTotals ShellElements::compute_element(Index e, ParticleSta
     totals.damping_work = loads.damping_work;
     totals.plastic_work = loads.plastic_work;
     set_resultants(ue, loads.membrane_force, loads.bending_moment);
+    if (!erosion_.empty()) {  // §7.6
+        std::array<Real, 18> corner_loads;
+        for (std::size_t i = 0; i < 3; ++i)
+            for (Eigen::Index c = 0; c < 3; ++c) {
+                corner_loads[6 * i + static_cast<std::size_t>(c)] = loads.force[i](c);
+                corner_loads[6 * i + 3 + static_cast<std::size_t>(c)] = loads.moment[i](c);
+            }
+        check_erosion(ue, loads.strain_work, totals, corner_loads);
+    }
     return totals;
 }
 
@@ -305,6 +343,8 @@ void ShellElements::ElementTotals::add(const ElementTotals& o) {
     damping_work += o.damping_work;
     plastic_work += o.plastic_work;
     mass_scaled += o.mass_scaled;
+    eroded += o.eroded;
+    eroded_work += o.eroded_work;
     // the lowest-numbered element among equals, as a scan in element order finds
     if (o.dt < dt ||
         (o.dt == dt && o.dt_element >= 0 && (dt_element < 0 || o.dt_element < dt_element))) {
@@ -403,6 +443,18 @@ void ShellElements::compute_block(Index b, ParticleState& s, Real viscous_rate, 
     ElementTotals totals;
     for (int l = 0; l < k_lanes; ++l) {
         const std::size_t ue = element(l);
+        if (!eroded_.empty() && eroded_[ue]) {  // §7.6: its slots and resultants zero
+            ElementTotals t;
+            book_last_half_step(ue, s, t);
+            totals.add(t);
+            const auto ul = static_cast<std::size_t>(l);
+            for (std::size_t k = 0; k < 3 * k_slot_components; ++k) {
+                full_slots[k * w + ul] = 0;
+                if (ring_slots) ring_slots[k * w + ul] = 0;
+            }
+            for (std::size_t r = 0; r < 6; ++r) set_lane(resultants[r], l, 0.0);
+            continue;
+        }
         if (!lane(loads.valid, l)) {  // outside the block kernel's bounds: the general code
             totals.add(compute_element(static_cast<Index>(ue), s, viscous_rate, dt));
             // (which writes the full slot array; the ring takes a copy of the lane)
@@ -423,6 +475,17 @@ void ShellElements::compute_block(Index b, ParticleState& s, Real viscous_rate, 
         t.plastic_work = lane(loads.plastic_work, l);
         t.dt = time_steps_.scaled_critical_dt(static_cast<Index>(ue), lc, volume, t.mass_scaled);
         t.dt_element = static_cast<Index>(ue);
+        if (!erosion_.empty()) {  // §7.6
+            std::array<Real, 18> corner_loads;
+            for (std::size_t i = 0; i < 3; ++i)
+                for (std::size_t k = 0; k < 2; ++k) {
+                    const V3<RealPack>& v = k == 0 ? loads.force[i] : loads.moment[i];
+                    corner_loads[6 * i + 3 * k] = lane(v.x, l);
+                    corner_loads[6 * i + 3 * k + 1] = lane(v.y, l);
+                    corner_loads[6 * i + 3 * k + 2] = lane(v.z, l);
+                }
+            check_erosion(ue, t.strain_work, t, corner_loads);
+        }
         totals.add(t);
     }
     block_totals_[static_cast<std::size_t>(b)] = totals;
@@ -583,7 +646,7 @@ ShellElements::StepTotals ShellElements::step_totals() {
     const bool distributed = decomposition_ && decomposition_->distributed();
     const Index n_atoms = distributed ? static_cast<Index>(decomposition_->own_atoms.size())
                                       : (n_units + k_atom_units - 1) / k_atom_units;
-    ExactSum works[3];
+    ExactSum works[5];    // strain, damping, plastic work; the eroded elements' work and count
     ElementTotals least;  // the smallest step, the first failure, the scaled elements
     for (Index i = 0; i < n_atoms; ++i) {
         const Index a = distributed ? decomposition_->own_atoms[static_cast<std::size_t>(i)] : i;
@@ -595,7 +658,10 @@ ShellElements::StepTotals ShellElements::step_totals() {
         works[0].add(t.strain_work);
         works[1].add(t.damping_work);
         works[2].add(t.plastic_work);
-        t.strain_work = t.damping_work = t.plastic_work = 0;
+        works[3].add(t.eroded_work);
+        works[4].add(static_cast<Real>(t.eroded));
+        t.strain_work = t.damping_work = t.plastic_work = t.eroded_work = 0;
+        t.eroded = 0;
         least.add(t);
     }
     StepTotals tot;
@@ -609,130 +675,13 @@ ShellElements::StepTotals ShellElements::step_totals() {
     tot.strain_work = works[0].value();
     tot.damping_work = works[1].value();
     tot.plastic_work = works[2].value();
+    tot.eroded_work = works[3].value();
+    tot.eroded_elements = static_cast<Index>(works[4].value());
     tot.min_dt = least.dt;
     tot.min_dt_element = least.dt_element;
     tot.failed_element = least.failed;
     tot.mass_scaled = least.mass_scaled;
     return tot;
-}
-
-namespace {
-template <class T>
-T take(const std::vector<char>& bytes, std::size_t& at) {
-    T v;
-    read_bytes(bytes, at, v);
-    return v;
-}
-}  // namespace
-
-// Per element: its index, thickness, N, M, bending step ratio and length, its mass scaling
-// state (§6.10), then its points.
-std::vector<char> ShellElements::pack_state(bool own_only) const {
-    std::vector<Index> elements;
-    const ElementBlocks& blocks = assembly_.blocks();
-    if (own_only && decomposition_) {
-        for (const Index b : decomposition_->own_blocks)
-            for (Index l = 0; l < k_lanes; ++l)
-                elements.push_back(
-                    blocks.block_elements[static_cast<std::size_t>(b * k_lanes + l)]);
-        for (const Index i : decomposition_->own_alone)
-            elements.push_back(blocks.alone_elements[static_cast<std::size_t>(i)]);
-    } else {
-        for (Index e = 0; e < size(); ++e) elements.push_back(e);
-    }
-    std::vector<char> bytes;
-    auto& self = const_cast<ShellElements&>(*this);  // the step ratios have no const access
-    for (const Index e : elements) {
-        const auto ue = static_cast<std::size_t>(e);
-        append_bytes(bytes, e);
-        append_bytes(bytes, thickness_[ue]);
-        const Voigt3 n = resultant(ue, 0), m = resultant(ue, 3);
-        for (int c = 0; c < 3; ++c) append_bytes(bytes, n[c]);
-        for (int c = 0; c < 3; ++c) append_bytes(bytes, m[c]);
-        append_bytes(bytes, self.time_steps_.ratio()[ue]);
-        append_bytes(bytes, self.time_steps_.ratio_length()[ue]);
-        append_bytes(bytes, time_steps_.mass_state(ue));
-        const ElementGroup& group = group_of(ue);
-        const GroupPlace place = place_of(ue);
-        for (std::size_t p = 0; p < group.n_points(); ++p)
-            append_bytes(bytes, group.point_state(place, p));
-    }
-    return bytes;
-}
-
-void ShellElements::unpack_state(const std::vector<char>& bytes) {
-    std::size_t at = 0;
-    while (at < bytes.size()) {
-        const auto ue = static_cast<std::size_t>(take<Index>(bytes, at));
-        thickness_[ue] = take<Real>(bytes, at);
-        Voigt3 n, m;
-        for (int c = 0; c < 3; ++c) n[c] = take<Real>(bytes, at);
-        for (int c = 0; c < 3; ++c) m[c] = take<Real>(bytes, at);
-        set_resultants(ue, n, m);
-        time_steps_.ratio()[ue] = take<Real>(bytes, at);
-        time_steps_.ratio_length()[ue] = take<Real>(bytes, at);
-        time_steps_.set_mass_state(ue, take<std::array<Real, 3>>(bytes, at));
-        ElementGroup& group = *groups_[static_cast<std::size_t>(section_[ue])];
-        const GroupPlace place = place_of(ue);
-        for (std::size_t p = 0; p < group.n_points(); ++p)
-            group.set_point_state(place, p, take<MaterialPoint>(bytes, at));
-    }
-}
-
-// The restart file holds every point with a history, then every stress-only point's stress,
-// in element order (format 2), whatever the layout in memory.
-void ShellElements::save(RestartWriter& out) const {
-    std::vector<MaterialPoint> points;
-    std::vector<Voigt3> stresses;
-    for (std::size_t e = 0; e < tri_.size(); ++e) {
-        const ElementGroup& group = group_of(e);
-        const GroupPlace place = place_of(e);
-        for (std::size_t p = 0; p < group.n_points(); ++p) {
-            if (group.stress_only())
-                stresses.push_back(group.point_state(place, p).stress);
-            else
-                points.push_back(group.point_state(place, p));
-        }
-    }
-    std::vector<Voigt3> n(tri_.size()), m(tri_.size());
-    for (std::size_t e = 0; e < tri_.size(); ++e) {
-        n[e] = resultant(e, 0);
-        m[e] = resultant(e, 3);
-    }
-    auto& self = const_cast<ShellElements&>(*this);  // the archive's interface is shared with load
-    out(points, stresses, self.thickness_, self.time_steps_.ratio(),
-        self.time_steps_.ratio_length(), n, m);
-}
-
-void ShellElements::load(RestartReader& in) {
-    const std::size_t n_elements = tri_.size();
-    std::size_t n_history = 0, n_stress_only = 0;
-    for (std::size_t e = 0; e < n_elements; ++e)
-        (group_of(e).stress_only() ? n_stress_only : n_history) += group_of(e).n_points();
-    std::vector<MaterialPoint> points;
-    std::vector<Voigt3> stresses, n, m;  // the resultants N, M of every element
-    const std::vector<std::size_t> ratio_lengths =
-        stored_lengths(time_steps_.ratio(), time_steps_.ratio_length());
-    in(points, stresses, thickness_, time_steps_.ratio(), time_steps_.ratio_length(), n, m);
-    if (points.size() != n_history || stresses.size() != n_stress_only ||
-        thickness_.size() != n_elements || n.size() != n_elements || m.size() != n_elements ||
-        stored_lengths(time_steps_.ratio(), time_steps_.ratio_length()) != ratio_lengths)
-        in.fail("restart file of a model with other elements or integration rules");
-    for (std::size_t e = 0; e < n_elements; ++e) set_resultants(e, n[e], m[e]);
-    std::size_t i = 0, j = 0;
-    for (std::size_t e = 0; e < n_elements; ++e) {
-        ElementGroup& group = *groups_[static_cast<std::size_t>(section_[e])];
-        const GroupPlace place = place_of(e);
-        for (std::size_t p = 0; p < group.n_points(); ++p) {
-            if (group.stress_only()) {
-                MaterialPoint mp;
-                mp.stress = stresses[j++];
-                group.set_point_state(place, p, mp);
-            } else {
-                group.set_point_state(place, p, points[i++]);
-            }
-        }
-    }
 }
 
 }  // namespace fpmshell

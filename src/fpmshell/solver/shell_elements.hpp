@@ -11,6 +11,7 @@
 #include "fpmshell/core/communicator.hpp"
 #include "fpmshell/core/types.hpp"
 #include "fpmshell/elements/shell_triangle.hpp"
+#include "fpmshell/failure/element_erosion.hpp"
 #include "fpmshell/model/mesh_topology.hpp"
 #include "fpmshell/model/model.hpp"
 #include "fpmshell/solver/corner_assembly.hpp"
@@ -47,6 +48,8 @@ public:
         /// elements whose step fell below the target of §6.10 mass scaling this step (their
         /// factors wait in time_steps().take_pending_scaling())
         Index mass_scaled = 0;
+        Index eroded_elements = 0;  ///< elements eroded this step (§7.6)
+        Real eroded_work = 0;       ///< their strain work over the run, this step's included
     };
 
     /// Internal forces and moments at t_n from the path element (x_prev, x, dtheta); writes
@@ -86,6 +89,16 @@ public:
     [[nodiscard]] int thickness_points(Index e) const {
         return static_cast<int>(group_of(static_cast<std::size_t>(e)).rule().through.size());
     }
+    /// Whether some section's material can fail (theory.md §7.6), and whether element e has
+    /// eroded: it no longer acts (no loads, no time step), its particles keep their mass.
+    [[nodiscard]] bool can_erode() const { return !eroded_.empty(); }
+    [[nodiscard]] bool eroded(Index e) const {
+        return !eroded_.empty() && eroded_[static_cast<std::size_t>(e)] != 0;
+    }
+    /// The elements eroded in the last step (of those this rank computes), and all eroded
+    /// so far, in element order.
+    [[nodiscard]] std::vector<Index> eroded_in_last_step() const;
+    [[nodiscard]] std::vector<Index> eroded_so_far() const;
     /// Current thickness of element e (the section's, or updated by §3.4).
     [[nodiscard]] Real thickness(Index e) const { return thickness_[static_cast<std::size_t>(e)]; }
 
@@ -111,6 +124,8 @@ private:
         Real dt = std::numeric_limits<Real>::infinity();
         Index dt_element = -1, failed = -1;
         Index mass_scaled = 0;             ///< elements given added mass this step (§6.10)
+        Index eroded = 0;                  ///< elements eroded this step (§7.6)
+        Real eroded_work = 0;              ///< their strain work over the run
         void add(const ElementTotals& o);  ///< o's works added after this one's
     };
     /// The smoothed membrane's view of an element's neighbours (membrane_smoothing.hpp).
@@ -140,6 +155,16 @@ private:
     /// Adds the neighbours' share of element e's membrane forces to its slots across the sides.
     void add_neighbour_loads(std::size_t e, const LocalTriangle<Real>& rt, const SmoothedStrain& sm,
                              const Voigt3& n);
+    /// §7.6 after element e's step of strain work `work`: adds the work to the element's,
+    /// and erodes it where its section's rule says so (booked in t), keeping its corner loads
+    /// (per corner: force x y z, moment x y z) for book_last_half_step. Only where
+    /// some material can fail (erosion_ not empty).
+    void check_erosion(std::size_t e, Real work, ElementTotals& t,
+                       const std::array<Real, 18>& corner_loads);
+    /// §7.6 the step after element e eroded: the work of its last loads over the half step
+    /// they acted in, into t's strain and eroded work.
+    void book_last_half_step(std::size_t e, const ParticleState& s, ElementTotals& t);
+    static constexpr std::uint8_t k_eroded = 1, k_eroded_pending = 2;  ///< eroded_ values
     /// One element by the general (scalar) code; its totals: see ElementTotals.
     [[nodiscard]] ElementTotals compute_element(Index e, ParticleState& s, Real viscous_rate,
                                                 Real dt);
@@ -169,6 +194,13 @@ private:
     CornerAssembly assembly_;
     RangeBalancer balancer_;       ///< the threads' ranges of blocks by measured time
     std::vector<Real> thickness_;  ///< per element, current h
+    /// §7.6, all empty where no material can fail: per section its erosion rule; per element
+    /// 0 live, k_eroded_pending the step after it eroded, then k_eroded; its strain work so
+    /// far (of the sections that can fail), and the loads of the step it eroded in
+    std::vector<ElementErosion> erosion_;
+    std::vector<std::uint8_t> eroded_;
+    std::vector<Real> element_work_;
+    std::vector<std::array<Real, 18>> last_loads_;  ///< corner loads of the eroding step
     bool thickness_update_ = false;
     bool smoothed_membrane_ = false;          ///< control.membrane: smoothed
     std::vector<ReversedTriangle> reversed_;  ///< smoothed: per element, this step's path element

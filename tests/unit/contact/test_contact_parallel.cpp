@@ -6,12 +6,14 @@
 // - the contact forces and corrected positions of one enforcement are bitwise the same on one
 //   and on two threads, with the parallel paths forced on;
 // - an enforcement repeated on the same predictor starts from the multipliers of the first
-//   (§8.3a): it converges in a sweep or two to the same forces, where the first needed many.
+//   (§8.3a): it converges in a sweep or two to the same forces, where the first needed many;
+// - faces dropped as eroded (§7.6) leave the search, their particles stay slaves.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <random>
+#include <set>
 #ifdef _OPENMP
 #include <omp.h>
 #endif
@@ -297,4 +299,46 @@ TEST(ContactSearch, ClearancesDropOnlyPairsThatMakeNoConstraint) {
     EXPECT_GT(skipping.statistics().searches, 5) << "over several searches";
     EXPECT_GT(skipping.statistics().pairs_skipped, 1000) << "the clearances dropped pairs";
     EXPECT_EQ(computing.statistics().pairs_skipped, 0);
+}
+
+TEST(ContactSearch, ErodedFacesLeaveTheSearchTheirParticlesStay) {
+    // theory.md §7.6: after drop_faces the next search finds no pair with an eroded face, and
+    // the particles of those faces are still slaves (pairs of them with the faces left)
+    const FoldedSheet f = folded_sheet(3, 16, 8, 0.6 * k_h);
+    const MeshTopology topology(f.model);
+    ContactSolver solver(f.model, topology, unit_inverse_masses(f.model),
+                         std::vector<Real>(f.model.triangles.size(), k_h));
+    auto pairs = [&] {
+        std::vector<Vec3> x_pred = f.x, body_u, force(f.x.size(), Vec3::Zero());
+        std::vector<RigidBodyState> bodies;
+        solver.enforce(f.x, x_pred, body_u, bodies, 1e-4, 1e-4, 1e-2, 0.0, 0, force);
+        return solver.candidate_pairs(0);
+    };
+    const std::vector<std::pair<Index, Index>> before = pairs();
+    std::vector<Index> eroded;  // every third face that has a pair
+    for (std::size_t i = 0; i < before.size(); i += 3) eroded.push_back(before[i].second);
+    std::sort(eroded.begin(), eroded.end());
+    eroded.erase(std::unique(eroded.begin(), eroded.end()), eroded.end());
+    ASSERT_GT(eroded.size(), 10u);
+    solver.drop_faces(eroded, true);
+    const std::vector<std::pair<Index, Index>> after = pairs();
+    std::set<Index> slaves_of_eroded_faces;
+    for (const Index e : eroded)
+        for (const Index p : f.model.triangles[static_cast<std::size_t>(e)])
+            slaves_of_eroded_faces.insert(p);
+    std::size_t kept_slave_pairs = 0;
+    for (const auto& [slave, face] : after) {
+        EXPECT_FALSE(std::binary_search(eroded.begin(), eroded.end(), face));
+        kept_slave_pairs += slaves_of_eroded_faces.count(slave);
+    }
+    EXPECT_GT(kept_slave_pairs, 0u);
+    // exactly the pairs of the faces left
+    std::vector<std::pair<Index, Index>> expected;
+    for (const auto& pair : before)
+        if (!std::binary_search(eroded.begin(), eroded.end(), pair.second))
+            expected.push_back(pair);
+    std::vector<std::pair<Index, Index>> sorted_after = after;
+    std::sort(expected.begin(), expected.end());
+    std::sort(sorted_after.begin(), sorted_after.end());
+    EXPECT_EQ(sorted_after, expected);
 }

@@ -58,7 +58,8 @@ std::vector<Real> ascii_values(const std::string& vtu, const std::string& name) 
 TEST(OutputFields, TheStandardListHoldsTheArraysOfTheFormatInFileOrder) {
     const Model model = moving_plate();
     const ExplicitSolver solver(model);
-    const FieldFrame frame = field_frame(standard_fields(), {model, solver, solver.state().x}, 0);
+    const FieldFrame frame =
+        field_frame(standard_fields(model), {model, solver, solver.state().x}, 0);
     EXPECT_EQ(names(frame.point_data),
               (std::vector<std::string>{"displacement", "velocity", "rotation"}));
     EXPECT_EQ(names(frame.cell_data),
@@ -71,7 +72,7 @@ TEST(OutputFields, AFieldAddedToTheListIsInTheFrameAndTheVtuWithItsValues) {
     const Model model = moving_plate();
     ExplicitSolver solver(model);
     for (int i = 0; i < 5; ++i) solver.step(1e30);
-    std::vector<OutputField> fields = standard_fields();
+    std::vector<OutputField> fields = standard_fields(model);
     fields.push_back({"particle_mass", 1, FieldLocation::Point,
                       [](const FieldSource& s, Index first, Index last, std::span<Real> out) {
                           for (Index p = first; p < last; ++p)
@@ -125,7 +126,7 @@ TEST(OutputFields, AFrameOfOtherPositionsShowsThemAndTheirDisplacements) {
     solver.step(1e30);
     std::vector<Vec3> positions = solver.state().x;
     for (Vec3& x : positions) x += Vec3(0.5, -0.25, 2.0);
-    const FieldFrame frame = field_frame(standard_fields(), {model, solver, positions}, 0);
+    const FieldFrame frame = field_frame(standard_fields(model), {model, solver, positions}, 0);
     EXPECT_EQ(frame.points, positions);
     const FieldArray& displacement = frame.point_data[0];
     for (std::size_t p = 0; p < positions.size(); ++p) {
@@ -140,7 +141,8 @@ TEST(OutputFields, EveryItemOfALargeFrameHoldsItsOwnValues) {
     const Model model = moving_plate(60);
     ExplicitSolver solver(model);
     for (int i = 0; i < 3; ++i) solver.step(1e30);
-    const FieldFrame frame = field_frame(standard_fields(), {model, solver, solver.state().x}, 0);
+    const FieldFrame frame =
+        field_frame(standard_fields(model), {model, solver, solver.state().x}, 0);
     const FieldArray& velocity = frame.point_data[1];
     ASSERT_EQ(velocity.values.size(), 3 * solver.state().v.size());
     for (std::size_t p = 0; p < solver.state().v.size(); ++p)

@@ -19,6 +19,7 @@
 #include <string>
 #include <utility>
 
+#include "../eroding_band.hpp"
 #include "fpmshell/core/errors.hpp"
 #include "fpmshell/driver/run_driver.hpp"
 #include "fpmshell/io/model_reader.hpp"
@@ -377,6 +378,35 @@ TEST(Restart, ARigidSolidResumesBitForBit) {
     model.initial_conditions[0].spin = Vec3(30, 0, 20);  // a spin too: every part of (6.11-12)
     model.initial_conditions[0].spin_about_mass_centre = true;
     expect_resume_bit_for_bit(model, "solid", 300);
+}
+
+TEST(Restart, ErosionResumesBitForBit) {
+    // the plate torn along its weak band (eroding_band.hpp), stopped at step 193, amid the
+    // erosion (its 64 band elements erode from step 185 to 196): the eroded elements, their
+    // works and the loads of the step they eroded in carry over
+    Model model = test::eroding_band_plate(16);
+    model.title = "eroding band";
+    model.source_file = (fs::temp_directory_path() / "eroding_band.yaml").string();  // its name
+    {
+        ExplicitSolver probe(model);
+        while (probe.steps() < 193) probe.step(1e30);
+        ASSERT_GT(probe.eroded_elements(), 0) << "no element eroded before the stop";
+        ASSERT_LT(probe.eroded_elements(), 64);
+    }
+    expect_resume_bit_for_bit(model, "erosion", 193);
+}
+
+TEST(Restart, APerforationResumesBitForBit) {
+    // examples/plate_perforation stopped while the ball tears through (its elements erode from
+    // about step 50): the faces eroded before the stop leave the self-contact of the resumed run
+    const Model model =
+        read_model(std::string(FPMSHELL_SOURCE_DIR) + "/examples/plate_perforation/model.yaml");
+    {
+        ExplicitSolver probe(model);
+        while (probe.steps() < 120) probe.step(1e30);
+        ASSERT_GT(probe.eroded_elements(), 0) << "no element eroded before the stop";
+    }
+    expect_resume_bit_for_bit(model, "perforation", 120);
 }
 
 }  // namespace

@@ -3,6 +3,21 @@
 
 namespace fpmshell::deck {
 
+namespace {
+
+/// The plastic strain at failure of a plastic material's card (*MAT_003 FS, *MAT_018 EPSF,
+/// *MAT_024 FAIL; theory.md §7.6): > 0 erodes the elements whose points reach it, 0 none.
+void failure_strain(const Card& c, std::size_t k, const char* name, MaterialDef& m) {
+    const Real strain = c.real(k, name);
+    if (strain < 0)
+        c.fail(std::string(name) +
+               " < 0 (a user failure routine or a failure time) is not supported; give the "
+               "plastic strain at failure (> 0) or 0 for none");
+    if (strain > 0) m.keys.push_back("failure: {plastic_strain: " + num(strain) + "}");
+}
+
+}  // namespace
+
 /// Parts: a heading card and a data card each (one *PART may define several).
 void DeckTranslator::part(const DeckBlock& b) {
     if (b.cards.size() < 2) required_card(b, 1, "PID, SECID, MID");
@@ -119,8 +134,7 @@ void DeckTranslator::material(const DeckBlock& b) {
         const Real src = g.real(0, "SRC"), srp = g.real(1, "SRP");
         if (src > 0 || srp > 0)
             m.keys.push_back("cowper_symonds: {D: " + num(src) + ", q: " + num(srp) + "}");
-        if (g.real(2, "FS") != 0)
-            note(b, g.line(), "FS: failure is not modelled (no element is deleted)");
+        failure_strain(g, 2, "FS", m);
         if (g.real(3, "VP") != 0)
             note(b, g.line(), "VP = 1 read as the scaled yield stress (VP = 0)");
         m.at = {&b, f.line()};
@@ -187,8 +201,7 @@ void DeckTranslator::material(const DeckBlock& b) {
         if (sigy > 0.02) m.keys.push_back("yield_stress: " + num(sigy));
         if (g.real(1, "VP") != 0)
             note(b, g.line(), "VP = 1 read as the scaled yield stress (VP = 0)");
-        if (g.real(2, "EPSF") != 0)
-            note(b, g.line(), "EPSF: failure is not modelled (no element is deleted)");
+        failure_strain(g, 2, "EPSF", m);
         m.at = {&b, f.line()};
     } else if (name == "MAT_PIECEWISE_LINEAR_PLASTICITY") {
         const Card f = required_card(b, first, "MID, RO, E, PR, SIGY, ETAN, FAIL, TDEL");
@@ -202,8 +215,7 @@ void DeckTranslator::material(const DeckBlock& b) {
         if (g.id(3, "LCSR") != 0) g.fail("LCSR (a strain-rate scaling curve) is not supported");
         if (g.real(4, "VP") != 0)
             note(b, g.line(), "VP = 1 read as the scaled yield stress (VP = 0)");
-        if (f.real(6, "FAIL") != 0)
-            note(b, f.line(), "FAIL: failure is not modelled (no element is deleted)");
+        failure_strain(f, 6, "FAIL", m);
         std::vector<Point2> points;
         for (std::size_t k = 0; k < 8; ++k) {
             const Real x = eps.real(k, "EPS1..EPS8"), y = es.real(k, "ES1..ES8");

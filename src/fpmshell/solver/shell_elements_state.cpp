@@ -1,0 +1,144 @@
+// The state ShellElements carries from step to step: as bytes for another rank (a distributed
+// run's results on rank 0) and in a restart file.
+#include "fpmshell/core/byte_buffer.hpp"
+#include "fpmshell/io/restart_archive.hpp"
+#include "fpmshell/solver/shell_elements.hpp"
+
+namespace fpmshell {
+
+namespace {
+template <class T>
+T take(const std::vector<char>& bytes, std::size_t& at) {
+    T v;
+    read_bytes(bytes, at, v);
+    return v;
+}
+}  // namespace
+
+// Per element: its index, thickness, N, M, bending step ratio and length, its mass scaling
+// state (§6.10), where elements can fail its erosion state (§7.6), then its points.
+std::vector<char> ShellElements::pack_state(bool own_only) const {
+    std::vector<Index> elements;
+    const ElementBlocks& blocks = assembly_.blocks();
+    if (own_only && decomposition_) {
+        for (const Index b : decomposition_->own_blocks)
+            for (Index l = 0; l < k_lanes; ++l)
+                elements.push_back(
+                    blocks.block_elements[static_cast<std::size_t>(b * k_lanes + l)]);
+        for (const Index i : decomposition_->own_alone)
+            elements.push_back(blocks.alone_elements[static_cast<std::size_t>(i)]);
+    } else {
+        for (Index e = 0; e < size(); ++e) elements.push_back(e);
+    }
+    std::vector<char> bytes;
+    auto& self = const_cast<ShellElements&>(*this);  // the step ratios have no const access
+    for (const Index e : elements) {
+        const auto ue = static_cast<std::size_t>(e);
+        append_bytes(bytes, e);
+        append_bytes(bytes, thickness_[ue]);
+        const Voigt3 n = resultant(ue, 0), m = resultant(ue, 3);
+        for (int c = 0; c < 3; ++c) append_bytes(bytes, n[c]);
+        for (int c = 0; c < 3; ++c) append_bytes(bytes, m[c]);
+        append_bytes(bytes, self.time_steps_.ratio()[ue]);
+        append_bytes(bytes, self.time_steps_.ratio_length()[ue]);
+        append_bytes(bytes, time_steps_.mass_state(ue));
+        if (can_erode()) {  // §7.6
+            append_bytes(bytes, eroded_[ue]);
+            append_bytes(bytes, element_work_[ue]);
+            append_bytes(bytes, last_loads_[ue]);
+        }
+        const ElementGroup& group = group_of(ue);
+        const GroupPlace place = place_of(ue);
+        for (std::size_t p = 0; p < group.n_points(); ++p)
+            append_bytes(bytes, group.point_state(place, p));
+    }
+    return bytes;
+}
+
+void ShellElements::unpack_state(const std::vector<char>& bytes) {
+    std::size_t at = 0;
+    while (at < bytes.size()) {
+        const auto ue = static_cast<std::size_t>(take<Index>(bytes, at));
+        thickness_[ue] = take<Real>(bytes, at);
+        Voigt3 n, m;
+        for (int c = 0; c < 3; ++c) n[c] = take<Real>(bytes, at);
+        for (int c = 0; c < 3; ++c) m[c] = take<Real>(bytes, at);
+        set_resultants(ue, n, m);
+        time_steps_.ratio()[ue] = take<Real>(bytes, at);
+        time_steps_.ratio_length()[ue] = take<Real>(bytes, at);
+        time_steps_.set_mass_state(ue, take<std::array<Real, 3>>(bytes, at));
+        if (can_erode()) {
+            eroded_[ue] = take<std::uint8_t>(bytes, at);
+            element_work_[ue] = take<Real>(bytes, at);
+            last_loads_[ue] = take<std::array<Real, 18>>(bytes, at);
+        }
+        ElementGroup& group = *groups_[static_cast<std::size_t>(section_[ue])];
+        const GroupPlace place = place_of(ue);
+        for (std::size_t p = 0; p < group.n_points(); ++p)
+            group.set_point_state(place, p, take<MaterialPoint>(bytes, at));
+    }
+}
+
+// The restart file holds every point with a history, then every stress-only point's stress,
+// in element order (format 2), whatever the layout in memory.
+void ShellElements::save(RestartWriter& out) const {
+    std::vector<MaterialPoint> points;
+    std::vector<Voigt3> stresses;
+    for (std::size_t e = 0; e < tri_.size(); ++e) {
+        const ElementGroup& group = group_of(e);
+        const GroupPlace place = place_of(e);
+        for (std::size_t p = 0; p < group.n_points(); ++p) {
+            if (group.stress_only())
+                stresses.push_back(group.point_state(place, p).stress);
+            else
+                points.push_back(group.point_state(place, p));
+        }
+    }
+    std::vector<Voigt3> n(tri_.size()), m(tri_.size());
+    for (std::size_t e = 0; e < tri_.size(); ++e) {
+        n[e] = resultant(e, 0);
+        m[e] = resultant(e, 3);
+    }
+    auto& self = const_cast<ShellElements&>(*this);  // the archive's interface is shared with load
+    out(points, stresses, self.thickness_, self.time_steps_.ratio(),
+        self.time_steps_.ratio_length(), n, m);
+    out(self.eroded_, self.element_work_, self.last_loads_);  // §7.6 (empty: none can fail)
+}
+
+void ShellElements::load(RestartReader& in) {
+    const std::size_t n_elements = tri_.size();
+    std::size_t n_history = 0, n_stress_only = 0;
+    for (std::size_t e = 0; e < n_elements; ++e)
+        (group_of(e).stress_only() ? n_stress_only : n_history) += group_of(e).n_points();
+    std::vector<MaterialPoint> points;
+    std::vector<Voigt3> stresses, n, m;  // the resultants N, M of every element
+    const std::vector<std::size_t> ratio_lengths =
+        stored_lengths(time_steps_.ratio(), time_steps_.ratio_length());
+    in(points, stresses, thickness_, time_steps_.ratio(), time_steps_.ratio_length(), n, m);
+    if (points.size() != n_history || stresses.size() != n_stress_only ||
+        thickness_.size() != n_elements || n.size() != n_elements || m.size() != n_elements ||
+        stored_lengths(time_steps_.ratio(), time_steps_.ratio_length()) != ratio_lengths)
+        in.fail("restart file of a model with other elements or integration rules");
+    const std::vector<std::size_t> erosion_lengths =
+        stored_lengths(eroded_, element_work_, last_loads_);
+    in(eroded_, element_work_, last_loads_);
+    if (stored_lengths(eroded_, element_work_, last_loads_) != erosion_lengths)
+        in.fail("restart file of a model with other failure criteria");
+    for (std::size_t e = 0; e < n_elements; ++e) set_resultants(e, n[e], m[e]);
+    std::size_t i = 0, j = 0;
+    for (std::size_t e = 0; e < n_elements; ++e) {
+        ElementGroup& group = *groups_[static_cast<std::size_t>(section_[e])];
+        const GroupPlace place = place_of(e);
+        for (std::size_t p = 0; p < group.n_points(); ++p) {
+            if (group.stress_only()) {
+                MaterialPoint mp;
+                mp.stress = stresses[j++];
+                group.set_point_state(place, p, mp);
+            } else {
+                group.set_point_state(place, p, points[i++]);
+            }
+        }
+    }
+}
+
+}  // namespace fpmshell
