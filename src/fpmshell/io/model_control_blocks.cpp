@@ -176,7 +176,8 @@ void read_output(const std::optional<YamlValue>& v, Model& model) {
         {"reaction_mz", Quantity::ReactionMz},
         {"force_x", Quantity::ForceX},
         {"force_y", Quantity::ForceY},
-        {"force_z", Quantity::ForceZ}};
+        {"force_z", Quantity::ForceZ},
+        {"eroded_elements", Quantity::ErodedElements}};  // the model's (read apart below)
     std::vector<std::string> quantity_names;
     for (const auto& [name, q] : quantities) quantity_names.push_back(name);
     static const std::vector<std::pair<std::string, Reduce>> reductions = {
