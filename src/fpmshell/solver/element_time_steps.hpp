@@ -28,18 +28,26 @@ public:
     ElementTimeSteps(const Model& model, const MeshTopology& topology, std::vector<Real> wave_speed,
                      std::vector<Mat3> bending_rigidity);
 
-    /// Critical step of element e of current length lc and current volume A h (§6.4),
-    /// unscaled. (Inline, as refresh: the element loop calls both for every element of every
-    /// step.)
-    [[nodiscard]] Real critical_dt(Index e, Real lc, Real volume) const {
-        return with_stiffness_damping(undamped_dt(e, lc, volume));
+    /// Eq. 6.4-2: sqrt(min(1, V_0 / V)) of an element of initial volume v0 and current volume
+    /// A h v, on one element or a pack of them (the same bits: div and sqrt round correctly).
+    template <class T>
+    [[nodiscard]] static T volume_factor(const T& v0, const T& v) {
+        return sqrt(min(T(1.0), v0 / v));
+    }
+    /// A_0 h_0 of element e.
+    [[nodiscard]] Real initial_volume(std::size_t e) const { return initial_volume_[e]; }
+    /// Critical step of element e of current length lc and volume factor volume_factor(V_0, A h)
+    /// (§6.4), unscaled. (Inline, as refresh: the element loop calls both for every element of
+    /// every step.)
+    [[nodiscard]] Real critical_dt(Index e, Real lc, Real volume_factor) const {
+        return with_stiffness_damping(undamped_dt(e, lc, volume_factor));
     }
     /// critical_dt with §6.10's mass scaling during the run: an element whose step has fallen
     /// below the target of enable_run_scaling is given the step of the target, and its mass
     /// factor is kept for take_pending_scaling (element e only writes entry e: the element
     /// loop may call it from several threads). `scaled` counts the elements so given.
-    [[nodiscard]] Real scaled_critical_dt(Index e, Real lc, Real volume, Index& scaled) {
-        Real dt = undamped_dt(e, lc, volume);
+    [[nodiscard]] Real scaled_critical_dt(Index e, Real lc, Real volume_factor, Index& scaled) {
+        Real dt = undamped_dt(e, lc, volume_factor);
         // eq. 6.10a (an element scaled already may be an ulp below the target: not again)
         if (dt < run_target_ * (1.0 - 1e-12) && dt > 0) {
             pending_[static_cast<std::size_t>(e)] = (run_target_ / dt) * (run_target_ / dt);
@@ -115,9 +123,9 @@ private:
     void scale_element(std::size_t e, Real f);
     /// Sets every element's ratio at the initial geometry, shared within shape classes.
     void share_initial_ratios(const Model& model);
-    /// The step of element e of length lc and volume A h before the reduction for stiffness
-    /// damping (§6.4).
-    [[nodiscard]] Real undamped_dt(Index e, Real lc, Real volume) const {
+    /// The step of element e of length lc and volume factor (eq. 6.4-2) before the reduction
+    /// for stiffness damping (§6.4).
+    [[nodiscard]] Real undamped_dt(Index e, Real lc, Real volume_factor) const {
         const auto ue = static_cast<std::size_t>(e);
         // an element of a rigid section moves rigidly (§6.11): no step of its own
         if (rigid_section_[static_cast<std::size_t>(section_[ue])])
@@ -126,10 +134,8 @@ private:
         // slower to integrate, bend_ratio_ < 1 (bending_time_step.hpp). Eq. 6.4-2: the mass
         // stays on the particles, so an element whose volume has grown past its initial one
         // (stretched with its thickness kept) is as dense as rho V_0 / (A h).
-        Real factor = std::min(Real{1}, bend_ratio_[ue]);
-        if (volume > initial_volume_[ue])
-            factor = std::min(factor, std::sqrt(initial_volume_[ue] / volume));
-        Real dt = lc / wave_speed_[static_cast<std::size_t>(section_[ue])] * factor;
+        Real dt = lc / wave_speed_[static_cast<std::size_t>(section_[ue])] *
+                  std::min(std::min(Real{1}, bend_ratio_[ue]), volume_factor);
         if (!mass_scale_.empty()) dt *= mass_scale_[ue];  // §6.10: sqrt(f_e)
         return dt;
     }

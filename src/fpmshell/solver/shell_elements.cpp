@@ -112,6 +112,14 @@ ShellElements::ShellElements(const Model& model, const MeshTopology& topology,
     block_totals_.assign(static_cast<std::size_t>(blocks.n_blocks()), ElementTotals{});
     alone_totals_.assign(static_cast<std::size_t>(blocks.n_alone()), ElementTotals{});
     block_resultants_.assign(6 * block_totals_.size(), RealPack(0.0));
+    // eq. 6.4-2: the blocks' initial volumes as whole packs (a pack filled lane by lane through
+    // memory every step stalled the block: 6 % of the elastic kernel)
+    block_initial_volume_.reserve(block_totals_.size());
+    for (Index b = 0; b < blocks.n_blocks(); ++b)
+        block_initial_volume_.emplace_back([&](auto l) {
+            return time_steps_.initial_volume(static_cast<std::size_t>(
+                blocks.block_elements[static_cast<std::size_t>(b * k_lanes + Index{l})]));
+        });
     assembly_.plan(gather_ranges());
 }
 
@@ -293,7 +301,9 @@ ShellElements::ElementTotals ShellElements::compute_element(Index e, ParticleSta
     ElementTotals totals;
     // eq. 6.4-2: the current area A_b = (A_b / A_a) A_a, the thickness of the step's start
     const Real volume = rt.checks.area_ratio * rt.local.area * thickness_[ue];
-    totals.dt = time_steps_.scaled_critical_dt(e, lc, volume, totals.mass_scaled);
+    totals.dt = time_steps_.scaled_critical_dt(
+        e, lc, ElementTimeSteps::volume_factor(time_steps_.initial_volume(ue), volume),
+        totals.mass_scaled);
     totals.dt_element = e;
     // the 3 slots across the sides exist (and are gathered) only with the smoothed membrane
     constexpr auto w = static_cast<std::size_t>(k_lanes);
@@ -439,6 +449,13 @@ void ShellElements::compute_block(Index b, ParticleState& s, Real viscous_rate, 
         resultants[r] = loads.membrane_force[r];
         resultants[3 + r] = loads.bending_moment[r];
     }
+    // eq. 6.4-2 for the whole block at once, with the thickness of the step's start (as
+    // compute_element): a division and a square root only where a lane's volume has grown
+    const RealPack volume = loads.current_area * thickness;
+    const RealPack& initial_volume = block_initial_volume_[static_cast<std::size_t>(b)];
+    const RealPack volume_factor = any_lane(volume > initial_volume)
+                                       ? ElementTimeSteps::volume_factor(initial_volume, volume)
+                                       : RealPack(1.0);
     // the block's totals, lane by lane in lane order
     ElementTotals totals;
     for (int l = 0; l < k_lanes; ++l) {
@@ -466,14 +483,13 @@ void ShellElements::compute_block(Index b, ParticleState& s, Real viscous_rate, 
         }
         const Real lc = lane(loads.characteristic_length, l);
         time_steps_.refresh(static_cast<Index>(ue), tri_[ue], s.x, lc);
-        // eq. 6.4-2 with the thickness of the step's start, as compute_element
-        const Real volume = lane(loads.current_area, l) * thickness_[ue];
         if (thickness_update_) thickness_[ue] *= 1.0 + lane(loads.thickness_strain, l);  // §3.4
         ElementTotals t;
         t.strain_work = lane(loads.strain_work, l);
         t.damping_work = lane(loads.damping_work, l);
         t.plastic_work = lane(loads.plastic_work, l);
-        t.dt = time_steps_.scaled_critical_dt(static_cast<Index>(ue), lc, volume, t.mass_scaled);
+        t.dt = time_steps_.scaled_critical_dt(static_cast<Index>(ue), lc, lane(volume_factor, l),
+                                              t.mass_scaled);
         t.dt_element = static_cast<Index>(ue);
         if (!erosion_.empty()) {  // §7.6
             std::array<Real, 18> corner_loads;

@@ -61,7 +61,10 @@ public:
     [[nodiscard]] Real min_critical_dt(const std::vector<Vec3>& x, Index* where = nullptr) const;
     /// Critical step of element e at positions x (§6.4), unscaled.
     [[nodiscard]] Real critical_dt(Index e, const std::vector<Vec3>& x) const {
-        return time_steps_.critical_dt(e, current_length(e, x), current_volume(e, x));
+        return time_steps_.critical_dt(
+            e, current_length(e, x),
+            ElementTimeSteps::volume_factor(time_steps_.initial_volume(static_cast<std::size_t>(e)),
+                                            current_volume(e, x)));
     }
 
     /// The elements' critical steps (§6.4), for the set-up's mass scaling (§6.10).
@@ -211,6 +214,7 @@ private:
     /// N and M of the elements of the blocks, 6 packs per block (N then M, component by
     /// component); those of the elements computed alone in membrane_force_, bending_moment_.
     std::vector<RealPack> block_resultants_;
+    std::vector<RealPack> block_initial_volume_;  ///< per block, A_0 h_0 of its lanes (eq. 6.4-2)
     std::vector<Voigt3> membrane_force_,
         bending_moment_;  ///< per element computed alone (others: zero)
     const DomainDecomposition* decomposition_ = nullptr;
