@@ -3,6 +3,8 @@
 // conditions, loads and initial velocities.
 #pragma once
 
+#include <array>
+
 #include "fpmshell/mesh/generators.hpp"
 #include "fpmshell/mesh/mesh_data.hpp"
 #include "fpmshell/model/model.hpp"
@@ -29,6 +31,23 @@ inline Model alternate_plate(Index n, Real thickness = 0.002) {
     pp.nx = pp.ny = n;
     pp.pattern = DiagonalPattern::Alternate;
     return one_section_model(generate_plate(pp), thickness);
+}
+
+/// Every particle of m moved at its own constant velocity velocity(x0) (a homogeneous path when
+/// the field is linear): one prescribed-velocity entry per particle, of the translation
+/// `components`, with the degrees of freedom `fixed` held.
+template <class VelocityField>
+void prescribe_velocity_field(Model& m, const VelocityField& velocity, std::array<bool, 6> fixed,
+                              std::array<bool, 3> components = {true, true, true}) {
+    for (Index p = 0; p < m.n_particles(); ++p) {
+        BoundaryCondition moved;
+        moved.nodes = {p};
+        moved.fixed = fixed;
+        moved.prescribed = PrescribedKind::Velocity;
+        moved.value = velocity(m.nodes[static_cast<std::size_t>(p)]);
+        moved.components = components;
+        m.boundary.push_back(moved);
+    }
 }
 
 }  // namespace fpmshell::test

@@ -140,15 +140,8 @@ TEST(ThermalSoftening, APlateStretchedInTheSolverFollowsTheAdiabaticCurve) {
     m.materials[0] = hot_steel(1.0);
     m.sections[0].thickness_points = 5;
     m.control.end_time = 0.4;
-    for (Index p = 0; p < m.n_particles(); ++p) {
-        BoundaryCondition moving;
-        moving.nodes = {p};
-        moving.fixed = {false, false, false, true, true, true};
-        moving.prescribed = PrescribedKind::Velocity;
-        const Vec3& x0 = m.nodes[static_cast<std::size_t>(p)];
-        moving.value = Vec3(x0.x(), x0.y(), 0);
-        m.boundary.push_back(moving);
-    }
+    test::prescribe_velocity_field(m, [](const Vec3& x0) { return Vec3(x0.x(), x0.y(), 0); },
+                                   {false, false, false, true, true, true});
     ExplicitSolver s(m);
     while (s.time() < m.control.end_time) s.step(m.control.end_time - s.time());
     for (const Index e : {Index{0}, Index{17}, Index{31}}) {

@@ -55,15 +55,8 @@ Model homogeneous_path(const std::function<Vec3(const Vec3&)>& velocity, bool la
     m.materials[0].tangent_modulus = 1.0e9;
     m.materials[0].failure.plastic_strain = 0.2;
     m.control.end_time = 1;
-    for (Index p = 0; p < m.n_particles(); ++p) {
-        BoundaryCondition moved;
-        moved.nodes = {p};
-        moved.fixed = {false, false, true, true, true, false};
-        moved.prescribed = PrescribedKind::Velocity;
-        moved.value = velocity(m.nodes[static_cast<std::size_t>(p)]);
-        if (lateral_free) moved.components = {true, false, false};
-        m.boundary.push_back(moved);
-    }
+    test::prescribe_velocity_field(m, velocity, {false, false, true, true, true, false},
+                                   {true, !lateral_free, !lateral_free});
     if (lateral_free) {
         BoundaryCondition roller;
         roller.nodes = m.node_sets.at("ymin");
