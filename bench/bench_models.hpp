@@ -11,6 +11,7 @@
 #include "fpmshell/elements/bending_time_step.hpp"
 #include "fpmshell/elements/lumped_inertia.hpp"
 #include "fpmshell/io/model_reader.hpp"
+#include "fpmshell/materials/bilinear/bilinear_law.hpp"
 #include "fpmshell/mesh/generators.hpp"
 #include "fpmshell/model/model.hpp"
 
@@ -27,7 +28,7 @@ inline Model elastic_plate_model(Index n) {
     m.title = "bench plate";
     m.nodes = mesh.nodes;
     m.triangles = mesh.triangles;
-    m.materials.push_back({"steel", MaterialType::Elastic, 7800, 2.1e11, 0.3});
+    m.materials.push_back({"steel", "elastic", 7800, 2.1e11, 0.3});
     m.sections.push_back({0, 0.002, 2, 3});
     m.element_section.assign(m.triangles.size(), 0);
     BoundaryCondition bc;
@@ -50,9 +51,7 @@ inline Model elastic_plate_model(Index n) {
 inline Model plastic_plate_model(Index n, int inplane_points) {
     Model m = elastic_plate_model(n);
     Material& steel = m.materials[0];
-    steel.type = MaterialType::J2Plastic;
-    steel.yield_stress = 1e6;
-    steel.tangent_modulus = 1e10;
+    make_bilinear(steel, 1e6, 1e10);
     m.boundary.clear();
     m.loads.clear();
     for (Index p = 0; p < static_cast<Index>(m.nodes.size()); ++p) {
@@ -142,16 +141,14 @@ inline void impose_steady_flow(Model& m, const std::vector<Index>& edge, Real yi
 inline Model steady_plastic_plate_model(Index n, int inplane_points, int steps_to_yield) {
     Model m = elastic_plate_model(n);
     Material& steel = m.materials[0];
-    steel.type = MaterialType::J2Plastic;
-    steel.yield_stress = 250e6;
-    steel.tangent_modulus = 1e10;
+    make_bilinear(steel, 250e6, 1e10);
     m.sections[0].thickness_points = 5;
     m.sections[0].inplane_points = inplane_points;
     m.loads.clear();
     const std::vector<Index> edge =
         m.boundary.at(0).nodes;  // the clamped edges of the elastic plate
     m.boundary.clear();
-    impose_steady_flow(m, edge, steel.yield_stress, steps_to_yield, plate_stable_dt(m));
+    impose_steady_flow(m, edge, 250e6, steps_to_yield, plate_stable_dt(m));
     return m;
 }
 

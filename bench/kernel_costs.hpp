@@ -101,7 +101,7 @@ inline constexpr double k_material_point = 45;
 // LinearElastic::update: sigma += C d_eps, 15 + 3.
 inline constexpr double k_elastic_update = 18;
 
-// The return mapping (materials/j2_return_mapping.hpp, j2_consistency.hpp), bilinear flow
+// The return mapping (materials/j2/j2_return_mapping.hpp, j2_consistency.hpp), bilinear flow
 // curve, no rate factor:
 //   trial (sigma_n + C d_eps 18, xi 3, kappa 1, kappa^2 / 3 2, p_norm2 10 + 2, test 1)   37
 //   constants of the return (h_k 3, s, d 2, A1 2, A2 5, a1 5, a2 3, f_bar_tr 2, a_bar 4,

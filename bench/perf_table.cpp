@@ -25,6 +25,7 @@
 #endif
 
 #include "bench_models.hpp"
+#include "fpmshell/materials/j2/j2_parameters.hpp"
 #include "fpmshell/solver/explicit_solver.hpp"
 #include "fpmshell/solver/shell_elements.hpp"
 #include "kernel_costs.hpp"
@@ -121,8 +122,10 @@ cost::MaterialCost material_cost(const Model& m, double yield_fraction, int newt
     c.plastic = mat.plastic();
     c.yield_fraction = yield_fraction;
     c.newton_evaluations = newton_evaluations;
-    c.johnson_cook = mat.type == MaterialType::JohnsonCook;
-    c.rate = (c.johnson_cook && mat.jc_c > 0) || mat.cowper_symonds;
+    const J2Parameters* j2 = j2_parameters(mat);
+    c.johnson_cook = j2 && j2->flow.kind == FlowStress::Kind::JohnsonCook;
+    c.rate = j2 && (j2->rate.kind == RateFactor::Kind::JohnsonCook ||
+                    j2->rate.kind == RateFactor::Kind::CowperSymonds);
     return c;
 }
 

@@ -40,6 +40,9 @@
 #endif
 
 #include "../bench_models.hpp"
+#include "fpmshell/materials/bilinear/bilinear_law.hpp"
+#include "fpmshell/materials/johnson_cook/johnson_cook_law.hpp"
+#include "fpmshell/materials/tabulated/tabulated_law.hpp"
 #include "fpmshell/mesh/generators.hpp"
 #include "fpmshell/model/mesh_topology.hpp"
 #include "fpmshell/solver/explicit_solver.hpp"
@@ -85,18 +88,16 @@ struct Case {
 
 Case make_case(const std::string& name) {
     Material m;
-    if (name == "elastic") {  // the same section elastic: the floor of the plastic rows
-        m.type = MaterialType::Elastic;
+    m.youngs_modulus = 2.1e11;  // steady_plate's (the bilinear curve's plastic modulus reads it)
+    if (name == "elastic") {    // the same section elastic: the floor of the plastic rows
         return {name, m, 250e6};
     }
     if (name == "bilinear") {
-        m.type = MaterialType::J2Plastic;
-        m.yield_stress = 250e6;
-        m.tangent_modulus = 1e10;
-        return {name, m, m.yield_stress};
+        make_bilinear(m, 250e6, 1e10);
+        return {name, m, 250e6};
     }
     if (name == "tab" || name == "tab-rate") {
-        m.type = MaterialType::Tabulated;
+        std::vector<FlowCurvePoints> curves;
         for (Real scale :
              name == "tab" ? std::vector<Real>{1.0} : std::vector<Real>{1.0, 1.1, 1.2}) {
             FlowCurvePoints c;
@@ -106,24 +107,20 @@ Case make_case(const std::string& name) {
                 c.strain.push_back(alpha);
                 c.stress.push_back(scale * (180e6 + 450e6 * std::sqrt(alpha)));
             }
-            m.flow_curves.push_back(c);
+            curves.push_back(c);
         }
+        make_tabulated(m, curves);
         return {name, m, 180e6};
     }
-    m.type = MaterialType::JohnsonCook;
-    m.jc_a = 180e6;
-    m.jc_b = 450e6;
-    m.jc_n = name == "jc-n0.1" ? 0.1 : 0.5;
-    if (name == "jc-rate") {
-        m.jc_c = 0.02;
-        m.reference_strain_rate = 1;
-    } else if (name != "jc" && name != "jc-n0.1") {
+    make_johnson_cook(m, 180e6, 450e6, name == "jc-n0.1" ? 0.1 : 0.5,
+                      name == "jc-rate" ? 0.02 : 0.0, 1.0);
+    if (name != "jc-rate" && name != "jc" && name != "jc-n0.1") {
         std::fprintf(stderr,
                      "unknown model %s (jc, jc-rate, jc-n0.1, bilinear, elastic, tab, tab-rate)\n",
                      name.c_str());
         std::exit(2);
     }
-    return {name, m, m.jc_a};
+    return {name, m, 180e6};
 }
 
 /// CPU time of the calling thread: on a machine shared with other work, the time the kernel

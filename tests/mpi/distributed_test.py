@@ -1,13 +1,15 @@
 #!/usr/bin/env python3
 """Distributed runs (mpirun -np N fpmshell run): the same bytes as one process.
 
-usage: distributed_test.py FPMSHELL MPIEXEC WORK_DIR
+usage: distributed_test.py FPMSHELL MPIEXEC WORK_DIR [FPMSHELL_WITH_TEST_LAWS]
 
 For each model, `fpmshell run --threads 1` and `MPIEXEC -np 2 fpmshell run --threads 1` (and, on
 the elastic cap, -np 1 and -np 3 with 2 threads each) must write byte-identical history.csv, energy.csv
 and last field frame; summary.json says how many ranks ran. A run stopped at t1 and resumed on 2
 ranks must equal the same on one process; so must the tube with contact, with and without mass
-scaling, and with friction (static, dynamic and its decay); so must a plate whose elements erode.
+scaling, and with friction (static, dynamic and its decay); so must a plate whose elements erode, and a strip
+of the test-only material law (tests/material_law/, its own point state gathered from the ranks;
+with the build of the program that holds that law, FPMSHELL_WITH_TEST_LAWS).
 A relaxation is refused (exit 2, one message).
 Exit status 0 when every check passes; each failure is printed.
 """
@@ -18,12 +20,13 @@ import subprocess
 import sys
 
 FPM, MPIEXEC, WORK = sys.argv[1], sys.argv[2], sys.argv[3]
+FPM_TEST_LAWS = sys.argv[4] if len(sys.argv) > 4 else None
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 failures = []
 
 
-def run(cmd, out_dir, *extra, ranks=1, threads=1, launcher=False):
-    args = [FPM, "run", cmd, "-o", out_dir, "--threads", str(threads), "--quiet", "--overwrite"]
+def run(cmd, out_dir, *extra, ranks=1, threads=1, launcher=False, program=None):
+    args = [program or FPM, "run", cmd, "-o", out_dir, "--threads", str(threads), "--quiet", "--overwrite"]
     args += list(extra)
     if ranks > 1 or launcher:
         # --oversubscribe: more ranks than cores on a CI machine
@@ -42,13 +45,13 @@ def same_files(a, b, label):
                 failures.append("%s: %s differs from the single-process run" % (label, name))
 
 
-def check(label, model, sets, ranks=2, threads=1):
+def check(label, model, sets, ranks=2, threads=1, program=None):
     serial = os.path.join(WORK, label + "-1")
     dist = os.path.join(WORK, "%s-%dx%d" % (label, ranks, threads))
     extra = [a for s in sets for a in ("--set", s)]
     for d, r, t, launched in ((serial, 1, 1, False), (dist, ranks, threads, True)):
         shutil.rmtree(d, ignore_errors=True)
-        p = run(model, d, *extra, ranks=r, threads=t, launcher=launched)
+        p = run(model, d, *extra, ranks=r, threads=t, launcher=launched, program=program)
         if p.returncode != 0:
             failures.append("%s: %d ranks exited %d: %s" % (label, r, p.returncode,
                                                             (p.stderr or p.stdout)[-500:]))
@@ -138,6 +141,15 @@ check("eroding_band", band, [], ranks=3, threads=2)
 with open(os.path.join(WORK, "eroding_band-3x2", "summary.json")) as f:
     if not json.load(f).get("eroded_elements"):
         failures.append("eroding_band: no element eroded (the check compares nothing)")
+
+# The materials seam: a law of the tests' own (its 7 numbers per point) through the gather of
+# the element state to rank 0 (the last frame's stresses) and on 3 ranks of 2 threads.
+if FPM_TEST_LAWS:
+    seam = os.path.join(ROOT, "tests/material_law/damaging_elastic/model.yaml")
+    check("test_law", seam, [], program=FPM_TEST_LAWS)
+    check("test_law", seam, [], ranks=3, threads=2, program=FPM_TEST_LAWS)
+else:
+    failures.append("no FPMSHELL_WITH_TEST_LAWS given: the test-only material law was not run")
 
 # What is not distributed yet is refused before the run, with one message naming the key.
 relaxed = os.path.join(ROOT, "validation/pinched_cylinder/model.yaml")

@@ -4,7 +4,8 @@
 if(MPI_CXX_FOUND AND MPIEXEC_EXECUTABLE)
   add_test(NAME mpi.distributed_runs
            COMMAND ${FPMSHELL_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/mpi/distributed_test.py
-                   $<TARGET_FILE:fpmshell> ${MPIEXEC_EXECUTABLE} ${CMAKE_BINARY_DIR}/mpi_test_work)
+                   $<TARGET_FILE:fpmshell> ${MPIEXEC_EXECUTABLE} ${CMAKE_BINARY_DIR}/mpi_test_work
+                   $<TARGET_FILE:fpmshell_with_test_laws>)
   # OpenMPI refuses to start as root unless told (CI containers run as root); a rank waiting
   # for a message yields its core instead of spinning on it.
   set_tests_properties(mpi.distributed_runs PROPERTIES LABELS mpi TIMEOUT 900 RUN_SERIAL TRUE

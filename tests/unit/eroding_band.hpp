@@ -7,6 +7,7 @@
 
 #include <cmath>
 
+#include "fpmshell/materials/bilinear/bilinear_law.hpp"
 #include "one_section_model.hpp"
 
 namespace fpmshell::test {
@@ -17,9 +18,7 @@ inline Model eroding_band_plate(Index n) {
     pp.pattern = DiagonalPattern::Alternate;
     Model m = one_section_model(generate_plate(pp), 0.01, 0.3, 2.1e11, 3);
     Material& steel = m.materials[0];
-    steel.type = MaterialType::J2Plastic;
-    steel.yield_stress = 2.5e8;
-    steel.tangent_modulus = 1.0e9;
+    make_bilinear(steel, 2.5e8, 1.0e9);
     Material weak = steel;
     weak.name = "weak";
     weak.failure.plastic_strain = 0.05;

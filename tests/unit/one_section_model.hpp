@@ -18,7 +18,7 @@ inline Model one_section_model(const MeshData& mesh, Real thickness, Real poisso
     m.nodes = mesh.nodes;
     m.triangles = mesh.triangles;
     m.node_sets = mesh.node_sets;
-    m.materials.push_back({"steel", MaterialType::Elastic, 7800, youngs_modulus, poisson_ratio});
+    m.materials.push_back({"steel", "elastic", 7800, youngs_modulus, poisson_ratio});
     m.sections.push_back({0, thickness, thickness_points, inplane_points});
     m.element_section.assign(m.triangles.size(), 0);
     return m;

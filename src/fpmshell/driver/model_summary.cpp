@@ -28,12 +28,9 @@ std::string model_summary(const Model& model) {
     out += "\nelement sets";
     for (const auto& [name, elems] : model.element_sets)
         out += fmt::format(" {}({})", name, elems.size());
-    static const char* type_names[] = {"elastic", "j2_plastic", "johnson_cook", "tabulated",
-                                       "power_law"};
     for (const Material& mat : model.materials)
         out += fmt::format("\nmaterial {}: {}, density {:.6g}, E {:.6g}, nu {:.6g}", mat.name,
-                           mat.rigid ? "rigid" : type_names[static_cast<int>(mat.type)],
-                           mat.density, mat.youngs_modulus, mat.poisson_ratio);
+                           mat.law, mat.density, mat.youngs_modulus, mat.poisson_ratio);
     std::vector<std::size_t> section_elements(model.sections.size(), 0);
     for (const Index s : model.element_section) ++section_elements[static_cast<std::size_t>(s)];
     static constexpr const char* rule_names[] = {"", "Gauss", "Lobatto", "user"};

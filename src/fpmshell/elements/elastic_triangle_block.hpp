@@ -30,8 +30,8 @@
 #include "fpmshell/elements/dkt_curvature.hpp"
 #include "fpmshell/elements/path_element.hpp"
 #include "fpmshell/elements/quadrature.hpp"
-#include "fpmshell/materials/flow_stress.hpp"
-#include "fpmshell/materials/strain_rate.hpp"
+#include "fpmshell/materials/j2/flow_stress.hpp"
+#include "fpmshell/materials/j2/strain_rate.hpp"
 #include "fpmshell/model/model.hpp"
 
 namespace fpmshell {
@@ -348,7 +348,7 @@ template <class T, class ReturnMapping = NoReturnMapping, class PointUpdate = El
 /// some point's trial stress is outside its yield surface on some lanes with a valid path
 /// element; per point: the mask `yielding`, the strain increment and the rate factor R of
 /// every lane, and the trial stress in `stress`. It runs §7.3 steps 2-4 on the yielding
-/// (point, lane) pairs (materials/j2_return_mapping.hpp), keeps their history, and writes
+/// (point, lane) pairs (materials/j2/j2_return_mapping.hpp), keeps their history, and writes
 /// their new stress into `stress` and their plastic work per unit volume into d_plastic_work.
 /// Without one (NoReturnMapping) such a lane is reported invalid instead.
 template <class T, class ReturnMapping = NoReturnMapping>

@@ -8,6 +8,7 @@
 
 #include <array>
 #include <span>
+#include <type_traits>
 
 #include "fpmshell/core/types.hpp"
 #include "fpmshell/elements/elastic_triangle_block.hpp"
@@ -50,7 +51,8 @@ struct ShellTriangleLoads {
 }
 
 /// Element loads from the reversed path element rt.
-/// points: the element's material points (old state in, new state out).
+/// points: the element's material points (old state in, new state out), of the material's
+/// point type (MaterialPoint unless given).
 /// viscous_rate: a_s / dt_{n-1/2} (theory.md §6.5), 0 without stiffness damping.
 /// dt: duration of the path element, for rate-dependent materials (0: no rate).
 /// thickness: the element's thickness at the start of the step (rule.thickness if <= 0).
@@ -58,9 +60,10 @@ struct ShellTriangleLoads {
 /// one (smoothed over the element's neighbours); the element's own membrane nodal forces are
 /// then own_share times A B_m^T N, the rest goes to the neighbours (shell_elements.cpp).
 /// The viscous resultants use the isotropic C of the material (c11, c12, c33).
-template <class Material>
+template <class Material, class Point = MaterialPoint>
 ShellTriangleLoads shell_triangle_loads(const ReversedTriangle& rt, const ShellRule& rule,
-                                        const Material& material, std::span<MaterialPoint> points,
+                                        const Material& material,
+                                        std::span<std::type_identity_t<Point>> points,
                                         Real viscous_rate, Real dt = 0, Real thickness = 0,
                                         const Voigt3* smoothed_membrane = nullptr,
                                         Real own_share = 1) {
@@ -81,11 +84,13 @@ ShellTriangleLoads shell_triangle_loads(const ReversedTriangle& rt, const ShellR
         for (std::size_t r = 0; r < 3; ++r)
             stress[3 * p + r] = points[p].stress(static_cast<Eigen::Index>(r));
     auto update = [&](std::size_t p, const std::array<Real, 3>& d_eps, Real* sigma) {
-        MaterialPoint& mp = points[p];
-        const Real plastic_old = mp.plastic_work;
+        Point& mp = points[p];
+        Real plastic_old = 0;
+        if constexpr (requires { mp.plastic_work; }) plastic_old = mp.plastic_work;
         material.update(mp, Voigt3(d_eps[0], d_eps[1], d_eps[2]), dt, mp);  // old and new may alias
         for (std::size_t r = 0; r < 3; ++r) sigma[r] = mp.stress(static_cast<Eigen::Index>(r));
-        return mp.plastic_work - plastic_old;
+        if constexpr (requires { mp.plastic_work; }) return mp.plastic_work - plastic_old;
+        return plastic_old;  // 0: a law without plastic work
     };
     SmoothedMembrane<Real> smoothed;
     if (smoothed_membrane) {

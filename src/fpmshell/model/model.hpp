@@ -3,6 +3,7 @@
 // (the "Starter" half of the OpenRadioss split; the solver is the "Engine").
 #pragma once
 
+#include <any>
 #include <array>
 #include <map>
 #include <string>
@@ -29,15 +30,6 @@ struct Curve {
 /// Integral of that factor from 0 to t (t for curve -1).
 [[nodiscard]] Real curve_factor_integral(const std::vector<Curve>& curves, Index curve, Real t);
 
-enum class MaterialType { Elastic, J2Plastic, JohnsonCook, Tabulated, PowerLaw };
-
-/// A tabulated flow curve: the flow stress at increasing plastic strains from 0, not
-/// decreasing, at one strain rate.
-struct FlowCurvePoints {
-    Real strain_rate = 0;
-    std::vector<Real> strain, stress;
-};
-
 /// How a plastic material's points fail and its elements erode (theory.md §7.6;
 /// failure/element_erosion.hpp).
 struct MaterialFailure {
@@ -50,35 +42,21 @@ struct MaterialFailure {
     [[nodiscard]] bool active() const { return plastic_strain > 0; }
 };
 
-/// Material constants (units as in the model file; never converted).
+/// A material: the constants every law has, and its law's own (units as in the model file;
+/// never converted). The law is a folder under materials/ and a line of
+/// materials/material_laws.cpp, which reads its keys into `parameters` and makes the element
+/// group of its sections; nothing else looks into `parameters`.
 struct Material {
     std::string name;
-    MaterialType type = MaterialType::Elastic;
-    Real density = 0;         ///< rho
-    Real youngs_modulus = 0;  ///< E
-    Real poisson_ratio = 0;   ///< nu
-    // Plastic materials (theory.md §7).
-    Real yield_stress = 0;  ///< j2_plastic: initial yield stress
-    Real tangent_modulus =
-        0;                   ///< j2_plastic: slope E_t of the bilinear curve; 0 = perfectly plastic
-    Real hardening_mix = 1;  ///< beta: 1 isotropic, 0 kinematic
-    Real jc_a = 0, jc_b = 0, jc_n = 1, jc_c = 0;  ///< johnson_cook A, B, n, C
-    Real reference_strain_rate = 1;               ///< johnson_cook eps_dot_0
-    /// johnson_cook: thermal softening by adiabatic heating (theory.md eq. 7.4-2), the flow
-    /// stress times 1 - T*^m, T* = (T - T_r) / (T_m - T_r), T = T_r + chi W_p / (rho c_p)
-    bool thermal = false;
-    Real jc_m = 1, melt_temperature = 0, room_temperature = 0, specific_heat = 0;
-    Real taylor_quinney = 0.9;  ///< chi, the fraction of the plastic work that heats
-    /// power_law: sigma = k (eps_0 + eps_p)^n, eps_0 the elastic strain at yield (eq. 7.2-6)
-    Real power_k = 0, power_n = 1, power_strain_offset = 0;
-    bool cowper_symonds = false;  ///< j2_plastic, tabulated, power_law: Cowper-Symonds factor on
-    Real cs_d = 0, cs_q = 1;      ///< its D and q
-    /// plastic materials: Hill's normal anisotropy R, the ratio of width to thickness plastic
-    /// strain in a tension test, the same in every direction of the sheet (eq. 7.1-3; LS-DYNA's
-    /// *MAT_037 R); 1: von Mises
-    Real normal_anisotropy = 1;
-    /// tabulated: one flow curve, or one per strain rate (rates increasing)
-    std::vector<FlowCurvePoints> flow_curves{};
+    std::string law = "elastic";  ///< the model file's `type` (materials/material_laws.cpp)
+    Real density = 0;             ///< rho
+    Real youngs_modulus = 0;      ///< E
+    Real poisson_ratio = 0;       ///< nu
+    /// the law's constants, of the type its folder declares (std::any: copied with the model)
+    std::any parameters{};
+    /// a plastic law: it dissipates plastic work, takes failure criteria, and its sections
+    /// default to 5 points through the thickness (set from the law's registry line)
+    bool plastic_law = false;
     /// `type: rigid` (an elastic material here): each section of it moves as one rigid body
     /// (solver/nodal_rigid_bodies.hpp) and its elements do not limit the time step
     bool rigid = false;
@@ -89,7 +67,7 @@ struct Material {
     /// plastic materials: failure and erosion (none by default)
     MaterialFailure failure{};
 
-    [[nodiscard]] bool plastic() const { return type != MaterialType::Elastic; }
+    [[nodiscard]] bool plastic() const { return plastic_law; }
 };
 
 /// The family of a section's points through the thickness (theory.md §4.5). ByCount is the

@@ -1,7 +1,8 @@
 // The SIMD block kernel (elements/elastic_triangle_block.hpp) run on one block of k_lanes
 // elements of a section, with the point state of the section's material: one overload of
-// block_point_loads per material that has a block path. A material without one has its
-// elements computed one by one (solver/element_group.hpp).
+// block_point_loads per material that has a block path, in the material's folder
+// (materials/elastic/elastic_block_loads.hpp, materials/j2/j2_block_loads.hpp). A material
+// without one has its elements computed one by one (solver/element_group.hpp).
 //
 // The state of a block is kept [field][point] as whole packs (one lane per element), in the
 // layout the material declares (k_point_fields, materials/*.hpp), so that a step streams only
@@ -9,11 +10,10 @@
 #pragma once
 
 #include <array>
+#include <cstddef>
 
 #include "fpmshell/core/simd.hpp"
 #include "fpmshell/elements/elastic_triangle_block.hpp"
-#include "fpmshell/materials/j2_plastic.hpp"
-#include "fpmshell/materials/linear_elastic.hpp"
 
 namespace fpmshell {
 
@@ -52,24 +52,5 @@ inline void store_stress(const BlockStep& step, const MaskOf<RealPack>& valid,
 }
 
 }  // namespace block_points_detail
-
-/// A linear elastic section: the state is the stress (§3.2).
-[[nodiscard]] inline ElasticTriangleLoads<RealPack> block_point_loads(
-    const LinearElastic& /*material*/, const BlockStep& step) {
-    using namespace block_points_detail;
-    prefetch_fields(step, 0, 3);
-    std::array<RealPack, 3 * k_max_block_points> stress;
-    for (std::size_t p = 0; p < step.n_points; ++p)
-        for (std::size_t r = 0; r < 3; ++r) stress[3 * p + r] = step.state[r * step.n_points + p];
-    const ElasticTriangleLoads<RealPack> loads = elastic_triangle_loads(
-        *step.motion, *step.constants, step.thickness, stress.data(), step.viscous_rate);
-    store_stress(step, loads.valid, stress.data(), 0);
-    return loads;
-}
-
-/// A J2 section (§7.3): the trial check on every point of the block at once, and the return
-/// mapping on the yielding (point, lane) pairs, k_lanes pairs at a time.
-[[nodiscard]] ElasticTriangleLoads<RealPack> block_point_loads(const J2Plastic& material,
-                                                               const BlockStep& step);
 
 }  // namespace fpmshell

@@ -1,9 +1,8 @@
 #include "fpmshell/solver/element_group.hpp"
 
 #include <cmath>
-#include <variant>
 
-#include "fpmshell/materials/section_material.hpp"
+#include "fpmshell/materials/material_law.hpp"
 
 namespace fpmshell {
 
@@ -61,12 +60,7 @@ void ElementGroup::allocate(std::size_t n_blocks, std::size_t n_alone) {
 std::unique_ptr<ElementGroup> make_element_group(const Model& model, std::size_t section) {
     const Material& mat =
         model.materials[static_cast<std::size_t>(model.sections[section].material)];
-    return std::visit(
-        [&](const auto& material) -> std::unique_ptr<ElementGroup> {
-            return std::make_unique<MaterialGroup<std::decay_t<decltype(material)>>>(
-                material, model, section);
-        },
-        make_section_material(mat));
+    return material_law(mat).make_group(model, section);
 }
 
 }  // namespace fpmshell

@@ -9,9 +9,13 @@
 // k_lanes at a time; any other material, or any element outside the block kernel's bounds,
 // goes through the general element shell_triangle_loads and the material's scalar update.
 //
-// A new material is a class with the scalar update (update, stiffness, youngs_modulus,
+// A law's material is a class with the scalar update (update, stiffness, youngs_modulus,
 // poisson_ratio) and its point layout (k_point_fields, k_stress_only, read_point, write_point,
-// initial_field), made a group by MaterialGroup<Material>: see make_element_group.
+// initial_field), made a group by MaterialGroup<Material> in its folder's make_group
+// (materials/material_law.hpp). Its points are MaterialPoint (materials/material_point.hpp) or
+// a type of its own, `Material::Point`, with a `stress` (Voigt3) and, where it has them, a
+// `plastic_strain` and a `plastic_work`. Restart files and the transfer between ranks carry a
+// point as its k_point_fields numbers, whatever they mean.
 #pragma once
 
 #include <array>
@@ -20,6 +24,7 @@
 #include <memory>
 #include <span>
 #include <stdexcept>
+#include <type_traits>
 #include <vector>
 
 #include "fpmshell/core/simd.hpp"
@@ -75,9 +80,19 @@ public:
     [[nodiscard]] virtual ShellTriangleLoads element_loads(
         GroupPlace place, const ReversedTriangle& rt, Real viscous_rate, Real dt, Real thickness,
         const Voigt3* smoothed_membrane, Real own_share) = 0;
-    /// The state of point p of the element at `place`, and its update.
+    /// The state of point p of the element at `place` as the output reads it (its stress, its
+    /// plastic strain and work where the law has them).
     [[nodiscard]] virtual MaterialPoint point_state(GroupPlace place, std::size_t p) const = 0;
-    virtual void set_point_state(GroupPlace place, std::size_t p, const MaterialPoint& mp) = 0;
+    /// Numbers per point of the state (the law's k_point_fields).
+    [[nodiscard]] std::size_t point_fields() const { return point_fields_; }
+    /// The state of point p of the element at `place` as its point_fields() numbers (restart
+    /// files, the transfer between ranks), and its update from them.
+    void read_fields(GroupPlace place, std::size_t p, Real* out) const {
+        for (std::size_t k = 0; k < point_fields_; ++k) out[k] = field(place, p, k);
+    }
+    void write_fields(GroupPlace place, std::size_t p, const Real* in) {
+        for (std::size_t k = 0; k < point_fields_; ++k) set_field(place, p, k, in[k]);
+    }
     /// The equivalent plastic strain of point p of the element at `place` (output).
     [[nodiscard]] virtual Real plastic_strain(GroupPlace place, std::size_t p) const = 0;
 
@@ -135,10 +150,23 @@ concept BlockMaterial = requires(const Material& m, const BlockStep& step) {
     { block_point_loads(m, step) } -> std::same_as<ElasticTriangleLoads<RealPack>>;
 };
 
+/// The point type of Material: its own Point, or MaterialPoint.
+template <class Material>
+struct PointOf {
+    using type = MaterialPoint;
+};
+template <class Material>
+requires requires { typename Material::Point; }
+struct PointOf<Material> {
+    using type = typename Material::Point;
+};
+
 /// The group of a section of Material.
 template <class Material>
 class MaterialGroup final : public ElementGroup {
 public:
+    using Point = typename PointOf<Material>::type;
+
     MaterialGroup(const Material& material, const Model& model, std::size_t section)
         : ElementGroup(model, section, material.stiffness(), material.youngs_modulus(),
                        material.poisson_ratio(), Material::k_point_fields),
@@ -172,20 +200,28 @@ public:
                                                    Real viscous_rate, Real dt, Real thickness,
                                                    const Voigt3* smoothed_membrane,
                                                    Real own_share) override {
-        std::array<MaterialPoint, k_max_block_points> points;  // the largest rule of quadrature.hpp
-        const std::span<MaterialPoint> pts(points.data(), n_points());
-        for (std::size_t p = 0; p < pts.size(); ++p) pts[p] = point_state(place, p);
-        const ShellTriangleLoads loads = shell_triangle_loads(
+        std::array<Point, k_max_block_points> points;  // the largest rule of quadrature.hpp
+        const std::span<Point> pts(points.data(), n_points());
+        for (std::size_t p = 0; p < pts.size(); ++p) pts[p] = own_point(place, p);
+        const ShellTriangleLoads loads = shell_triangle_loads<Material, Point>(
             rt, rule_, material_, pts, viscous_rate, dt, thickness, smoothed_membrane, own_share);
-        for (std::size_t p = 0; p < pts.size(); ++p) set_point_state(place, p, pts[p]);
+        for (std::size_t p = 0; p < pts.size(); ++p)
+            material_.write_point(pts[p],
+                                  [&](std::size_t k, Real v) { set_field(place, p, k, v); });
         return loads;
     }
 
     [[nodiscard]] MaterialPoint point_state(GroupPlace place, std::size_t p) const override {
-        return material_.read_point([&](std::size_t k) { return field(place, p, k); });
-    }
-    void set_point_state(GroupPlace place, std::size_t p, const MaterialPoint& mp) override {
-        material_.write_point(mp, [&](std::size_t k, Real v) { set_field(place, p, k, v); });
+        const Point own = own_point(place, p);
+        if constexpr (std::is_same_v<Point, MaterialPoint>) {
+            return own;
+        } else {
+            MaterialPoint mp;
+            mp.stress = own.stress;
+            if constexpr (requires { own.plastic_strain; }) mp.plastic_strain = own.plastic_strain;
+            if constexpr (requires { own.plastic_work; }) mp.plastic_work = own.plastic_work;
+            return mp;
+        }
     }
     [[nodiscard]] Real plastic_strain(GroupPlace place, std::size_t p) const override {
         // a layout that names its plastic strain field: that field alone (the output reads it
@@ -197,6 +233,9 @@ public:
     }
 
 private:
+    [[nodiscard]] Point own_point(GroupPlace place, std::size_t p) const {
+        return material_.read_point([&](std::size_t k) { return field(place, p, k); });
+    }
     [[nodiscard]] Real initial_field(std::size_t k) const override {
         return material_.initial_field(k);
     }
@@ -208,7 +247,7 @@ private:
 using ElementGroupFactory =
     std::function<std::unique_ptr<ElementGroup>(const Model& model, std::size_t section)>;
 
-/// The groups of the model's materials (materials/section_material.hpp).
+/// The group of a section, made by its material's law (materials/material_law.hpp).
 [[nodiscard]] std::unique_ptr<ElementGroup> make_element_group(const Model& model,
                                                                std::size_t section);
 

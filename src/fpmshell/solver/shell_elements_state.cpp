@@ -49,8 +49,11 @@ std::vector<char> ShellElements::pack_state(bool own_only) const {
         }
         const ElementGroup& group = group_of(ue);
         const GroupPlace place = place_of(ue);
-        for (std::size_t p = 0; p < group.n_points(); ++p)
-            append_bytes(bytes, group.point_state(place, p));
+        std::vector<Real> fields(group.point_fields());
+        for (std::size_t p = 0; p < group.n_points(); ++p) {
+            group.read_fields(place, p, fields.data());
+            for (const Real f : fields) append_bytes(bytes, f);
+        }
     }
     return bytes;
 }
@@ -74,24 +77,24 @@ void ShellElements::unpack_state(const std::vector<char>& bytes) {
         }
         ElementGroup& group = *groups_[static_cast<std::size_t>(section_[ue])];
         const GroupPlace place = place_of(ue);
-        for (std::size_t p = 0; p < group.n_points(); ++p)
-            group.set_point_state(place, p, take<MaterialPoint>(bytes, at));
+        std::vector<Real> fields(group.point_fields());
+        for (std::size_t p = 0; p < group.n_points(); ++p) {
+            for (Real& f : fields) f = take<Real>(bytes, at);
+            group.write_fields(place, p, fields.data());
+        }
     }
 }
 
-// The restart file holds every point with a history, then every stress-only point's stress,
-// in element order (format 2), whatever the layout in memory.
+// The restart file holds every point's state as its law's numbers (ElementGroup::point_fields),
+// in element order (format 10), whatever the layout in memory.
 void ShellElements::save(RestartWriter& out) const {
-    std::vector<MaterialPoint> points;
-    std::vector<Voigt3> stresses;
+    std::vector<Real> fields;
     for (std::size_t e = 0; e < tri_.size(); ++e) {
         const ElementGroup& group = group_of(e);
         const GroupPlace place = place_of(e);
         for (std::size_t p = 0; p < group.n_points(); ++p) {
-            if (group.stress_only())
-                stresses.push_back(group.point_state(place, p).stress);
-            else
-                points.push_back(group.point_state(place, p));
+            fields.resize(fields.size() + group.point_fields());
+            group.read_fields(place, p, fields.data() + fields.size() - group.point_fields());
         }
     }
     std::vector<Voigt3> n(tri_.size()), m(tri_.size());
@@ -100,43 +103,37 @@ void ShellElements::save(RestartWriter& out) const {
         m[e] = resultant(e, 3);
     }
     auto& self = const_cast<ShellElements&>(*this);  // the archive's interface is shared with load
-    out(points, stresses, self.thickness_, self.time_steps_.ratio(),
-        self.time_steps_.ratio_length(), n, m);
+    out(fields, self.thickness_, self.time_steps_.ratio(), self.time_steps_.ratio_length(), n, m);
     out(self.eroded_, self.element_work_, self.last_loads_);  // §7.6 (empty: none can fail)
 }
 
 void ShellElements::load(RestartReader& in) {
     const std::size_t n_elements = tri_.size();
-    std::size_t n_history = 0, n_stress_only = 0;
+    std::size_t n_fields = 0;
     for (std::size_t e = 0; e < n_elements; ++e)
-        (group_of(e).stress_only() ? n_stress_only : n_history) += group_of(e).n_points();
-    std::vector<MaterialPoint> points;
-    std::vector<Voigt3> stresses, n, m;  // the resultants N, M of every element
+        n_fields += group_of(e).n_points() * group_of(e).point_fields();
+    std::vector<Real> fields;
+    std::vector<Voigt3> n, m;  // the resultants N, M of every element
     const std::vector<std::size_t> ratio_lengths =
         stored_lengths(time_steps_.ratio(), time_steps_.ratio_length());
-    in(points, stresses, thickness_, time_steps_.ratio(), time_steps_.ratio_length(), n, m);
-    if (points.size() != n_history || stresses.size() != n_stress_only ||
-        thickness_.size() != n_elements || n.size() != n_elements || m.size() != n_elements ||
+    in(fields, thickness_, time_steps_.ratio(), time_steps_.ratio_length(), n, m);
+    if (fields.size() != n_fields || thickness_.size() != n_elements || n.size() != n_elements ||
+        m.size() != n_elements ||
         stored_lengths(time_steps_.ratio(), time_steps_.ratio_length()) != ratio_lengths)
-        in.fail("restart file of a model with other elements or integration rules");
+        in.fail("restart file of a model with other elements, materials or integration rules");
     const std::vector<std::size_t> erosion_lengths =
         stored_lengths(eroded_, element_work_, last_loads_);
     in(eroded_, element_work_, last_loads_);
     if (stored_lengths(eroded_, element_work_, last_loads_) != erosion_lengths)
         in.fail("restart file of a model with other failure criteria");
     for (std::size_t e = 0; e < n_elements; ++e) set_resultants(e, n[e], m[e]);
-    std::size_t i = 0, j = 0;
+    std::size_t i = 0;
     for (std::size_t e = 0; e < n_elements; ++e) {
         ElementGroup& group = *groups_[static_cast<std::size_t>(section_[e])];
         const GroupPlace place = place_of(e);
         for (std::size_t p = 0; p < group.n_points(); ++p) {
-            if (group.stress_only()) {
-                MaterialPoint mp;
-                mp.stress = stresses[j++];
-                group.set_point_state(place, p, mp);
-            } else {
-                group.set_point_state(place, p, points[i++]);
-            }
+            group.write_fields(place, p, fields.data() + i);
+            i += group.point_fields();
         }
     }
 }

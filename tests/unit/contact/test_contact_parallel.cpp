@@ -51,7 +51,7 @@ FoldedSheet folded_sheet(unsigned seed, Index nx, Index ny, Real noise) {
     m.title = "folded sheet";
     m.nodes = mesh.nodes;
     m.triangles = mesh.triangles;
-    m.materials.push_back({"steel", MaterialType::Elastic, 7800, 2.1e11, 0.3});
+    m.materials.push_back({"steel", "elastic", 7800, 2.1e11, 0.3});
     m.sections.push_back({0, k_h, 2, 3});
     m.element_section.assign(m.triangles.size(), 0);
     std::vector<Index> all_nodes(m.nodes.size()), all_elements(m.triangles.size());

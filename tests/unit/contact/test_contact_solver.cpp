@@ -42,7 +42,7 @@ Model from_mesh(const MeshData& mesh, Real h, Material mat) {
     return m;
 }
 
-const Material k_steel{"steel", MaterialType::Elastic, 7800, 2.1e11, 0.3};
+const Material k_steel{"steel", "elastic", 7800, 2.1e11, 0.3};
 
 /// Adds the body and a contact of every particle with it.
 void add_body_with_contact(Model& m, const RigidBody& body, ContactMethod method) {

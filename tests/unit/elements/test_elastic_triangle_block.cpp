@@ -16,8 +16,8 @@
 #include "fpmshell/core/rotation.hpp"
 #include "fpmshell/elements/elastic_triangle_block.hpp"
 #include "fpmshell/elements/shell_triangle.hpp"
-#include "fpmshell/materials/j2_plastic.hpp"
-#include "fpmshell/materials/linear_elastic.hpp"
+#include "fpmshell/materials/elastic/linear_elastic.hpp"
+#include "fpmshell/materials/j2/j2_plastic.hpp"
 
 using namespace fpmshell;
 

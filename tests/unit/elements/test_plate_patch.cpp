@@ -40,7 +40,7 @@ Patch patch(DiagonalPattern pattern, Real perturb, BendingKernel kernel,
     Model& m = out.model;
     m.nodes = mesh.nodes;
     m.triangles = mesh.triangles;
-    m.materials.push_back({"m", MaterialType::Elastic, 1.0, 1.0e6, 0.3});
+    m.materials.push_back({"m", "elastic", 1.0, 1.0e6, 0.3});
     m.sections.push_back({0, 0.01, 2, 3});
     m.element_section.assign(m.triangles.size(), 0);
     m.control.bending = kernel;

@@ -15,6 +15,7 @@
 
 #include "fpmshell/core/errors.hpp"
 #include "fpmshell/io/model_reader.hpp"
+#include "fpmshell/materials/j2/j2_parameters.hpp"
 
 namespace fpmshell {
 namespace {
@@ -285,13 +286,15 @@ TEST(ModelReader, ReadsPlasticMaterials) {
                           "hardening_mix: 0.5, cowper_symonds: {D: 40.4, q: 5}}"),
                  "  end_time: 1.0e-3\n", "  end_time: 1.0e-3\n  thickness_update: true\n")));
     const Material& m = j2.materials[0];
-    EXPECT_EQ(m.type, MaterialType::J2Plastic);
-    EXPECT_EQ(m.yield_stress, 250);
-    EXPECT_EQ(m.tangent_modulus, 2100);
-    EXPECT_EQ(m.hardening_mix, 0.5);
-    EXPECT_TRUE(m.cowper_symonds);
-    EXPECT_EQ(m.cs_d, 40.4);
-    EXPECT_EQ(m.cs_q, 5);
+    EXPECT_EQ(m.law, "j2_plastic");
+    const J2Parameters& mp = *j2_parameters(m);
+    EXPECT_EQ(mp.flow.yield_stress, 250);
+    EXPECT_DOUBLE_EQ(mp.flow.hardening,
+                     210000.0 * 2100 / (210000.0 - 2100));  // H = E E_t / (E - E_t)
+    EXPECT_EQ(mp.hardening_mix, 0.5);
+    EXPECT_EQ(mp.rate.kind, RateFactor::Kind::CowperSymonds);
+    EXPECT_EQ(mp.rate.d, 40.4);
+    EXPECT_EQ(mp.rate.q, 5);
     EXPECT_TRUE(j2.control.thickness_update);
     EXPECT_EQ(j2.sections[0].thickness_points, 5);
     EXPECT_EQ(j2.sections[0].inplane_points, 3);
@@ -304,13 +307,16 @@ TEST(ModelReader, ReadsPlasticMaterials) {
                           "reference_strain_rate: 1, hardening_mix: 0.5}"),
                  "thickness: 0.1}", "thickness: 0.1, thickness_points: 3, inplane_points: 3}")));
     const Material& c = jc.materials[0];
-    EXPECT_EQ(c.type, MaterialType::JohnsonCook);
-    EXPECT_EQ(c.jc_a, 350);
-    EXPECT_EQ(c.jc_b, 275);
-    EXPECT_EQ(c.jc_n, 0.36);
-    EXPECT_EQ(c.jc_c, 0.022);
-    EXPECT_EQ(c.reference_strain_rate, 1);
-    EXPECT_EQ(c.hardening_mix, 0.5);
+    EXPECT_EQ(c.law, "johnson_cook");
+    const J2Parameters& cp = *j2_parameters(c);
+    EXPECT_EQ(cp.flow.kind, FlowStress::Kind::JohnsonCook);
+    EXPECT_EQ(cp.flow.a, 350);
+    EXPECT_EQ(cp.flow.b, 275);
+    EXPECT_EQ(cp.flow.n, 0.36);
+    EXPECT_EQ(cp.rate.kind, RateFactor::Kind::JohnsonCook);
+    EXPECT_EQ(cp.rate.c, 0.022);
+    EXPECT_EQ(cp.rate.reference_rate, 1);
+    EXPECT_EQ(cp.hardening_mix, 0.5);
     EXPECT_EQ(jc.sections[0].thickness_points, 3);
     EXPECT_EQ(jc.sections[0].inplane_points, 3);
 
@@ -320,13 +326,15 @@ TEST(ModelReader, ReadsPlasticMaterials) {
                              "poisson_ratio: 0.3, flow_curve: [[0, 250], [0.02, 300], [0.3, "
                              "300]], hardening_mix: 0.5, cowper_symonds: {D: 40.4, q: 5}}")));
     const Material& t = tab.materials[0];
-    EXPECT_EQ(t.type, MaterialType::Tabulated);
-    ASSERT_EQ(t.flow_curves.size(), 1U);
-    EXPECT_EQ(t.flow_curves[0].strain, (std::vector<Real>{0, 0.02, 0.3}));
-    EXPECT_EQ(t.flow_curves[0].stress, (std::vector<Real>{250, 300, 300}));
-    EXPECT_EQ(t.hardening_mix, 0.5);
-    EXPECT_TRUE(t.cowper_symonds);
-    EXPECT_EQ(t.cs_q, 5);
+    EXPECT_EQ(t.law, "tabulated");
+    const J2Parameters& tp = *j2_parameters(t);
+    ASSERT_EQ(tp.flow.table.size(), 1U);
+    EXPECT_EQ(tp.flow.value(0), 250);
+    EXPECT_NEAR(tp.flow.value(0.01), 275, 1e-9);  // halfway along the first segment
+    EXPECT_EQ(tp.flow.value(0.3), 300);
+    EXPECT_EQ(tp.hardening_mix, 0.5);
+    EXPECT_EQ(tp.rate.kind, RateFactor::Kind::CowperSymonds);
+    EXPECT_EQ(tp.rate.q, 5);
     EXPECT_EQ(tab.sections[0].thickness_points, 5);
 
     const Model rates = read_model(dir.write(
@@ -335,12 +343,12 @@ TEST(ModelReader, ReadsPlasticMaterials) {
                  "steel: {type: tabulated, density: 7.8e-9, youngs_modulus: 210000, "
                  "poisson_ratio: 0.3, flow_curves: [{strain_rate: 0, points: [[0, 250], [0.2, "
                  "300]]}, {strain_rate: 100, points: [[0, 300], [0.1, 330], [0.3, 380]]}]}")));
-    const Material& r = rates.materials[0];
-    ASSERT_EQ(r.flow_curves.size(), 2U);
-    EXPECT_EQ(r.flow_curves[0].strain_rate, 0);
-    EXPECT_EQ(r.flow_curves[1].strain_rate, 100);
-    EXPECT_EQ(r.flow_curves[1].strain, (std::vector<Real>{0, 0.1, 0.3}));
-    EXPECT_EQ(r.flow_curves[1].stress, (std::vector<Real>{300, 330, 380}));
+    const J2Parameters& r = *j2_parameters(rates.materials[0]);
+    ASSERT_EQ(r.flow.table.size(), 2U);
+    EXPECT_EQ(r.flow.table.rates(), (std::vector<Real>{0, 100}));
+    EXPECT_EQ(r.rate.kind, RateFactor::Kind::Table);
+    EXPECT_NEAR(r.flow.table.at(0.1, 1.0).value, 330, 1e-9);  // position 1: the second curve
+    EXPECT_NEAR(r.flow.table.at(0.2, 1.0).value, 355, 1e-9);
     EXPECT_EQ(r.hardening_mix, 1);
 }
 
@@ -488,14 +496,16 @@ TEST(ModelReader, ReadsPowerLawMaterials) {
     const TempDir dir;
     const Model m = read_model(dir.write("model.yaml", replaced(k_base, elastic, power)));
     const Material& mat = m.materials[0];
-    EXPECT_EQ(mat.type, MaterialType::PowerLaw);
+    EXPECT_EQ(mat.law, "power_law");
+    const FlowStress& flow = j2_parameters(mat)->flow;
     const Real eps0 = std::pow(900.0 / 210000.0, 1.0 / 0.75);  // E eps = k eps^n
-    EXPECT_NEAR(mat.power_strain_offset, eps0, 1e-15);
-    EXPECT_NEAR(mat.yield_stress, 210000.0 * eps0, 1e-9);
+    EXPECT_NEAR(flow.strain_offset, eps0, 1e-15);
+    EXPECT_NEAR(flow.value(0), 210000.0 * eps0, 1e-9);
     const Model y = read_model(dir.write(
         "model.yaml",
         replaced(k_base, elastic, replaced(power, "n: 0.25", "n: 0.25, yield_stress: 300"))));
-    EXPECT_NEAR(y.materials[0].power_strain_offset, std::pow(300.0 / 900.0, 4.0), 1e-15);
+    EXPECT_NEAR(j2_parameters(y.materials[0])->flow.strain_offset, std::pow(300.0 / 900.0, 4.0),
+                1e-15);
     expect_error(replaced(k_base, elastic, replaced(power, "n: 0.25", "n: 1.5")), 4,
                  "materials.steel.n", "must be below 1 without a yield_stress");
     expect_error(replaced(k_base, elastic, replaced(power, "k: 900", "k: -1")), 4,
@@ -586,7 +596,8 @@ TEST(ModelReader, ReadsRigidMaterials) {
     ASSERT_EQ(m.materials.size(), 2u);
     EXPECT_TRUE(m.materials[1].rigid);
     EXPECT_FALSE(m.materials[0].rigid);
-    EXPECT_EQ(m.materials[1].type, MaterialType::Elastic);
+    EXPECT_EQ(m.materials[1].law, "rigid");
+    EXPECT_FALSE(m.materials[1].plastic());
     expect_error(replaced(with_section, "material: steel", "material: hammer"), 6, "sections",
                  "every element is in a section of a rigid material");
     expect_error(with_section + "boundary:\n  - {nodes: xmax, fix: all}\n", 14, "boundary.0.nodes",
@@ -739,8 +750,7 @@ TEST(ModelReader, EveryErrorNamesFileLineAndKey) {
          "materials.steel.flow_curve.1", "two numbers [plastic strain, flow stress], got '0.1'"},
         {tabulated("poisson_ratio: 0.3, flow_curve: [[0, 200], [1, 300]], yield_stress: 200}"), 4,
          "materials.steel.yield_stress",
-         "unknown key; valid keys under 'materials.steel' are "
-         "type, density, youngs_modulus, poisson_ratio, flow_curve"},
+         "belongs to plastic materials (type: j2_plastic or power_law), not to type tabulated"},
         {replaced(k_base, steel, "poisson_ratio: 0.3, flow_curve: [[0, 200], [1, 300]]}"), 4,
          "materials.steel.flow_curve", "belongs to plastic materials"},
         {tabulated("poisson_ratio: 0.3, flow_curve: [[0, 200], [1, 300]], flow_curves: []}"), 4,

@@ -1,4 +1,4 @@
-// Tabulated flow curves (materials/flow_table.hpp, theory.md eqs. 7.2-4 and 7.2-5):
+// Tabulated flow curves (materials/j2/flow_table.hpp, theory.md eqs. 7.2-4 and 7.2-5):
 // - a rate's position among the rates: linear between them, clamped outside;
 // - the table on the union of its curves' points equals the blend of the curves evaluated on
 //   their own points, inside them and past their last points, on a scalar and on every lane.
@@ -8,7 +8,7 @@
 #include <random>
 #include <vector>
 
-#include "fpmshell/materials/flow_table.hpp"
+#include "fpmshell/materials/j2/flow_table.hpp"
 
 using namespace fpmshell;
 

@@ -11,8 +11,8 @@
 #include <cmath>
 
 #include "fpmshell/core/simd.hpp"
-#include "fpmshell/materials/j2_plastic.hpp"
-#include "fpmshell/materials/j2_return_mapping.hpp"
+#include "fpmshell/materials/j2/j2_plastic.hpp"
+#include "fpmshell/materials/j2/j2_return_mapping.hpp"
 
 using namespace fpmshell;
 

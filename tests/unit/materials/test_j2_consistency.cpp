@@ -1,4 +1,4 @@
-// Step 3 of the return mapping (materials/j2_consistency.hpp, theory.md §7.3a) against a
+// Step 3 of the return mapping (materials/j2/j2_consistency.hpp, theory.md §7.3a) against a
 // reference that shares none of its code: the consistency condition F(dgamma) = 0 of §7.3 in
 // its squared form, with libm's pow for the flow curve, solved by bisection to the last bit,
 // then step 4 written out again. Random states include points that never yielded (alpha_n = 0,
@@ -12,8 +12,8 @@
 #include <cmath>
 #include <random>
 
-#include "fpmshell/materials/j2_plastic.hpp"
-#include "fpmshell/materials/j2_return_mapping.hpp"
+#include "fpmshell/materials/j2/j2_plastic.hpp"
+#include "fpmshell/materials/j2/j2_return_mapping.hpp"
 
 using namespace fpmshell;
 

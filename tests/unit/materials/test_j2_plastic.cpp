@@ -21,7 +21,7 @@
 #include <random>
 #include <vector>
 
-#include "fpmshell/materials/j2_plastic.hpp"
+#include "fpmshell/materials/j2/j2_plastic.hpp"
 
 using namespace fpmshell;
 

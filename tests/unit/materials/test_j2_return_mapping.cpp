@@ -1,6 +1,7 @@
-// The return mapping of theory.md §7.3 on k_lanes points at once (materials/j2_return_mapping.hpp,
-// T = RealPack) against the same points one by one (T = Real, what J2Plastic::update runs and
-// test_j2_plastic.cpp checks against closed forms and an independent 3-D algorithm):
+// The return mapping of theory.md §7.3 on k_lanes points at once
+// (materials/j2/j2_return_mapping.hpp, T = RealPack) against the same points one by one (T = Real,
+// what J2Plastic::update runs and test_j2_plastic.cpp checks against closed forms and an
+// independent 3-D algorithm):
 // - every lane equals its scalar return, for lanes that stay elastic, yield for the first time,
 //   yield again, need many Newton steps or few, with a linear, a Johnson-Cook or a tabulated
 //   flow curve and a rate factor of their own;
@@ -14,8 +15,8 @@
 #include <random>
 #include <utility>
 
-#include "fpmshell/materials/j2_plastic.hpp"
-#include "fpmshell/materials/j2_return_mapping.hpp"
+#include "fpmshell/materials/j2/j2_plastic.hpp"
+#include "fpmshell/materials/j2/j2_return_mapping.hpp"
 
 using namespace fpmshell;
 

@@ -12,7 +12,7 @@
 #include <cmath>
 
 #include "../one_section_model.hpp"
-#include "fpmshell/materials/section_material.hpp"
+#include "fpmshell/materials/johnson_cook/johnson_cook_law.hpp"
 #include "fpmshell/solver/explicit_solver.hpp"
 
 namespace fpmshell {
@@ -20,36 +20,26 @@ namespace {
 
 // A Johnson-Cook steel whose specific heat is lowered (c_p = 60 instead of ~450) so that the
 // stretch heats it to T* ~ 0.5: the factor then changes the stress by tens of per cent.
+constexpr Real k_a = 3.5e8, k_b = 2.75e8, k_n = 0.36;
+
 Material hot_steel(Real m_exponent) {
-    Material mat;
-    mat.name = "steel";
-    mat.type = MaterialType::JohnsonCook;
-    mat.density = 7850;
-    mat.youngs_modulus = 2.0e11;
-    mat.poisson_ratio = 0.3;
-    mat.jc_a = 3.5e8;
-    mat.jc_b = 2.75e8;
-    mat.jc_n = 0.36;
-    mat.thermal = true;
-    mat.jc_m = m_exponent;
-    mat.room_temperature = 293;
-    mat.melt_temperature = 1793;
-    mat.specific_heat = 60;
-    mat.taylor_quinney = 0.9;
+    Material mat{"steel", "elastic", 7850, 2.0e11, 0.3};
+    make_johnson_cook(mat, k_a, k_b, k_n).thermal =
+        adiabatic_softening(m_exponent, 1793, 293, 60, 0.9, mat.density);
     return mat;
 }
 
+/// The exponent m of a hot_steel.
+Real exponent(const Material& mat) { return j2_parameters(mat)->thermal.m; }
+
 Real heating(const Material& mat) {
-    return mat.taylor_quinney /
-           (mat.density * mat.specific_heat * (mat.melt_temperature - mat.room_temperature));
+    return 0.9 / (mat.density * 60 * (1793 - 293));  // chi / (rho c_p (T_m - T_r))
 }
 
-Real flow(const Material& mat, Real alpha) {
-    return mat.jc_a + mat.jc_b * std::pow(alpha, mat.jc_n);
-}
+Real flow(const Material& /*mat*/, Real alpha) { return k_a + k_b * std::pow(alpha, k_n); }
 
 Real softening(const Material& mat, Real w) {
-    return 1.0 - std::pow(std::min(heating(mat) * w, 1.0), mat.jc_m);
+    return 1.0 - std::pow(std::min(heating(mat) * w, 1.0), exponent(mat));
 }
 
 /// W(alpha) of dW/d alpha = sigma_f(alpha) Theta(W), W(0) = 0, by RK4 in steps of 1e-5.
@@ -69,7 +59,7 @@ Real work_by_runge_kutta(const Material& mat, Real alpha_end) {
 
 /// W(alpha) in closed form for m = 1.
 Real work_closed_form(const Material& mat, Real alpha) {
-    const Real f = mat.jc_a * alpha + mat.jc_b * std::pow(alpha, mat.jc_n + 1) / (mat.jc_n + 1);
+    const Real f = k_a * alpha + k_b * std::pow(alpha, k_n + 1) / (k_n + 1);
     return (1.0 - std::exp(-heating(mat) * f)) / heating(mat);
 }
 
@@ -82,8 +72,7 @@ TEST(ThermalSoftening, TheRungeKuttaReferenceEqualsTheClosedForm) {
 
 /// The scalar update driven by equal strain increments in x and y to eps = 0.4.
 MaterialPoint stretched_point(const Material& mat) {
-    const SectionMaterial section = make_section_material(mat);
-    const J2Plastic& j2 = std::get<J2Plastic>(section);
+    const J2Plastic j2 = make_j2_plastic(mat);
     MaterialPoint mp;
     for (int i = 0; i < 4000; ++i) j2.update(mp, Voigt3(1e-4, 1e-4, 0), 1e-6, mp);
     return mp;
@@ -110,8 +99,9 @@ TEST(ThermalSoftening, AnEquibiaxialStretchFollowsTheAdiabaticCurve) {
 
 TEST(ThermalSoftening, WithoutHeatTheMaterialIsTheIsothermalOneBitForBit) {
     Material hot = hot_steel(1.0), cold = hot;
-    cold.thermal = false;
-    hot.specific_heat = 1e300;  // no temperature rise
+    std::any_cast<J2Parameters&>(cold.parameters).thermal = ThermalSoftening{};
+    std::any_cast<J2Parameters&>(hot.parameters).thermal =
+        adiabatic_softening(1.0, 1793, 293, 1e300, 0.9, hot.density);  // no temperature rise
     MaterialPoint a = stretched_point(hot), b = stretched_point(cold);
     for (int k = 0; k < 3; ++k) EXPECT_EQ(a.stress(k), b.stress(k));
     EXPECT_EQ(a.plastic_strain, b.plastic_strain);

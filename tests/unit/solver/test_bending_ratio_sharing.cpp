@@ -11,7 +11,7 @@
 
 #include "fpmshell/elements/bending_time_step.hpp"
 #include "fpmshell/elements/lumped_inertia.hpp"
-#include "fpmshell/materials/section_material.hpp"
+#include "fpmshell/materials/elastic/linear_elastic.hpp"
 #include "fpmshell/mesh/generators.hpp"
 #include "fpmshell/solver/shell_elements.hpp"
 
@@ -30,7 +30,7 @@ Model fine_plate(Index n, Real h, Real jitter) {
     Model m;
     m.nodes = mesh.nodes;
     m.triangles = mesh.triangles;
-    m.materials.push_back({"steel", MaterialType::Elastic, 7800, 2.1e11, 0.3});
+    m.materials.push_back({"steel", "elastic", 7800, 2.1e11, 0.3});
     m.sections.push_back({0, h, 2, 3});
     m.element_section.assign(m.triangles.size(), 0);
     m.control.bending = BendingKernel::Dkt;
@@ -45,8 +45,8 @@ struct ElementSteps {
 ElementSteps own_critical_dt(const Model& m, std::size_t e) {
     const Material& mat = m.materials[0];
     const Real h = m.sections[0].thickness;
-    const SectionMaterial sm = make_section_material(mat);
-    const Mat3 rigidity = elastic_stiffness(sm) * (h * h * h / 12.0);
+    const Mat3 rigidity =
+        LinearElastic(mat.youngs_modulus, mat.poisson_ratio).stiffness() * (h * h * h / 12.0);
     const Real c = std::sqrt(mat.youngs_modulus /
                              (mat.density * (1.0 - mat.poisson_ratio * mat.poisson_ratio)));
     const auto& t = m.triangles[e];

@@ -9,6 +9,7 @@
 #include <cmath>
 
 #include "fpmshell/core/rotation.hpp"
+#include "fpmshell/materials/bilinear/bilinear_law.hpp"
 #include "fpmshell/mesh/generators.hpp"
 #include "fpmshell/solver/explicit_solver.hpp"
 
@@ -30,11 +31,10 @@ Model spinning_cap(const Vec3& axis, Real rate, Index divisions, bool j2) {
     Model m;
     m.nodes = mesh.nodes;
     m.triangles = mesh.triangles;
-    m.materials.push_back({"steel", MaterialType::Elastic, k_density, k_young, 0.3});
+    m.materials.push_back({"steel", "elastic", k_density, k_young, 0.3});
     m.sections.push_back({0, k_thickness, 2, 3});
     if (j2) {  // the plastic sections' path (5 x 7 points, trial check), far from yielding
-        m.materials[0].type = MaterialType::J2Plastic;
-        m.materials[0].yield_stress = 250e6;
+        make_bilinear(m.materials[0], 250e6, 0.0);
         m.sections[0] = {0, k_thickness, 5, 7};
     }
     m.element_section.assign(m.triangles.size(), 0);

@@ -22,6 +22,7 @@
 #include "../one_section_model.hpp"
 #include "fpmshell/failure/element_erosion.hpp"
 #include "fpmshell/io/model_reader.hpp"
+#include "fpmshell/materials/bilinear/bilinear_law.hpp"
 #include "fpmshell/solver/explicit_solver.hpp"
 
 namespace fpmshell {
@@ -50,9 +51,7 @@ Model homogeneous_path(const std::function<Vec3(const Vec3&)>& velocity, bool la
     PlateParams pp;
     pp.nx = pp.ny = 4;
     Model m = test::one_section_model(generate_plate(pp), 0.01, 0.3, 2.0e11, 5);
-    m.materials[0].type = MaterialType::J2Plastic;
-    m.materials[0].yield_stress = 2.5e8;
-    m.materials[0].tangent_modulus = 1.0e9;
+    make_bilinear(m.materials[0], 2.5e8, 1.0e9);
     m.materials[0].failure.plastic_strain = 0.2;
     m.control.end_time = 1;
     test::prescribe_velocity_field(m, velocity, {false, false, true, true, true, false},

@@ -271,7 +271,7 @@ TEST(ExplicitSolver, NormalInitialVelocityFollowsTheSurfaceNormal) {
     Model m;
     m.nodes = mesh.nodes;
     m.triangles = mesh.triangles;
-    m.materials.push_back({"al", MaterialType::Elastic, 2700, 70e9, 0.3});
+    m.materials.push_back({"al", "elastic", 2700, 70e9, 0.3});
     m.sections.push_back({0, 0.01, 2, 3});
     m.element_section.assign(m.triangles.size(), 0);
     InitialVelocity iv;

@@ -18,7 +18,7 @@ struct Square {
     Square() {
         model.nodes = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(1, 1, 0)};
         model.triangles = {{0, 1, 3}, {0, 3, 2}};
-        model.materials.push_back({"steel", MaterialType::Elastic, 7800, 2.1e11, 0.3});
+        model.materials.push_back({"steel", "elastic", 7800, 2.1e11, 0.3});
         model.sections.push_back({0, 0.01, 2, 3});
         model.element_section.assign(2, 0);
         model.curves.push_back({"ramp", {{0.0, 0.0}, {2.0, 2.0}}});

@@ -9,6 +9,7 @@
 #include <cmath>
 
 #include "../one_section_model.hpp"
+#include "fpmshell/materials/bilinear/bilinear_law.hpp"
 #include "fpmshell/solver/explicit_solver.hpp"
 
 namespace fpmshell {
@@ -21,9 +22,7 @@ Model equibiaxial_stretch(bool thickness_update) {
     PlateParams pp;
     pp.nx = pp.ny = 4;
     Model m = test::one_section_model(generate_plate(pp), 0.01, 0.3, 2.0e11);
-    m.materials[0].type = MaterialType::J2Plastic;
-    m.materials[0].yield_stress = 2.5e8;
-    m.materials[0].tangent_modulus = 1.0e9;
+    make_bilinear(m.materials[0], 2.5e8, 1.0e9);
     m.control.thickness_update = thickness_update;
     m.control.end_time = 1.0;
     BoundaryCondition flat;  // in its plane

@@ -15,6 +15,7 @@
 
 #include "fpmshell/core/errors.hpp"
 #include "fpmshell/io/model_reader.hpp"
+#include "fpmshell/materials/bilinear/bilinear_law.hpp"
 #include "fpmshell/mesh/generators.hpp"
 #include "fpmshell/solver/explicit_solver.hpp"
 #include "one_section_model.hpp"
@@ -94,7 +95,7 @@ TEST(MassScaling, SectionsPastTheLimitAreNamed) {
     // two sections: steel, and a soft material with a 10x larger wave speed step; a target
     // between the two steps adds mass to the steel only
     Model m = jittered_plate(0.01);
-    m.materials.push_back({"soft", MaterialType::Elastic, 7800, 2.1e9, 0.3});
+    m.materials.push_back({"soft", "elastic", 7800, 2.1e9, 0.3});
     m.sections.push_back({1, 0.01, 2, 3});
     for (std::size_t e = 0; e < m.triangles.size(); e += 2) m.element_section[e] = 1;
     const ExplicitSolver plain(m);
@@ -161,8 +162,7 @@ TEST(MassScaling, TheKineticEnergyOfTheMassAddedDuringTheRunClosesTheBalance) {
     Model m = jittered_plate(0.01);
     m.boundary.clear();
     m.initial_conditions.clear();
-    m.materials[0].type = MaterialType::J2Plastic;
-    m.materials[0].yield_stress = 2.1e7;
+    make_bilinear(m.materials[0], 2.1e7, 0.0);
     m.sections[0].thickness_points = 5;
     const Vec3 centre(0.5, 0.5, 0.0);
     for (Index p = 0; p < m.n_particles(); ++p)

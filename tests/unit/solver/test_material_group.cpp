@@ -2,8 +2,8 @@
 // mechanism (solver/element_group.hpp): an elastic-perfectly plastic von Mises material with
 // a radial return and a point layout of its own (5 fields). The class below is all it needs
 // here; the loop makes it a group through MaterialGroup<RadialReturnPlastic> and computes its
-// elements one by one (it has no block path). In a model file it would also need an entry in
-// materials/section_material.hpp and the model reader.
+// elements one by one (it has no block path). In a model file it would also need its registry
+// entry (materials/material_law.hpp; tests/material_law/ has a law that does).
 //
 // It must reproduce the linear elastic material while it does not yield, and hold the
 // stress of a plate stretched far past yield on its yield surface.
@@ -14,7 +14,7 @@
 #include <memory>
 #include <numbers>
 
-#include "fpmshell/materials/linear_elastic.hpp"
+#include "fpmshell/materials/elastic/linear_elastic.hpp"
 #include "fpmshell/mesh/generators.hpp"
 #include "fpmshell/model/mesh_topology.hpp"
 #include "fpmshell/solver/shell_elements.hpp"

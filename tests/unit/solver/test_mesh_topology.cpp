@@ -23,7 +23,7 @@ Model three_triangles() {
     Model m;
     m.nodes = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(1, 1, 0), Vec3(0, 1, 0), Vec3(2, 0, 0)};
     m.triangles = {{0, 1, 2}, {0, 2, 3}, {1, 4, 2}};
-    m.materials.push_back({"steel", MaterialType::Elastic, 1000, 2.1e11, 0.3});
+    m.materials.push_back({"steel", "elastic", 1000, 2.1e11, 0.3});
     m.sections.push_back({0, 0.01, 2, 3});
     m.element_section.assign(m.triangles.size(), 0);
     return m;
@@ -135,8 +135,8 @@ TEST(MeshTopology, MassesAreTheLumpedSharesOfTheirElements) {
     Model m;
     m.nodes = mesh.nodes;
     m.triangles = mesh.triangles;
-    m.materials.push_back({"steel", MaterialType::Elastic, 7800, 2.1e11, 0.3});
-    m.materials.push_back({"alu", MaterialType::Elastic, 2700, 7e10, 0.33});
+    m.materials.push_back({"steel", "elastic", 7800, 2.1e11, 0.3});
+    m.materials.push_back({"alu", "elastic", 2700, 7e10, 0.33});
     m.sections.push_back({0, 0.01, 2, 3});
     m.sections.push_back({1, 0.013, 2, 3});
     for (std::size_t e = 0; e < m.triangles.size(); ++e)

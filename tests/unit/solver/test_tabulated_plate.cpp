@@ -9,7 +9,10 @@
 #include <algorithm>
 #include <cmath>
 #include <utility>
+#include <vector>
 
+#include "fpmshell/materials/bilinear/bilinear_law.hpp"
+#include "fpmshell/materials/tabulated/tabulated_law.hpp"
 #include "fpmshell/solver/explicit_solver.hpp"
 #include "one_section_model.hpp"
 #include "plate_runs.hpp"
@@ -35,22 +38,23 @@ Model impulsed_plate(const Material& material) {
     return m;
 }
 
-Material steel(MaterialType type) {
-    Material s{"steel", type, 7800, 2.1e11, 0.3};
-    s.hardening_mix = 0.5;  // mixed: the stored slope enters the kinematic part
+Material steel() { return {"steel", "elastic", 7800, 2.1e11, 0.3}; }
+
+/// A tabulated steel of those curves and that hardening mix.
+Material tabulated(const std::vector<FlowCurvePoints>& curves, Real mix = 0.5) {
+    Material s = steel();
+    make_tabulated(s, curves).hardening_mix = mix;
     return s;
 }
 
 }  // namespace
 
 TEST(TabulatedPlate, AStraightLineRunsAsTheBilinearMaterial) {
-    Material bilinear = steel(MaterialType::J2Plastic);
-    bilinear.yield_stress = k_yield;
-    bilinear.tangent_modulus = 2.1e9;
-    const Real h = bilinear.youngs_modulus * bilinear.tangent_modulus /
-                   (bilinear.youngs_modulus - bilinear.tangent_modulus);
-    Material line = steel(MaterialType::Tabulated);
-    line.flow_curves = {{0.0, {0.0, 1.0}, {k_yield, k_yield + h}}};
+    Material bilinear = steel();
+    const Real tangent = 2.1e9;
+    make_bilinear(bilinear, k_yield, tangent).hardening_mix = 0.5;  // the slope enters b too
+    const Real h = bilinear.youngs_modulus * tangent / (bilinear.youngs_modulus - tangent);
+    const Material line = tabulated({{0.0, {0.0, 1.0}, {k_yield, k_yield + h}}});
     const Model model_a = impulsed_plate(bilinear), model_b = impulsed_plate(line);
     ExplicitSolver a(model_a), b(model_b);  // a solver refers to its model
     for (int i = 0; i < 300; ++i) {
@@ -74,11 +78,10 @@ TEST(TabulatedPlate, AStraightLineRunsAsTheBilinearMaterial) {
 }
 
 TEST(TabulatedPlate, ACurveOfSeveralPointsKeepsTheEnergyBalance) {
-    Material curve = steel(MaterialType::Tabulated);
-    curve.flow_curves = {
-        {0.0,
-         {0.0, 0.002, 0.006, 0.012, 0.018, 0.1},
-         {k_yield, 1.2 * k_yield, 1.3 * k_yield, 1.3 * k_yield, 1.35 * k_yield, 1.6 * k_yield}}};
+    const Material curve = tabulated(
+        {{0.0,
+          {0.0, 0.002, 0.006, 0.012, 0.018, 0.1},
+          {k_yield, 1.2 * k_yield, 1.3 * k_yield, 1.3 * k_yield, 1.35 * k_yield, 1.6 * k_yield}}});
     const Model m = impulsed_plate(curve);
     // the bound of benchmarks.md §1 (1e-3 of the largest energy) over the run
     EXPECT_LT(test::max_energy_error(m, 400), 1e-3);
@@ -109,16 +112,15 @@ std::pair<Real, Real> deflection_and_dissipation(const Material& material) {
 
 TEST(TabulatedPlate, ATableOfOneCurveRunsAsThatCurveAndRisingCurvesResistMore) {
     const FlowCurvePoints curve{0.0, {0.0, 0.005, 0.1}, {k_yield, 1.2 * k_yield, 1.5 * k_yield}};
-    Material one = steel(MaterialType::Tabulated);
-    one.hardening_mix = 1.0;  // a table of several rates is isotropic (LS-DYNA *MAT_024)
-    one.flow_curves = {curve};
-    Material same = one, rising = one;
-    same.flow_curves = {curve, curve, curve};
-    same.flow_curves[1].strain_rate = 1.0;
-    same.flow_curves[2].strain_rate = 100.0;
-    rising.flow_curves = same.flow_curves;
-    for (Real& stress : rising.flow_curves[1].stress) stress *= 1.5;
-    for (Real& stress : rising.flow_curves[2].stress) stress *= 2.0;
+    // a table of several rates is isotropic (LS-DYNA *MAT_024)
+    const Material one = tabulated({curve}, 1.0);
+    std::vector<FlowCurvePoints> same_curves = {curve, curve, curve};
+    same_curves[1].strain_rate = 1.0;
+    same_curves[2].strain_rate = 100.0;
+    std::vector<FlowCurvePoints> rising_curves = same_curves;
+    for (Real& stress : rising_curves[1].stress) stress *= 1.5;
+    for (Real& stress : rising_curves[2].stress) stress *= 2.0;
+    const Material same = tabulated(same_curves, 1.0), rising = tabulated(rising_curves, 1.0);
     const auto [w_one, d_one] = deflection_and_dissipation(one);
     const auto [w_same, d_same] = deflection_and_dissipation(same);
     const auto [w_rising, d_rising] = deflection_and_dissipation(rising);

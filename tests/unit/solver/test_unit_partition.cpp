@@ -8,6 +8,7 @@
 #include <set>
 
 #include "../one_section_model.hpp"
+#include "fpmshell/materials/bilinear/bilinear_law.hpp"
 #include "fpmshell/mesh/generators.hpp"
 #include "fpmshell/solver/shell_elements.hpp"
 #include "fpmshell/solver/unit_partition.hpp"
@@ -106,7 +107,7 @@ TEST(UnitPartition, PlasticAndLoneElementsCostMore) {
     m.element_section[0] = 1;
     const ElementBlocks units = element_units(m);
     const std::vector<Real> elastic = element_costs(m, units);
-    m.materials[0].type = MaterialType::J2Plastic;
+    make_bilinear(m.materials[0], 250e6, 0.0);
     const std::vector<Real> plastic = element_costs(m, units);
     EXPECT_GT(units.n_alone(), 0);
     for (std::size_t e = 0; e < elastic.size(); ++e) {

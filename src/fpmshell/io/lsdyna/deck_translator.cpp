@@ -2,8 +2,11 @@
 // layout (see deck_translator.hpp).
 #include "fpmshell/io/lsdyna/deck_translator.hpp"
 
+#include <algorithm>
 #include <filesystem>
 #include <numeric>
+
+#include "fpmshell/materials/material_law.hpp"
 
 namespace fpmshell::deck {
 namespace {
@@ -204,12 +207,20 @@ std::string DeckTranslator::ignored_reason(const std::string& k) {
 }
 
 std::string DeckTranslator::unsupported_reason(const std::string& k) {
-    if (starts_with(k, "MAT_"))
-        return "this material is not supported; fpmshell reads *MAT_ELASTIC (001), "
-               "*MAT_PLASTIC_KINEMATIC (003), *MAT_JOHNSON_COOK (015), "
-               "*MAT_POWER_LAW_PLASTICITY (018), *MAT_RIGID (020), "
-               "*MAT_PIECEWISE_LINEAR_PLASTICITY (024) and "
-               "*MAT_TRANSVERSELY_ANISOTROPIC_ELASTIC_PLASTIC (037)";
+    if (starts_with(k, "MAT_")) {  // the cards of the laws of materials/material_laws.cpp
+        std::vector<std::pair<std::string, std::string>> cards;  // (number, name)
+        for (const MaterialLaw& law : material_laws())
+            for (const DeckMaterialCard& c : law.deck_cards)
+                cards.emplace_back(c.keywords.back().substr(4), c.keywords.front());
+        std::sort(cards.begin(), cards.end());
+        std::string list;
+        for (std::size_t i = 0; i < cards.size(); ++i)
+            list += (i == 0                  ? ""
+                     : i + 1 == cards.size() ? " and "
+                                             : ", ") +
+                    ("*" + cards[i].second) + " (" + cards[i].first + ")";
+        return "this material is not supported; fpmshell reads " + list;
+    }
     if (starts_with(k, "SECTION_") && !starts_with(k, "SECTION_SHELL"))
         return "fpmshell models shells only (*SECTION_SHELL, and *SECTION_SOLID for parts of "
                "*MAT_RIGID); beam, discrete and thick-shell sections are not supported";

@@ -48,6 +48,7 @@ struct TableDef {
 
 struct MaterialDef {
     Origin at;
+    long long id = 0;  ///< MID
     std::string keyword;
     std::vector<std::string> keys;  ///< "type: elastic", "density: 7850", ... (flow curves later)
     long long lcss = 0;             ///< *MAT_024: the curve or table of the flow stress

@@ -11,7 +11,7 @@
 #include "fpmshell/core/simd.hpp"
 #include "fpmshell/core/simd_math.hpp"
 #include "fpmshell/core/types.hpp"
-#include "fpmshell/materials/flow_table.hpp"
+#include "fpmshell/materials/j2/flow_table.hpp"
 
 namespace fpmshell {
 

@@ -20,7 +20,7 @@
 
 #include "fpmshell/core/simd.hpp"
 #include "fpmshell/core/simd_math.hpp"
-#include "fpmshell/materials/flow_stress.hpp"
+#include "fpmshell/materials/j2/flow_stress.hpp"
 
 namespace fpmshell {
 

@@ -1,4 +1,4 @@
-#include "fpmshell/solver/block_point_loads.hpp"
+#include "fpmshell/materials/j2/j2_block_loads.hpp"
 
 namespace fpmshell {
 

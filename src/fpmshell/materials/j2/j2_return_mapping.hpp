@@ -12,8 +12,8 @@
 #include <utility>
 
 #include "fpmshell/core/simd.hpp"
-#include "fpmshell/materials/flow_stress.hpp"
-#include "fpmshell/materials/j2_consistency.hpp"
+#include "fpmshell/materials/j2/flow_stress.hpp"
+#include "fpmshell/materials/j2/j2_consistency.hpp"
 
 namespace fpmshell {
 

@@ -1,4 +1,4 @@
-#include "fpmshell/materials/j2_plastic.hpp"
+#include "fpmshell/materials/j2/j2_plastic.hpp"
 
 #include <cmath>
 #include <limits>

@@ -5,11 +5,11 @@
 #pragma once
 
 #include "fpmshell/core/types.hpp"
-#include "fpmshell/materials/flow_stress.hpp"
-#include "fpmshell/materials/j2_return_mapping.hpp"
+#include "fpmshell/materials/j2/flow_stress.hpp"
+#include "fpmshell/materials/j2/j2_return_mapping.hpp"
+#include "fpmshell/materials/j2/strain_rate.hpp"
+#include "fpmshell/materials/j2/thermal_softening.hpp"
 #include "fpmshell/materials/material_point.hpp"
-#include "fpmshell/materials/strain_rate.hpp"
-#include "fpmshell/materials/thermal_softening.hpp"
 
 namespace fpmshell {
 

@@ -1,0 +1,51 @@
+#include "fpmshell/io/lsdyna/deck_material_card.hpp"
+
+#include "fpmshell/io/lsdyna/deck_translator.hpp"
+
+namespace fpmshell::deck {
+
+MaterialCard::MaterialCard(DeckTranslator& translator, const DeckBlock& block, std::size_t first,
+                           MaterialDef& material)
+    : translator_(translator), block_(block), first_(first), material_(material) {}
+
+Card MaterialCard::required(std::size_t k, const char* what) const {
+    return translator_.required_card(block_, first_ + k, what);
+}
+
+Card MaterialCard::optional(std::size_t k) const { return translator_.card(block_, first_ + k); }
+
+void MaterialCard::note(const Card& c, const std::string& what) const {
+    translator_.note(block_, c.line(), what);
+}
+
+void MaterialCard::id(const Card& c, std::size_t k) {
+    material_.id = c.id(k, "MID");
+    material_.at = {&block_, c.line()};
+}
+
+void MaterialCard::key(const std::string& text) { material_.keys.push_back(text); }
+
+void MaterialCard::elastic(const Card& f, Real youngs_modulus, Real poisson_ratio) {
+    key("density: " + num(f.real(1, "RO")));
+    key("youngs_modulus: " + num(youngs_modulus));
+    key("poisson_ratio: " + num(poisson_ratio));
+}
+
+void MaterialCard::plastic() { material_.plastic = true; }
+
+void MaterialCard::failure_strain(const Card& c, std::size_t k, const char* name) {
+    const Real strain = c.real(k, name);
+    if (strain < 0)
+        c.fail(std::string(name) +
+               " < 0 (a user failure routine or a failure time) is not supported; give the "
+               "plastic strain at failure (> 0) or 0 for none");
+    if (strain > 0) key("failure: {plastic_strain: " + num(strain) + "}");
+}
+
+void MaterialCard::flow_curve_id(long long lcss) { material_.lcss = lcss; }
+
+std::string MaterialCard::points_text(const std::vector<Point2>& points) {
+    return DeckTranslator::points_text(points);
+}
+
+}  // namespace fpmshell::deck

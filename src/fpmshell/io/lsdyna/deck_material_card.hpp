@@ -1,0 +1,53 @@
+// What a material law's deck card translation (materials/<law>/, material_law.hpp) sees of the
+// deck: the card's block and its data cards, the material definition it fills with the law's
+// model keys, and the translator's notes.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "fpmshell/io/lsdyna/deck_card.hpp"
+
+namespace fpmshell::deck {
+
+class DeckTranslator;
+struct MaterialDef;
+struct Point2;
+
+class MaterialCard {
+public:
+    /// `first`: the first data card of the block (1 after the title of a _TITLE keyword).
+    MaterialCard(DeckTranslator& translator, const DeckBlock& block, std::size_t first,
+                 MaterialDef& material);
+
+    /// Data card k (0: the first after any title); refused with `what` (its fields) if absent.
+    [[nodiscard]] Card required(std::size_t k, const char* what) const;
+    /// Data card k, blank fields where the deck leaves it out.
+    [[nodiscard]] Card optional(std::size_t k) const;
+    /// A note on the translation, at card c.
+    void note(const Card& c, const std::string& what) const;
+    /// The material's id (MID), read from card c's field k; its definition starts at c.
+    void id(const Card& c, std::size_t k = 0);
+    /// One model key, "name: value".
+    void key(const std::string& text);
+    /// density (RO in field 1 of card f), youngs_modulus and poisson_ratio.
+    void elastic(const Card& f, Real youngs_modulus, Real poisson_ratio);
+    /// A plastic law's card (its parts take 5 points through the thickness unless NIP says).
+    void plastic();
+    /// The plastic strain at failure in field k of card c (*MAT_003 FS, *MAT_018 EPSF, *MAT_024
+    /// FAIL; theory.md §7.6): > 0 erodes the elements whose points reach it, 0 none, < 0 refused.
+    void failure_strain(const Card& c, std::size_t k, const char* name);
+    /// The curve or table of the flow stress (*MAT_024 LCSS): written with the material once the
+    /// deck's curves are known.
+    void flow_curve_id(long long lcss);
+    /// `[[x, y], ...]`
+    [[nodiscard]] static std::string points_text(const std::vector<Point2>& points);
+
+private:
+    DeckTranslator& translator_;
+    const DeckBlock& block_;
+    std::size_t first_;
+    MaterialDef& material_;
+};
+
+}  // namespace fpmshell::deck
