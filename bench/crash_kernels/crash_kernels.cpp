@@ -14,6 +14,11 @@
 //             user's LS-DYNA *MAT_024 curve looks; not in the default list, which an older
 //             build must run too)
 //   tab-rate  three such curves at 0.001, 1 and 1000 /s, 1, 1.1 and 1.2 times the jc curve
+//   jc-damage jc with Johnson-Cook damage (failure/johnson_cook) whose failure strain no point
+//             reaches: the cost of the damage's accumulation at every point of every step (not
+//             in the default list, which an older build must run too)
+//   jc-fail   jc with failure at a plastic strain of 10 (failure/plastic_strain): the cost of
+//             the erosion's bookkeeping (idem)
 // The stretch rate is set from the stable step so that the points reach the yield surface
 // after 10 steps; the samples start after 14. A sample times ShellElements::compute on a twin
 // of the solver's elements, given the solver's current path element (an untimed copy),
@@ -40,6 +45,8 @@
 #endif
 
 #include "../bench_models.hpp"
+#include "fpmshell/failure/johnson_cook/johnson_cook_damage.hpp"
+#include "fpmshell/failure/plastic_strain/plastic_strain_failure.hpp"
 #include "fpmshell/materials/bilinear/bilinear_law.hpp"
 #include "fpmshell/materials/johnson_cook/johnson_cook_law.hpp"
 #include "fpmshell/materials/tabulated/tabulated_law.hpp"
@@ -114,10 +121,17 @@ Case make_case(const std::string& name) {
     }
     make_johnson_cook(m, 180e6, 450e6, name == "jc-n0.1" ? 0.1 : 0.5,
                       name == "jc-rate" ? 0.02 : 0.0, 1.0);
-    if (name != "jc-rate" && name != "jc" && name != "jc-n0.1") {
-        std::fprintf(stderr,
-                     "unknown model %s (jc, jc-rate, jc-n0.1, bilinear, elastic, tab, tab-rate)\n",
-                     name.c_str());
+    if (name == "jc-damage") {  // D1 = 10: eps_f >= 10, never reached
+        m.failure.criteria.push_back(
+            {"johnson_cook", JohnsonCookDamageParameters{10.0, 0.5, -1.5, 0.01, 0.0, 1.0, 1e-6}});
+    } else if (name == "jc-fail") {  // never reached: the erosion's bookkeeping alone
+        add_plastic_strain_failure(m, 10.0);
+    } else if (name != "jc-rate" && name != "jc" && name != "jc-n0.1") {
+        std::fprintf(
+            stderr,
+            "unknown model %s (jc, jc-rate, jc-n0.1, jc-damage, jc-fail, bilinear, elastic, tab, "
+            "tab-rate)\n",
+            name.c_str());
         std::exit(2);
     }
     return {name, m, 180e6};

@@ -379,6 +379,24 @@ if h_hot and h_cold:
     check("thermal softening: the heated tube resists the wall less on average",
           mean_force(hot) < 0.998 * mean_force(cold), (mean_force(hot), mean_force(cold)))
 
+# ---- *MAT_JOHNSON_COOK D1..D5: tube_crush.k's steel with Johnson-Cook damage (theory.md eq.
+# 7.6-2), NUMINT 1, against the twin with failure: {johnson_cook, points}; the folds erode
+DAMAGE_CARDS = ("       0.0       0.0       0.0       0.0      0.05       0.3      -1.5      0.01\n"
+                "       0.0       0.0       1.0       0.0         1\n")
+h_damage = deck_against_twin(
+    "Johnson-Cook damage", os.path.join(WORK, "jc_damage"), os.path.join(TUBE, "tube_crush_mesh.k"),
+    tube_deck.replace(CP_LINE, CP_LINE.replace("       0.0\n", DAMAGE_CARDS)),
+    tube_twin.replace(JC_TWIN, JC_TWIN + "    failure: {johnson_cook: {D1: 0.05, D2: 0.3, D3: -1.5, "
+                      "D4: 0.01, D5: 0, reference_strain_rate: 1}, points: 1}\n"))
+if h_damage:
+    with open(os.path.join(os.path.dirname(h_damage), "summary.json")) as f:
+        eroded = json.load(f).get("eroded_elements", 0)
+    check("Johnson-Cook damage: the tube's folds erode", eroded > 0, eroded)
+r = subprocess.run([FPM, "check", os.path.join(WORK, "jc_damage", "model.k")], capture_output=True,
+                   text=True)
+check("Johnson-Cook damage: check notes EROD read as 0",
+      r.returncode == 0 and "EROD != 0 read as 0" in r.stdout + r.stderr, r.stdout + r.stderr)
+
 # ---- *MAT_024 FAIL: strip_pull.k's steel fails at a plastic strain of 1 % (theory.md §7.6),
 # against the twin with failure: {plastic_strain}; elements erode (summary.json)
 STRIP_MAT = "$#     mid        ro         e        pr      sigy\n         1    7850.0   2.1e+11       0.3   3.0e+08\n"

@@ -7,7 +7,8 @@ For each model, `fpmshell run --threads 1` and `MPIEXEC -np 2 fpmshell run --thr
 the elastic cap, -np 1 and -np 3 with 2 threads each) must write byte-identical history.csv, energy.csv
 and last field frame; summary.json says how many ranks ran. A run stopped at t1 and resumed on 2
 ranks must equal the same on one process; so must the tube with contact, with and without mass
-scaling, and with friction (static, dynamic and its decay); so must a plate whose elements erode, and a strip
+scaling, and with friction (static, dynamic and its decay); so must a plate whose elements erode
+(by plastic strain, by Johnson-Cook damage), and a strip
 of the test-only material law (tests/material_law/, its own point state gathered from the ranks;
 with the build of the program that holds that law, FPMSHELL_WITH_TEST_LAWS).
 A relaxation is refused (exit 2, one message).
@@ -141,6 +142,19 @@ check("eroding_band", band, [], ranks=3, threads=2)
 with open(os.path.join(WORK, "eroding_band-3x2", "summary.json")) as f:
     if not json.load(f).get("eroded_elements"):
         failures.append("eroding_band: no element eroded (the check compares nothing)")
+# the same band failing by Johnson-Cook damage (its state per point gathered from the ranks)
+with open(band) as f:
+    damaging = f.read().replace(
+        "failure: {plastic_strain: 0.05}",
+        "failure: {johnson_cook: {D1: 0.01, D2: 0.08, D3: -1.5, D4: 0.01}}")
+assert "johnson_cook" in damaging
+damage_band = os.path.join(WORK, "damaging_band.yaml")
+with open(damage_band, "w") as f:
+    f.write(damaging)
+check("damaging_band", damage_band, [])
+with open(os.path.join(WORK, "damaging_band-2x1", "summary.json")) as f:
+    if not json.load(f).get("eroded_elements"):
+        failures.append("damaging_band: no element eroded (the check compares nothing)")
 
 # The materials seam: a law of the tests' own (its 7 numbers per point) through the gather of
 # the element state to rank 0 (the last frame's stresses) and on 3 ranks of 2 threads.

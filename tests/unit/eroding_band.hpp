@@ -7,12 +7,16 @@
 
 #include <cmath>
 
+#include "fpmshell/failure/johnson_cook/johnson_cook_damage.hpp"
+#include "fpmshell/failure/plastic_strain/plastic_strain_failure.hpp"
 #include "fpmshell/materials/bilinear/bilinear_law.hpp"
 #include "one_section_model.hpp"
 
 namespace fpmshell::test {
 
-inline Model eroding_band_plate(Index n) {
+/// The plate above, its band failing by Johnson-Cook damage instead (failure/johnson_cook:
+/// eps_f = 0.058 in uniaxial tension at the band's rate) where `damage`.
+inline Model eroding_band_plate(Index n, bool damage = false) {
     PlateParams pp;
     pp.nx = pp.ny = n;
     pp.pattern = DiagonalPattern::Alternate;
@@ -21,7 +25,11 @@ inline Model eroding_band_plate(Index n) {
     make_bilinear(steel, 2.5e8, 1.0e9);
     Material weak = steel;
     weak.name = "weak";
-    weak.failure.plastic_strain = 0.05;
+    if (damage)
+        weak.failure.criteria.push_back(
+            {"johnson_cook", JohnsonCookDamageParameters{0.01, 0.08, -1.5, 0.01, 0.0, 1.0, 1e-6}});
+    else
+        add_plastic_strain_failure(weak, 0.05);
     m.materials.push_back(weak);
     m.sections.push_back(m.sections[0]);
     m.sections[1].material = 1;

@@ -1,12 +1,31 @@
 #include "fpmshell/failure/element_erosion.hpp"
 
+#include <stdexcept>
+
 namespace fpmshell {
 
-ElementErosion::ElementErosion(const MaterialFailure& failure, int n_inplane, int n_through)
-    : active_(failure.active()),
-      plastic_strain_{failure.plastic_strain},
-      points_(failure.points),
-      n_inplane_(n_inplane),
-      n_through_(n_through) {}
+ElementErosion::ElementErosion(const Material& material, int n_inplane, int n_through)
+    : points_(material.failure.points), n_inplane_(n_inplane), n_through_(n_through) {
+    for (const FailureCriterionSpec& spec : material.failure.criteria) {
+        const FailureCriterion* c = find_failure_criterion(spec.name);
+        if (!c) throw std::logic_error("failure criterion '" + spec.name + "' of no kind");
+        std::shared_ptr<const PointFailure> f = c->make(spec.parameters, material);
+        offsets_.push_back(fields_);
+        fields_ += f->state_fields();
+        reads_point_ = reads_point_ || f->reads_point();
+        criteria_.push_back(std::move(f));
+    }
+}
+
+void ElementErosion::judge_block(const FailurePacks& in, Real dt, RealPack* state,
+                                 std::array<bool, k_lanes>& erodes) const {
+    std::array<MaskOf<RealPack>, 7 * k_max_thickness_points> failed;
+    for (std::size_t p = 0; p < in.m; ++p) failed[p] = MaskOf<RealPack>(false);
+    erodes.fill(false);
+    if (!judge(in, dt, state, failed.data())) return;
+    for (int l = 0; l < k_lanes; ++l)
+        erodes[static_cast<std::size_t>(l)] =
+            counts([&](std::size_t p) { return lane(failed[p], l); });
+}
 
 }  // namespace fpmshell

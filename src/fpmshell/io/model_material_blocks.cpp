@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "fpmshell/elements/quadrature.hpp"
+#include "fpmshell/failure/failure_criterion.hpp"
 #include "fpmshell/io/model_blocks.hpp"
 #include "fpmshell/io/model_names.hpp"
 #include "fpmshell/materials/material_law.hpp"
@@ -18,12 +19,22 @@
 namespace fpmshell {
 namespace {
 
-/// A plastic material's `failure: {plastic_strain, points}` (theory.md §7.6).
+/// A plastic material's `failure: {<criterion>: ..., points}` (theory.md §7.6): each
+/// criterion of failure/failure_criteria.cpp reads its own value, after the material's law.
 void read_failure(const YamlValue& v, Material& mat) {
-    const YamlMap f = v.map({"plastic_strain", "points"});
-    mat.failure.plastic_strain =
-        f.at("plastic_strain", "the plastic strain at which a point fails, a number > 0")
-            .positive();
+    std::vector<std::string> keys;
+    std::string names;
+    for (const FailureCriterion& c : failure_criteria()) {
+        keys.push_back(c.name);
+        names += (names.empty() ? "" : " or ") + c.name;
+    }
+    keys.push_back("points");
+    const YamlMap f = v.map(keys);
+    for (const auto& [key, value] : f.entries())
+        if (const FailureCriterion* c = find_failure_criterion(key))
+            mat.failure.criteria.push_back({c->name, c->read(value, mat)});
+    if (mat.failure.criteria.empty())
+        v.fail("names no failure criterion; give " + names + ", e.g. {plastic_strain: 0.3}");
     if (const auto n = f.find("points"))
         mat.failure.points = static_cast<int>(n->integer(1, 7 * k_max_thickness_points));
 }
@@ -87,9 +98,9 @@ void read_materials(const YamlValue& v, Model& model) {
         mat.poisson_ratio = nu.real();
         if (!(mat.poisson_ratio > -1 && mat.poisson_ratio < 0.5))
             nu.fail("must be greater than -1 and less than 0.5, got " + nu.describe());
+        law.read(m, mat);
         if (law.plastic)
             if (const auto f = m.find("failure")) read_failure(*f, mat);
-        law.read(m, mat);
         model.materials.push_back(std::move(mat));
     }
 }

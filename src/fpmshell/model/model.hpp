@@ -30,16 +30,22 @@ struct Curve {
 /// Integral of that factor from 0 to t (t for curve -1).
 [[nodiscard]] Real curve_factor_integral(const std::vector<Curve>& curves, Index curve, Real t);
 
+/// One failure criterion of a material: its name (its key under `failure`, a criterion of
+/// failure/failure_criteria.cpp) and its constants, of the type its folder declares.
+struct FailureCriterionSpec {
+    std::string name;
+    std::any parameters{};
+};
+
 /// How a plastic material's points fail and its elements erode (theory.md §7.6;
-/// failure/element_erosion.hpp).
+/// failure/element_erosion.hpp): a point fails when one of its criteria says so.
 struct MaterialFailure {
-    /// a point fails once its equivalent plastic strain reaches it; 0: never
-    Real plastic_strain = 0;
+    std::vector<FailureCriterionSpec> criteria{};
     /// failed points that erode an element; 0: every point through the thickness at one of
     /// its in-plane points
     int points = 0;
 
-    [[nodiscard]] bool active() const { return plastic_strain > 0; }
+    [[nodiscard]] bool active() const { return !criteria.empty(); }
 };
 
 /// A material: the constants every law has, and its law's own (units as in the model file;

@@ -30,6 +30,7 @@
 #include "fpmshell/core/simd.hpp"
 #include "fpmshell/elements/elastic_triangle_block.hpp"
 #include "fpmshell/elements/shell_triangle.hpp"
+#include "fpmshell/failure/element_erosion.hpp"
 #include "fpmshell/model/model.hpp"
 #include "fpmshell/solver/block_point_loads.hpp"
 
@@ -95,6 +96,13 @@ public:
     }
     /// The equivalent plastic strain of point p of the element at `place` (output).
     [[nodiscard]] virtual Real plastic_strain(GroupPlace place, std::size_t p) const = 0;
+    /// What the failure criteria read of every point of the element at `place` (§7.6): the
+    /// plastic strain, and with `whole` the stress and plastic work too.
+    virtual void failure_points(GroupPlace place, bool whole, ElementFailurePoints& out) const = 0;
+    /// The same of the k_lanes elements of the group's block b, point by point as packs read in
+    /// place (m = n_points()); m = 0 where the law's layout does not name those fields (then
+    /// failure_points, element by element).
+    [[nodiscard]] virtual FailurePacks block_failure_packs(std::size_t b) const = 0;
 
 protected:
     ElementGroup(const Model& model, std::size_t section, const Mat3& stiffness,
@@ -121,6 +129,9 @@ protected:
     }
     /// The state of the group's block b and of the next one (nullptr: b is the last).
     [[nodiscard]] RealPack* block_state(std::size_t b) {
+        return block_state_.data() + b * block_size();
+    }
+    [[nodiscard]] const RealPack* block_state_const(std::size_t b) const {
         return block_state_.data() + b * block_size();
     }
     [[nodiscard]] const RealPack* next_block_state(std::size_t b) const {
@@ -230,6 +241,44 @@ public:
             return field(place, p, Material::k_plastic_strain);
         else
             return point_state(place, p).plastic_strain;
+    }
+
+    /// A layout that names its fields: the criteria read those alone, in place.
+    static constexpr bool k_named_failure_fields = requires {
+        Material::k_stress;
+        Material::k_plastic_strain;
+        Material::k_plastic_work;
+    };
+    void failure_points(GroupPlace place, bool whole, ElementFailurePoints& out) const override {
+        for (std::size_t p = 0; p < n_points(); ++p) {
+            const auto j = p / static_cast<std::size_t>(k_lanes);
+            const auto l = static_cast<int>(p % static_cast<std::size_t>(k_lanes));
+            if constexpr (k_named_failure_fields) {
+                set_lane(out.plastic_strain[j], l, field(place, p, Material::k_plastic_strain));
+                if (!whole) continue;
+                for (std::size_t r = 0; r < 3; ++r)
+                    set_lane(out.stress[r][j], l, field(place, p, Material::k_stress + r));
+                set_lane(out.plastic_work[j], l, field(place, p, Material::k_plastic_work));
+            } else {
+                const MaterialPoint mp = point_state(place, p);
+                set_lane(out.plastic_strain[j], l, mp.plastic_strain);
+                for (int r = 0; r < 3; ++r)
+                    set_lane(out.stress[static_cast<std::size_t>(r)][j], l, mp.stress(r));
+                set_lane(out.plastic_work[j], l, mp.plastic_work);
+            }
+        }
+    }
+    [[nodiscard]] FailurePacks block_failure_packs(std::size_t b) const override {
+        FailurePacks in;
+        if constexpr (k_named_failure_fields) {
+            const RealPack* state = block_state_const(b);
+            const std::size_t n = n_points();
+            in.m = n;
+            in.plastic_strain = state + Material::k_plastic_strain * n;
+            for (std::size_t r = 0; r < 3; ++r) in.stress[r] = state + (Material::k_stress + r) * n;
+            in.plastic_work = state + Material::k_plastic_work * n;
+        }
+        return in;
     }
 
 private:

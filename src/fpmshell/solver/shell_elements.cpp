@@ -81,22 +81,7 @@ ShellElements::ShellElements(const Model& model, const MeshTopology& topology,
     thickness_.resize(ne);
     for (std::size_t e = 0; e < ne; ++e)
         thickness_[e] = model.sections[static_cast<std::size_t>(section_[e])].thickness;
-    // §7.6: the erosion rule of each section, and the per-element state where one can fail
-    bool can_fail = false;
-    for (std::size_t g = 0; g < groups_.size(); ++g) {
-        const Material& mat = model.materials[static_cast<std::size_t>(model.sections[g].material)];
-        const ShellRule& rule = groups_[g]->rule();
-        erosion_.emplace_back(mat.failure, static_cast<int>(rule.inplane.size()),
-                              static_cast<int>(rule.through.size()));
-        can_fail = can_fail || erosion_.back().active();
-    }
-    if (can_fail) {
-        eroded_.assign(ne, 0);
-        element_work_.assign(ne, 0.0);
-        last_loads_.assign(ne, std::array<Real, 18>{});
-    } else {
-        erosion_.clear();
-    }
+    init_erosion(model);  // §7.6
     if (smoothed_membrane_) {
         reversed_.resize(ne);
         cst_strain_.assign(ne, Voigt3::Zero());
@@ -343,7 +328,7 @@ ShellElements::ElementTotals ShellElements::compute_element(Index e, ParticleSta
                 corner_loads[6 * i + static_cast<std::size_t>(c)] = loads.force[i](c);
                 corner_loads[6 * i + 3 + static_cast<std::size_t>(c)] = loads.moment[i](c);
             }
-        check_erosion(ue, loads.strain_work, totals, corner_loads);
+        check_erosion(ue, loads.strain_work, dt, totals, corner_loads);
     }
     return totals;
 }
@@ -456,6 +441,10 @@ void ShellElements::compute_block(Index b, ParticleState& s, Real viscous_rate, 
     const RealPack volume_factor = any_lane(volume > initial_volume)
                                        ? ElementTimeSteps::volume_factor(initial_volume, volume)
                                        : RealPack(1.0);
+    // §7.6: the failure criteria of the whole block at once (a lane left to the general code
+    // is judged there)
+    std::array<bool, k_lanes> verdicts{};
+    const bool judged = !erosion_.empty() && judge_block(b, dt, verdicts);
     // the block's totals, lane by lane in lane order
     ElementTotals totals;
     for (int l = 0; l < k_lanes; ++l) {
@@ -500,7 +489,8 @@ void ShellElements::compute_block(Index b, ParticleState& s, Real viscous_rate, 
                     corner_loads[6 * i + 3 * k + 1] = lane(v.y, l);
                     corner_loads[6 * i + 3 * k + 2] = lane(v.z, l);
                 }
-            check_erosion(ue, t.strain_work, t, corner_loads);
+            check_erosion(ue, t.strain_work, dt, t, corner_loads,
+                          judged ? &verdicts[static_cast<std::size_t>(l)] : nullptr);
         }
         totals.add(t);
     }

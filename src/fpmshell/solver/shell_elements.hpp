@@ -158,12 +158,31 @@ private:
     /// Adds the neighbours' share of element e's membrane forces to its slots across the sides.
     void add_neighbour_loads(std::size_t e, const LocalTriangle<Real>& rt, const SmoothedStrain& sm,
                              const Voigt3& n);
-    /// §7.6 after element e's step of strain work `work`: adds the work to the element's,
-    /// and erodes it where its section's rule says so (booked in t), keeping its corner loads
-    /// (per corner: force x y z, moment x y z) for book_last_half_step. Only where
-    /// some material can fail (erosion_ not empty).
-    void check_erosion(std::size_t e, Real work, ElementTotals& t,
-                       const std::array<Real, 18>& corner_loads);
+    /// §7.6: the erosion rule of each section, and the per-element state where one can fail.
+    void init_erosion(const Model& model);
+    /// §7.6 after element e's step (of duration dt) of strain work `work`: adds the work to
+    /// the element's, brings its failure criteria up to the step, and erodes it where its
+    /// section's rule says so (booked in t), keeping its corner loads (per corner: force x y z,
+    /// moment x y z) for book_last_half_step. Only where some material can fail (erosion_ not
+    /// empty).
+    /// verdict: whether the element erodes, where its block's criteria have judged it
+    /// (judge_block); nullptr: judged here.
+    void check_erosion(std::size_t e, Real work, Real dt, ElementTotals& t,
+                       const std::array<Real, 18>& corner_loads, const bool* verdict = nullptr);
+    /// §7.6 the failure criteria of the k_lanes elements of block b after the step: which erode
+    /// (false where their section cannot fail). Returns false where the section's law has them
+    /// judged element by element.
+    bool judge_block(Index b, Real dt, std::array<bool, k_lanes>& erodes);
+    /// §7.6 whether element e erodes, its criteria judged on its own points.
+    bool erodes_alone(std::size_t e, Real dt);
+    /// §7.6 the criteria's state number i (of failure_numbers(e), [number][point]) of element
+    /// e, and how many it has (0 where none is kept).
+    [[nodiscard]] Real& failure_number(std::size_t e, std::size_t i);
+    [[nodiscard]] std::size_t failure_numbers(std::size_t e) const {
+        if (failure_state_.empty()) return 0;
+        const ElementErosion& rule = erosion_[static_cast<std::size_t>(section_[e])];
+        return rule.fields() * rule.n_points();
+    }
     /// §7.6 the step after element e eroded: the work of its last loads over the half step
     /// they acted in, into t's strain and eroded work.
     void book_last_half_step(std::size_t e, const ParticleState& s, ElementTotals& t);
@@ -204,6 +223,11 @@ private:
     std::vector<std::uint8_t> eroded_;
     std::vector<Real> element_work_;
     std::vector<std::array<Real, 18>> last_loads_;  ///< corner loads of the eroding step
+    /// the failure criteria's state (failure/element_erosion.hpp): a block's from the pack
+    /// failure_state_at_[e] of its elements on, an element computed alone's from its own;
+    /// empty where no criterion keeps any
+    std::vector<RealPack> failure_state_;
+    std::vector<std::size_t> failure_state_at_;  ///< per element
     bool thickness_update_ = false;
     bool smoothed_membrane_ = false;          ///< control.membrane: smoothed
     std::vector<ReversedTriangle> reversed_;  ///< smoothed: per element, this step's path element

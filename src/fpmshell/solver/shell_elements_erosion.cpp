@@ -4,6 +4,79 @@
 
 namespace fpmshell {
 
+void ShellElements::init_erosion(const Model& model) {
+    const std::size_t ne = tri_.size();
+    bool can_fail = false, has_state = false;
+    for (std::size_t g = 0; g < groups_.size(); ++g) {
+        const Material& mat = model.materials[static_cast<std::size_t>(model.sections[g].material)];
+        const ShellRule& rule = groups_[g]->rule();
+        erosion_.emplace_back(mat, static_cast<int>(rule.inplane.size()),
+                              static_cast<int>(rule.through.size()));
+        can_fail = can_fail || erosion_.back().active();
+        has_state = has_state || erosion_.back().fields() > 0;
+    }
+    if (!can_fail) {
+        erosion_.clear();
+        return;
+    }
+    eroded_.assign(ne, 0);
+    element_work_.assign(ne, 0.0);
+    last_loads_.assign(ne, std::array<Real, 18>{});
+    if (!has_state) return;
+    // the blocks' state first, block by block, then the elements computed alone
+    const ElementBlocks& blocks = assembly_.blocks();
+    failure_state_at_.assign(ne, 0);
+    std::size_t packs = 0;
+    for (std::size_t b = 0; b < blocks.block_group.size(); ++b) {
+        for (int l = 0; l < k_lanes; ++l)
+            failure_state_at_[static_cast<std::size_t>(
+                blocks.block_elements[b * static_cast<std::size_t>(k_lanes) +
+                                      static_cast<std::size_t>(l)])] = packs;
+        packs += erosion_[static_cast<std::size_t>(blocks.block_group[b])].block_state_packs();
+    }
+    for (const Index e : blocks.alone_elements) {
+        failure_state_at_[static_cast<std::size_t>(e)] = packs;
+        packs += erosion_[static_cast<std::size_t>(section_[static_cast<std::size_t>(e)])]
+                     .alone_state_packs();
+    }
+    failure_state_.assign(packs, RealPack(0.0));
+}
+
+Real& ShellElements::failure_number(std::size_t e, std::size_t i) {
+    const ElementErosion& rule = erosion_[static_cast<std::size_t>(section_[e])];
+    const std::size_t n = rule.n_points(), f = i / n, p = i % n;
+    RealPack* base = failure_state_.data() + failure_state_at_[e];
+    const GroupPlace place = place_of(e);
+    Real* lanes;
+    int l;
+    if (place.in_block) {  // [number][point], a lane per element
+        lanes = reinterpret_cast<Real*>(base + f * n + p);
+        l = static_cast<int>(place.index % static_cast<std::size_t>(k_lanes));
+    } else {  // [number][pack of points]
+        const auto w = static_cast<std::size_t>(k_lanes);
+        lanes = reinterpret_cast<Real*>(base + f * rule.point_packs() + p / w);
+        l = static_cast<int>(p % w);
+    }
+    return lanes[l];
+}
+
+bool ShellElements::judge_block(Index b, Real dt, std::array<bool, k_lanes>& erodes) {
+    const ElementBlocks& blocks = assembly_.blocks();
+    const auto g = static_cast<std::size_t>(blocks.block_group[static_cast<std::size_t>(b)]);
+    const ElementErosion& rule = erosion_[g];
+    erodes.fill(false);
+    if (!rule.active()) return true;
+    const FailurePacks in =
+        groups_[g]->block_failure_packs(static_cast<std::size_t>(b - blocks.group_first_block[g]));
+    if (in.m == 0) return false;
+    const std::size_t first =
+        blocks.block_elements[static_cast<std::size_t>(b) * static_cast<std::size_t>(k_lanes)];
+    RealPack* state =
+        failure_state_.empty() ? nullptr : failure_state_.data() + failure_state_at_[first];
+    rule.judge_block(in, dt, state, erodes);
+    return true;
+}
+
 std::vector<Index> ShellElements::eroded_in_last_step() const {
     std::vector<Index> out;
     for (std::size_t e = 0; e < eroded_.size(); ++e)
@@ -37,18 +110,39 @@ void ShellElements::book_last_half_step(std::size_t e, const ParticleState& s, E
     eroded_[e] = k_eroded;
 }
 
-void ShellElements::check_erosion(std::size_t e, Real work, ElementTotals& t,
-                                  const std::array<Real, 18>& loads) {
+void ShellElements::check_erosion(std::size_t e, Real work, Real dt, ElementTotals& t,
+                                  const std::array<Real, 18>& loads, const bool* verdict) {
     const ElementErosion& rule = erosion_[static_cast<std::size_t>(section_[e])];
     if (!rule.active()) return;
     element_work_[e] += work;
-    const ElementGroup& group = group_of(e);
-    const GroupPlace place = place_of(e);
-    if (!rule.erodes([&](std::size_t p) { return group.plastic_strain(place, p); })) return;
+    if (verdict ? !*verdict : !erodes_alone(e, dt)) return;
     eroded_[e] = k_eroded_pending;  // from the next step on (this step's loads stand)
     last_loads_[e] = loads;
     ++t.eroded;
     t.eroded_work += element_work_[e];
+}
+
+// One element's criteria, its points a pack at a time: its state in place where it is computed
+// alone, a copy of its lane of its block's where the block kernel left it to the general code.
+bool ShellElements::erodes_alone(std::size_t e, Real dt) {
+    const ElementErosion& rule = erosion_[static_cast<std::size_t>(section_[e])];
+    const ElementGroup& group = group_of(e);
+    const GroupPlace place = place_of(e);
+    const auto fill = [&](ElementFailurePoints& points) {
+        group.failure_points(place, rule.reads_point(), points);
+    };
+    if (failure_state_.empty()) return rule.erodes(fill, dt, nullptr);
+    if (!place.in_block) return rule.erodes(fill, dt, failure_state_.data() + failure_state_at_[e]);
+    const std::size_t n = rule.n_points(), w = static_cast<std::size_t>(k_lanes);
+    std::vector<RealPack> state(rule.alone_state_packs(), RealPack(0.0));
+    for (std::size_t i = 0; i < rule.fields() * n; ++i)
+        set_lane(state[i / n * rule.point_packs() + i % n / w], static_cast<int>(i % n % w),
+                 failure_number(e, i));
+    const bool erodes = rule.erodes(fill, dt, state.data());
+    for (std::size_t i = 0; i < rule.fields() * n; ++i)
+        failure_number(e, i) =
+            lane(state[i / n * rule.point_packs() + i % n / w], static_cast<int>(i % n % w));
+    return erodes;
 }
 
 }  // namespace fpmshell

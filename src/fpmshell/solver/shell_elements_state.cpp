@@ -16,7 +16,8 @@ T take(const std::vector<char>& bytes, std::size_t& at) {
 }  // namespace
 
 // Per element: its index, thickness, N, M, bending step ratio and length, its mass scaling
-// state (§6.10), where elements can fail its erosion state (§7.6), then its points.
+// state (§6.10), where elements can fail its erosion state and its criteria's (§7.6), then its
+// points.
 std::vector<char> ShellElements::pack_state(bool own_only) const {
     std::vector<Index> elements;
     const ElementBlocks& blocks = assembly_.blocks();
@@ -46,6 +47,8 @@ std::vector<char> ShellElements::pack_state(bool own_only) const {
             append_bytes(bytes, eroded_[ue]);
             append_bytes(bytes, element_work_[ue]);
             append_bytes(bytes, last_loads_[ue]);
+            for (std::size_t i = 0; i < failure_numbers(ue); ++i)
+                append_bytes(bytes, self.failure_number(ue, i));
         }
         const ElementGroup& group = group_of(ue);
         const GroupPlace place = place_of(ue);
@@ -74,6 +77,8 @@ void ShellElements::unpack_state(const std::vector<char>& bytes) {
             eroded_[ue] = take<std::uint8_t>(bytes, at);
             element_work_[ue] = take<Real>(bytes, at);
             last_loads_[ue] = take<std::array<Real, 18>>(bytes, at);
+            for (std::size_t i = 0; i < failure_numbers(ue); ++i)
+                failure_number(ue, i) = take<Real>(bytes, at);
         }
         ElementGroup& group = *groups_[static_cast<std::size_t>(section_[ue])];
         const GroupPlace place = place_of(ue);
@@ -104,7 +109,12 @@ void ShellElements::save(RestartWriter& out) const {
     }
     auto& self = const_cast<ShellElements&>(*this);  // the archive's interface is shared with load
     out(fields, self.thickness_, self.time_steps_.ratio(), self.time_steps_.ratio_length(), n, m);
-    out(self.eroded_, self.element_work_, self.last_loads_);  // §7.6 (empty: none can fail)
+    // §7.6 (empty: none can fail), the criteria's state element by element
+    std::vector<Real> failure;
+    for (std::size_t e = 0; e < tri_.size(); ++e)
+        for (std::size_t i = 0; i < failure_numbers(e); ++i)
+            failure.push_back(self.failure_number(e, i));
+    out(self.eroded_, self.element_work_, self.last_loads_, failure);
 }
 
 void ShellElements::load(RestartReader& in) {
@@ -121,11 +131,16 @@ void ShellElements::load(RestartReader& in) {
         m.size() != n_elements ||
         stored_lengths(time_steps_.ratio(), time_steps_.ratio_length()) != ratio_lengths)
         in.fail("restart file of a model with other elements, materials or integration rules");
+    std::vector<Real> failure;
+    for (std::size_t e = 0; e < n_elements; ++e)
+        failure.resize(failure.size() + failure_numbers(e));
     const std::vector<std::size_t> erosion_lengths =
-        stored_lengths(eroded_, element_work_, last_loads_);
-    in(eroded_, element_work_, last_loads_);
-    if (stored_lengths(eroded_, element_work_, last_loads_) != erosion_lengths)
+        stored_lengths(eroded_, element_work_, last_loads_, failure);
+    in(eroded_, element_work_, last_loads_, failure);
+    if (stored_lengths(eroded_, element_work_, last_loads_, failure) != erosion_lengths)
         in.fail("restart file of a model with other failure criteria");
+    for (std::size_t e = 0, k = 0; e < n_elements; ++e)
+        for (std::size_t i = 0; i < failure_numbers(e); ++i) failure_number(e, i) = failure[k++];
     for (std::size_t e = 0; e < n_elements; ++e) set_resultants(e, n[e], m[e]);
     std::size_t i = 0;
     for (std::size_t e = 0; e < n_elements; ++e) {

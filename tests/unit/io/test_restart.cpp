@@ -396,6 +396,23 @@ TEST(Restart, ErosionResumesBitForBit) {
     expect_resume_bit_for_bit(model, "erosion", 193);
 }
 
+TEST(Restart, DamageResumesBitForBit) {
+    // the band failing by Johnson-Cook damage, stopped amid its erosion: every point's damage
+    // and its plastic strain at the last step carry over
+    Model model = test::eroding_band_plate(16, true);
+    model.title = "damaging band";
+    model.source_file = (fs::temp_directory_path() / "damaging_band.yaml").string();  // its name
+    long stop = 0;
+    {
+        ExplicitSolver probe(model);
+        while (probe.eroded_elements() == 0) probe.step(1e30);
+        stop = probe.steps() + 3;
+        while (probe.steps() < stop) probe.step(1e30);
+        ASSERT_LT(probe.eroded_elements(), 64) << "the band must still be eroding at the stop";
+    }
+    expect_resume_bit_for_bit(model, "damage", stop);
+}
+
 TEST(Restart, APerforationResumesBitForBit) {
     // examples/plate_perforation stopped while the ball tears through (its elements erode from
     // about step 50): the faces eroded before the stop leave the self-contact of the resumed run

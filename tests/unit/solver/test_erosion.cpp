@@ -21,6 +21,7 @@
 #include "../eroding_band.hpp"
 #include "../one_section_model.hpp"
 #include "fpmshell/failure/element_erosion.hpp"
+#include "fpmshell/failure/plastic_strain/plastic_strain_failure.hpp"
 #include "fpmshell/io/model_reader.hpp"
 #include "fpmshell/materials/bilinear/bilinear_law.hpp"
 #include "fpmshell/solver/explicit_solver.hpp"
@@ -29,19 +30,24 @@ namespace fpmshell {
 namespace {
 
 TEST(Erosion, TheRuleCountsTheFailedPointsAsDocumented) {
-    MaterialFailure f;
-    f.plastic_strain = 0.1;
-    const ElementErosion one_station(f, 3, 2);  // 3 in-plane x 2 through the thickness
+    Material m;
+    add_plastic_strain_failure(m, 0.1);
+    const ElementErosion one_station(m, 3, 2);  // 3 in-plane x 2 through the thickness
     // points 0-1 at in-plane point 0, 2-3 at 1, 4-5 at 2
-    auto strains = [](std::vector<Real> a) { return [a](std::size_t p) { return a[p]; }; };
-    EXPECT_FALSE(one_station.erodes(strains({0.2, 0, 0.2, 0, 0.2, 0})));  // one per station
-    EXPECT_TRUE(one_station.erodes(strains({0, 0, 0.1, 0.3, 0, 0})));     // station 1 whole
-    f.points = 3;
-    const ElementErosion three(f, 3, 2);
-    EXPECT_TRUE(three.erodes(strains({0.2, 0, 0.2, 0, 0.2, 0})));
-    EXPECT_FALSE(three.erodes(strains({0.2, 0, 0.2, 0, 0.05, 0})));
-    f.plastic_strain = 0;  // cannot fail
-    EXPECT_FALSE(ElementErosion(f, 3, 2).erodes(strains({9, 9, 9, 9, 9, 9})));
+    auto strains = [](std::vector<Real> a) {
+        return [a](ElementFailurePoints& points) {
+            for (std::size_t p = 0; p < a.size(); ++p)
+                set_lane(points.plastic_strain[p / k_lanes], static_cast<int>(p % k_lanes), a[p]);
+        };
+    };
+    EXPECT_FALSE(one_station.erodes(strains({0.2, 0, 0.2, 0, 0.2, 0}), 1, nullptr));  // one each
+    EXPECT_TRUE(one_station.erodes(strains({0, 0, 0.1, 0.3, 0, 0}), 1, nullptr));     // station 1
+    m.failure.points = 3;
+    const ElementErosion three(m, 3, 2);
+    EXPECT_TRUE(three.erodes(strains({0.2, 0, 0.2, 0, 0.2, 0}), 1, nullptr));
+    EXPECT_FALSE(three.erodes(strains({0.2, 0, 0.2, 0, 0.05, 0}), 1, nullptr));
+    m.failure.criteria.clear();  // cannot fail
+    EXPECT_FALSE(ElementErosion(m, 3, 2).active());
 }
 
 /// A 1 m square of 4 x 4 squares of steel failing at a plastic strain of 0.2, every particle
@@ -52,7 +58,7 @@ Model homogeneous_path(const std::function<Vec3(const Vec3&)>& velocity, bool la
     pp.nx = pp.ny = 4;
     Model m = test::one_section_model(generate_plate(pp), 0.01, 0.3, 2.0e11, 5);
     make_bilinear(m.materials[0], 2.5e8, 1.0e9);
-    m.materials[0].failure.plastic_strain = 0.2;
+    add_plastic_strain_failure(m.materials[0], 0.2);
     m.control.end_time = 1;
     test::prescribe_velocity_field(m, velocity, {false, false, true, true, true, false},
                                    {true, !lateral_free, !lateral_free});
@@ -137,18 +143,21 @@ TEST(Erosion, ATornPlateKeepsItsMassAndItsEnergyBalance) {
 
 TEST(Erosion, ThreadCountDoesNotChangeTheTornPlate) {
 #ifdef _OPENMP
-    const Model m = test::eroding_band_plate(32);  // 2048 elements: the parallel loop
-    auto run = [&](int threads) {
-        omp_set_num_threads(threads);
-        ExplicitSolver s(m);
-        while (s.time() < 1.6e-3) s.step(1e30);
-        return std::make_pair(s.state().x, s.eroded_elements());
-    };
-    const auto one = run(1), two = run(2);
-    omp_set_num_threads(omp_get_num_procs());
-    ASSERT_GT(one.second, 0);
-    EXPECT_EQ(one.second, two.second);
-    EXPECT_EQ(one.first, two.first);  // bitwise
+    for (const bool damage : {false, true}) {  // by plastic strain, by Johnson-Cook damage
+        SCOPED_TRACE(damage);
+        const Model m = test::eroding_band_plate(32, damage);  // 2048 elements: parallel
+        auto run = [&](int threads) {
+            omp_set_num_threads(threads);
+            ExplicitSolver s(m);
+            while (s.time() < 1.6e-3) s.step(1e30);
+            return std::make_pair(s.state().x, s.eroded_elements());
+        };
+        const auto one = run(1), two = run(2);
+        omp_set_num_threads(omp_get_num_procs());
+        ASSERT_GT(one.second, 0);
+        EXPECT_EQ(one.second, two.second);
+        EXPECT_EQ(one.first, two.first);  // bitwise
+    }
 #else
     GTEST_SKIP() << "built without OpenMP";
 #endif

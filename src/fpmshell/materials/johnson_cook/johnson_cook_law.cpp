@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <string>
+
 #include "fpmshell/io/lsdyna/deck_material_card.hpp"
 #include "fpmshell/io/yaml_access.hpp"
 
@@ -102,10 +104,35 @@ void mat_johnson_cook(deck::MaterialCard& card) {
     } else if (m_exp != 0 || tm != 0) {
         card.note(g, "isothermal: the temperature terms (M, TM, TR) need CP > 0 to act");
     }
-    bool damage = false;
-    for (std::size_t k = 4; k < 8; ++k) damage = damage || h.real(k, "D1..D4") != 0;
-    damage = damage || i.real(0, "D5") != 0;
-    if (damage) card.note(h, "D1..D5: failure is not modelled (no element is deleted)");
+    // D1..D5: Johnson-Cook damage (failure/johnson_cook), EFMIN its floor, NUMINT the points
+    // that erode a shell (0: all through the thickness)
+    const Real d[5] = {h.real(4, "D1"), h.real(5, "D2"), h.real(6, "D3"), h.real(7, "D4"),
+                       i.real(0, "D5")};
+    if (d[0] != 0 || d[1] != 0 || d[2] != 0 || d[3] != 0 || d[4] != 0) {
+        std::string damage = "failure: {johnson_cook: {D1: " + deck::num(d[0]) +
+                             ", D2: " + deck::num(d[1]) + ", D3: " + deck::num(d[2]) +
+                             ", D4: " + deck::num(d[3]) + ", D5: " + deck::num(d[4]);
+        if (d[3] != 0) {
+            if (!(eps0 > 0)) g.fail("EPSO must be > 0 with a rate term D4 of the damage");
+            damage += ", reference_strain_rate: " + deck::num(eps0);
+        }
+        const Real efmin = i.real(3, "EFMIN");
+        if (efmin < 0) i.fail("EFMIN must be >= 0 (the lower bound of the failure strain)");
+        if (efmin > 0) damage += ", minimum_strain: " + deck::num(efmin);
+        damage += "}";
+        const long long numint = i.id(4, "NUMINT");
+        if (numint < 0) i.fail("NUMINT < 0 is not supported (give the number of points, or 0)");
+        if (numint > 0) damage += ", points: " + std::to_string(numint);
+        card.key(damage + "}");
+        if (i.real(2, "EROD") != 0)
+            card.note(i,
+                      "EROD != 0 read as 0: an element whose points fail erodes (keeping it with "
+                      "no deviatoric stress is not modelled)");
+        if (f.real(5, "DTF") != 0)
+            card.note(f, "DTF ignored: elements erode by their damage, not by their time step");
+        if (h.real(1, "PC") != 0 || h.real(2, "SPALL") != 0)
+            card.note(h, "PC, SPALL ignored: a shell in plane stress has no pressure cut-off");
+    }
     card.note(f, "its *EOS is irrelevant: a shell is in plane stress");
 }
 

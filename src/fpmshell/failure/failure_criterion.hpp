@@ -1,0 +1,64 @@
+// A failure criterion as the rest of the code sees it (theory.md §7.6): its key under a
+// plastic material's `failure`, the function that reads and checks its constants, and the
+// object that judges a point after each step. Each criterion is a folder under failure/ that
+// makes one FailureCriterion, and one line of failure_criteria.cpp lists it; any plastic law
+// takes any of them.
+#pragma once
+
+#include <any>
+#include <cstddef>
+#include <memory>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "fpmshell/core/simd.hpp"
+#include "fpmshell/model/model.hpp"
+
+namespace fpmshell {
+
+class YamlValue;
+
+/// What the criteria read of points after a step, m packs of k_lanes points each (a lane is
+/// a point of some element: the elements of a SIMD block at one point, or the points of one
+/// element; lanes of no point read zeros). The stress and plastic work only where some
+/// criterion of the material reads_point().
+struct FailurePacks {
+    std::size_t m = 0;
+    const RealPack* plastic_strain = nullptr;
+    const RealPack* stress[3] = {nullptr, nullptr, nullptr};  ///< sxx, syy, sxy
+    const RealPack* plastic_work = nullptr;
+};
+
+/// One criterion of one material, judging its points.
+class PointFailure {
+public:
+    virtual ~PointFailure() = default;
+    /// Numbers it keeps per point (its damage, ...), each 0 before the first step.
+    [[nodiscard]] virtual std::size_t state_fields() const { return 0; }
+    /// Whether it reads more of a point than its plastic strain.
+    [[nodiscard]] virtual bool reads_point() const { return false; }
+    /// Brings its state of the points (state_fields() x in.m packs, [number][pack]) up to the
+    /// step of duration dt, and adds to failed[j] the lanes of pack j that have failed; whether
+    /// some lane has. A lane's result does not depend on the others', and judging a point
+    /// twice after one step changes nothing.
+    virtual bool judge(const FailurePacks& in, Real dt, RealPack* state,
+                       MaskOf<RealPack>* failed) const = 0;
+};
+
+struct FailureCriterion {
+    std::string name;  ///< its key under `failure`
+    /// Reads its value under `failure` (checked) into its constants, for a material whose law
+    /// and elastic constants are read.
+    std::any (*read)(const YamlValue& value, const Material& material) = nullptr;
+    /// The criterion of a material.
+    std::unique_ptr<PointFailure> (*make)(const std::any& parameters,
+                                          const Material& material) = nullptr;
+};
+
+/// Every criterion, in the order of failure_criteria.cpp.
+[[nodiscard]] const std::vector<FailureCriterion>& failure_criteria();
+/// The criterion of that name, nullptr if none.
+[[nodiscard]] const FailureCriterion* find_failure_criterion(std::string_view name);
+
+}  // namespace fpmshell

@@ -1,0 +1,73 @@
+#include "fpmshell/failure/johnson_cook/johnson_cook_damage.hpp"
+
+#include <algorithm>
+
+#include "fpmshell/io/yaml_access.hpp"
+#include "fpmshell/materials/j2/j2_parameters.hpp"
+
+namespace fpmshell {
+
+bool JohnsonCookDamage::judge(const FailurePacks& in, Real dt, RealPack* state,
+                              MaskOf<RealPack>* failed) const {
+    RealPack* damage = state;              // D of every point
+    RealPack* last_strain = state + in.m;  // the plastic strain at the last step
+    bool any = false;
+    for (std::size_t j = 0; j < in.m; ++j) {
+        const RealPack alpha = in.plastic_strain[j];
+        const RealPack d_alpha = alpha - last_strain[j];
+        const MaskOf<RealPack> flowing = d_alpha > 0.0;
+        if (any_lane(flowing)) {
+            const RealPack rate = dt > 0 ? d_alpha * (1.0 / dt) : RealPack(0.0);
+            const RealPack t_star =
+                min(max(heating_ * in.plastic_work[j], RealPack(0.0)), RealPack(1.0));
+            const RealPack eta = triaxiality(in.stress[0][j], in.stress[1][j], in.stress[2][j]);
+            const RealPack eps = failure_strain(eta, rate, t_star);
+            damage[j] += select(flowing, d_alpha / eps, RealPack(0.0));
+            last_strain[j] = select(flowing, alpha, last_strain[j]);
+        }
+        const MaskOf<RealPack> f = damage[j] >= 1.0;
+        if (!any_lane(f)) continue;
+        failed[j] = failed[j] || f;
+        any = true;
+    }
+    return any;
+}
+
+namespace {
+
+/// `johnson_cook: {D1, D2, D3, D4, D5, reference_strain_rate, minimum_strain}`.
+std::any read_johnson_cook(const YamlValue& v, const Material& material) {
+    const YamlMap m =
+        v.map({"D1", "D2", "D3", "D4", "D5", "reference_strain_rate", "minimum_strain"});
+    JohnsonCookDamageParameters p;
+    p.d1 = m.at("D1", "the failure strain constant D1").real();
+    p.d2 = m.at("D2", "the failure strain constant D2 of the triaxiality term").real();
+    p.d3 = m.at("D3", "the exponent D3 of the triaxiality term").real();
+    p.d4 = m.real_or("D4", 0.0);
+    p.d5 = m.real_or("D5", 0.0);
+    // the law's own reference rate where it has one (johnson_cook with C)
+    const J2Parameters* j2 = j2_parameters(material);
+    const Real law_rate =
+        j2 && j2->rate.kind == RateFactor::Kind::JohnsonCook ? j2->rate.reference_rate : 1.0;
+    p.reference_strain_rate = m.positive_or("reference_strain_rate", law_rate);
+    p.minimum_strain = m.positive_or("minimum_strain", p.minimum_strain);
+    if (!(p.d1 + p.d2 * std::exp(p.d3 / 3.0) > 0))
+        v.fail("gives no positive failure strain in uniaxial tension (D1 + D2 exp(D3 / 3) <= 0)");
+    return p;
+}
+
+std::unique_ptr<PointFailure> make_johnson_cook(const std::any& parameters,
+                                                const Material& material) {
+    const J2Parameters* j2 = j2_parameters(material);
+    const Real heating = j2 && j2->thermal.active ? j2->thermal.heating : 0.0;
+    return std::make_unique<JohnsonCookDamage>(
+        std::any_cast<const JohnsonCookDamageParameters&>(parameters), heating);
+}
+
+}  // namespace
+
+FailureCriterion johnson_cook_criterion() {
+    return {"johnson_cook", read_johnson_cook, make_johnson_cook};
+}
+
+}  // namespace fpmshell
