@@ -416,6 +416,54 @@ if h_fail:
     check("failure strain: energy.csv has the column eroded_internal", "eroded_internal" in header,
           header)
 
+# ---- *MAT_ADD_DAMAGE_GISSMO: strip_pull.k's steel with GISSMO's failure strain against
+# triaxiality (LCSDG), its regularization by element size (LCREGD), DMGEXP and NUMFIP, against
+# the twin with failure: {tabulated} (theory.md eq. 7.6-3); elements erode
+GISSMO = """*MAT_ADD_DAMAGE_GISSMO
+$#     mid              dtyp     refsz    numfip
+         1                 1       0.0       1.0
+$#   lcsdg     ecrit    dmgexp     dcrit    fadexp    lcregd
+       901       0.0       2.0       0.0       1.0       902
+*DEFINE_CURVE
+       901
+               -0.33                0.03
+                0.33                0.01
+                0.67               0.008
+*DEFINE_CURVE
+       902
+               0.001                 1.2
+                0.01                 0.8
+"""
+h_gissmo = deck_against_twin(
+    "GISSMO", os.path.join(WORK, "gissmo"), os.path.join(STRIP, "strip_pull_mesh.k"),
+    strip_deck.replace("*END\n", GISSMO + "*END\n"),
+    strip_twin.replace("    poisson_ratio: 0.3\n    flow_curves:",
+                       "    poisson_ratio: 0.3\n    failure: {tabulated: {failure_strain: [[-0.33, "
+                       "0.03], [0.33, 0.01], [0.67, 0.008]], exponent: 2, regularization: "
+                       "[[0.001, 1.2], [0.01, 0.8]]}, points: 1}\n    flow_curves:"))
+if h_gissmo:
+    with open(os.path.join(os.path.dirname(h_gissmo), "summary.json")) as f:
+        eroded = json.load(f).get("eroded_elements", 0)
+    check("GISSMO: the strip's elements erode", eroded > 0, eroded)
+r = subprocess.run([FPM, "check", os.path.join(WORK, "gissmo", "model.k")], capture_output=True,
+                   text=True)
+check("GISSMO: check notes that the damage is not coupled to the stress",
+      r.returncode == 0 and "not coupled to the stress" in r.stdout + r.stderr, r.stdout + r.stderr)
+for name, gissmo, message in (
+        ("LCSDG not a curve", GISSMO.replace("       901       0.0", "       777       0.0"),
+         "no *DEFINE_CURVE defines it"),
+        ("another driving variable", GISSMO.replace("         1                 1",
+                                                    "         1                11"), "DTYP 11")):
+    folder = os.path.join(WORK, "gissmo_bad")
+    os.makedirs(folder, exist_ok=True)
+    shutil.copy(os.path.join(STRIP, "strip_pull_mesh.k"), folder)
+    with open(os.path.join(folder, "model.k"), "w") as f:
+        f.write(strip_deck.replace("*END\n", gissmo + "*END\n"))
+    r = subprocess.run([FPM, "check", os.path.join(folder, "model.k")], capture_output=True,
+                       text=True)
+    check(f"GISSMO: {name} refused with exit 2 and one sentence",
+          r.returncode == 2 and r.stderr.count("error:") == 1 and message in r.stderr, r.stderr)
+
 # ---- friction in a *CONTACT_ card: plate_hammer.k's self-contact (the hammer on the doubler and
 # the plate) with FS 0.2, FD 0.1, DC 5 (LS-DYNA's decay, theory.md eq. 8.4-5), against the twin
 # with the same keys; FS < 0 refused, VC noted

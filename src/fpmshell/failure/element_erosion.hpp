@@ -54,9 +54,11 @@ public:
 
     /// Whether an element computed alone erodes after its step of duration dt, its criteria's
     /// state (alone_state_packs()) brought up to it. fill(points) sets what they read of its
-    /// points: the plastic strain, and the stress and plastic work where reads_point().
+    /// points: the plastic strain, and the stress and plastic work where reads_point();
+    /// element_size: its FailurePacks::element_size.
     template <class Fill>
-    [[nodiscard]] bool erodes(const Fill& fill, Real dt, RealPack* state) const {
+    [[nodiscard]] bool erodes(const Fill& fill, Real dt, RealPack* state,
+                              Real element_size = 0) const {
         ElementFailurePoints points;
         const std::size_t m = point_packs();
         for (std::size_t j = 0; j < m; ++j)
@@ -68,6 +70,7 @@ public:
         in.plastic_strain = points.plastic_strain.data();
         for (std::size_t r = 0; r < 3; ++r) in.stress[r] = points.stress[r].data();
         in.plastic_work = points.plastic_work.data();
+        in.element_size = RealPack(element_size);
         std::array<MaskOf<RealPack>, ElementFailurePoints::k_max_packs> failed;
         failed.fill(MaskOf<RealPack>(false));
         if (!judge(in, dt, state, failed.data())) return false;
@@ -77,7 +80,7 @@ public:
     }
     /// Which of the k_lanes elements of a SIMD block erode after the step (erodes[l]), their
     /// criteria's state (block_state_packs()) brought up to it: `in` the points' packs, n_points()
-    /// of them, a lane per element.
+    /// of them, a lane per element (and each lane's element size).
     void judge_block(const FailurePacks& in, Real dt, RealPack* state,
                      std::array<bool, k_lanes>& erodes) const;
 

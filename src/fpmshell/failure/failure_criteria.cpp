@@ -2,6 +2,7 @@
 #include "fpmshell/failure/failure_criterion.hpp"
 #include "fpmshell/failure/johnson_cook/johnson_cook_damage.hpp"
 #include "fpmshell/failure/plastic_strain/plastic_strain_failure.hpp"
+#include "fpmshell/failure/tabulated/tabulated_failure.hpp"
 
 namespace fpmshell {
 
@@ -9,6 +10,7 @@ const std::vector<FailureCriterion>& failure_criteria() {
     static const std::vector<FailureCriterion> criteria = {
         plastic_strain_criterion(),  // failure/plastic_strain
         johnson_cook_criterion(),    // failure/johnson_cook
+        tabulated_criterion(),       // failure/tabulated
     };
     return criteria;
 }

@@ -28,6 +28,9 @@ struct FailurePacks {
     const RealPack* plastic_strain = nullptr;
     const RealPack* stress[3] = {nullptr, nullptr, nullptr};  ///< sxx, syy, sxy
     const RealPack* plastic_work = nullptr;
+    /// the initial size of each lane's element, sqrt(2 A_0) (a square's side for either of its
+    /// halves), for the criteria that regularize by it
+    RealPack element_size = RealPack(0.0);
 };
 
 /// One criterion of one material, judging its points.

@@ -1,5 +1,7 @@
 // Erosion in the element loop (theory.md §7.6): which elements have eroded, the booking of
 // their work, and the check after each element's step.
+#include <cmath>
+
 #include "fpmshell/solver/shell_elements.hpp"
 
 namespace fpmshell {
@@ -22,6 +24,14 @@ void ShellElements::init_erosion(const Model& model) {
     eroded_.assign(ne, 0);
     element_work_.assign(ne, 0.0);
     last_loads_.assign(ne, std::array<Real, 18>{});
+    element_size_.resize(ne);
+    for (std::size_t e = 0; e < ne; ++e) {  // sqrt(2 A_0): a square's side for either half
+        const auto& t = tri_[e];
+        const Vec3& a = model.nodes[static_cast<std::size_t>(t[0])];
+        const Vec3 n = (model.nodes[static_cast<std::size_t>(t[1])] - a)
+                           .cross(model.nodes[static_cast<std::size_t>(t[2])] - a);
+        element_size_[e] = std::sqrt(n.norm());
+    }
     if (!has_state) return;
     // the blocks' state first, block by block, then the elements computed alone
     const ElementBlocks& blocks = assembly_.blocks();
@@ -66,9 +76,13 @@ bool ShellElements::judge_block(Index b, Real dt, std::array<bool, k_lanes>& ero
     const ElementErosion& rule = erosion_[g];
     erodes.fill(false);
     if (!rule.active()) return true;
-    const FailurePacks in =
+    FailurePacks in =
         groups_[g]->block_failure_packs(static_cast<std::size_t>(b - blocks.group_first_block[g]));
     if (in.m == 0) return false;
+    for (int l = 0; l < k_lanes; ++l)
+        set_lane(in.element_size, l,
+                 element_size_[static_cast<std::size_t>(
+                     blocks.block_elements[static_cast<std::size_t>(b * k_lanes + l)])]);
     const std::size_t first =
         blocks.block_elements[static_cast<std::size_t>(b) * static_cast<std::size_t>(k_lanes)];
     RealPack* state =
@@ -131,14 +145,16 @@ bool ShellElements::erodes_alone(std::size_t e, Real dt) {
     const auto fill = [&](ElementFailurePoints& points) {
         group.failure_points(place, rule.reads_point(), points);
     };
-    if (failure_state_.empty()) return rule.erodes(fill, dt, nullptr);
-    if (!place.in_block) return rule.erodes(fill, dt, failure_state_.data() + failure_state_at_[e]);
+    const Real size = element_size_[e];
+    if (failure_state_.empty()) return rule.erodes(fill, dt, nullptr, size);
+    if (!place.in_block)
+        return rule.erodes(fill, dt, failure_state_.data() + failure_state_at_[e], size);
     const std::size_t n = rule.n_points(), w = static_cast<std::size_t>(k_lanes);
     std::vector<RealPack> state(rule.alone_state_packs(), RealPack(0.0));
     for (std::size_t i = 0; i < rule.fields() * n; ++i)
         set_lane(state[i / n * rule.point_packs() + i % n / w], static_cast<int>(i % n % w),
                  failure_number(e, i));
-    const bool erodes = rule.erodes(fill, dt, state.data());
+    const bool erodes = rule.erodes(fill, dt, state.data(), size);
     for (std::size_t i = 0; i < rule.fields() * n; ++i)
         failure_number(e, i) =
             lane(state[i / n * rule.point_packs() + i % n / w], static_cast<int>(i % n % w));

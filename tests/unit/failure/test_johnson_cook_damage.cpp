@@ -8,12 +8,12 @@
 #include <functional>
 #include <vector>
 
-#include "../one_section_model.hpp"
 #include "fpmshell/failure/element_erosion.hpp"
 #include "fpmshell/failure/johnson_cook/johnson_cook_damage.hpp"
 #include "fpmshell/materials/bilinear/bilinear_law.hpp"
 #include "fpmshell/mesh/generators.hpp"
 #include "fpmshell/solver/explicit_solver.hpp"
+#include "homogeneous_paths.hpp"
 
 namespace fpmshell {
 namespace {
@@ -91,43 +91,11 @@ TEST(JohnsonCookDamage, ItAccumulatesThePlasticStrainOverTheFailureStrain) {
     EXPECT_FALSE(lane(failed, 1));
 }
 
-/// A 1 m square of 4 x 4 squares of steel with Johnson-Cook damage, every particle moved by
-/// the velocity field v(x0) (a homogeneous path), or with `lateral_free` its x velocity only
-/// (uniaxial stress; y = 0 on rollers).
-Model damaging_path(const std::function<Vec3(const Vec3&)>& velocity, bool lateral_free) {
-    PlateParams pp;
-    pp.nx = pp.ny = 4;
-    Model m = test::one_section_model(generate_plate(pp), 0.01, 0.3, 2.0e11, 5);
-    make_bilinear(m.materials[0], 2.5e8, 1.0e9);
-    m.materials[0].failure.criteria.push_back({"johnson_cook", k_damage});
-    m.control.end_time = 1;
-    test::prescribe_velocity_field(m, velocity, {false, false, true, true, true, false},
-                                   {true, !lateral_free, !lateral_free});
-    if (lateral_free) {
-        BoundaryCondition roller;
-        roller.nodes = m.node_sets.at("ymin");
-        roller.fixed[1] = true;
-        m.boundary.push_back(roller);
-    }
-    return m;
-}
-
 TEST(JohnsonCookDamage, HomogeneousPathsErodeAtTheFailureStrainOfTheirTriaxiality) {
-    struct Path {
-        const char* name;
-        std::function<Vec3(const Vec3&)> velocity;
-        bool lateral_free;
-        Real eta;
-    };
-    const std::vector<Path> paths = {
-        {"equibiaxial", [](const Vec3& x) { return Vec3(x.x(), x.y(), 0); }, false, 2.0 / 3.0},
-        {"plane strain", [](const Vec3& x) { return Vec3(x.x(), 0, 0); }, false,
-         1.0 / std::sqrt(3.0)},
-        {"uniaxial", [](const Vec3& x) { return Vec3(x.x(), 0, 0); }, true, 1.0 / 3.0},
-        {"shear", [](const Vec3& x) { return Vec3(x.y(), 0, 0); }, false, 0.0}};
-    for (const Path& path : paths) {
+    for (const test::HomogeneousPath& path : test::homogeneous_paths()) {
         SCOPED_TRACE(path.name);
-        const Model m = damaging_path(path.velocity, path.lateral_free);
+        const Model m =
+            test::damaging_path(path.velocity, path.lateral_free, {"johnson_cook", k_damage});
         ExplicitSolver s(m);
         Real alpha_first = 0, worst_error = 0;
         while (s.eroded_elements() < m.n_elements() && s.time() < 1) {

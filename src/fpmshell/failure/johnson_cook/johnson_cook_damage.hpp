@@ -12,6 +12,7 @@
 #include "fpmshell/core/simd.hpp"
 #include "fpmshell/core/simd_math.hpp"
 #include "fpmshell/failure/failure_criterion.hpp"
+#include "fpmshell/failure/stress_triaxiality.hpp"
 
 namespace fpmshell {
 
@@ -44,14 +45,10 @@ public:
         if (p_.d5 != 0) eps *= 1.0 + p_.d5 * t_star;
         return max(eps, T(p_.minimum_strain));
     }
-    /// sigma_m / sigma_vm of a plane stress [sxx, syy, sxy] (0 for a zero stress), on every lane
-    /// of T; to 1e-15 (vector_rsqrt: no division, the step's only one is d alpha / eps_f).
+    /// eta of the stress (failure/stress_triaxiality.hpp).
     template <class T>
     [[nodiscard]] static T triaxiality(const T& sxx, const T& syy, const T& sxy) {
-        const T q = sxx * sxx + syy * syy - sxx * syy + 3.0 * sxy * sxy;  // sigma_vm^2
-        const MaskOf<T> loaded = q > 0.0;
-        return select(loaded, (sxx + syy) * (1.0 / 3.0) * vector_rsqrt(select(loaded, q, T(1.0))),
-                      T(0.0));
+        return stress_triaxiality(sxx, syy, sxy);
     }
 
 private:

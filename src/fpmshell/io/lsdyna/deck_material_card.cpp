@@ -39,7 +39,13 @@ void MaterialCard::failure_strain(const Card& c, std::size_t k, const char* name
         c.fail(std::string(name) +
                " < 0 (a user failure routine or a failure time) is not supported; give the "
                "plastic strain at failure (> 0) or 0 for none");
-    if (strain > 0) key("failure: {plastic_strain: " + num(strain) + "}");
+    if (strain > 0) failure("plastic_strain: " + num(strain));
+}
+
+void MaterialCard::failure(const std::string& criterion) { material_.failure.push_back(criterion); }
+
+void MaterialCard::failure_points(long long points) {
+    material_.failure_points = std::to_string(points);
 }
 
 void MaterialCard::flow_curve_id(long long lcss) { material_.lcss = lcss; }

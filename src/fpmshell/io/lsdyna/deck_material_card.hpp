@@ -37,6 +37,10 @@ public:
     /// The plastic strain at failure in field k of card c (*MAT_003 FS, *MAT_018 EPSF, *MAT_024
     /// FAIL; theory.md §7.6): > 0 erodes the elements whose points reach it, 0 none, < 0 refused.
     void failure_strain(const Card& c, std::size_t k, const char* name);
+    /// A failure criterion, "name: value" (the material's `failure` key joins them), and the
+    /// failed points that erode an element (> 0).
+    void failure(const std::string& criterion);
+    void failure_points(long long points);
     /// The curve or table of the flow stress (*MAT_024 LCSS): written with the material once the
     /// deck's curves are known.
     void flow_curve_id(long long lcss);

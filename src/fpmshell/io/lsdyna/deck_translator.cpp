@@ -39,6 +39,7 @@ const std::vector<CardReader>& card_readers() {
         {"SECTION_SOLID", false, P::Definitions, &T::section_solid},
         {"SECTION_SOLID_TITLE", false, P::Definitions, &T::section_solid},
         {"INTEGRATION_SHELL", false, P::Definitions, &T::integration_shell},
+        {"MAT_ADD_DAMAGE_GISSMO", true, P::References, &T::add_damage_gissmo},
         {"MAT_", true, P::Definitions, &T::material},
         {"DEFINE_CURVE", true, P::Definitions, &T::define_curve},
         {"DEFINE_TABLE", true, P::Definitions, &T::define_table},

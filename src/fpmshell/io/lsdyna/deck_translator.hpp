@@ -53,6 +53,10 @@ struct MaterialDef {
     std::vector<std::string> keys;  ///< "type: elastic", "density: 7850", ... (flow curves later)
     long long lcss = 0;             ///< *MAT_024: the curve or table of the flow stress
     bool plastic = false;
+    /// its failure criteria ("plastic_strain: 0.2", ...) and the failed points that erode an
+    /// element ("" for the default), written as one `failure` key
+    std::vector<std::string> failure{};
+    std::string failure_points{};
 };
 
 struct SectionDef {
@@ -208,6 +212,10 @@ public:
                              bool& first);
     void integration_shell(const DeckBlock& b);
     void material(const DeckBlock& b);
+    /// *MAT_ADD_DAMAGE_GISSMO: GISSMO's failure strain against triaxiality (LCSDG), its
+    /// regularization (LCREGD) and NUMFIP on a material of the deck, as its `failure:
+    /// {tabulated}` (failure/tabulated).
+    void add_damage_gissmo(const DeckBlock& b);
     static std::string points_text(const std::vector<Point2>& points);
     void define_curve(const DeckBlock& b);
     void define_table(const DeckBlock& b);

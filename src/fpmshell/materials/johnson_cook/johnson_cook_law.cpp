@@ -109,9 +109,9 @@ void mat_johnson_cook(deck::MaterialCard& card) {
     const Real d[5] = {h.real(4, "D1"), h.real(5, "D2"), h.real(6, "D3"), h.real(7, "D4"),
                        i.real(0, "D5")};
     if (d[0] != 0 || d[1] != 0 || d[2] != 0 || d[3] != 0 || d[4] != 0) {
-        std::string damage = "failure: {johnson_cook: {D1: " + deck::num(d[0]) +
-                             ", D2: " + deck::num(d[1]) + ", D3: " + deck::num(d[2]) +
-                             ", D4: " + deck::num(d[3]) + ", D5: " + deck::num(d[4]);
+        std::string damage = "johnson_cook: {D1: " + deck::num(d[0]) + ", D2: " + deck::num(d[1]) +
+                             ", D3: " + deck::num(d[2]) + ", D4: " + deck::num(d[3]) +
+                             ", D5: " + deck::num(d[4]);
         if (d[3] != 0) {
             if (!(eps0 > 0)) g.fail("EPSO must be > 0 with a rate term D4 of the damage");
             damage += ", reference_strain_rate: " + deck::num(eps0);
@@ -119,11 +119,10 @@ void mat_johnson_cook(deck::MaterialCard& card) {
         const Real efmin = i.real(3, "EFMIN");
         if (efmin < 0) i.fail("EFMIN must be >= 0 (the lower bound of the failure strain)");
         if (efmin > 0) damage += ", minimum_strain: " + deck::num(efmin);
-        damage += "}";
+        card.failure(damage + "}");
         const long long numint = i.id(4, "NUMINT");
         if (numint < 0) i.fail("NUMINT < 0 is not supported (give the number of points, or 0)");
-        if (numint > 0) damage += ", points: " + std::to_string(numint);
-        card.key(damage + "}");
+        if (numint > 0) card.failure_points(numint);
         if (i.real(2, "EROD") != 0)
             card.note(i,
                       "EROD != 0 read as 0: an element whose points fail erodes (keeping it with "

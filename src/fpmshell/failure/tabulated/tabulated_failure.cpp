@@ -1,0 +1,106 @@
+#include "fpmshell/failure/tabulated/tabulated_failure.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "fpmshell/failure/stress_triaxiality.hpp"
+#include "fpmshell/io/yaml_access.hpp"
+
+namespace fpmshell {
+
+namespace {
+
+/// The piecewise-linear function through the points, flat past its ends.
+Real interpolate(const std::vector<std::pair<Real, Real>>& points, Real x) {
+    if (x <= points.front().first) return points.front().second;
+    if (x >= points.back().first) return points.back().second;
+    const auto above = std::upper_bound(points.begin(), points.end(), x,
+                                        [](Real v, const auto& p) { return v < p.first; });
+    const auto& [x1, y1] = *above;
+    const auto& [x0, y0] = *(above - 1);
+    return y0 + (y1 - y0) * (x - x0) / (x1 - x0);
+}
+
+}  // namespace
+
+Real TabulatedFailure::failure_strain(Real eta, Real element_size) const {
+    const Real factor =
+        p_.regularization.empty() ? 1.0 : interpolate(p_.regularization, element_size);
+    return interpolate(p_.failure_strain, eta) * factor;
+}
+
+Real TabulatedFailure::damage(Real indicator) const { return std::pow(indicator, p_.exponent); }
+
+// eq. 7.6-3 at the state after the step, lane by lane for the tables.
+bool TabulatedFailure::judge(const FailurePacks& in, Real /*dt*/, RealPack* state,
+                             MaskOf<RealPack>* failed) const {
+    RealPack* indicator = state;           // F of every point
+    RealPack* last_strain = state + in.m;  // the plastic strain at the last step
+    bool any = false;
+    for (std::size_t j = 0; j < in.m; ++j) {
+        const RealPack alpha = in.plastic_strain[j];
+        const RealPack d_alpha = alpha - last_strain[j];
+        const MaskOf<RealPack> flowing = d_alpha > 0.0;
+        if (any_lane(flowing)) {
+            const RealPack eta =
+                stress_triaxiality(in.stress[0][j], in.stress[1][j], in.stress[2][j]);
+            RealPack eps(1.0);
+            for (int l = 0; l < k_lanes; ++l)
+                if (lane(flowing, l))
+                    set_lane(eps, l, failure_strain(lane(eta, l), lane(in.element_size, l)));
+            indicator[j] += select(flowing, d_alpha / eps, RealPack(0.0));
+            last_strain[j] = select(flowing, alpha, last_strain[j]);
+        }
+        const MaskOf<RealPack> f = indicator[j] >= 1.0;
+        if (!any_lane(f)) continue;
+        failed[j] = failed[j] || f;
+        any = true;
+    }
+    return any;
+}
+
+namespace {
+
+/// `[[x, y], ...]`, x increasing, y > 0.
+std::vector<std::pair<Real, Real>> read_points(const YamlValue& v, const char* what) {
+    const auto items = v.list(what);
+    if (items.empty()) v.fail(std::string("expected at least one point of ") + what);
+    std::vector<std::pair<Real, Real>> points;
+    for (const YamlValue& item : items) {
+        const auto xy = item.list_of(2, "a point", "an [x, y] pair");
+        const Real x = xy[0].real(), y = xy[1].positive();
+        if (!points.empty() && !(x > points.back().first))
+            xy[0].fail("must increase along the list, got " + xy[0].describe());
+        points.emplace_back(x, y);
+    }
+    return points;
+}
+
+/// `tabulated: {failure_strain: [[eta, eps_f], ...], regularization: [[size, factor], ...],
+/// exponent}`.
+std::any read_tabulated(const YamlValue& v, const Material& /*material*/) {
+    const YamlMap m = v.map({"failure_strain", "regularization", "exponent"});
+    TabulatedFailureParameters p;
+    p.failure_strain = read_points(m.at("failure_strain", "[[triaxiality, failure strain], ...]"),
+                                   "[triaxiality, failure strain] points");
+    if (const auto r = m.find("regularization"))
+        p.regularization = read_points(*r, "[element size, factor] points");
+    if (const auto n = m.find("exponent")) {
+        p.exponent = n->positive();
+        if (p.exponent < 1) n->fail("must be >= 1 (GISSMO's DMGEXP), got " + n->describe());
+    }
+    return p;
+}
+
+std::unique_ptr<PointFailure> make_tabulated(const std::any& parameters,
+                                             const Material& /*material*/) {
+    return std::make_unique<TabulatedFailure>(
+        std::any_cast<const TabulatedFailureParameters&>(parameters));
+}
+
+}  // namespace
+
+FailureCriterion tabulated_criterion() { return {"tabulated", read_tabulated, make_tabulated}; }
+
+}  // namespace fpmshell
