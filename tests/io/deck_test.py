@@ -464,6 +464,28 @@ for name, gissmo, message in (
     check(f"GISSMO: {name} refused with exit 2 and one sentence",
           r.returncode == 2 and r.stderr.count("error:") == 1 and message in r.stderr, r.stderr)
 
+# ---- *MAT_PLASTICITY_WITH_DAMAGE (081): strip_pull.k's steel softened by damage from a plastic
+# strain of 1 % (EPPF) to 3 % (EPPFR), eroding there (NUMINT 1), against the twin with
+# type: plastic_damage (theory.md eq. 7.6-4)
+MAT_024 = "*MAT_PIECEWISE_LINEAR_PLASTICITY\n" + STRIP_MAT + "$#       c         p      lcss\n       0.0       0.0         5\n"
+MAT_081 = ("*MAT_PLASTICITY_WITH_DAMAGE\n"
+           "$#     mid        ro         e        pr      sigy      etan      eppf      tdel\n"
+           "         1    7850.0   2.1e+11       0.3   3.0e+08       0.0      0.01\n"
+           "$#       c         p      lcss      lcsr     eppfr        vp      lcdm    numint\n"
+           "       0.0       0.0         5         0      0.03         0         0         1\n")
+assert MAT_024 in strip_deck and "    type: tabulated\n" in strip_twin
+h_081 = deck_against_twin(
+    "*MAT_081", os.path.join(WORK, "mat081"), os.path.join(STRIP, "strip_pull_mesh.k"),
+    strip_deck.replace(MAT_024, MAT_081),
+    strip_twin.replace("    type: tabulated\n", "    type: plastic_damage\n").replace(
+        "    poisson_ratio: 0.3\n    flow_curves:",
+        "    poisson_ratio: 0.3\n    damage: {start: 0.01, rupture: 0.03}\n"
+        "    failure: {plastic_strain: 0.03, points: 1}\n    flow_curves:"))
+if h_081:
+    with open(os.path.join(os.path.dirname(h_081), "summary.json")) as f:
+        eroded = json.load(f).get("eroded_elements", 0)
+    check("*MAT_081: the strip ruptures and erodes", eroded > 0, eroded)
+
 # ---- friction in a *CONTACT_ card: plate_hammer.k's self-contact (the hammer on the doubler and
 # the plate) with FS 0.2, FD 0.1, DC 5 (LS-DYNA's decay, theory.md eq. 8.4-5), against the twin
 # with the same keys; FS < 0 refused, VC noted

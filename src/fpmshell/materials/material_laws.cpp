@@ -5,6 +5,7 @@
 #include "fpmshell/materials/elastic/elastic_law.hpp"
 #include "fpmshell/materials/johnson_cook/johnson_cook_law.hpp"
 #include "fpmshell/materials/material_law.hpp"
+#include "fpmshell/materials/plastic_damage/plastic_damage_law.hpp"
 #include "fpmshell/materials/power_law/power_law_law.hpp"
 #include "fpmshell/materials/rigid/rigid_law.hpp"
 #include "fpmshell/materials/tabulated/tabulated_law.hpp"
@@ -14,12 +15,13 @@ namespace fpmshell {
 namespace {
 std::vector<MaterialLaw>& registry() {
     static std::vector<MaterialLaw> laws = {
-        elastic_law(),       // materials/elastic
-        bilinear_law(),      // materials/bilinear: j2_plastic
-        johnson_cook_law(),  // materials/johnson_cook
-        tabulated_law(),     // materials/tabulated
-        power_law_law(),     // materials/power_law
-        rigid_law(),         // materials/rigid
+        elastic_law(),         // materials/elastic
+        bilinear_law(),        // materials/bilinear: j2_plastic
+        johnson_cook_law(),    // materials/johnson_cook
+        tabulated_law(),       // materials/tabulated
+        power_law_law(),       // materials/power_law
+        plastic_damage_law(),  // materials/plastic_damage
+        rigid_law(),           // materials/rigid
     };
     return laws;
 }

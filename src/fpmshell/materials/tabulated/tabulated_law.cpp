@@ -105,6 +105,12 @@ void read_flow_curves(const YamlValue& v, std::vector<FlowCurvePoints>& flow_cur
 }
 
 void read_tabulated(const YamlMap& keys, Material& m) {
+    set_j2_parameters(m, "tabulated", tabulated_parameters(keys));
+}
+
+}  // namespace
+
+J2Parameters tabulated_parameters(const YamlMap& keys) {
     J2Parameters p;
     read_j2_common(keys, p);
     std::vector<FlowCurvePoints> curves;
@@ -129,11 +135,14 @@ void read_tabulated(const YamlMap& keys, Material& m) {
             "flow_curve", "a list of [plastic strain, flow stress] pairs (or flow_curves)")));
     }
     const Real mix = p.hardening_mix, r = p.normal_anisotropy;
-    J2Parameters& q = make_tabulated(m, curves);
+    J2Parameters q = tabulated_flow(curves);
     q.hardening_mix = mix;
     q.normal_anisotropy = r;
     read_cowper_symonds(keys, q);
+    return q;
 }
+
+namespace {
 
 /// *MAT_PIECEWISE_LINEAR_PLASTICITY: MID, RO, E, PR, SIGY, ETAN, FAIL, TDEL; C, P, LCSS, LCSR,
 /// VP; EPS1..EPS8; ES1..ES8.
@@ -203,7 +212,7 @@ void mat_transversely_anisotropic(deck::MaterialCard& card) {
 
 }  // namespace
 
-J2Parameters& make_tabulated(Material& m, const std::vector<FlowCurvePoints>& curves) {
+J2Parameters tabulated_flow(const std::vector<FlowCurvePoints>& curves) {
     std::vector<PiecewiseLinearCurve> pieces;
     std::vector<Real> rates;
     for (const FlowCurvePoints& c : curves) {
@@ -216,7 +225,11 @@ J2Parameters& make_tabulated(Material& m, const std::vector<FlowCurvePoints>& cu
         p.rate.table_rates = rates;
     }
     p.flow = FlowStress::tabulated(std::move(pieces), std::move(rates));
-    return set_j2_parameters(m, "tabulated", p);
+    return p;
+}
+
+J2Parameters& make_tabulated(Material& m, const std::vector<FlowCurvePoints>& curves) {
+    return set_j2_parameters(m, "tabulated", tabulated_flow(curves));
 }
 
 MaterialLaw tabulated_law() {

@@ -19,6 +19,11 @@ struct FlowCurvePoints {
 };
 
 [[nodiscard]] MaterialLaw tabulated_law();
+/// The J2 constants of its keys (flow_curve or flow_curves, hardening_mix, cowper_symonds,
+/// normal_anisotropy), checked: for the laws built on its curves.
+[[nodiscard]] J2Parameters tabulated_parameters(const YamlMap& keys);
+/// The J2 constants of one curve, or of one per rate (rates increasing).
+[[nodiscard]] J2Parameters tabulated_flow(const std::vector<FlowCurvePoints>& curves);
 /// Makes `m` a tabulated material of one curve, or of one per rate (rates increasing); returns
 /// its J2 constants for further changes.
 J2Parameters& make_tabulated(Material& m, const std::vector<FlowCurvePoints>& curves);
