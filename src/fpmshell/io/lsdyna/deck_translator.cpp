@@ -208,6 +208,9 @@ std::string DeckTranslator::ignored_reason(const std::string& k) {
 }
 
 std::string DeckTranslator::unsupported_reason(const std::string& k) {
+    if (starts_with(k, "MAT_ADD_"))
+        return "this card is not supported; of the cards that add failure to a material, "
+               "fpmshell reads *MAT_ADD_DAMAGE_GISSMO (its failure strain against triaxiality)";
     if (starts_with(k, "MAT_")) {  // the cards of the laws of materials/material_laws.cpp
         std::vector<std::pair<std::string, std::string>> cards;  // (number, name)
         for (const MaterialLaw& law : material_laws())
