@@ -605,6 +605,7 @@ REFUSED = {  # card: what its message must say
     "*CONTACT_TIED_SURFACE_TO_SURFACE_FAILURE\n         1         1\n": "the option _FAILURE is not supported",
     "*CONTACT_TIEBREAK_SHELL_EDGE_TO_SURFACE\n         1         1\n": "other tiebreak forms are not supported",
     "*MAT_HONEYCOMB\n         2\n": "this material is not supported",
+    "*MAT_ADD_EROSION\n         1\n": "fpmshell reads *MAT_ADD_DAMAGE_GISSMO",
     "*BOUNDARY_PRESCRIBED_MOTION_RIGID_LOCAL\n         1         3         0         1\n": "_LOCAL is not supported",
     "*RIGIDWALL_GEOMETRIC_PRISM\n         0\n": "the option _PRISM is not supported",
     "*FREQUENCY_DOMAIN_SSD\n         1\n": "could change the model",

@@ -18,6 +18,17 @@
 namespace fpmshell {
 
 class YamlValue;
+namespace deck {
+class FailureCard;
+}
+
+/// A card of an LS-DYNA deck that adds this criterion to a material of the deck (a *MAT_ADD_
+/// card): its keywords without `*` and `_TITLE`, and its translation
+/// (io/lsdyna/deck_failure_card.hpp).
+struct DeckFailureCard {
+    std::vector<std::string> keywords;
+    void (*translate)(deck::FailureCard& card) = nullptr;
+};
 
 /// What the criteria read of points after a step, m packs of k_lanes points each (a lane is
 /// a point of some element: the elements of a SIMD block at one point, or the points of one
@@ -57,6 +68,9 @@ struct FailureCriterion {
     /// The criterion of a material.
     std::unique_ptr<PointFailure> (*make)(const std::any& parameters,
                                           const Material& material) = nullptr;
+    /// The deck cards that add it to a material (none: it is read from a material's own card
+    /// or not from decks).
+    std::vector<DeckFailureCard> deck_cards{};
 };
 
 /// Every criterion, in the order of failure_criteria.cpp.

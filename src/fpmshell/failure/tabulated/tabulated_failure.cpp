@@ -5,6 +5,7 @@
 #include <string>
 
 #include "fpmshell/failure/stress_triaxiality.hpp"
+#include "fpmshell/io/lsdyna/deck_failure_card.hpp"
 #include "fpmshell/io/yaml_access.hpp"
 
 namespace fpmshell {
@@ -99,8 +100,57 @@ std::unique_ptr<PointFailure> make_tabulated(const std::any& parameters,
         std::any_cast<const TabulatedFailureParameters&>(parameters));
 }
 
+/// *MAT_ADD_DAMAGE_GISSMO: card 1: MID, -, DTYP, REFSZ, NUMFIP, VOLFRAC, TETSF; card 2: LCSDG,
+/// ECRIT, DMGEXP, DCRIT, FADEXP, LCREGD, INSTF, LCSOFT; card 3: LCSRS, SHRF, BIAXF, LCDLIM,
+/// MIDFAIL, HISVN, SOFT, LP2BI. Its failure strain against triaxiality (LCSDG), DMGEXP, its
+/// regularization (LCREGD) and NUMFIP (LS-DYNA's default 1) on the material MID.
+void mat_add_damage_gissmo(deck::FailureCard& card) {
+    const deck::Card f = card.required(0, "MID, -, DTYP, REFSZ, NUMFIP");
+    const deck::Card g = card.required(1, "LCSDG, ECRIT, DMGEXP, DCRIT, FADEXP, LCREGD");
+    const deck::Card h = card.optional(2);
+    card.material(f);
+    const long long dtyp = f.id(2, "DTYP");
+    if (dtyp / 10 != 0)
+        f.fail("DTYP " + std::to_string(dtyp) +
+               ": damage driven by another history variable than the plastic strain is not "
+               "supported");
+    if (dtyp % 10 == 0) {
+        card.note(f, "DTYP 0: damage without failure, which changes nothing here: ignored");
+        return;
+    }
+    const Real numfip = f.real(4, "NUMFIP", 1.0);
+    if (numfip < 0) f.fail("NUMFIP < 0 (a percentage of layers) is not supported");
+    const long long lcsdg = g.id(0, "LCSDG");
+    if (lcsdg <= 0)
+        g.fail("LCSDG must be a *DEFINE_CURVE of the failure strain against triaxiality");
+    std::string t = "tabulated: {failure_strain: " + card.curve_points(g, lcsdg, "LCSDG");
+    const Real dmgexp = g.real(2, "DMGEXP", 1.0);
+    t += ", exponent: " + deck::num(dmgexp == 0 ? 1.0 : dmgexp);
+    if (const long long lcregd = g.id(5, "LCREGD"); lcregd != 0) {
+        if (lcregd < 0) g.fail("LCREGD < 0 (a table over triaxiality) is not supported");
+        t += ", regularization: " + card.curve_points(g, lcregd, "LCREGD");
+    }
+    card.failure(t + "}");
+    if (numfip > 0) card.failure_points(static_cast<long long>(std::llround(numfip)));
+    card.note(g,
+              "ECRIT, DCRIT, FADEXP: the damage is not coupled to the stress (no fading): a point "
+              "carries its stress until its element erodes at D = 1");
+    for (std::size_t k = 0; k < 8; ++k)
+        if (h.real(k, "LCSRS, SHRF, BIAXF, LCDLIM, MIDFAIL, HISVN, SOFT, LP2BI") != 0) {
+            card.note(h,
+                      "LCSRS, SHRF, BIAXF, LCDLIM, MIDFAIL, HISVN, SOFT, LP2BI ignored (not "
+                      "modelled)");
+            break;
+        }
+}
+
 }  // namespace
 
-FailureCriterion tabulated_criterion() { return {"tabulated", read_tabulated, make_tabulated}; }
+FailureCriterion tabulated_criterion() {
+    return {"tabulated",
+            read_tabulated,
+            make_tabulated,
+            {{{"MAT_ADD_DAMAGE_GISSMO"}, mat_add_damage_gissmo}}};
+}
 
 }  // namespace fpmshell

@@ -1,4 +1,6 @@
 // Parts, materials, curves and tables of a deck, and their model keys.
+#include "fpmshell/failure/failure_criterion.hpp"
+#include "fpmshell/io/lsdyna/deck_failure_card.hpp"
 #include "fpmshell/io/lsdyna/deck_material_card.hpp"
 #include "fpmshell/io/lsdyna/deck_translator.hpp"
 #include "fpmshell/materials/material_law.hpp"
@@ -102,59 +104,33 @@ void DeckTranslator::material(const DeckBlock& b) {
     materials_[m.id] = m;
 }
 
-// Card 1: MID, -, DTYP, REFSZ, NUMFIP, VOLFRAC, TETSF; card 2: LCSDG, ECRIT, DMGEXP, DCRIT,
-// FADEXP, LCREGD, INSTF, LCSOFT; card 3: LCSRS, SHRF, BIAXF, LCDLIM, MIDFAIL, HISVN, SOFT, LP2BI.
-void DeckTranslator::add_damage_gissmo(const DeckBlock& b) {
-    const std::size_t first = options_of(b.keyword, 4).count("TITLE") ? 1 : 0;
-    const Card f = required_card(b, first, "MID, -, DTYP, REFSZ, NUMFIP");
-    const Card g = required_card(b, first + 1, "LCSDG, ECRIT, DMGEXP, DCRIT, FADEXP, LCREGD");
-    const Card h = card(b, first + 2);
-    const long long mid = f.id(0, "MID");
+// The criterion whose deck cards hold the keyword translates it (failure/<criterion>/).
+void DeckTranslator::add_failure_card(const DeckBlock& b) {
+    std::string name = b.keyword;
+    bool titled = false;
+    if (name.size() > 6 && name.compare(name.size() - 6, 6, "_TITLE") == 0) {
+        titled = true;
+        name.resize(name.size() - 6);
+    }
+    for (const FailureCriterion& c : failure_criteria())
+        for (const DeckFailureCard& d : c.deck_cards)
+            for (const std::string& k : d.keywords)
+                if (k == name) {
+                    FailureCard card(*this, b, titled ? 1 : 0);
+                    d.translate(card);
+                    return;
+                }
+    refuse(b, unsupported_reason(b.keyword));
+}
+
+MaterialDef* DeckTranslator::material_def(long long mid) {
     const auto m = materials_.find(mid);
-    if (m == materials_.end())
-        f.fail("MID " + std::to_string(mid) + ": no *MAT_ card of the deck defines it");
-    if (!m->second.plastic)
-        f.fail("material " + std::to_string(mid) + " (*" + m->second.keyword +
-               ") is not plastic: GISSMO's damage grows with the plastic strain");
-    const long long dtyp = f.id(2, "DTYP");
-    if (dtyp / 10 != 0)
-        f.fail("DTYP " + std::to_string(dtyp) +
-               ": damage driven by another history variable than the plastic strain is not "
-               "supported");
-    if (dtyp % 10 == 0) {
-        note(b, f.line(), "DTYP 0: damage without failure, which changes nothing here: ignored");
-        return;
-    }
-    const Real numfip = f.real(4, "NUMFIP", 1.0);
-    if (numfip < 0) f.fail("NUMFIP < 0 (a percentage of layers) is not supported");
-    const long long lcsdg = g.id(0, "LCSDG");
-    if (lcsdg <= 0)
-        g.fail("LCSDG must be a *DEFINE_CURVE of the failure strain against triaxiality");
-    const auto curve = curves_.find(lcsdg);
-    if (curve == curves_.end())
-        g.fail("LCSDG " + std::to_string(lcsdg) +
-               ": no *DEFINE_CURVE defines it (a table over the Lode parameter is not supported)");
-    std::string tabulated = "tabulated: {failure_strain: " + points_text(curve->second.points);
-    const Real dmgexp = g.real(2, "DMGEXP", 1.0);
-    tabulated += ", exponent: " + num(dmgexp == 0 ? 1.0 : dmgexp);
-    if (const long long lcregd = g.id(5, "LCREGD"); lcregd != 0) {
-        const auto reg = curves_.find(lcregd);
-        if (lcregd < 0 || reg == curves_.end())
-            g.fail("LCREGD " + std::to_string(lcregd) +
-                   " must be a *DEFINE_CURVE of the factor against the element size");
-        tabulated += ", regularization: " + points_text(reg->second.points);
-    }
-    m->second.failure.push_back(tabulated + "}");
-    if (numfip > 0) m->second.failure_points = num(std::round(numfip));
-    note(b, g.line(),
-         "ECRIT, DCRIT, FADEXP: the damage is not coupled to the stress (no fading): a point "
-         "carries its stress until its element erodes at D = 1");
-    for (std::size_t k = 0; k < 8; ++k)
-        if (h.real(k, "LCSRS, SHRF, BIAXF, LCDLIM, MIDFAIL, HISVN, SOFT, LP2BI") != 0) {
-            note(b, h.line(),
-                 "LCSRS, SHRF, BIAXF, LCDLIM, MIDFAIL, HISVN, SOFT, LP2BI ignored (not modelled)");
-            break;
-        }
+    return m == materials_.end() ? nullptr : &m->second;
+}
+
+const std::vector<Point2>* DeckTranslator::curve_points(long long id) const {
+    const auto c = curves_.find(id);
+    return c == curves_.end() ? nullptr : &c->second.points;
 }
 
 std::string DeckTranslator::points_text(const std::vector<Point2>& points) {

@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <numeric>
 
+#include "fpmshell/failure/failure_criterion.hpp"
 #include "fpmshell/materials/material_law.hpp"
 
 namespace fpmshell::deck {
@@ -39,7 +40,7 @@ const std::vector<CardReader>& card_readers() {
         {"SECTION_SOLID", false, P::Definitions, &T::section_solid},
         {"SECTION_SOLID_TITLE", false, P::Definitions, &T::section_solid},
         {"INTEGRATION_SHELL", false, P::Definitions, &T::integration_shell},
-        {"MAT_ADD_DAMAGE_GISSMO", true, P::References, &T::add_damage_gissmo},
+        {"MAT_ADD_", true, P::References, &T::add_failure_card},
         {"MAT_", true, P::Definitions, &T::material},
         {"DEFINE_CURVE", true, P::Definitions, &T::define_curve},
         {"DEFINE_TABLE", true, P::Definitions, &T::define_table},
@@ -208,9 +209,15 @@ std::string DeckTranslator::ignored_reason(const std::string& k) {
 }
 
 std::string DeckTranslator::unsupported_reason(const std::string& k) {
-    if (starts_with(k, "MAT_ADD_"))
+    if (starts_with(k, "MAT_ADD_")) {  // the cards of failure/failure_criteria.cpp
+        std::string list;
+        for (const FailureCriterion& c : failure_criteria())
+            for (const DeckFailureCard& d : c.deck_cards)
+                list += (list.empty() ? "*" : ", *") + d.keywords.front();
         return "this card is not supported; of the cards that add failure to a material, "
-               "fpmshell reads *MAT_ADD_DAMAGE_GISSMO (its failure strain against triaxiality)";
+               "fpmshell reads " +
+               list;
+    }
     if (starts_with(k, "MAT_")) {  // the cards of the laws of materials/material_laws.cpp
         std::vector<std::pair<std::string, std::string>> cards;  // (number, name)
         for (const MaterialLaw& law : material_laws())

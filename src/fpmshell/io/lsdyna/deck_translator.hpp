@@ -212,10 +212,13 @@ public:
                              bool& first);
     void integration_shell(const DeckBlock& b);
     void material(const DeckBlock& b);
-    /// *MAT_ADD_DAMAGE_GISSMO: GISSMO's failure strain against triaxiality (LCSDG), its
-    /// regularization (LCREGD) and NUMFIP on a material of the deck, as its `failure:
-    /// {tabulated}` (failure/tabulated).
-    void add_damage_gissmo(const DeckBlock& b);
+    /// A *MAT_ADD_ card: the failure criterion whose deck cards hold it
+    /// (failure/failure_criteria.cpp) translates it.
+    void add_failure_card(const DeckBlock& b);
+    /// The material `mid` of the deck, nullptr if none.
+    [[nodiscard]] MaterialDef* material_def(long long mid);
+    /// The points of the *DEFINE_CURVE `id`, nullptr if none.
+    [[nodiscard]] const std::vector<Point2>* curve_points(long long id) const;
     static std::string points_text(const std::vector<Point2>& points);
     void define_curve(const DeckBlock& b);
     void define_table(const DeckBlock& b);
