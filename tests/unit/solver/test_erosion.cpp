@@ -19,6 +19,7 @@
 #include <functional>
 
 #include "../eroding_band.hpp"
+#include "../failure/homogeneous_paths.hpp"
 #include "../one_section_model.hpp"
 #include "fpmshell/failure/element_erosion.hpp"
 #include "fpmshell/failure/plastic_strain/plastic_strain_failure.hpp"
@@ -50,41 +51,12 @@ TEST(Erosion, TheRuleCountsTheFailedPointsAsDocumented) {
     EXPECT_FALSE(ElementErosion(m, 3, 2).active());
 }
 
-/// A 1 m square of 4 x 4 squares of steel failing at a plastic strain of 0.2, every particle
-/// moved by the velocity field v(x0) (a homogeneous path), or with `lateral_free` its x
-/// velocity only (uniaxial stress; y = 0 on rollers).
-Model homogeneous_path(const std::function<Vec3(const Vec3&)>& velocity, bool lateral_free) {
-    PlateParams pp;
-    pp.nx = pp.ny = 4;
-    Model m = test::one_section_model(generate_plate(pp), 0.01, 0.3, 2.0e11, 5);
-    make_bilinear(m.materials[0], 2.5e8, 1.0e9);
-    add_plastic_strain_failure(m.materials[0], 0.2);
-    m.control.end_time = 1;
-    test::prescribe_velocity_field(m, velocity, {false, false, true, true, true, false},
-                                   {true, !lateral_free, !lateral_free});
-    if (lateral_free) {
-        BoundaryCondition roller;
-        roller.nodes = m.node_sets.at("ymin");
-        roller.fixed[1] = true;
-        m.boundary.push_back(roller);
-    }
-    return m;
-}
-
 TEST(Erosion, HomogeneousPathsErodeAtTheFailureStrain) {
-    struct Path {
-        const char* name;
-        std::function<Vec3(const Vec3&)> velocity;
-        bool lateral_free;
-    };
-    const std::vector<Path> paths = {
-        {"equibiaxial", [](const Vec3& x) { return Vec3(x.x(), x.y(), 0); }, false},
-        {"plane strain", [](const Vec3& x) { return Vec3(x.x(), 0, 0); }, false},
-        {"shear", [](const Vec3& x) { return Vec3(x.y(), 0, 0); }, false},
-        {"uniaxial", [](const Vec3& x) { return Vec3(x.x(), 0, 0); }, true}};
-    for (const Path& path : paths) {
+    for (const test::HomogeneousPath& path : test::homogeneous_paths()) {
         SCOPED_TRACE(path.name);
-        const Model m = homogeneous_path(path.velocity, path.lateral_free);
+        // failing at a plastic strain of 0.2
+        const Model m =
+            test::damaging_path(path.velocity, path.lateral_free, {"plastic_strain", Real{0.2}});
         ExplicitSolver s(m);
         Real alpha_before = 0, worst_error = 0;
         while (s.eroded_elements() == 0 && s.time() < 1) {

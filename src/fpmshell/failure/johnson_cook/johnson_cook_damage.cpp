@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "fpmshell/failure/damage_accumulation.hpp"
 #include "fpmshell/io/yaml_access.hpp"
 #include "fpmshell/materials/j2/j2_parameters.hpp"
 
@@ -9,28 +10,14 @@ namespace fpmshell {
 
 bool JohnsonCookDamage::judge(const FailurePacks& in, Real dt, RealPack* state,
                               MaskOf<RealPack>* failed) const {
-    RealPack* damage = state;              // D of every point
-    RealPack* last_strain = state + in.m;  // the plastic strain at the last step
-    bool any = false;
-    for (std::size_t j = 0; j < in.m; ++j) {
-        const RealPack alpha = in.plastic_strain[j];
-        const RealPack d_alpha = alpha - last_strain[j];
-        const MaskOf<RealPack> flowing = d_alpha > 0.0;
-        if (any_lane(flowing)) {
+    return accumulate_damage(
+        in, state, failed, [&](std::size_t j, const RealPack& d_alpha, const MaskOf<RealPack>&) {
             const RealPack rate = dt > 0 ? d_alpha * (1.0 / dt) : RealPack(0.0);
             const RealPack t_star =
                 min(max(heating_ * in.plastic_work[j], RealPack(0.0)), RealPack(1.0));
-            const RealPack eta = triaxiality(in.stress[0][j], in.stress[1][j], in.stress[2][j]);
-            const RealPack eps = failure_strain(eta, rate, t_star);
-            damage[j] += select(flowing, d_alpha / eps, RealPack(0.0));
-            last_strain[j] = select(flowing, alpha, last_strain[j]);
-        }
-        const MaskOf<RealPack> f = damage[j] >= 1.0;
-        if (!any_lane(f)) continue;
-        failed[j] = failed[j] || f;
-        any = true;
-    }
-    return any;
+            return failure_strain(triaxiality(in.stress[0][j], in.stress[1][j], in.stress[2][j]),
+                                  rate, t_star);
+        });
 }
 
 namespace {

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <string>
 
+#include "fpmshell/failure/damage_accumulation.hpp"
 #include "fpmshell/failure/stress_triaxiality.hpp"
 #include "fpmshell/io/lsdyna/deck_failure_card.hpp"
 #include "fpmshell/io/yaml_access.hpp"
@@ -36,29 +37,17 @@ Real TabulatedFailure::damage(Real indicator) const { return std::pow(indicator,
 // eq. 7.6-3 at the state after the step, lane by lane for the tables.
 bool TabulatedFailure::judge(const FailurePacks& in, Real /*dt*/, RealPack* state,
                              MaskOf<RealPack>* failed) const {
-    RealPack* indicator = state;           // F of every point
-    RealPack* last_strain = state + in.m;  // the plastic strain at the last step
-    bool any = false;
-    for (std::size_t j = 0; j < in.m; ++j) {
-        const RealPack alpha = in.plastic_strain[j];
-        const RealPack d_alpha = alpha - last_strain[j];
-        const MaskOf<RealPack> flowing = d_alpha > 0.0;
-        if (any_lane(flowing)) {
+    return accumulate_damage(
+        in, state, failed,
+        [&](std::size_t j, const RealPack& /*d_alpha*/, const MaskOf<RealPack>& flowing) {
             const RealPack eta =
                 stress_triaxiality(in.stress[0][j], in.stress[1][j], in.stress[2][j]);
             RealPack eps(1.0);
             for (int l = 0; l < k_lanes; ++l)
                 if (lane(flowing, l))
                     set_lane(eps, l, failure_strain(lane(eta, l), lane(in.element_size, l)));
-            indicator[j] += select(flowing, d_alpha / eps, RealPack(0.0));
-            last_strain[j] = select(flowing, alpha, last_strain[j]);
-        }
-        const MaskOf<RealPack> f = indicator[j] >= 1.0;
-        if (!any_lane(f)) continue;
-        failed[j] = failed[j] || f;
-        any = true;
-    }
-    return any;
+            return eps;
+        });
 }
 
 namespace {

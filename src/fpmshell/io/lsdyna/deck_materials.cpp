@@ -7,6 +7,14 @@
 
 namespace fpmshell::deck {
 
+namespace {
+/// A *MAT_ keyword without its _TITLE option, and whether it had it (a title card first).
+std::pair<std::string, bool> without_title(const std::string& keyword) {
+    const bool titled = keyword.size() > 6 && keyword.compare(keyword.size() - 6, 6, "_TITLE") == 0;
+    return {titled ? keyword.substr(0, keyword.size() - 6) : keyword, titled};
+}
+}  // namespace
+
 /// Parts: a heading card and a data card each (one *PART may define several).
 void DeckTranslator::part(const DeckBlock& b) {
     if (b.cards.size() < 2) required_card(b, 1, "PID, SECID, MID");
@@ -81,12 +89,7 @@ std::string DeckTranslator::given_inertia(const PartDef& part, const MaterialDef
 
 // The card's law (materials/material_laws.cpp) translates it (materials/<law>/).
 void DeckTranslator::material(const DeckBlock& b) {
-    std::string name = b.keyword;
-    bool titled = false;
-    if (name.size() > 6 && name.compare(name.size() - 6, 6, "_TITLE") == 0) {
-        titled = true;
-        name.resize(name.size() - 6);
-    }
+    const auto [name, titled] = without_title(b.keyword);
     const DeckMaterialCard* rule = nullptr;
     for (const MaterialLaw& law : material_laws())
         for (const DeckMaterialCard& c : law.deck_cards)
@@ -106,12 +109,7 @@ void DeckTranslator::material(const DeckBlock& b) {
 
 // The criterion whose deck cards hold the keyword translates it (failure/<criterion>/).
 void DeckTranslator::add_failure_card(const DeckBlock& b) {
-    std::string name = b.keyword;
-    bool titled = false;
-    if (name.size() > 6 && name.compare(name.size() - 6, 6, "_TITLE") == 0) {
-        titled = true;
-        name.resize(name.size() - 6);
-    }
+    const auto [name, titled] = without_title(b.keyword);
     for (const FailureCriterion& c : failure_criteria())
         for (const DeckFailureCard& d : c.deck_cards)
             for (const std::string& k : d.keywords)
