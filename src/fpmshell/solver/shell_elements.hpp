@@ -229,6 +229,7 @@ private:
     std::vector<RealPack> failure_state_;
     std::vector<std::size_t> failure_state_at_;  ///< per element
     std::vector<Real> element_size_;  ///< per element, sqrt(2 A_0) (where some material can fail)
+    std::vector<RealPack> block_element_size_;  ///< the same per block, a lane per element
     bool thickness_update_ = false;
     bool smoothed_membrane_ = false;          ///< control.membrane: smoothed
     std::vector<ReversedTriangle> reversed_;  ///< smoothed: per element, this step's path element

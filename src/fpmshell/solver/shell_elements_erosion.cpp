@@ -32,6 +32,14 @@ void ShellElements::init_erosion(const Model& model) {
                            .cross(model.nodes[static_cast<std::size_t>(t[2])] - a);
         element_size_[e] = std::sqrt(n.norm());
     }
+    const ElementBlocks& block_list = assembly_.blocks();
+    block_element_size_.assign(block_list.block_group.size(), RealPack(0.0));
+    for (std::size_t b = 0; b < block_element_size_.size(); ++b)
+        for (int l = 0; l < k_lanes; ++l)
+            set_lane(block_element_size_[b], l,
+                     element_size_[static_cast<std::size_t>(
+                         block_list.block_elements[b * static_cast<std::size_t>(k_lanes) +
+                                                   static_cast<std::size_t>(l)])]);
     if (!has_state) return;
     // the blocks' state first, block by block, then the elements computed alone
     const ElementBlocks& blocks = assembly_.blocks();
@@ -79,10 +87,7 @@ bool ShellElements::judge_block(Index b, Real dt, std::array<bool, k_lanes>& ero
     FailurePacks in =
         groups_[g]->block_failure_packs(static_cast<std::size_t>(b - blocks.group_first_block[g]));
     if (in.m == 0) return false;
-    for (int l = 0; l < k_lanes; ++l)
-        set_lane(in.element_size, l,
-                 element_size_[static_cast<std::size_t>(
-                     blocks.block_elements[static_cast<std::size_t>(b * k_lanes + l)])]);
+    in.element_size = block_element_size_[static_cast<std::size_t>(b)];
     const std::size_t first =
         blocks.block_elements[static_cast<std::size_t>(b) * static_cast<std::size_t>(k_lanes)];
     RealPack* state =

@@ -13,6 +13,7 @@
 #include <cmath>
 
 #include "fpmshell/core/types.hpp"
+#include "fpmshell/materials/elastic/linear_elastic.hpp"
 
 namespace fpmshell::test {
 
@@ -31,10 +32,10 @@ public:
     };
 
     DamagingElastic(Real youngs_modulus, Real poisson_ratio, const DamagingElasticParameters& p)
-        : e_(youngs_modulus), nu_(poisson_ratio), p_(p) {
-        const Real f = e_ / (1.0 - nu_ * nu_);
-        c_ << f, f * nu_, 0, f * nu_, f, 0, 0, 0, f * (1.0 - nu_) * 0.5;
-    }
+        : e_(youngs_modulus),
+          nu_(poisson_ratio),
+          p_(p),
+          c_(LinearElastic(youngs_modulus, poisson_ratio).stiffness()) {}
     [[nodiscard]] const Mat3& stiffness() const { return c_; }
     [[nodiscard]] Real youngs_modulus() const { return e_; }
     [[nodiscard]] Real poisson_ratio() const { return nu_; }

@@ -10,6 +10,7 @@
 
 #include "fpmshell/failure/element_erosion.hpp"
 #include "fpmshell/failure/johnson_cook/johnson_cook_damage.hpp"
+#include "fpmshell/failure/stress_triaxiality.hpp"
 #include "fpmshell/materials/bilinear/bilinear_law.hpp"
 #include "fpmshell/mesh/generators.hpp"
 #include "fpmshell/solver/explicit_solver.hpp"
@@ -24,9 +25,7 @@ const JohnsonCookDamageParameters k_damage{0.05, 0.3, -1.5, 0.0, 0.0, 1.0, 1e-6}
 
 Real eps_f(Real eta) { return 0.05 + 0.3 * std::exp(-1.5 * eta); }
 
-Real triaxiality(Real sxx, Real syy, Real sxy) {
-    return JohnsonCookDamage::triaxiality(sxx, syy, sxy);
-}
+Real triaxiality(Real sxx, Real syy, Real sxy) { return stress_triaxiality(sxx, syy, sxy); }
 
 TEST(JohnsonCookDamage, TriaxialityOfThePlaneStressStates) {
     const Real s = 3e8;

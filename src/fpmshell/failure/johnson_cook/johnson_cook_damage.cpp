@@ -15,8 +15,9 @@ bool JohnsonCookDamage::judge(const FailurePacks& in, Real dt, RealPack* state,
             const RealPack rate = dt > 0 ? d_alpha * (1.0 / dt) : RealPack(0.0);
             const RealPack t_star =
                 min(max(heating_ * in.plastic_work[j], RealPack(0.0)), RealPack(1.0));
-            return failure_strain(triaxiality(in.stress[0][j], in.stress[1][j], in.stress[2][j]),
-                                  rate, t_star);
+            return failure_strain(
+                stress_triaxiality(in.stress[0][j], in.stress[1][j], in.stress[2][j]), rate,
+                t_star);
         });
 }
 

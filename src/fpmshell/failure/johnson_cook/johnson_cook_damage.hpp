@@ -45,11 +45,6 @@ public:
         if (p_.d5 != 0) eps *= 1.0 + p_.d5 * t_star;
         return max(eps, T(p_.minimum_strain));
     }
-    /// eta of the stress (failure/stress_triaxiality.hpp).
-    template <class T>
-    [[nodiscard]] static T triaxiality(const T& sxx, const T& syy, const T& sxy) {
-        return stress_triaxiality(sxx, syy, sxy);
-    }
 
 private:
     JohnsonCookDamageParameters p_;

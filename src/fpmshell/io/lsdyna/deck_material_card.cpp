@@ -50,6 +50,15 @@ void MaterialCard::failure_points(long long points) {
 
 void MaterialCard::flow_curve_id(long long lcss) { material_.lcss = lcss; }
 
+std::vector<Point2> MaterialCard::curve_of(const Card& eps, const Card& es) {
+    std::vector<Point2> points;
+    for (std::size_t k = 0; k < 8; ++k) {
+        const Real x = eps.real(k, "EPS1..EPS8"), y = es.real(k, "ES1..ES8");
+        if (k == 0 || x != 0 || y != 0) points.push_back({x, y});
+    }
+    return points;
+}
+
 std::string MaterialCard::points_text(const std::vector<Point2>& points) {
     return DeckTranslator::points_text(points);
 }

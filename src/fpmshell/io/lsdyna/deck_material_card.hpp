@@ -44,6 +44,9 @@ public:
     /// The curve or table of the flow stress (*MAT_024 LCSS): written with the material once the
     /// deck's curves are known.
     void flow_curve_id(long long lcss);
+    /// The points (EPS_k, ES_k) of the cards eps (EPS1..EPS8) and es (ES1..ES8) of *MAT_024 and
+    /// *MAT_081: the first, and every other not both 0.
+    [[nodiscard]] static std::vector<Point2> curve_of(const Card& eps, const Card& es);
     /// `[[x, y], ...]`
     [[nodiscard]] static std::string points_text(const std::vector<Point2>& points);
 

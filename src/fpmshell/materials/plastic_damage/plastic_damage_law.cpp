@@ -59,11 +59,7 @@ void mat_plasticity_with_damage(deck::MaterialCard& card) {
     card.elastic(f, e, f.real(3, "PR"));
     card.flow_curve_id(lcss);
     if (lcss == 0) {
-        std::vector<deck::Point2> points;
-        for (std::size_t k = 0; k < 8; ++k) {
-            const Real x = eps.real(k, "EPS1..EPS8"), y = es.real(k, "ES1..ES8");
-            if (k == 0 || x != 0 || y != 0) points.push_back({x, y});
-        }
+        std::vector<deck::Point2> points = deck::MaterialCard::curve_of(eps, es);
         if (points.size() < 2) {  // SIGY and ETAN: the bilinear curve against plastic strain
             if (!(sigy > 0)) f.fail("SIGY must be > 0 without a flow curve");
             if (!(etan < e)) f.fail("ETAN must be below E");

@@ -158,11 +158,7 @@ void mat_piecewise_linear(deck::MaterialCard& card) {
     if (g.id(3, "LCSR") != 0) g.fail("LCSR (a strain-rate scaling curve) is not supported");
     if (g.real(4, "VP") != 0) card.note(g, "VP = 1 read as the scaled yield stress (VP = 0)");
     card.failure_strain(f, 6, "FAIL");
-    std::vector<deck::Point2> points;
-    for (std::size_t k = 0; k < 8; ++k) {
-        const Real x = eps.real(k, "EPS1..EPS8"), y = es.real(k, "ES1..ES8");
-        if (k == 0 || x != 0 || y != 0) points.push_back({x, y});
-    }
+    std::vector<deck::Point2> points = deck::MaterialCard::curve_of(eps, es);
     const bool tabulated = lcss != 0 || points.size() >= 2;
     card.key(tabulated ? "type: tabulated" : "type: j2_plastic");
     card.elastic(f, f.real(2, "E"), f.real(3, "PR"));
