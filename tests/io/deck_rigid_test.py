@@ -357,4 +357,43 @@ for name, entry, words in (
     check(f"{name}: exit 2 with one sentence", r.returncode == 2 and
           all(w in r.stderr for w in words) and len(r.stderr.strip().splitlines()) == 1, r.stderr)
 
+# *CONSTRAINED_SPOTWELD's failure (theory.md eq. 6.11-13): the doubler's four welds given SN, SS
+# (N, M) or TF, against the twin's `failure` keys: the same history.csv bytes. Forces the hammer's
+# blow reaches let the welds go (summary.json counts them); forces out of reach change no byte of
+# the welds that never fail; a failure time lets all four go at once.
+weld_cards = deck[deck.index("*CONSTRAINED_SPOTWELD"):deck.index("*INITIAL_VELOCITY_GENERATION")]
+weld_lines = [ln for ln in weld_cards.splitlines()[1:] if not ln.startswith("$")]
+assert len(weld_lines) == 4
+plain_history = None
+for name, fields, keys, fail in (
+        ("welds that fail", "     200.0     100.0       2.0       2.0",
+         "normal_force: 200, shear_force: 100, normal_exponent: 2, shear_exponent: 2", True),
+        ("welds out of reach", "     1e+09     1e+09", "normal_force: 1e9, shear_force: 1e9", False),
+        ("welds with a failure time", "       0.0       0.0       0.0       0.0    0.0005",
+         "time: 0.0005", True)):
+    folder = os.path.join(WORK, name.replace(" ", "_"))
+    cards = "*CONSTRAINED_SPOTWELD\n" + "".join(f"{ln[:20]}{fields}\n" for ln in weld_lines)
+    d = write(folder, "model.k", deck.replace(weld_cards, cards))
+    t_text = twin
+    for w in "abcd":
+        t_text = t_text.replace(f"  - {{type: rigid, nodes: weld_{w}}}\n",
+                                f"  - {{type: rigid, nodes: weld_{w}, failure: {{{keys}}}}}\n")
+    t = write(folder, "model.yaml", t_text)
+    history = twin_pair(name, d, t)
+    summary = read(os.path.join(folder, "out_k", "summary.json"))
+    failed = summary.split('"failed_welds":')[1].split(",")[0].strip() if '"failed_welds"' in summary else "?"
+    check(f"{name}: summary.json counts the failed welds", failed != "?" and
+          ((int(failed) > 0) if fail else (int(failed) == 0)), f"failed_welds {failed}")
+    if name == "welds with a failure time":
+        first = float(summary.split('"first_weld_failure_time":')[1].split(",")[0]) \
+            if '"first_weld_failure_time"' in summary else -1
+        # in the first step that ends at or after TF (the steps here are under 1 us)
+        check(f"{name}: all four let go at 0.5 ms", failed == "4" and 5e-4 <= first < 5.01e-4, summary)
+    if name == "welds out of reach":
+        r_plain, h_plain = run(write(os.path.join(WORK, "welds_plain"), "model.k", deck))
+        check("welds out of reach: the history of welds without failure data, byte for byte",
+              r_plain.returncode == 0 and history is not None and read(h_plain) == history, r_plain.stderr)
+refused("weld with a temperature curve", "*CONSTRAINED_SPOTWELD\n        41        42     -12.0\n",
+        "model.k:", "*CONSTRAINED_SPOTWELD", "SN or SS < 0")
+
 sys.exit(finish())

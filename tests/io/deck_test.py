@@ -287,13 +287,14 @@ constrained_twin = sideways_twin.replace("sets:\n", (
     "sets:\n  nrb: {node_ids: [1, 2, 3, 10, 11]}\n  weld: {node_ids: [41, 42]}\n"
     "  generalized: {node_ids: [60, 61]}\n")).replace("rigid_bodies:\n", (
     "constraints:\n  - {type: rigid, nodes: nrb}\n  - {type: rigid, nodes: weld}\n"
-    "  - {type: rigid, nodes: generalized}\n\nrigid_bodies:\n"))
+    "  - {type: rigid, nodes: generalized}\n\nrigid_bodies:\n")).replace(
+    "  - {type: rigid, nodes: weld}\n", "  - {type: rigid, nodes: weld, failure: {normal_force: 1.0e4}}\n")
 h_deck = deck_against_twin("constraints", os.path.join(WORK, "constraints"),
                            os.path.join(DROP, "plate_drop_mesh.k"), constrained, constrained_twin)
 r = fpmshell("check", os.path.join(WORK, "constraints", "model.k"))
-check("constraints: check names the bodies and notes the weld's failure data",
+check("constraints: check names the bodies and notes the weld's blank exponent",
       r.returncode == 0 and "nodal rigid bodies: 3 (9 particles)" in r.stdout and
-      "never fail" in r.stdout, r.stdout + r.stderr)
+      "N or M blank: the exponent 2 is taken" in r.stdout, r.stdout + r.stderr)
 
 # ---- *MAT_RIGID: clamped_beam.k with its four middle quadrangles a rigid part, against the twin
 # with the rigid material written in YAML

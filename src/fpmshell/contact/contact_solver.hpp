@@ -64,6 +64,10 @@ public:
 
     /// The inverse mass of particle p (per direction, as in the constructor) after its mass
     /// changed (mass scaling during the run, §6.10).
+    /// Per particle its rigid body, -1 outside them (after spot welds failed, eq. 6.11-13).
+    void set_rigid_body_of(const std::vector<Index>& body_of_particle) {
+        rigid_body_of_ = body_of_particle;
+    }
     void set_inverse_mass(Index p, const Vec3& inv_mass) {
         inv_mass_[static_cast<std::size_t>(p)] = inv_mass;
     }

@@ -143,6 +143,11 @@ void SummaryFile::finish(const ExplicitSolver& solver, const RunEnd& end) {
         if (solver.eroded_elements() > 0) j.set("first_erosion_time", solver.first_erosion_time());
         j.set("eroded_internal", solver.energy().eroded_internal);
     }
+    if (const NodalRigidBodies& welds = solver.nodal_rigid_bodies(); welds.has_failing_welds()) {
+        j.set("failed_welds", welds.failed_welds());  // theory.md eq. 6.11-13
+        if (welds.failed_welds() > 0)
+            j.set("first_weld_failure_time", welds.first_weld_failure_time());
+    }
     j.set("version", FPMSHELL_VERSION);
     j.set("exit_reason", end.reason);
     write_json_file(dir_ / "summary.json", j);

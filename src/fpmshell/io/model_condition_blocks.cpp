@@ -274,6 +274,26 @@ void read_tied_surface(const YamlValue& item, Model& model) {
     model.tied_surfaces.push_back(std::move(t));
 }
 
+/// A spot weld's `failure` (theory.md eq. 6.11-13): the forces at which it lets go, their
+/// exponents, a time; only a group of two particles.
+void read_weld_failure(const YamlValue& f, const YamlValue& nodes, NodalRigidBody& body) {
+    const YamlMap fm =
+        f.map({"normal_force", "shear_force", "normal_exponent", "shear_exponent", "time"});
+    NodalRigidBody::Failure& w = body.failure;
+    w.normal_force = fm.non_negative_or("normal_force", 0.0);
+    w.shear_force = fm.non_negative_or("shear_force", 0.0);
+    w.normal_exponent = fm.positive_or("normal_exponent", 2.0);
+    w.shear_exponent = fm.positive_or("shear_exponent", 2.0);
+    if (fm.count({"time"}) > 0) w.time = fm.non_negative_or("time", 0.0);
+    if (!body.can_fail())
+        f.fail(
+            "a spot weld's failure needs normal_force or shear_force > 0 (the force at which it "
+            "lets go) or a time");
+    if (body.nodes.size() != 2)
+        nodes.fail("a rigid group with failure is a spot weld of two particles; it has " +
+                   std::to_string(body.nodes.size()));
+}
+
 }  // namespace
 
 void read_constraints(const YamlValue& v, Model& model) {
@@ -291,7 +311,7 @@ void read_constraints(const YamlValue& v, Model& model) {
             read_tied_surface(item, model);
             continue;
         }
-        const YamlMap m = item.map({"type", "nodes"});
+        const YamlMap m = item.map({"type", "nodes", "failure"});
         const YamlValue nodes = m.at("nodes", "a node set name or a list of them");
         NodalRigidBody body;
         if (nodes.is_list()) {
@@ -316,6 +336,7 @@ void read_constraints(const YamlValue& v, Model& model) {
                 nodes.fail("particle " + std::to_string(p + 1) +
                            " of the rigid body also has a boundary condition (a rigid body "
                            "moves as a whole: constrain none of its particles)");
+        if (const auto f = m.find("failure")) read_weld_failure(*f, nodes, body);
         model.nodal_rigid_bodies.push_back(std::move(body));
     }
 }

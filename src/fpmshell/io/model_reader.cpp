@@ -20,6 +20,7 @@
 #include "fpmshell/io/set_builder.hpp"
 #include "fpmshell/io/yaml_access.hpp"
 #include "fpmshell/model/rigid_body_partition.hpp"
+#include "fpmshell/model/spot_weld_sides.hpp"
 
 namespace fpmshell {
 namespace {
@@ -156,7 +157,17 @@ Model read_model_tree(YamlContext& ctx, YAML::Node root, const std::string& path
     if (const auto b = top.find("boundary")) read_boundary(*b, model);
     if (const auto l = top.find("loads")) read_loads(*l, model);
     if (const auto i = top.find("initial_conditions")) read_initial_conditions(*i, model);
-    if (const auto c = top.find("constraints"); c && !c->is_null()) read_constraints(*c, model);
+    if (const auto c = top.find("constraints"); c && !c->is_null()) {
+        read_constraints(*c, model);
+        // a weld that can fail must be its body's only link between its particles (eq. 6.11-13)
+        if (const auto problem = spot_weld_sides(model).problem) {
+            std::size_t rigid = 0;  // the entry among those of type rigid
+            for (const YamlValue& item : c->list("constraints"))
+                if (item.open_map("a constraint").at("type").text() == "rigid" &&
+                    rigid++ == problem->first)
+                    item.fail(problem->second);
+        }
+    }
     // the entries of type rigid_body on the rigid bodies the sections and constraints make
     if (const auto b = top.find("boundary"))
         if (const auto problem = rigid_body_partition(model).problem)

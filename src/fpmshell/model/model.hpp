@@ -5,6 +5,7 @@
 
 #include <any>
 #include <array>
+#include <limits>
 #include <map>
 #include <string>
 #include <utility>
@@ -228,6 +229,21 @@ struct RigidBody {
 /// nodal rigid bodies and spot welds; solver/nodal_rigid_bodies.hpp).
 struct NodalRigidBody {
     std::vector<Index> nodes;  ///< at least two, sorted
+    /// A spot weld's failure (LS-DYNA's *CONSTRAINED_SPOTWELD SN, SS, N, M, TF; theory.md eq.
+    /// 6.11-13): a group of two particles lets go for good once (f_n / normal_force)^
+    /// normal_exponent + (f_s / shear_force)^shear_exponent >= 1, f_n the tension and f_s the
+    /// shear its constraint carries, or once the time reaches `time`. 0 forces leave their
+    /// term out; without any the group never lets go.
+    struct Failure {
+        Real normal_force = 0, shear_force = 0;
+        Real normal_exponent = 2, shear_exponent = 2;
+        Real time = std::numeric_limits<Real>::infinity();
+    };
+    Failure failure;
+    [[nodiscard]] bool can_fail() const {
+        return failure.normal_force > 0 || failure.shear_force > 0 ||
+               failure.time < std::numeric_limits<Real>::infinity();
+    }
 };
 
 /// One entry of `constraints` of type tied: each particle of `nodes` stays at its initial place

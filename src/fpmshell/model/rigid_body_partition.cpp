@@ -19,28 +19,6 @@ Index root_of(std::vector<Index>& parent, Index p) {
     return p;
 }
 
-/// The groups of particles that move rigidly: the model's constraints, and the particles of each
-/// section of a rigid material (one body per section), with the components each holds fixed.
-std::vector<std::pair<NodalRigidBody, std::array<bool, 6>>> rigid_groups(const Model& model) {
-    std::vector<std::pair<NodalRigidBody, std::array<bool, 6>>> groups;
-    for (const NodalRigidBody& g : model.nodal_rigid_bodies) groups.push_back({g, {}});
-    // the particles of each section of a rigid material
-    for (std::size_t s = 0; s < model.sections.size(); ++s) {
-        const Material& material =
-            model.materials[static_cast<std::size_t>(model.sections[s].material)];
-        if (!material.rigid) continue;
-        NodalRigidBody body;
-        for (std::size_t e = 0; e < model.triangles.size(); ++e)
-            if (static_cast<std::size_t>(model.element_section[e]) == s)
-                body.nodes.insert(body.nodes.end(), model.triangles[e].begin(),
-                                  model.triangles[e].end());
-        std::sort(body.nodes.begin(), body.nodes.end());
-        body.nodes.erase(std::unique(body.nodes.begin(), body.nodes.end()), body.nodes.end());
-        if (!body.nodes.empty()) groups.push_back({std::move(body), material.rigid_fixed});
-    }
-    return groups;
-}
-
 /// The `boundary` entries of type rigid_body on the bodies: their held and prescribed
 /// components; the first entry that cannot be applied is noted in `problem`.
 void apply_rigid_body_entries(const Model& model, RigidBodyPartition& out) {
@@ -87,16 +65,39 @@ void apply_rigid_body_entries(const Model& model, RigidBodyPartition& out) {
 
 }  // namespace
 
-RigidBodyPartition rigid_body_partition(const Model& model) {
+std::vector<RigidGroup> rigid_groups(const Model& model, const std::vector<std::uint8_t>& let_go) {
+    std::vector<RigidGroup> groups;
+    for (std::size_t g = 0; g < model.nodal_rigid_bodies.size(); ++g)
+        if (let_go.empty() || !let_go[g])
+            groups.push_back({model.nodal_rigid_bodies[g].nodes, {}, static_cast<long>(g)});
+    // the particles of each section of a rigid material
+    for (std::size_t s = 0; s < model.sections.size(); ++s) {
+        const Material& material =
+            model.materials[static_cast<std::size_t>(model.sections[s].material)];
+        if (!material.rigid) continue;
+        RigidGroup body;
+        for (std::size_t e = 0; e < model.triangles.size(); ++e)
+            if (static_cast<std::size_t>(model.element_section[e]) == s)
+                body.nodes.insert(body.nodes.end(), model.triangles[e].begin(),
+                                  model.triangles[e].end());
+        std::sort(body.nodes.begin(), body.nodes.end());
+        body.nodes.erase(std::unique(body.nodes.begin(), body.nodes.end()), body.nodes.end());
+        body.fixed = material.rigid_fixed;
+        if (!body.nodes.empty()) groups.push_back(std::move(body));
+    }
+    return groups;
+}
+
+RigidBodyPartition rigid_body_partition(const Model& model,
+                                        const std::vector<std::uint8_t>& let_go) {
     RigidBodyPartition out;
     out.body_of_particle.assign(model.nodes.size(), -1);
-    const auto groups = rigid_groups(model);
+    const std::vector<RigidGroup> groups = rigid_groups(model, let_go);
     if (!groups.empty()) {
         std::vector<Index> parent(model.nodes.size());
         std::iota(parent.begin(), parent.end(), Index{0});
         std::vector<std::uint8_t> member(model.nodes.size(), 0);
-        for (const auto& [group, unused] : groups) {
-            (void)unused;
+        for (const RigidGroup& group : groups) {
             for (const Index p : group.nodes) {
                 member[static_cast<std::size_t>(p)] = 1;
                 const Index a = root_of(parent, group.nodes.front()), b = root_of(parent, p);
@@ -117,10 +118,10 @@ RigidBodyPartition rigid_body_partition(const Model& model) {
         }
         // a body holds fixed every component that a group merged into it holds fixed
         out.held.assign(out.bodies.size(), {});
-        for (const auto& [group, fixed] : groups) {
+        for (const RigidGroup& group : groups) {
             const auto b = static_cast<std::size_t>(
                 out.body_of_particle[static_cast<std::size_t>(group.nodes.front())]);
-            for (std::size_t k = 0; k < 6; ++k) out.held[b][k] = out.held[b][k] || fixed[k];
+            for (std::size_t k = 0; k < 6; ++k) out.held[b][k] = out.held[b][k] || group.fixed[k];
         }
     }
     out.prescribed.assign(out.bodies.size(), {});

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <utility>
@@ -35,6 +36,22 @@ struct RigidBodyPartition {
     std::optional<std::pair<std::size_t, std::string>> problem;
 };
 
-[[nodiscard]] RigidBodyPartition rigid_body_partition(const Model& model);
+/// `let_go`: per entry of Model::nodal_rigid_bodies, nonzero for a spot weld that has failed
+/// (eq. 6.11-13), left out of the bodies; empty: none has.
+[[nodiscard]] RigidBodyPartition rigid_body_partition(const Model& model,
+                                                      const std::vector<std::uint8_t>& let_go = {});
+
+/// A group of particles that moves rigidly: an entry of Model::nodal_rigid_bodies (`entry` its
+/// index) or the particles of a section of a rigid material (`entry` -1), with the components
+/// its material holds fixed.
+struct RigidGroup {
+    std::vector<Index> nodes;  ///< sorted
+    std::array<bool, 6> fixed{};
+    long entry = -1;
+};
+
+/// The groups of the model, the failed spot welds (`let_go`) left out.
+[[nodiscard]] std::vector<RigidGroup> rigid_groups(const Model& model,
+                                                   const std::vector<std::uint8_t>& let_go = {});
 
 }  // namespace fpmshell

@@ -185,6 +185,9 @@ void ExplicitSolver::cycle(const CyclePolicy& policy, Real load_time, Real dt_ca
             nodal_rigid_bodies_.make_rigid(s_, at, model_.curves, true);
             if (tied_) tied_->impose(s_, *bc_, dt.c1 * dt.dt_n, false);
         }
+        if (nodal_rigid_bodies_.has_failing_welds() &&  // eq. 6.11-13
+            nodal_rigid_bodies_.judge_welds(s_, dt.c1 * dt.dt_n, at.t_next) > 0)
+            release_failed_welds();
         advance_particles(dt, particles);  // 8-9
     }
     book_energies(dt, particles);  // 8 §6.8
@@ -295,6 +298,20 @@ void ExplicitSolver::add_scaled_mass() {
         }
     }
     if (!records.empty()) refresh_contact_masses();  // the bodies' masses changed too
+}
+
+void ExplicitSolver::release_failed_welds() {
+    if (!contact_) return;
+    // the particles that left a body take their own mass in the contact again
+    const std::vector<Index>& body_of = nodal_rigid_bodies_.body_of_particle();
+    for (const NodalRigidBody& g : model_.nodal_rigid_bodies)
+        for (const Index p : g.nodes)
+            if (body_of[static_cast<std::size_t>(p)] < 0)
+                contact_->set_inverse_mass(
+                    p, bc_->free_inverse_mass(static_cast<std::size_t>(p),
+                                              s_.mass[static_cast<std::size_t>(p)]));
+    refresh_contact_masses();
+    contact_->set_rigid_body_of(body_of);
 }
 
 void ExplicitSolver::refresh_contact_masses() {
@@ -602,6 +619,8 @@ void ExplicitSolver::save(RestartWriter& out) const {
     if (contact_) contact_->save(out);
     out.section("ties");
     if (tied_) self.tied_->transfer(out);
+    out.section("welds");
+    self.nodal_rigid_bodies_.transfer(out);
 }
 
 void ExplicitSolver::load(RestartReader& in) {
@@ -654,6 +673,13 @@ void ExplicitSolver::load(RestartReader& in) {
     if (tied_) {
         tied_->transfer(in);
         if (!tied_->restored()) in.fail("restart file of a model with other ties");
+    }
+    in.section("welds");
+    nodal_rigid_bodies_.transfer(in);
+    if (!nodal_rigid_bodies_.restored()) in.fail("restart file of a model with other spot welds");
+    if (nodal_rigid_bodies_.failed_welds() > 0) {
+        nodal_rigid_bodies_.rebuild();
+        release_failed_welds();
     }
 }
 

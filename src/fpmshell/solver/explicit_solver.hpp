@@ -66,6 +66,8 @@ public:
     /// Elements eroded so far (theory.md §7.6), and the time of the first erosion (-1: none).
     [[nodiscard]] Index eroded_elements() const { return eroded_elements_; }
     [[nodiscard]] Real first_erosion_time() const { return first_erosion_time_; }
+    /// The rigid bodies (§6.11), and through them the spot welds that failed (eq. 6.11-13).
+    [[nodiscard]] const NodalRigidBodies& nodal_rigid_bodies() const { return nodal_rigid_bodies_; }
     [[nodiscard]] const Model& model() const { return model_; }
     /// The mass added by control.mass_scaling per section (§6.10; zero without it).
     [[nodiscard]] const AddedMass& added_mass() const { return added_mass_; }
@@ -141,6 +143,8 @@ private:
     /// The contact's inverse masses of the nodal rigid bodies' particles: their bodies'
     /// (eq. 6.11-5), after the masses changed.
     void refresh_contact_masses();
+    /// After spot welds failed (eq. 6.11-13): the contact's masses and rigid bodies anew.
+    void release_failed_welds();
     /// 3 dt_{n+1/2} = scale min dt_e, growth capped at 1.2 dt_{n-1/2} (§6.4), and dt_n.
     [[nodiscard]] StepLengths next_step_lengths(const CyclePolicy& policy,
                                                 const ShellElements::StepTotals& elements,

@@ -5,6 +5,7 @@
 #include <Eigen/Eigenvalues>
 #include <Eigen/Geometry>
 #include <algorithm>
+#include <cmath>
 #include <map>
 #include <numeric>
 
@@ -16,14 +17,31 @@
 
 namespace fpmshell {
 
-NodalRigidBodies::NodalRigidBodies(const Model& model) {
-    RigidBodyPartition partition = rigid_body_partition(model);
+NodalRigidBodies::NodalRigidBodies(const Model& model) : model_(&model) {
+    for (const NodalRigidBody& g : model.nodal_rigid_bodies)
+        if (g.can_fail()) {
+            let_go_.assign(model.nodal_rigid_bodies.size(), 0);
+            weld_force_.assign(let_go_.size(), Vec3::Zero());
+            weld_tension_.assign(let_go_.size(), 0);
+            weld_shear_.assign(let_go_.size(), 0);
+        }
+    rebuild();
+}
+
+void NodalRigidBodies::rebuild() {
+    const Model& model = *model_;
+    RigidBodyPartition partition = rigid_body_partition(model, let_go_);
     if (partition.problem)  // the model reader reports it at its line; a model built in code here
         throw InputError("boundary entry " + std::to_string(partition.problem->first + 1) + ": " +
                          partition.problem->second);
     bodies_ = std::move(partition.bodies);
+    body_of_particle_ = std::move(partition.body_of_particle);
     fixed_ = std::move(partition.held);
-    set_inertia_corrections(model, partition.body_of_particle);
+    corrections_.clear();
+    full_rotation_.clear();
+    set_inertia_corrections(model, body_of_particle_);
+    prescribed_.clear();
+    driven_.clear();
     for (std::size_t b = 0; b < bodies_.size(); ++b)
         for (const RigidPrescription& pr : partition.prescribed[b])
             if (pr.kind != PrescribedKind::None) {
@@ -33,6 +51,76 @@ NodalRigidBodies::NodalRigidBodies(const Model& model) {
                 }
                 driven_[b] = 1;
             }
+    set_weld_sides();
+}
+
+void NodalRigidBodies::set_weld_sides() {
+    welds_.clear();
+    weld_slot_.clear();
+    weld_impulse_.clear();
+    if (let_go_.empty()) return;
+    SpotWeldSides sides = spot_weld_sides(*model_, let_go_);
+    if (sides.problem)  // the model reader reports it at its line
+        throw InputError("constraints entry " + std::to_string(sides.problem->first + 1) + ": " +
+                         sides.problem->second);
+    welds_ = std::move(sides.welds);
+    weld_slot_.assign(model_->nodes.size(), -1);
+    Index slots = 0;
+    for (const SpotWeldSide& w : welds_)
+        for (const Index p : w.side)
+            if (weld_slot_[static_cast<std::size_t>(p)] < 0)
+                weld_slot_[static_cast<std::size_t>(p)] = slots++;
+    weld_impulse_.assign(static_cast<std::size_t>(slots), Vec3::Zero());
+}
+
+std::size_t NodalRigidBodies::failed_welds() const {
+    return static_cast<std::size_t>(std::count(let_go_.begin(), let_go_.end(), 1));
+}
+
+std::size_t NodalRigidBodies::judge_welds(const ParticleState& s, Real impulse_time, Real time) {
+    std::size_t failed = 0;
+    std::fill(weld_force_.begin(), weld_force_.end(), Vec3::Zero());
+    std::fill(weld_tension_.begin(), weld_tension_.end(), Real(0));
+    std::fill(weld_shear_.begin(), weld_shear_.end(), Real(0));
+    for (const SpotWeldSide& w : welds_) {
+        const NodalRigidBody& group = model_->nodal_rigid_bodies[w.entry];
+        const NodalRigidBody::Failure& limit = group.failure;
+        // the force on the first particle's side through the weld
+        Vec3 force = Vec3::Zero();
+        for (const Index p : w.side)
+            force +=
+                weld_impulse_[static_cast<std::size_t>(weld_slot_[static_cast<std::size_t>(p)])];
+        force *= w.sign / impulse_time;
+        const auto a = static_cast<std::size_t>(group.nodes[0]);
+        const auto b = static_cast<std::size_t>(group.nodes[1]);
+        // the weld's axis, from the first particle to the second; for coincident particles
+        // their mean normal, either way in tension
+        const Vec3 chord = s.x[b] - s.x[a];
+        const Real reach = std::max(s.x[a].cwiseAbs().maxCoeff(), s.x[b].cwiseAbs().maxCoeff());
+        const bool coincident = !(chord.norm() > 1e-9 * reach);
+        const Vec3 axis = coincident ? Vec3((s.normal[a] + s.normal[b]).normalized())
+                                     : Vec3(chord / chord.norm());
+        const Real along = force.dot(axis);
+        const Real tension = coincident ? std::abs(along) : std::max(Real(0), along);
+        const Real shear = (force - along * axis).norm();
+        weld_force_[w.entry] = force;
+        weld_tension_[w.entry] = tension;
+        weld_shear_[w.entry] = shear;
+        Real criterion = 0;  // eq. 6.11-13
+        if (limit.normal_force > 0)
+            criterion += std::pow(tension / limit.normal_force, limit.normal_exponent);
+        if (limit.shear_force > 0)
+            criterion += std::pow(shear / limit.shear_force, limit.shear_exponent);
+        if (criterion >= 1 || time >= limit.time) {
+            let_go_[w.entry] = 1;
+            ++failed;
+        }
+    }
+    if (failed > 0) {
+        if (first_weld_failure_time_ < 0) first_weld_failure_time_ = time;
+        rebuild();
+    }
+    return failed;
 }
 
 namespace {
@@ -198,8 +286,10 @@ std::vector<Real> NodalRigidBodies::contact_masses(const std::vector<Real>& mass
 }
 
 void NodalRigidBodies::make_rigid(ParticleState& s, const PrescribedMotionTimes& at,
-                                  const std::vector<Curve>& curves, bool again) const {
+                                  const std::vector<Curve>& curves, bool again) {
     const Real dt_new = at.dt_new;
+    if (!again) std::fill(weld_impulse_.begin(), weld_impulse_.end(), Vec3::Zero());
+    const bool welds = !weld_impulse_.empty();
     const auto n_bodies = static_cast<std::ptrdiff_t>(bodies_.size());
 #pragma omp parallel for schedule(static) if (n_bodies >= 64)
     for (std::ptrdiff_t ib = 0; ib < n_bodies; ++ib) {
@@ -353,6 +443,10 @@ void NodalRigidBodies::make_rigid(ParticleState& s, const PrescribedMotionTimes&
             s.v[p] = velocity + (turn * r - r) / dt_new;
             const Vec3& n = s.normal[p];
             s.omega[p] = s.full_rotation[p] ? omega : Vec3(omega - n.dot(omega) * n);
+            if (welds)  // the constraint's impulse, for the weld it sides with (eq. 6.11-13)
+                if (const Index slot = weld_slot_[p]; slot >= 0)
+                    weld_impulse_[static_cast<std::size_t>(slot)] +=
+                        s.mass[p] * (s.v[p] - v_before);
             if (driven) {  // the drive's reaction, booked as a support's (eq. 6.11-7)
                 s.reaction[p] += (s.mass[p] / (at.c1 * at.dt_n)) * (s.v[p] - v_before);
                 s.reaction_moment[p] +=

@@ -7,11 +7,13 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
 #include <vector>
 
 #include "fpmshell/core/types.hpp"
 #include "fpmshell/model/model.hpp"
 #include "fpmshell/model/rigid_body_partition.hpp"
+#include "fpmshell/model/spot_weld_sides.hpp"
 #include "fpmshell/solver/boundary_conditions.hpp"
 
 namespace fpmshell {
@@ -60,8 +62,43 @@ public:
     /// The bodies run in parallel (each writes its own particles).
     /// `again`: the second pass of a step, after the contact changed the velocities the first
     /// pass made rigid.
+    /// The constraint impulses m (v_rigid - v_free) of the spot welds' sides are summed over
+    /// the passes of the step for judge_welds.
     void make_rigid(ParticleState& s, const PrescribedMotionTimes& at,
-                    const std::vector<Curve>& curves, bool again = false) const;
+                    const std::vector<Curve>& curves, bool again = false);
+
+    /// Eq. 6.11-13, after the step's last make_rigid: each spot weld that can fail and has not
+    /// judges the force it carried, its side's impulses over `impulse_time` (c1 dt_n), against
+    /// its limits, and `time` (t_{n+1}) against its failure time. The welds that fail let go
+    /// for good: the bodies are formed again without them. Returns how many failed now.
+    std::size_t judge_welds(const ParticleState& s, Real impulse_time, Real time);
+    /// The spot welds that have failed, and the time the first did (-1 before).
+    [[nodiscard]] std::size_t failed_welds() const;
+    [[nodiscard]] Real first_weld_failure_time() const { return first_weld_failure_time_; }
+    /// Whether some spot weld can fail (the model has failure data on a weld).
+    [[nodiscard]] bool has_failing_welds() const { return !let_go_.empty(); }
+    /// Per entry of Model::nodal_rigid_bodies (empty where no weld can fail): whether it has
+    /// failed, and at the last judge_welds the force it carried onto its first particle's side,
+    /// its tension and its shear (zero for a failed weld or a group that cannot fail).
+    [[nodiscard]] const std::vector<std::uint8_t>& welds_failed() const { return let_go_; }
+    [[nodiscard]] const std::vector<Vec3>& weld_forces() const { return weld_force_; }
+    [[nodiscard]] const std::vector<Real>& weld_tensions() const { return weld_tension_; }
+    [[nodiscard]] const std::vector<Real>& weld_shears() const { return weld_shear_; }
+    /// Per particle its body, -1 outside the bodies.
+    [[nodiscard]] const std::vector<Index>& body_of_particle() const { return body_of_particle_; }
+
+    /// The failed welds, for a restart file (io/restart_archive.hpp); call rebuild after loading.
+    template <class Archive>
+    void transfer(Archive& ar) {
+        ar(let_go_);
+        ar(first_weld_failure_time_);
+    }
+    /// Whether a loaded state fits these welds.
+    [[nodiscard]] bool restored() const {
+        return let_go_.empty() || let_go_.size() == model_->nodal_rigid_bodies.size();
+    }
+    /// The bodies formed again from the model without the failed welds.
+    void rebuild();
 
 private:
     /// The velocity (k < 3) or angular velocity (k >= 3) component k of body b at this step,
@@ -85,12 +122,25 @@ private:
     /// R(t) of correction c from its particles' positions (eq. 6.11-11).
     [[nodiscard]] static Mat3 rotation_of(const InertiaCorrection& c, const std::vector<Vec3>& x);
 
+    /// The welds' side particles and their slots in weld_impulse_ (eq. 6.11-13).
+    void set_weld_sides();
+
+    const Model* model_ = nullptr;
     std::vector<std::vector<Index>> bodies_;
+    std::vector<Index> body_of_particle_;
     std::vector<InertiaCorrection> corrections_;  ///< ascending in body
     std::vector<Index> full_rotation_;
     std::vector<std::array<bool, 6>> fixed_;
     std::vector<std::array<RigidPrescription, 6>> prescribed_;  ///< per body; empty: none anywhere
     std::vector<std::uint8_t> driven_;                          ///< per body: some value prescribed
+    /// per entry of Model::nodal_rigid_bodies, 1 once its weld failed; empty: no weld can fail
+    std::vector<std::uint8_t> let_go_;
+    Real first_weld_failure_time_ = -1;
+    std::vector<SpotWeldSide> welds_;  ///< the welds that can still fail
+    std::vector<Index> weld_slot_;     ///< per particle: its slot, -1 on no weld side
+    std::vector<Vec3> weld_impulse_;   ///< per slot: the step's constraint impulse
+    std::vector<Vec3> weld_force_;     ///< per entry, at the last judge_welds
+    std::vector<Real> weld_tension_, weld_shear_;
 };
 
 }  // namespace fpmshell

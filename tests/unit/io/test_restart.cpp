@@ -20,6 +20,7 @@
 #include <utility>
 
 #include "../eroding_band.hpp"
+#include "../lap_joint.hpp"
 #include "fpmshell/core/errors.hpp"
 #include "fpmshell/driver/run_driver.hpp"
 #include "fpmshell/io/model_reader.hpp"
@@ -411,6 +412,28 @@ TEST(Restart, DamageResumesBitForBit) {
         ASSERT_LT(probe.eroded_elements(), 64) << "the band must still be eroding at the stop";
     }
     expect_resume_bit_for_bit(model, "damage", stop);
+}
+
+TEST(Restart, WeldsFailingResumeBitForBit) {
+    // a lap joint pulled apart, stopped after its first welds let go and before the last: the
+    // failed welds stay failed (the bodies are formed again without them)
+    NodalRigidBody::Failure failure;
+    failure.shear_force = 4e3;
+    test::LapJoint joint = test::lap_joint(2, 6e4, failure);
+    Model& model = joint.model;
+    model.title = "lap joint";
+    model.control.end_time = 3e-3;
+    model.source_file = (fs::temp_directory_path() / "lap_joint.yaml").string();  // its name
+    long stop = 0;
+    {
+        ExplicitSolver probe(model);
+        while (probe.nodal_rigid_bodies().failed_welds() == 0) probe.step(1e30);
+        stop = probe.steps() + 1;
+        while (probe.steps() < stop) probe.step(1e30);
+        ASSERT_LT(probe.nodal_rigid_bodies().failed_welds(), 6u)
+            << "the welds must still be failing at the stop";
+    }
+    expect_resume_bit_for_bit(model, "welds", stop);
 }
 
 TEST(Restart, APerforationResumesBitForBit) {

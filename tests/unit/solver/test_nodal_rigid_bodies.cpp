@@ -18,6 +18,13 @@ using namespace fpmshell;
 
 namespace {
 
+/// A rigid group of the particles `nodes` (no failure).
+NodalRigidBody group(std::vector<Index> nodes) {
+    NodalRigidBody g;
+    g.nodes = std::move(nodes);
+    return g;
+}
+
 std::vector<Index> all_nodes(const Model& m) {
     std::vector<Index> all(m.nodes.size());
     for (std::size_t p = 0; p < all.size(); ++p) all[p] = static_cast<Index>(p);
@@ -59,7 +66,8 @@ void weld_coincident_particles(Model& m) {
     for (std::size_t p = 0; p < m.nodes.size(); ++p)
         for (std::size_t q = p + 1; q < m.nodes.size(); ++q)
             if ((m.nodes[p] - m.nodes[q]).norm() < 1e-9)
-                m.nodal_rigid_bodies.push_back({{static_cast<Index>(p), static_cast<Index>(q)}});
+                m.nodal_rigid_bodies.push_back(
+                    group(std::vector<Index>{static_cast<Index>(p), static_cast<Index>(q)}));
 }
 
 /// Clamps the particles at x = 0 and loads those at x = tip by 100 N each along -z.
@@ -98,7 +106,8 @@ Model cantilever(bool cut) {
 
 TEST(NodalRigidBodies, GroupsSharingAParticleAreOneBody) {
     Model m = flat_plate(4);
-    m.nodal_rigid_bodies = {{{3, 1}}, {{1, 7}}, {{10, 12}}, {{7, 2}}};
+    m.nodal_rigid_bodies = {group(std::vector<Index>{3, 1}), group(std::vector<Index>{1, 7}),
+                            group(std::vector<Index>{10, 12}), group(std::vector<Index>{7, 2})};
     const NodalRigidBodies bodies(m);
     ASSERT_EQ(bodies.bodies().size(), 2u);
     EXPECT_EQ(bodies.bodies()[0], (std::vector<Index>{1, 2, 3, 7}));
@@ -107,7 +116,7 @@ TEST(NodalRigidBodies, GroupsSharingAParticleAreOneBody) {
 
 TEST(NodalRigidBodies, APlateMadeRigidTranslatesAndTurnsAsOneBodyWithoutStrain) {
     Model m = flat_plate(8);
-    m.nodal_rigid_bodies.push_back({all_nodes(m)});
+    m.nodal_rigid_bodies.push_back(group(all_nodes(m)));
     // a force along +y at the corner (1, 0): about the centre (0.5, 0.25) a moment
     // 0.5 x F about +z
     const Real force = 2.0;
@@ -200,7 +209,7 @@ TEST(NodalRigidBodies, TwoParticlesWeldedAtADistanceKeepIt) {
     }
     ASSERT_GE(p, 0);
     ASSERT_GE(q, 0);
-    m.nodal_rigid_bodies.push_back({{p, q}});
+    m.nodal_rigid_bodies.push_back(group(std::vector<Index>{p, q}));
     ExplicitSolver s(m);
     Real swing = 0;
     while (s.time() < 0.02) {

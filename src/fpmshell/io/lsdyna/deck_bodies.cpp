@@ -1,4 +1,4 @@
-// Rigid walls (planar and geometric), contacts, nodal rigid bodies and spot welds of a deck.
+// Rigid walls (planar and geometric), contacts and nodal rigid bodies of a deck.
 #include "fpmshell/io/lsdyna/deck_translator.hpp"
 
 namespace fpmshell::deck {
@@ -81,60 +81,6 @@ void DeckTranslator::extra_nodes(const DeckBlock& b) {
                                         yaml_name(set_name(f, "node", id)) + "]}",
                                     {&b, f.line()}});
     }
-}
-
-/// *CONSTRAINED_SPOTWELD (_ID): each weld's two nodes move as one rigid body; the failure
-/// data is noted (a weld never fails).
-void DeckTranslator::spot_weld(const DeckBlock& b) {
-    const std::set<std::string> opt = options_of(b.keyword, 2);
-    for (const std::string& o : opt)
-        if (o != "ID")
-            refuse(b, "*CONSTRAINED_SPOTWELD_" + o + " is not supported (plain and _ID)");
-    const std::size_t per_weld = opt.count("ID") ? 2 : 1;
-    if (b.cards.empty()) required_card(b, 0, "N1, N2, SN, SS, N, M, TF, EP");
-    bool failure = false;
-    for (std::size_t c = 0; c < b.cards.size(); c += per_weld) {
-        while (c < b.cards.size() && b.cards[c].blank()) ++c;  // blank lines between welds
-        if (c >= b.cards.size()) break;
-        const Card f = required_card(b, c + per_weld - 1, "N1, N2, SN, SS, N, M, TF, EP");
-        weld_nodes(b, f, {f.id(0, "N1"), f.id(1, "N2")});
-        failure = failure || f.real(2, "SN") != 0 || f.real(3, "SS") != 0 ||
-                  (f.real(6, "TF") != 0 && f.real(6, "TF") < 1e20);
-    }
-    if (failure)
-        note(b, b.line, "the welds' failure (SN, SS, TF) is not modelled: they never fail");
-}
-
-/// *CONSTRAINED_GENERALIZED_WELD_SPOT (_ID): the nodes of NSID move as one rigid body; the
-/// failure data is noted.
-void DeckTranslator::generalized_spot_weld(const DeckBlock& b) {
-    const std::set<std::string> opt = options_of(b.keyword, 3);
-    if (!opt.count("SPOT"))
-        refuse(b,
-               "fpmshell reads *CONSTRAINED_GENERALIZED_WELD_SPOT only (fillet, butt and "
-               "combined welds are not supported)");
-    for (const std::string& o : opt)
-        if (o != "SPOT" && o != "ID")
-            refuse(b, "*CONSTRAINED_GENERALIZED_WELD_SPOT_" + o + " is not supported");
-    const std::size_t first = opt.count("ID") ? 1 : 0;
-    const Card f = required_card(b, first, "NSID, CID, FILTER, WINDOW, NPR, NPRT");
-    const Card g = required_card(b, first + 1, "TFAIL, EPSF, SN, SS, N, M");
-    constraints_.push_back(
-        {"  - {type: rigid, nodes: " + yaml_name(set_name(f, "node", f.id(0, "NSID"))) + "}",
-         {&b, f.line()}});
-    if ((g.real(0, "TFAIL") != 0 && g.real(0, "TFAIL") < 1e20) || g.real(1, "EPSF") != 0 ||
-        g.real(2, "SN") != 0 || g.real(3, "SS") != 0)
-        note(b, g.line(),
-             "the weld's failure (TFAIL, EPSF, SN, SS) is not modelled: it never fails");
-}
-
-/// A weld of the nodes `ids` as a rigid body of a set of its own (`spotweld_<k>`).
-void DeckTranslator::weld_nodes(const DeckBlock& b, const Card& f,
-                                const std::array<long long, 2>& ids) {
-    if (ids[0] == ids[1]) f.fail("N1 and N2 are the same node " + std::to_string(ids[0]));
-    const std::string group = "spotweld_" + std::to_string(++welds_);
-    for (const long long id : ids)
-        add_node_to_group(group, id, "{type: rigid, nodes: NODES}", {&b, f.line()}, constraints_);
 }
 
 void DeckTranslator::rigid_wall(const DeckBlock& b) {

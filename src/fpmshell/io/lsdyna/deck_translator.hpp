@@ -263,17 +263,21 @@ public:
     // ---- rigid walls, contacts, rigid-body constraints and welds (deck_bodies.cpp)
     /// *CONSTRAINED_NODAL_RIGID_BODY (_TITLE): the nodes of NSID move as one rigid body.
     void nodal_rigid_body(const DeckBlock& b);
-    /// *CONSTRAINED_SPOTWELD (_ID): each weld's two nodes move as one rigid body; the failure
-    /// data is noted (a weld never fails).
     void rigid_bodies_joined(const DeckBlock& b);
     void extra_nodes(const DeckBlock& b);
     void require_rigid_part(const Card& f, long long pid, const char* what);
+    // ---- spot welds (deck_welds.cpp)
+    /// *CONSTRAINED_SPOTWELD (_ID): each weld's two nodes move as one rigid body until the
+    /// weld fails by SN, SS (N, M) or TF (theory.md eq. 6.11-13); EP noted.
     void spot_weld(const DeckBlock& b);
-    /// *CONSTRAINED_GENERALIZED_WELD_SPOT (_ID): the nodes of NSID move as one rigid body; the
-    /// failure data is noted.
+    /// *CONSTRAINED_GENERALIZED_WELD_SPOT (_ID): the nodes of NSID move as one rigid body; a
+    /// weld of two nodes fails as a spot weld does (TFAIL, SN, SS, N, M); EPSF noted.
     void generalized_spot_weld(const DeckBlock& b);
-    /// A weld of the nodes `ids` as a rigid body of a set of its own (`spotweld_<k>`).
-    void weld_nodes(const DeckBlock& b, const Card& f, const std::array<long long, 2>& ids);
+    /// The `failure` keys of a weld card: SN at field `sn` (SS, N, M after it), TF at `tf`;
+    /// `defaulted` set where a blank exponent is taken as 2.
+    std::string weld_failure(const Card& f, std::size_t sn, std::size_t tf, bool& defaulted);
+    /// The number of nodes *SET_NODE(_LIST) `sid` lists, 0 where it is not a list.
+    std::size_t listed_node_count(long long sid);
     void rigid_wall(const DeckBlock& b);
     void add_wall(const WallDef& w, const Card& f);
     static std::array<Real, 3> unit(const std::array<Real, 3>& v);

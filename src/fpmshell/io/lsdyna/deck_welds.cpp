@@ -1,0 +1,126 @@
+// The spot welds of a deck, and their failure (theory.md eq. 6.11-13): *CONSTRAINED_SPOTWELD and
+// *CONSTRAINED_GENERALIZED_WELD_SPOT.
+#include <cmath>
+#include <tuple>
+
+#include "fpmshell/io/lsdyna/deck_translator.hpp"
+
+namespace fpmshell::deck {
+
+/// The `failure` keys of a weld from SN, SS, N, M and TF (fields first ... first + 4 of `f`
+/// in the card's order TF, -, SN, SS, N, M when `time_first`, else SN, SS, N, M, TF), or ""
+/// when it cannot fail. A blank exponent of a force given is taken as 2 (`defaulted` set).
+std::string DeckTranslator::weld_failure(const Card& f, std::size_t sn, std::size_t tf,
+                                         bool& defaulted) {
+    const Real normal = f.real(sn, "SN"), shear = f.real(sn + 1, "SS");
+    if (normal < 0 || shear < 0)
+        f.fail(
+            "SN or SS < 0 (a curve of the nodal temperature) is not supported: fpmshell has no "
+            "temperature; give the forces");
+    const Real time = f.real(tf, "TF", 1e20);
+    const bool timed = time > 0 && time < 1e20;
+    if (normal == 0 && shear == 0 && !timed) return "";
+    std::string keys;
+    if (normal > 0) keys += ", normal_force: " + num(normal);
+    if (shear > 0) keys += ", shear_force: " + num(shear);
+    for (const auto& [k, name, key] :
+         {std::tuple{sn + 2, "N", "normal_exponent"}, std::tuple{sn + 3, "M", "shear_exponent"}}) {
+        const Real e = f.real(k, name);
+        if (e > 0) {
+            keys += std::string(", ") + key + ": " + num(e);
+        } else if (e < 0) {
+            f.fail(std::string(name) + " must be > 0 (the exponent of the weld's force)");
+        } else if ((k == sn + 2 ? normal : shear) > 0) {
+            defaulted = true;
+        }
+    }
+    if (timed) keys += ", time: " + num(time);
+    return ", failure: {" + keys.substr(2) + "}";
+}
+
+/// *CONSTRAINED_SPOTWELD (_ID): each weld's two nodes move as one rigid body until the weld
+/// fails by its forces SN, SS (exponents N, M) or its time TF (eq. 6.11-13).
+void DeckTranslator::spot_weld(const DeckBlock& b) {
+    const std::set<std::string> opt = options_of(b.keyword, 2);
+    for (const std::string& o : opt)
+        if (o != "ID")
+            refuse(b, "*CONSTRAINED_SPOTWELD_" + o + " is not supported (plain and _ID)");
+    const std::size_t per_weld = opt.count("ID") ? 2 : 1;
+    if (b.cards.empty()) required_card(b, 0, "N1, N2, SN, SS, N, M, TF, EP");
+    bool ductile = false, defaulted = false;
+    for (std::size_t c = 0; c < b.cards.size(); c += per_weld) {
+        while (c < b.cards.size() && b.cards[c].blank()) ++c;  // blank lines between welds
+        if (c >= b.cards.size()) break;
+        const Card f = required_card(b, c + per_weld - 1, "N1, N2, SN, SS, N, M, TF, EP");
+        const std::array<long long, 2> ids{f.id(0, "N1"), f.id(1, "N2")};
+        if (ids[0] == ids[1]) f.fail("N1 and N2 are the same node " + std::to_string(ids[0]));
+        const std::string group = "spotweld_" + std::to_string(++welds_);
+        const std::string text =
+            "{type: rigid, nodes: NODES" + weld_failure(f, 2, 6, defaulted) + "}";
+        for (const long long id : ids)
+            add_node_to_group(group, id, text, {&b, f.line()}, constraints_);
+        const Real ep = f.real(7, "EP", 1e20);
+        ductile = ductile || (ep > 0 && ep < 1e20);
+    }
+    if (defaulted) note(b, b.line, "N or M blank: the exponent 2 is taken");
+    if (ductile)
+        note(b, b.line,
+             "EP (the welds' ductile failure by the plastic strain) is not modelled: they fail "
+             "by SN, SS and TF only");
+}
+
+/// The number of nodes of *SET_NODE(_LIST) `sid` when its cards list them, 0 otherwise.
+std::size_t DeckTranslator::listed_node_count(long long sid) {
+    const auto kind = set_places_.find("node");
+    if (kind == set_places_.end()) return 0;
+    const auto it = kind->second.find(sid);
+    if (it == kind->second.end()) return 0;
+    const DeckBlock& b = *it->second.block;
+    const std::set<std::string> opt = options_of(b.keyword, 2);
+    for (const std::string& o : opt)
+        if (o != "LIST" && o != "TITLE") return 0;  // _GENERAL, _ADD, ...: not counted
+    std::size_t n = 0;
+    for (std::size_t c = opt.count("TITLE") ? 2 : 1; c < b.cards.size(); ++c) {
+        if (b.cards[c].blank()) continue;
+        const Card ids = card(b, c);
+        for (std::size_t k = 0; k < 8; ++k)
+            if (ids.id(k, "NID") != 0) ++n;
+    }
+    return n;
+}
+
+/// *CONSTRAINED_GENERALIZED_WELD_SPOT (_ID): the nodes of NSID move as one rigid body; a weld
+/// of two nodes fails by TFAIL, SN, SS (exponents N, M) as *CONSTRAINED_SPOTWELD's.
+void DeckTranslator::generalized_spot_weld(const DeckBlock& b) {
+    const std::set<std::string> opt = options_of(b.keyword, 3);
+    if (!opt.count("SPOT"))
+        refuse(b,
+               "fpmshell reads *CONSTRAINED_GENERALIZED_WELD_SPOT only (fillet, butt and "
+               "combined welds are not supported)");
+    for (const std::string& o : opt)
+        if (o != "SPOT" && o != "ID")
+            refuse(b, "*CONSTRAINED_GENERALIZED_WELD_SPOT_" + o + " is not supported");
+    const std::size_t first = opt.count("ID") ? 1 : 0;
+    const Card f = required_card(b, first, "NSID, CID, FILTER, WINDOW, NPR, NPRT");
+    const Card g = required_card(b, first + 1, "TFAIL, EPSF, SN, SS, N, M");
+    const long long nsid = f.id(0, "NSID");
+    bool defaulted = false;
+    std::string failure = weld_failure(g, 2, 0, defaulted);
+    if (defaulted) note(b, g.line(), "N or M blank: the exponent 2 is taken");
+    if (!failure.empty() && listed_node_count(nsid) != 2) {
+        note(b, g.line(),
+             "the weld's failure (TFAIL, SN, SS) is modelled for a weld of two nodes; NSID " +
+                 std::to_string(nsid) + " has another number: it never fails");
+        failure.clear();
+    }
+    if (g.real(1, "EPSF") != 0)
+        note(b, g.line(),
+             "EPSF (the weld's ductile failure by the plastic strain) is not modelled");
+    if (f.id(2, "FILTER") > 1)
+        note(b, f.line(), "FILTER: the weld's forces are judged unfiltered, every step");
+    constraints_.push_back(
+        {"  - {type: rigid, nodes: " + yaml_name(set_name(f, "node", nsid)) + failure + "}",
+         {&b, f.line()}});
+}
+
+}  // namespace fpmshell::deck
