@@ -465,6 +465,59 @@ for name, gissmo, message in (
     check(f"GISSMO: {name} refused with exit 2 and one sentence",
           r.returncode == 2 and r.stderr.count("error:") == 1 and message in r.stderr, r.stderr)
 
+# ---- *MAT_ADD_EROSION (theory.md eq. 7.6-5): strip_pull.k's steel eroding at an effective strain
+# of 2 % (EFFEPS, NUMFIP 1), against the twin with failure: {thresholds}; its GISSMO of R10 and
+# before (IDAM 1, card 3) gives the bytes of *MAT_ADD_DAMAGE_GISSMO's; refusals
+EROSION = """*MAT_ADD_EROSION
+$#     mid      excl    mxpres     mneps    effeps    voleps    numfip       ncs
+         1       0.0       0.0       0.0      0.02       0.0       1.0       1.0
+$#  mnpres     sigp1     sigvm     mxeps     epssh     sigth   impulse    failtm
+       0.0       0.0       0.0       0.0       0.0       0.0       0.0       0.0
+"""
+h_erosion = deck_against_twin(
+    "MAT_ADD_EROSION", os.path.join(WORK, "add_erosion"), os.path.join(STRIP, "strip_pull_mesh.k"),
+    strip_deck.replace("*END\n", EROSION + "*END\n"),
+    strip_twin.replace("    poisson_ratio: 0.3\n    flow_curves:",
+                       "    poisson_ratio: 0.3\n    failure: {thresholds: {max_effective_strain: 0.02}, "
+                       "points: 1}\n    flow_curves:"))
+if h_erosion:
+    with open(os.path.join(os.path.dirname(h_erosion), "summary.json")) as f:
+        eroded = json.load(f).get("eroded_elements", 0)
+    check("MAT_ADD_EROSION: the strip's elements erode", eroded > 0, eroded)
+
+
+def write_case(name, text):
+    """Writes `text` as WORK/name/model.k beside the strip's mesh; returns the folder."""
+    folder = os.path.join(WORK, name)
+    os.makedirs(folder, exist_ok=True)
+    shutil.copy(os.path.join(STRIP, "strip_pull_mesh.k"), folder)
+    with open(os.path.join(folder, "model.k"), "w") as f:
+        f.write(text)
+    return folder
+
+
+IDAM = EROSION.replace("      0.02", "       0.0") + (
+    "$#    idam    dmgtyp     lcsdg     ecrit    dmgexp     dcrit    fadexp    lcregd\n"
+    "         1         0       901       0.0       2.0       0.0       1.0       902\n")
+gissmo_curves = GISSMO[GISSMO.index("*DEFINE_CURVE"):]
+r_idam, h_idam = run(os.path.join(write_case("add_erosion_idam", strip_deck.replace(
+    "*END\n", IDAM + gissmo_curves + "*END\n")), "model.k"), os.path.join(WORK, "add_erosion_idam", "out"))
+check("MAT_ADD_EROSION IDAM 1: the history of *MAT_ADD_DAMAGE_GISSMO's, byte for byte",
+      r_idam.returncode == 0 and h_gissmo is not None and read(h_idam) == read(h_gissmo), r_idam.stderr)
+for name, card, message in (
+        ("Tuler-Butcher", EROSION.replace("       0.0       0.0       0.0\n", "     1.0e8       0.0       0.0\n"),
+         "SIGTH: the Tuler-Butcher criterion is not supported"),
+        ("a forming limit", EROSION + "         0         0         0\n" + "       901\n",
+         "forming limits"),
+        ("IDAM 2", EROSION + "         2\n", "IDAM 2 is not supported"),
+        ("SIGP1 a curve", EROSION.replace("       0.0       0.0       0.0       0.0       0.0       0.0       0.0       0.0\n",
+                                          "       0.0    -901.0       0.0       0.0       0.0       0.0       0.0       0.0\n"),
+         "SIGP1 < 0")):
+    folder = write_case("add_erosion_bad", strip_deck.replace("*END\n", card + gissmo_curves + "*END\n"))
+    r = subprocess.run([FPM, "check", os.path.join(folder, "model.k")], capture_output=True, text=True)
+    check(f"MAT_ADD_EROSION: {name} refused with exit 2 and one sentence",
+          r.returncode == 2 and r.stderr.count("error:") == 1 and message in r.stderr, r.stderr)
+
 # ---- *MAT_PLASTICITY_WITH_DAMAGE (081): strip_pull.k's steel softened by damage from a plastic
 # strain of 1 % (EPPF) to 3 % (EPPFR), eroding there (NUMINT 1), against the twin with
 # type: plastic_damage (theory.md eq. 7.6-4)
@@ -606,7 +659,7 @@ REFUSED = {  # card: what its message must say
     "*CONTACT_TIED_SURFACE_TO_SURFACE_FAILURE\n         1         1\n": "the option _FAILURE is not supported",
     "*CONTACT_TIEBREAK_SHELL_EDGE_TO_SURFACE\n         1         1\n": "other tiebreak forms are not supported",
     "*MAT_HONEYCOMB\n         2\n": "this material is not supported",
-    "*MAT_ADD_EROSION\n         1\n": "fpmshell reads *MAT_ADD_DAMAGE_GISSMO",
+    "*MAT_ADD_DAMAGE_DIEM\n         1\n": "fpmshell reads *MAT_ADD_DAMAGE_GISSMO, *MAT_ADD_EROSION",
     "*BOUNDARY_PRESCRIBED_MOTION_RIGID_LOCAL\n         1         3         0         1\n": "_LOCAL is not supported",
     "*RIGIDWALL_GEOMETRIC_PRISM\n         0\n": "the option _PRISM is not supported",
     "*FREQUENCY_DOMAIN_SSD\n         1\n": "could change the model",

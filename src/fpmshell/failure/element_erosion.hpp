@@ -55,10 +55,10 @@ public:
     /// Whether an element computed alone erodes after its step of duration dt, its criteria's
     /// state (alone_state_packs()) brought up to it. fill(points) sets what they read of its
     /// points: the plastic strain, and the stress and plastic work where reads_point();
-    /// element_size: its FailurePacks::element_size.
+    /// element_size, time: its FailurePacks::element_size and time.
     template <class Fill>
-    [[nodiscard]] bool erodes(const Fill& fill, Real dt, RealPack* state,
-                              Real element_size = 0) const {
+    [[nodiscard]] bool erodes(const Fill& fill, Real dt, RealPack* state, Real element_size = 0,
+                              Real time = 0) const {
         ElementFailurePoints points;
         const std::size_t m = point_packs();
         for (std::size_t j = 0; j < m; ++j)
@@ -71,6 +71,7 @@ public:
         for (std::size_t r = 0; r < 3; ++r) in.stress[r] = points.stress[r].data();
         in.plastic_work = points.plastic_work.data();
         in.element_size = RealPack(element_size);
+        in.time = time;
         std::array<MaskOf<RealPack>, ElementFailurePoints::k_max_packs> failed;
         failed.fill(MaskOf<RealPack>(false));
         if (!judge(in, dt, state, failed.data())) return false;

@@ -3,6 +3,7 @@
 #include "fpmshell/failure/johnson_cook/johnson_cook_damage.hpp"
 #include "fpmshell/failure/plastic_strain/plastic_strain_failure.hpp"
 #include "fpmshell/failure/tabulated/tabulated_failure.hpp"
+#include "fpmshell/failure/thresholds/thresholds_failure.hpp"
 
 namespace fpmshell {
 
@@ -11,6 +12,7 @@ const std::vector<FailureCriterion>& failure_criteria() {
         plastic_strain_criterion(),  // failure/plastic_strain
         johnson_cook_criterion(),    // failure/johnson_cook
         tabulated_criterion(),       // failure/tabulated
+        thresholds_criterion(),      // failure/thresholds
     };
     return criteria;
 }

@@ -42,6 +42,8 @@ struct FailurePacks {
     /// the initial size of each lane's element, sqrt(2 A_0) (a square's side for either of its
     /// halves), for the criteria that regularize by it
     RealPack element_size = RealPack(0.0);
+    /// t_n, the time of the state judged (the criteria that fail at a time)
+    Real time = 0;
 };
 
 /// One criterion of one material, judging its points.

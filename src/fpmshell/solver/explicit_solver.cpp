@@ -212,6 +212,7 @@ Real ExplicitSolver::max_over_particles(F&& value) const {
 ShellElements::StepTotals ExplicitSolver::compute_internal_loads(const CyclePolicy& policy) {
     const Real a_s = model_.damping.stiffness;
     const Real viscous_rate = (a_s > 0 && dt_half_ > 0) ? a_s / dt_half_ : 0.0;
+    elements_.set_time(time_);  // t_n, for the failure criteria of a time (§7.6)
     const ShellElements::StepTotals tot =
         elements_.compute(s_, viscous_rate, policy.rate_effects ? dt_half_ : 0.0);
     element_steps_ += elements_.size();

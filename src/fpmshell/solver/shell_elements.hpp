@@ -56,6 +56,8 @@ public:
     /// s.f_int, s.m_int and updates the material points. viscous_rate = a_s / dt_{n-1/2};
     /// dt = dt_{n-1/2} for rate-dependent materials (0 in relaxation: no rate effects).
     StepTotals compute(ParticleState& s, Real viscous_rate, Real dt);
+    /// t_n of the next compute, for the failure criteria of a time (FailurePacks::time).
+    void set_time(Real t) { time_ = t; }
 
     /// Critical step of every element from the current geometry (§6.4), unscaled, minimum.
     [[nodiscard]] Real min_critical_dt(const std::vector<Vec3>& x, Index* where = nullptr) const;
@@ -227,6 +229,7 @@ private:
     /// failure_state_at_[e] of its elements on, an element computed alone's from its own;
     /// empty where no criterion keeps any
     std::vector<RealPack> failure_state_;
+    Real time_ = 0;                              ///< t_n of the step computed (set_time)
     std::vector<std::size_t> failure_state_at_;  ///< per element
     std::vector<Real> element_size_;  ///< per element, sqrt(2 A_0) (where some material can fail)
     std::vector<RealPack> block_element_size_;  ///< the same per block, a lane per element

@@ -88,6 +88,7 @@ bool ShellElements::judge_block(Index b, Real dt, std::array<bool, k_lanes>& ero
         groups_[g]->block_failure_packs(static_cast<std::size_t>(b - blocks.group_first_block[g]));
     if (in.m == 0) return false;
     in.element_size = block_element_size_[static_cast<std::size_t>(b)];
+    in.time = time_;
     const std::size_t first =
         blocks.block_elements[static_cast<std::size_t>(b) * static_cast<std::size_t>(k_lanes)];
     RealPack* state =
@@ -151,15 +152,15 @@ bool ShellElements::erodes_alone(std::size_t e, Real dt) {
         group.failure_points(place, rule.reads_point(), points);
     };
     const Real size = element_size_[e];
-    if (failure_state_.empty()) return rule.erodes(fill, dt, nullptr, size);
+    if (failure_state_.empty()) return rule.erodes(fill, dt, nullptr, size, time_);
     if (!place.in_block)
-        return rule.erodes(fill, dt, failure_state_.data() + failure_state_at_[e], size);
+        return rule.erodes(fill, dt, failure_state_.data() + failure_state_at_[e], size, time_);
     const std::size_t n = rule.n_points(), w = static_cast<std::size_t>(k_lanes);
     std::vector<RealPack> state(rule.alone_state_packs(), RealPack(0.0));
     for (std::size_t i = 0; i < rule.fields() * n; ++i)
         set_lane(state[i / n * rule.point_packs() + i % n / w], static_cast<int>(i % n % w),
                  failure_number(e, i));
-    const bool erodes = rule.erodes(fill, dt, state.data(), size);
+    const bool erodes = rule.erodes(fill, dt, state.data(), size, time_);
     for (std::size_t i = 0; i < rule.fields() * n; ++i)
         failure_number(e, i) =
             lane(state[i / n * rule.point_packs() + i % n / w], static_cast<int>(i % n % w));

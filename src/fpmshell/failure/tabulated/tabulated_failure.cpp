@@ -109,17 +109,7 @@ void mat_add_damage_gissmo(deck::FailureCard& card) {
     }
     const Real numfip = f.real(4, "NUMFIP", 1.0);
     if (numfip < 0) f.fail("NUMFIP < 0 (a percentage of layers) is not supported");
-    const long long lcsdg = g.id(0, "LCSDG");
-    if (lcsdg <= 0)
-        g.fail("LCSDG must be a *DEFINE_CURVE of the failure strain against triaxiality");
-    std::string t = "tabulated: {failure_strain: " + card.curve_points(g, lcsdg, "LCSDG");
-    const Real dmgexp = g.real(2, "DMGEXP", 1.0);
-    t += ", exponent: " + deck::num(dmgexp == 0 ? 1.0 : dmgexp);
-    if (const long long lcregd = g.id(5, "LCREGD"); lcregd != 0) {
-        if (lcregd < 0) g.fail("LCREGD < 0 (a table over triaxiality) is not supported");
-        t += ", regularization: " + card.curve_points(g, lcregd, "LCREGD");
-    }
-    card.failure(t + "}");
+    card.failure(tabulated_deck_failure(card, g, 0, 2, 5));
     if (numfip > 0) card.failure_points(static_cast<long long>(std::llround(numfip)));
     card.note(g,
               "ECRIT, DCRIT, FADEXP: the damage is not coupled to the stress (no fading): a point "
@@ -134,6 +124,22 @@ void mat_add_damage_gissmo(deck::FailureCard& card) {
 }
 
 }  // namespace
+
+std::string tabulated_deck_failure(deck::FailureCard& card, const deck::Card& c,
+                                   std::size_t lcsdg_at, std::size_t dmgexp_at,
+                                   std::size_t lcregd_at) {
+    const long long lcsdg = c.id(lcsdg_at, "LCSDG");
+    if (lcsdg <= 0)
+        c.fail("LCSDG must be a *DEFINE_CURVE of the failure strain against triaxiality");
+    std::string t = "tabulated: {failure_strain: " + card.curve_points(c, lcsdg, "LCSDG");
+    const Real dmgexp = c.real(dmgexp_at, "DMGEXP", 1.0);
+    t += ", exponent: " + deck::num(dmgexp == 0 ? 1.0 : dmgexp);
+    if (const long long lcregd = c.id(lcregd_at, "LCREGD"); lcregd != 0) {
+        if (lcregd < 0) c.fail("LCREGD < 0 (a table over triaxiality) is not supported");
+        t += ", regularization: " + card.curve_points(c, lcregd, "LCREGD");
+    }
+    return t + "}";
+}
 
 FailureCriterion tabulated_criterion() {
     return {"tabulated",

@@ -8,6 +8,7 @@
 // point carries its stress until its element erodes.)
 #pragma once
 
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -42,5 +43,14 @@ private:
 };
 
 [[nodiscard]] FailureCriterion tabulated_criterion();
+
+namespace deck {
+class Card;
+}
+/// The `tabulated: {...}` of a GISSMO card c: LCSDG, DMGEXP and LCREGD at those fields
+/// (*MAT_ADD_DAMAGE_GISSMO's card 2; *MAT_ADD_EROSION's card 3 with IDAM 1).
+[[nodiscard]] std::string tabulated_deck_failure(deck::FailureCard& card, const deck::Card& c,
+                                                 std::size_t lcsdg_at, std::size_t dmgexp_at,
+                                                 std::size_t lcregd_at);
 
 }  // namespace fpmshell
