@@ -38,6 +38,16 @@ def read(path):
         return f.read()
 
 
+def write_case(name, text, mesh):
+    """Writes `text` as WORK/name/model.k beside a copy of the mesh file; returns the folder."""
+    folder = os.path.join(WORK, name)
+    os.makedirs(folder, exist_ok=True)
+    shutil.copy(mesh, folder)
+    with open(os.path.join(folder, "model.k"), "w") as f:
+        f.write(text)
+    return folder
+
+
 shutil.rmtree(WORK, ignore_errors=True)
 os.makedirs(WORK)
 
@@ -455,11 +465,8 @@ for name, gissmo, message in (
          "no *DEFINE_CURVE defines it"),
         ("another driving variable", GISSMO.replace("         1                 1",
                                                     "         1                11"), "DTYP 11")):
-    folder = os.path.join(WORK, "gissmo_bad")
-    os.makedirs(folder, exist_ok=True)
-    shutil.copy(os.path.join(STRIP, "strip_pull_mesh.k"), folder)
-    with open(os.path.join(folder, "model.k"), "w") as f:
-        f.write(strip_deck.replace("*END\n", gissmo + "*END\n"))
+    folder = write_case("gissmo_bad", strip_deck.replace("*END\n", gissmo + "*END\n"),
+                        os.path.join(STRIP, "strip_pull_mesh.k"))
     r = subprocess.run([FPM, "check", os.path.join(folder, "model.k")], capture_output=True,
                        text=True)
     check(f"GISSMO: {name} refused with exit 2 and one sentence",
@@ -486,22 +493,15 @@ if h_erosion:
     check("MAT_ADD_EROSION: the strip's elements erode", eroded > 0, eroded)
 
 
-def write_case(name, text):
-    """Writes `text` as WORK/name/model.k beside the strip's mesh; returns the folder."""
-    folder = os.path.join(WORK, name)
-    os.makedirs(folder, exist_ok=True)
-    shutil.copy(os.path.join(STRIP, "strip_pull_mesh.k"), folder)
-    with open(os.path.join(folder, "model.k"), "w") as f:
-        f.write(text)
-    return folder
-
 
 IDAM = EROSION.replace("      0.02", "       0.0") + (
     "$#    idam    dmgtyp     lcsdg     ecrit    dmgexp     dcrit    fadexp    lcregd\n"
     "         1         0       901       0.0       2.0       0.0       1.0       902\n")
 gissmo_curves = GISSMO[GISSMO.index("*DEFINE_CURVE"):]
+STRIP_MESH = os.path.join(STRIP, "strip_pull_mesh.k")
 r_idam, h_idam = run(os.path.join(write_case("add_erosion_idam", strip_deck.replace(
-    "*END\n", IDAM + gissmo_curves + "*END\n")), "model.k"), os.path.join(WORK, "add_erosion_idam", "out"))
+    "*END\n", IDAM + gissmo_curves + "*END\n"), STRIP_MESH), "model.k"),
+    os.path.join(WORK, "add_erosion_idam", "out"))
 check("MAT_ADD_EROSION IDAM 1: the history of *MAT_ADD_DAMAGE_GISSMO's, byte for byte",
       r_idam.returncode == 0 and h_gissmo is not None and read(h_idam) == read(h_gissmo), r_idam.stderr)
 for name, card, message in (
@@ -513,7 +513,8 @@ for name, card, message in (
         ("SIGP1 a curve", EROSION.replace("       0.0       0.0       0.0       0.0       0.0       0.0       0.0       0.0\n",
                                           "       0.0    -901.0       0.0       0.0       0.0       0.0       0.0       0.0\n"),
          "SIGP1 < 0")):
-    folder = write_case("add_erosion_bad", strip_deck.replace("*END\n", card + gissmo_curves + "*END\n"))
+    folder = write_case("add_erosion_bad", strip_deck.replace("*END\n", card + gissmo_curves + "*END\n"),
+                        STRIP_MESH)
     r = subprocess.run([FPM, "check", os.path.join(folder, "model.k")], capture_output=True, text=True)
     check(f"MAT_ADD_EROSION: {name} refused with exit 2 and one sentence",
           r.returncode == 2 and r.stderr.count("error:") == 1 and message in r.stderr, r.stderr)
@@ -563,11 +564,7 @@ if h_frictional and os.path.exists(h_frictionless):
 
 
 def hammer_check(name, deck_text):
-    folder = os.path.join(WORK, name)
-    os.makedirs(folder, exist_ok=True)
-    shutil.copy(os.path.join(HAMMER, "plate_hammer_mesh.k"), folder)
-    with open(os.path.join(folder, "model.k"), "w") as f:
-        f.write(deck_text)
+    folder = write_case(name, deck_text, os.path.join(HAMMER, "plate_hammer_mesh.k"))
     return fpmshell("check", os.path.join(folder, "model.k"))
 
 
