@@ -432,8 +432,9 @@ if h_fail:
           header)
 
 # ---- *MAT_ADD_DAMAGE_GISSMO: strip_pull.k's steel with GISSMO's failure strain against
-# triaxiality (LCSDG), its regularization by element size (LCREGD), DMGEXP and NUMFIP, against
-# the twin with failure: {tabulated} (theory.md eq. 7.6-3); elements erode
+# triaxiality (LCSDG), its regularization by element size (LCREGD), DMGEXP and NUMFIP, and its
+# fading from the start (ECRIT and DCRIT 0, FADEXP 1), against the twin with failure: {tabulated}
+# (theory.md eqs. 7.6-3, 7.6-6); elements erode
 GISSMO = """*MAT_ADD_DAMAGE_GISSMO
 $#     mid              dtyp     refsz    numfip
          1                 1       0.0       1.0
@@ -455,17 +456,36 @@ h_gissmo = deck_against_twin(
     strip_twin.replace("    poisson_ratio: 0.3\n    flow_curves:",
                        "    poisson_ratio: 0.3\n    failure: {tabulated: {failure_strain: [[-0.33, "
                        "0.03], [0.33, 0.01], [0.67, 0.008]], exponent: 2, regularization: "
-                       "[[0.001, 1.2], [0.01, 0.8]]}, points: 1}\n    flow_curves:"))
+                       "[[0.001, 1.2], [0.01, 0.8]], fading: {critical_damage: 0, exponent: 1}}, "
+                       "points: 1}\n    flow_curves:"))
 check_erodes("GISSMO: the strip's elements erode", h_gissmo)
 r = subprocess.run([FPM, "check", os.path.join(WORK, "gissmo", "model.k")], capture_output=True,
                    text=True)
-check("GISSMO: check notes that the damage is not coupled to the stress",
-      r.returncode == 0 and "not coupled to the stress" in r.stdout + r.stderr, r.stdout + r.stderr)
+check("GISSMO: check has no note on ECRIT, DCRIT or FADEXP (they are modelled)",
+      r.returncode == 0 and "ECRIT" not in r.stdout + r.stderr, r.stdout + r.stderr)
+# the instability at a critical strain against triaxiality (ECRIT < 0) and FADEXP 2
+GISSMO_ECRIT = GISSMO.replace("       901       0.0       2.0       0.0       1.0       902",
+                              "       901    -903.0       2.0       0.0       2.0       902") + (
+    "*DEFINE_CURVE\n       903\n               -0.33               0.015\n"
+    "                0.67               0.004\n")
+h_ecrit = deck_against_twin(
+    "GISSMO ECRIT", os.path.join(WORK, "gissmo_ecrit"), os.path.join(STRIP, "strip_pull_mesh.k"),
+    strip_deck.replace("*END\n", GISSMO_ECRIT + "*END\n"),
+    strip_twin.replace("    poisson_ratio: 0.3\n    flow_curves:",
+                       "    poisson_ratio: 0.3\n    failure: {tabulated: {failure_strain: [[-0.33, "
+                       "0.03], [0.33, 0.01], [0.67, 0.008]], exponent: 2, regularization: "
+                       "[[0.001, 1.2], [0.01, 0.8]], fading: {critical_strain: [[-0.33, 0.015], "
+                       "[0.67, 0.004]], exponent: 2}}, points: 1}\n    flow_curves:"))
+check_erodes("GISSMO ECRIT: the strip's elements erode", h_ecrit)
+check("GISSMO ECRIT: fading from an instability gives another history than fading from the start",
+      h_ecrit is not None and h_gissmo is not None and read(h_ecrit) != read(h_gissmo))
 for name, gissmo, message in (
         ("LCSDG not a curve", GISSMO.replace("       901       0.0", "       777       0.0"),
          "no *DEFINE_CURVE defines it"),
         ("another driving variable", GISSMO.replace("         1                 1",
-                                                    "         1                11"), "DTYP 11")):
+                                                    "         1                11"), "DTYP 11"),
+        ("DCRIT 1", GISSMO.replace("       2.0       0.0       1.0", "       2.0       1.0       1.0"),
+         "DCRIT must be in [0, 1)")):
     folder = write_case("gissmo_bad", strip_deck.replace("*END\n", gissmo + "*END\n"),
                         os.path.join(STRIP, "strip_pull_mesh.k"))
     r = subprocess.run([FPM, "check", os.path.join(folder, "model.k")], capture_output=True,

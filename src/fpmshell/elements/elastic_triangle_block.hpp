@@ -87,6 +87,17 @@ struct SmoothedMembrane {
     Real own_share = 1;
 };
 
+/// The fading of the points' stress by their damage (theory.md eq. 7.6-6; GISSMO's FADEXP), one
+/// number per point: the nominal stress (1 - w) sigma is what the element integrates, sigma the
+/// stress of the law. next[p]: w for the new stress; applied[p]: the w the old stress was
+/// integrated with, set to next[p] on the valid lanes (the work over the step is the trapezoid
+/// of the stresses the particles took).
+template <class T>
+struct StressFading {
+    const T* next = nullptr;
+    T* applied = nullptr;
+};
+
 /// What one lane returns (the quantities of ShellTriangleLoads an elastic element has).
 template <class T>
 struct ElasticTriangleLoads {
@@ -114,13 +125,14 @@ template <class T>
 /// arguments as elastic_triangle_loads. update: ElasticPoints, or the general point update
 /// update(point, d_eps, sigma) -> plastic work per unit volume, which turns the stress sigma
 /// (3 components, old in, new out) by the strain increment d_eps. smoothed: the smoothed
-/// membrane (nullptr: the CST).
-template <class T, class ReturnMapping = NoReturnMapping, class PointUpdate = ElasticPoints>
+/// membrane (nullptr: the CST). With Fades, fading (not null) fades the points' stress.
+template <class T, class ReturnMapping = NoReturnMapping, class PointUpdate = ElasticPoints,
+          bool Fades = false>
 [[nodiscard]] FPMSHELL_INLINE ElasticTriangleLoads<T> local_triangle_loads(
     const LocalTriangle<T>& e, MaskOf<T> valid, const ElasticSectionConstants& sec,
     const T& thickness, T* stress, Real viscous_rate, const YieldSurfaces<T>* yield = nullptr,
     const ReturnMapping& return_mapping = {}, const PointUpdate& update = {},
-    const SmoothedMembrane<T>* smoothed = nullptr) {
+    const SmoothedMembrane<T>* smoothed = nullptr, const StressFading<T>* fading = nullptr) {
     constexpr bool elastic_points = std::is_same_v<PointUpdate, ElasticPoints>;
     ElasticTriangleLoads<T> out;
     const T &x2 = e.x2, &x3 = e.x3, &y3 = e.y3, &inv_x2 = e.inv_x2, &area = e.area;
@@ -242,6 +254,23 @@ template <class T, class ReturnMapping = NoReturnMapping, class PointUpdate = El
         return_mapping(n_points, yielding.data(), d_eps.data(), rate_factor.data(), stress,
                        d_plastic_work.data());
     }
+    // eq. 7.6-6: the nominal stresses the particles take, where the points fade (a variant of
+    // its own: the kernel without fading keeps its code, and its results their bits)
+    [[maybe_unused]] std::array<T, 3 * k_max_block_points> faded;
+    [[maybe_unused]] std::array<std::array<T, 3>, k_max_block_points> old_faded;
+    if constexpr (Fades) {
+        for (std::size_t p = 0; p < n_points; ++p) {
+            const T kept = 1.0 - fading->next[p], kept_old = 1.0 - fading->applied[p];
+            for (std::size_t r = 0; r < 3; ++r) {
+                faded[3 * p + r] = kept * stress[3 * p + r];
+                old_faded[p][r] = kept_old * old[p][r];
+            }
+            if constexpr (std::is_same_v<T, Real>)
+                fading->applied[p] = valid ? fading->next[p] : fading->applied[p];
+            else
+                stdx::where(valid, fading->applied[p]) = fading->next[p];
+        }
+    }
     // pass 3: through-thickness integration
     std::array<T, 3> n_weighted{T(0.0), T(0.0), T(0.0)};
     if (smoothed) out.membrane_resultant = {T(0.0), T(0.0), T(0.0)};
@@ -263,14 +292,16 @@ template <class T, class ReturnMapping = NoReturnMapping, class PointUpdate = El
             out.thickness_strain +=
                 (0.5 * ip.weight * tp.weight) *
                 (sec.thickness_factor * ((sigma[0] - o[0]) + (sigma[1] - o[1])) - de[0] - de[1]);
+            if constexpr (Fades) sigma = faded.data() + 3 * point;  // what the particles take
+            const std::array<T, 3>& o_taken = Fades ? old_faded[point] : o;
             const T wzz = wz * z;
             for (std::size_t r = 0; r < 3; ++r) {
                 n_g[r] += wz * sigma[r];
                 m_g[r] += wzz * sigma[r];
             }
-            work_g +=
-                wz * 0.5 *
-                ((o[0] + sigma[0]) * de[0] + (o[1] + sigma[1]) * de[1] + (o[2] + sigma[2]) * de[2]);
+            work_g += wz * 0.5 *
+                      ((o_taken[0] + sigma[0]) * de[0] + (o_taken[1] + sigma[1]) * de[1] +
+                       (o_taken[2] + sigma[2]) * de[2]);
         }
         for (std::size_t r = 0; r < 3; ++r) {
             out.membrane_force[r] += ip.weight * n_g[r];
@@ -351,16 +382,18 @@ template <class T, class ReturnMapping = NoReturnMapping, class PointUpdate = El
 /// (point, lane) pairs (materials/j2/j2_return_mapping.hpp), keeps their history, and writes
 /// their new stress into `stress` and their plastic work per unit volume into d_plastic_work.
 /// Without one (NoReturnMapping) such a lane is reported invalid instead.
-template <class T, class ReturnMapping = NoReturnMapping>
+/// With Fades, fading (not null): the fading of the points' stress by their damage (eq. 7.6-6).
+template <class T, class ReturnMapping = NoReturnMapping, bool Fades = false>
 [[nodiscard]] ElasticTriangleLoads<T> elastic_triangle_loads(
     const TriangleMotion<T>& m, const ElasticSectionConstants& sec, const T& thickness, T* stress,
     Real viscous_rate, const YieldSurfaces<T>* yield = nullptr,
-    const ReturnMapping& return_mapping = {}) {
+    const ReturnMapping& return_mapping = {}, const StressFading<T>* fading = nullptr) {
     LocalTriangle<T> local;  // filled in place: a copy of its packs costs the kernel a few per cent
     PathElementChecks<T> checks;
     const MaskOf<T> valid = path_element<SeriesRotations>(m, local, checks);  // §2
-    ElasticTriangleLoads<T> out = local_triangle_loads(local, valid, sec, thickness, stress,
-                                                       viscous_rate, yield, return_mapping);
+    ElasticTriangleLoads<T> out = local_triangle_loads<T, ReturnMapping, ElasticPoints, Fades>(
+        local, valid, sec, thickness, stress, viscous_rate, yield, return_mapping, ElasticPoints{},
+        nullptr, fading);
     out.characteristic_length = checks.characteristic_length;
     out.current_area = checks.area_ratio * local.area;
     return out;

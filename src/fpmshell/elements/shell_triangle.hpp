@@ -59,6 +59,7 @@ struct ShellTriangleLoads {
 /// smoothed_membrane: when given, the membrane strain increment to use instead of the CST
 /// one (smoothed over the element's neighbours); the element's own membrane nodal forces are
 /// then own_share times A B_m^T N, the rest goes to the neighbours (shell_elements.cpp).
+/// fading: the fading of the points' stress by their damage (eq. 7.6-6), nullptr: none.
 /// The viscous resultants use the isotropic C of the material (c11, c12, c33).
 template <class Material, class Point = MaterialPoint>
 ShellTriangleLoads shell_triangle_loads(const ReversedTriangle& rt, const ShellRule& rule,
@@ -66,7 +67,8 @@ ShellTriangleLoads shell_triangle_loads(const ReversedTriangle& rt, const ShellR
                                         std::span<std::type_identity_t<Point>> points,
                                         Real viscous_rate, Real dt = 0, Real thickness = 0,
                                         const Voigt3* smoothed_membrane = nullptr,
-                                        Real own_share = 1) {
+                                        Real own_share = 1,
+                                        const StressFading<Real>* fading = nullptr) {
     // The element of elastic_triangle_block.hpp on one path element (T = Real), its points
     // turned by the material's own update.
     const Mat3& c = material.stiffness();
@@ -98,9 +100,15 @@ ShellTriangleLoads shell_triangle_loads(const ReversedTriangle& rt, const ShellR
                            (*smoothed_membrane)(2)};
         smoothed.own_share = own_share;
     }
-    const ElasticTriangleLoads<Real> loads = local_triangle_loads<Real>(
-        rt.local, true, sec, thickness > 0 ? thickness : rule.thickness, stress.data(),
-        viscous_rate, nullptr, NoReturnMapping{}, update, smoothed_membrane ? &smoothed : nullptr);
+    const ElasticTriangleLoads<Real> loads =  // eq. 7.6-6: fading, a variant of its own
+        fading ? local_triangle_loads<Real, NoReturnMapping, decltype(update), true>(
+                     rt.local, true, sec, thickness > 0 ? thickness : rule.thickness, stress.data(),
+                     viscous_rate, nullptr, NoReturnMapping{}, update,
+                     smoothed_membrane ? &smoothed : nullptr, fading)
+               : local_triangle_loads<Real>(rt.local, true, sec,
+                                            thickness > 0 ? thickness : rule.thickness,
+                                            stress.data(), viscous_rate, nullptr, NoReturnMapping{},
+                                            update, smoothed_membrane ? &smoothed : nullptr);
     ShellTriangleLoads out;
     for (std::size_t i = 0; i < 3; ++i) {
         out.force[i] = Vec3(loads.force[i].x, loads.force[i].y, loads.force[i].z);

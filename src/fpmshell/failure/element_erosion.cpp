@@ -11,6 +11,9 @@ ElementErosion::ElementErosion(const Material& material, int n_inplane, int n_th
         if (!c) throw std::logic_error("failure criterion '" + spec.name + "' of no kind");
         std::shared_ptr<const PointFailure> f = c->make(spec.parameters, material);
         offsets_.push_back(fields_);
+        if (fading_field_ == PointFailure::k_no_field &&
+            f->fading_field() != PointFailure::k_no_field)
+            fading_field_ = fields_ + f->fading_field();
         fields_ += f->state_fields();
         reads_point_ = reads_point_ || f->reads_point();
         criteria_.push_back(std::move(f));

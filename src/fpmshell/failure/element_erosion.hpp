@@ -41,6 +41,9 @@ public:
     [[nodiscard]] bool reads_point() const { return reads_point_; }
     /// State numbers per point, all criteria's.
     [[nodiscard]] std::size_t fields() const { return fields_; }
+    /// The state number of the first criterion's fading (PointFailure::fading_field) among a
+    /// point's fields(), the next number its applied fading; PointFailure::k_no_field: none.
+    [[nodiscard]] std::size_t fading_field() const { return fading_field_; }
     [[nodiscard]] std::size_t n_points() const {
         return static_cast<std::size_t>(n_inplane_ * n_through_);
     }
@@ -111,6 +114,7 @@ private:
     std::vector<std::shared_ptr<const PointFailure>> criteria_;
     std::vector<std::size_t> offsets_;  ///< of each criterion's first number within a point's
     std::size_t fields_ = 0;            ///< state numbers per point
+    std::size_t fading_field_ = PointFailure::k_no_field;
     bool reads_point_ = false;
     int points_ = 0;  ///< failed points that erode it; 0: one in-plane point's every point
     int n_inplane_ = 0, n_through_ = 0;

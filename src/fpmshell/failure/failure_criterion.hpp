@@ -54,6 +54,11 @@ public:
     [[nodiscard]] virtual std::size_t state_fields() const { return 0; }
     /// Whether it reads more of a point than its plastic strain.
     [[nodiscard]] virtual bool reads_point() const { return false; }
+    static constexpr std::size_t k_no_field = static_cast<std::size_t>(-1);
+    /// Where its damage fades the stress a point carries (eq. 7.6-6): the state number of the
+    /// fading w the next step integrates (1 - w) sigma with, then the number of the w the last
+    /// step did (written by the element); k_no_field: it does not fade.
+    [[nodiscard]] virtual std::size_t fading_field() const { return k_no_field; }
     /// Brings its state of the points (state_fields() x in.m packs, [number][pack]) up to the
     /// step of duration dt, and adds to failed[j] the lanes of pack j that have failed; whether
     /// some lane has. A lane's result does not depend on the others', and judging a point

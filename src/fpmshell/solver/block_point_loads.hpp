@@ -31,6 +31,9 @@ struct BlockStep {
     const RealPack* next_state = nullptr;
     Real viscous_rate = 0;  ///< a_s / dt_{n-1/2} (§6.5)
     Real dt = 0;            ///< dt_{n-1/2} for rate-dependent materials
+    /// the fading of the points' stress by their damage (a plastic law's points; eq. 7.6-6),
+    /// nullptr where none fades
+    const StressFading<RealPack>* fading = nullptr;
 };
 
 namespace block_points_detail {

@@ -72,15 +72,16 @@ public:
     void allocate(std::size_t n_blocks, std::size_t n_alone);
 
     /// The loads of the k_lanes elements of the group's block b (lanes outside the block
-    /// kernel's bounds are reported in `valid`, their state left as it was).
+    /// kernel's bounds are reported in `valid`, their state left as it was); fading: of the
+    /// points' stress by their damage (eq. 7.6-6), nullptr where none fades.
     [[nodiscard]] virtual ElasticTriangleLoads<RealPack> block_loads(
         std::size_t b, const TriangleMotion<RealPack>& motion, const RealPack& thickness,
-        Real viscous_rate, Real dt) = 0;
+        Real viscous_rate, Real dt, const StressFading<RealPack>* fading) = 0;
     /// The loads of one element by the general element (shell_triangle.hpp; arguments as
     /// there), its points read from and written back to `place`.
     [[nodiscard]] virtual ShellTriangleLoads element_loads(
         GroupPlace place, const ReversedTriangle& rt, Real viscous_rate, Real dt, Real thickness,
-        const Voigt3* smoothed_membrane, Real own_share) = 0;
+        const Voigt3* smoothed_membrane, Real own_share, const StressFading<Real>* fading) = 0;
     /// The state of point p of the element at `place` as the output reads it (its stress, its
     /// plastic strain and work where the law has them).
     [[nodiscard]] virtual MaterialPoint point_state(GroupPlace place, std::size_t p) const = 0;
@@ -187,10 +188,10 @@ public:
     [[nodiscard]] bool has_block_path() const override { return BlockMaterial<Material>; }
     [[nodiscard]] bool stress_only() const override { return Material::k_stress_only; }
 
-    [[nodiscard]] ElasticTriangleLoads<RealPack> block_loads(std::size_t b,
-                                                             const TriangleMotion<RealPack>& motion,
-                                                             const RealPack& thickness,
-                                                             Real viscous_rate, Real dt) override {
+    [[nodiscard]] ElasticTriangleLoads<RealPack> block_loads(
+        std::size_t b, const TriangleMotion<RealPack>& motion, const RealPack& thickness,
+        Real viscous_rate, Real dt,
+        [[maybe_unused]] const StressFading<RealPack>* fading) override {
         if constexpr (BlockMaterial<Material>) {
             BlockStep step;
             step.motion = &motion;
@@ -201,6 +202,7 @@ public:
             step.next_state = next_block_state(b);
             step.viscous_rate = viscous_rate;
             step.dt = dt;
+            step.fading = fading;
             return block_point_loads(material_, step);
         } else {
             throw std::logic_error("block step of a material without a block path");
@@ -209,13 +211,14 @@ public:
 
     [[nodiscard]] ShellTriangleLoads element_loads(GroupPlace place, const ReversedTriangle& rt,
                                                    Real viscous_rate, Real dt, Real thickness,
-                                                   const Voigt3* smoothed_membrane,
-                                                   Real own_share) override {
+                                                   const Voigt3* smoothed_membrane, Real own_share,
+                                                   const StressFading<Real>* fading) override {
         std::array<Point, k_max_block_points> points;  // the largest rule of quadrature.hpp
         const std::span<Point> pts(points.data(), n_points());
         for (std::size_t p = 0; p < pts.size(); ++p) pts[p] = own_point(place, p);
-        const ShellTriangleLoads loads = shell_triangle_loads<Material, Point>(
-            rt, rule_, material_, pts, viscous_rate, dt, thickness, smoothed_membrane, own_share);
+        const ShellTriangleLoads loads =
+            shell_triangle_loads<Material, Point>(rt, rule_, material_, pts, viscous_rate, dt,
+                                                  thickness, smoothed_membrane, own_share, fading);
         for (std::size_t p = 0; p < pts.size(); ++p)
             material_.write_point(pts[p],
                                   [&](std::size_t k, Real v) { set_field(place, p, k, v); });

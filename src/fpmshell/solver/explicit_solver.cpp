@@ -227,14 +227,15 @@ ShellElements::StepTotals ExplicitSolver::compute_internal_loads(const CyclePoli
     if (tot.eroded_elements > 0) {
         if (eroded_elements_ == 0) first_erosion_time_ = time_;
         eroded_elements_ += tot.eroded_elements;
-        if (contact_) drop_eroded_faces();
+        if (contact_ || tied_) drop_eroded_faces();
     }
     energy_.damping += tot.damping_work;
     return tot;
 }
 
 // §7.6: the faces of the elements eroded this step leave the self-contacts before this step's
-// contact; a distributed run's contact is whole on every rank, so the ranks' lists are joined.
+// contact, and the ties to them let go (ties run on one rank only); a distributed run's contact
+// is whole on every rank, so the ranks' lists are joined.
 void ExplicitSolver::drop_eroded_faces() {
     std::vector<Index> eroded = elements_.eroded_in_last_step();
     if (decomposition_.distributed()) {
@@ -245,7 +246,9 @@ void ExplicitSolver::drop_eroded_faces() {
         comm.allgather(mine, counts, all);
         eroded.assign(all.begin(), all.end());
     }
-    contact_->drop_faces(eroded, true);
+    std::sort(eroded.begin(), eroded.end());
+    if (contact_) contact_->drop_faces(eroded, true);
+    if (tied_) tied_->release_eroded(eroded);
 }
 
 // §6.10 during the run: the corners of the elements the loop scaled gain their mass and inertia

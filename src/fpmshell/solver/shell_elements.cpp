@@ -305,9 +305,11 @@ ShellElements::ElementTotals ShellElements::compute_element(Index e, ParticleSta
         return totals;
     }
     const SmoothedStrain sm = smoothed_membrane_ ? smoothed_strain(ue, rt.local) : SmoothedStrain{};
+    ElementFading fading;  // eq. 7.6-6
     const ShellTriangleLoads loads = groups_[static_cast<std::size_t>(section_[ue])]->element_loads(
         place_of(ue), rt, viscous_rate, dt, thickness_[ue],
-        smoothed_membrane_ ? &sm.strain : nullptr, sm.own_share);
+        smoothed_membrane_ ? &sm.strain : nullptr, sm.own_share, element_fading(ue, fading));
+    keep_element_fading(ue, fading);
     if (thickness_update_) thickness_[ue] *= 1.0 + loads.thickness_strain;  // §3.4
     for (std::size_t i = 0; i < 3; ++i) {
         const std::size_t at = assembly_.slot_offset(ue, i);
@@ -409,9 +411,10 @@ void ShellElements::compute_block(Index b, ParticleState& s, Real viscous_rate, 
     const RealPack thickness = thickness_update_
                                    ? load([&](int l) { return thickness_[element(l)]; })
                                    : RealPack(group.rule().thickness);
+    StressFading<RealPack> fading;  // eq. 7.6-6
     const ElasticTriangleLoads<RealPack> loads =
         group.block_loads(static_cast<std::size_t>(b - blocks.group_first_block[g]), motion,
-                          thickness, viscous_rate, dt);
+                          thickness, viscous_rate, dt, block_fading(b, fading));
     // the corner loads, 6 whole packs per corner, into the ring and (kept or without a ring)
     // into the full slot array; an invalid lane's are rewritten below by the general code
     constexpr auto w = static_cast<std::size_t>(k_lanes);

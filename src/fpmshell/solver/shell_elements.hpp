@@ -175,6 +175,17 @@ private:
     /// (false where their section cannot fail). Returns false where the section's law has them
     /// judged element by element.
     bool judge_block(Index b, Real dt, std::array<bool, k_lanes>& erodes);
+    /// eq. 7.6-6 the fading of block b's points (into `out`; nullptr where its section does
+    /// not fade), read and written in place.
+    [[nodiscard]] const StressFading<RealPack>* block_fading(Index b, StressFading<RealPack>& out);
+    /// The same of element e computed alone: its points' numbers copied into `f`, which
+    /// keep_element_fading writes back after the element's step.
+    struct ElementFading {
+        std::array<Real, k_max_block_points> next{}, applied{};
+        StressFading<Real> view{};
+    };
+    [[nodiscard]] const StressFading<Real>* element_fading(std::size_t e, ElementFading& f);
+    void keep_element_fading(std::size_t e, const ElementFading& f);
     /// §7.6 whether element e erodes, its criteria judged on its own points.
     bool erodes_alone(std::size_t e, Real dt);
     /// §7.6 the criteria's state number i (of failure_numbers(e), [number][point]) of element

@@ -97,6 +97,43 @@ bool ShellElements::judge_block(Index b, Real dt, std::array<bool, k_lanes>& ero
     return true;
 }
 
+const StressFading<RealPack>* ShellElements::block_fading(Index b, StressFading<RealPack>& out) {
+    if (failure_state_.empty()) return nullptr;
+    const ElementBlocks& blocks = assembly_.blocks();
+    const ElementErosion& rule =
+        erosion_[static_cast<std::size_t>(blocks.block_group[static_cast<std::size_t>(b)])];
+    const std::size_t f = rule.fading_field(), n = rule.n_points();
+    if (f == PointFailure::k_no_field) return nullptr;
+    RealPack* state =
+        failure_state_.data() +
+        failure_state_at_[static_cast<std::size_t>(
+            blocks
+                .block_elements[static_cast<std::size_t>(b) * static_cast<std::size_t>(k_lanes)])];
+    out = {state + f * n, state + (f + 1) * n};  // [number][point], a lane per element
+    return &out;
+}
+
+const StressFading<Real>* ShellElements::element_fading(std::size_t e, ElementFading& f) {
+    if (failure_state_.empty()) return nullptr;
+    const ElementErosion& rule = erosion_[static_cast<std::size_t>(section_[e])];
+    const std::size_t field = rule.fading_field(), n = rule.n_points();
+    if (field == PointFailure::k_no_field) return nullptr;
+    for (std::size_t p = 0; p < n; ++p) {
+        f.next[p] = failure_number(e, field * n + p);
+        f.applied[p] = failure_number(e, (field + 1) * n + p);
+    }
+    f.view = {f.next.data(), f.applied.data()};
+    return &f.view;
+}
+
+void ShellElements::keep_element_fading(std::size_t e, const ElementFading& f) {
+    if (!f.view.applied) return;
+    const ElementErosion& rule = erosion_[static_cast<std::size_t>(section_[e])];
+    const std::size_t n = rule.n_points();
+    for (std::size_t p = 0; p < n; ++p)
+        failure_number(e, (rule.fading_field() + 1) * n + p) = f.applied[p];
+}
+
 std::vector<Index> ShellElements::eroded_in_last_step() const {
     std::vector<Index> out;
     for (std::size_t e = 0; e < eroded_.size(); ++e)

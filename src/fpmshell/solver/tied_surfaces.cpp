@@ -74,6 +74,7 @@ TiedSurfaces::TiedSurfaces(const Model& model, const std::vector<Real>& element_
                 const Real off = n.dot(x - cp.point);
                 const int side = std::abs(off) > 1e-9 * (1 + x.norm()) ? (off > 0 ? 1 : -1) : 0;
                 best = {s, t, cp.xi, static_cast<Index>(entry), side};
+                best.face = e;
                 best_distance = distance;
             });
             if (best.slave >= 0)
@@ -101,6 +102,14 @@ TiedSurfaces::TiedSurfaces(const Model& model, const std::vector<Real>& element_
 
 std::size_t TiedSurfaces::broken() const {
     return static_cast<std::size_t>(std::count(broken_.begin(), broken_.end(), 1));
+}
+
+void TiedSurfaces::release_eroded(const std::vector<Index>& eroded) {
+    for (std::size_t i = 0; i < ties_.size(); ++i)
+        if (std::binary_search(eroded.begin(), eroded.end(), ties_[i].face)) {
+            broken_[i] = 1;
+            tension_[i] = shear_[i] = 0;
+        }
 }
 
 std::vector<Index> TiedSurfaces::slaves() const {

@@ -39,8 +39,11 @@ public:
     /// tiebreak whose force reaches its criterion (eq. 6.12-2) lets go, after this call, for good.
     void impose(ParticleState& s, const BoundaryConditions& bc, Real impulse_time, bool new_step);
 
-    /// Ties that have let go (tiebreaks).
+    /// Ties that have let go (tiebreaks, or their faces eroded).
     [[nodiscard]] std::size_t broken() const;
+    /// §7.6: the ties to the faces of the elements `eroded` (sorted) let go for good, as
+    /// LS-DYNA releases a tied node whose master segment is deleted.
+    void release_eroded(const std::vector<Index>& eroded);
     /// Per tie, in tie order: its slave, and the force in tension and in shear at the last
     /// impose (0 for a broken tie).
     [[nodiscard]] std::vector<Index> slaves() const;
@@ -65,7 +68,8 @@ private:
         Index surface = -1;  ///< its entry of Model::tied_surfaces
         /// +1 / -1: the slave starts on the side of the face normal / against it; 0 on the face
         int side = 0;
-        Real area = 0;  ///< the slave's area: a third of its triangles' at t = 0 (eq. 6.12-3)
+        Real area = 0;    ///< the slave's area: a third of its triangles' at t = 0 (eq. 6.12-3)
+        Index face = -1;  ///< the element whose face it is tied to
     };
     const Model* model_ = nullptr;
     std::vector<Tie> ties_;

@@ -23,6 +23,7 @@
 #include "../lap_joint.hpp"
 #include "fpmshell/core/errors.hpp"
 #include "fpmshell/driver/run_driver.hpp"
+#include "fpmshell/failure/tabulated/tabulated_failure.hpp"
 #include "fpmshell/io/model_reader.hpp"
 #include "fpmshell/io/restart_archive.hpp"
 #include "fpmshell/materials/material_point.hpp"
@@ -412,6 +413,28 @@ TEST(Restart, DamageResumesBitForBit) {
         ASSERT_LT(probe.eroded_elements(), 64) << "the band must still be eroding at the stop";
     }
     expect_resume_bit_for_bit(model, "damage", stop);
+}
+
+TEST(Restart, FadingResumesBitForBit) {
+    // the band failing by GISSMO's damage, its stress fading from the start (DCRIT 0), stopped
+    // while its points fade, before the first erosion: every point's fading, next and applied,
+    // carries over
+    Model model = test::eroding_band_plate(16);
+    TabulatedFailureParameters gissmo;
+    gissmo.failure_strain = {{-1.0, 0.06}, {1.0, 0.04}};
+    gissmo.exponent = 2;
+    gissmo.fading = TabulatedFailureParameters::Fading{};
+    model.materials[1].failure.criteria = {{"tabulated", gissmo}};
+    model.title = "fading band";
+    model.source_file = (fs::temp_directory_path() / "fading_band.yaml").string();  // its name
+    long stop = 0;
+    {
+        ExplicitSolver probe(model);
+        while (probe.eroded_elements() == 0) probe.step(1e30);
+        stop = probe.steps() - 4;
+        ASSERT_GT(stop, 20);
+    }
+    expect_resume_bit_for_bit(model, "fading", stop);
 }
 
 TEST(Restart, WeldsFailingResumeBitForBit) {

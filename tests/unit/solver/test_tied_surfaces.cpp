@@ -5,12 +5,15 @@
 // - free, the web thrown sideways: the momentum of the whole is conserved and the flange is
 //   dragged along;
 // - a particle with no face within the tolerance stays free (counted);
-// - a tiebreak lets go at its force, or at its stress times the slave's area.
+// - a tiebreak lets go at its force, or at its stress times the slave's area;
+// - a tie whose face erodes lets go.
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 #include "fpmshell/contact/closest_point.hpp"
+#include "fpmshell/failure/thresholds/thresholds_failure.hpp"
+#include "fpmshell/materials/bilinear/bilinear_law.hpp"
 #include "fpmshell/solver/explicit_solver.hpp"
 #include "fpmshell/solver/tied_surfaces.hpp"
 #include "one_section_model.hpp"
@@ -244,4 +247,43 @@ TEST(TiedSurfaces, ATiebreakByStressLetsGoAtItsStressTimesTheArea) {
         EXPECT_EQ(ties.broken(), count) << "t " << s.time();
     }
     EXPECT_EQ(ties.broken(), ties.tied());
+}
+
+// §7.6: a tie whose face erodes lets go for good (LS-DYNA releases a tied node whose master
+// segment is deleted). The flange, of a plastic steel that fails at 0.5 ms (a failure time,
+// *MAT_ADD_EROSION's FAILTM), erodes whole in one step: until then every tie holds, from then
+// on every one has let go and carries nothing, and the pulled web leaves the flange.
+TEST(TiedSurfaces, TiesToErodedFacesLetGo) {
+    TJoint t = t_joint(true);
+    Model& m = t.model;
+    Material flange = m.materials[0];
+    make_bilinear(flange, 2.5e8, 1.0e9);
+    ThresholdsFailureParameters at_a_time;
+    at_a_time.time = 5e-4;
+    flange.failure.criteria.push_back({"thresholds", at_a_time});
+    m.materials.push_back(flange);
+    m.sections.push_back(m.sections[0]);
+    m.sections[1].material = 1;
+    const Index e_flange = 64;  // the flange's 8 x 4 squares
+    for (Index e = 0; e < e_flange; ++e) m.element_section[static_cast<std::size_t>(e)] = 1;
+    m.curves.push_back({"ramp", {{0, 0}, {1e-3, 1}}});
+    for (const Index p : t.top)
+        m.loads.push_back({LoadType::Force, {p}, {}, 0, Vec3(0, 0, 200), 0});
+    ExplicitSolver s(m);
+    const TiedSurfaces& ties = *s.tied_surfaces();
+    ASSERT_EQ(ties.tied(), t.edge.size());
+    while (s.time() < 1.5e-3 && s.steps() < 100000) {
+        s.step(1e30);
+        if (s.eroded_elements() == 0) {
+            EXPECT_EQ(ties.broken(), 0u) << "t " << s.time();
+            continue;
+        }
+        EXPECT_EQ(s.eroded_elements(), static_cast<std::size_t>(e_flange));
+        EXPECT_EQ(ties.broken(), ties.tied()) << "t " << s.time();
+        for (std::size_t i = 0; i < ties.tied(); ++i) EXPECT_EQ(ties.tension()[i], 0.0);
+    }
+    EXPECT_GT(s.eroded_elements(), 0u);
+    // the web's edge, tied at z = 0, has left the flange's plane: pulled at ~100 m/s^2 for
+    // about a millisecond
+    EXPECT_GT(s.state().x[static_cast<std::size_t>(t.edge[2])].z(), 1e-5);
 }

@@ -34,9 +34,16 @@ Real TabulatedFailure::failure_strain(Real eta, Real element_size) const {
 
 Real TabulatedFailure::damage(Real indicator) const { return std::pow(indicator, p_.exponent); }
 
-// eq. 7.6-3 at the state after the step, lane by lane for the tables.
+Real TabulatedFailure::fading(Real damage, Real critical_damage, Real element_size) const {
+    if (!(damage > critical_damage)) return 0.0;
+    const Real m = interpolate(p_.fading->exponent, element_size);
+    return std::min(std::pow((damage - critical_damage) / (1.0 - critical_damage), m), 1.0);
+}
+
+// eq. 7.6-3 at the state after the step, lane by lane for the tables; with fading, eq. 7.6-6.
 bool TabulatedFailure::judge(const FailurePacks& in, Real /*dt*/, RealPack* state,
                              MaskOf<RealPack>* failed) const {
+    if (p_.fading) return judge_fading(in, state, failed);
     return accumulate_damage(
         in, state, failed,
         [&](std::size_t j, const RealPack& /*d_alpha*/, const MaskOf<RealPack>& flowing) {
@@ -48,6 +55,53 @@ bool TabulatedFailure::judge(const FailurePacks& in, Real /*dt*/, RealPack* stat
                     set_lane(eps, l, failure_strain(lane(eta, l), lane(in.element_size, l)));
             return eps;
         });
+}
+
+// The state: F, the plastic strain at the last step, the instability measure (1 once
+// unstable), D_c, then the fading w of the next step (and the element's w of the last one).
+// A point's numbers change only in a step it flows in: judging twice changes nothing.
+bool TabulatedFailure::judge_fading(const FailurePacks& in, RealPack* state,
+                                    MaskOf<RealPack>* failed) const {
+    const Fading& f = *p_.fading;
+    const std::size_t m = in.m;
+    RealPack *indicator = state, *last_strain = state + m, *instability = state + 2 * m,
+             *critical = state + 3 * m, *next = state + 4 * m;
+    bool any = false;
+    for (std::size_t j = 0; j < m; ++j) {
+        const RealPack alpha = in.plastic_strain[j];
+        const RealPack d_alpha = alpha - last_strain[j];
+        const MaskOf<RealPack> flowing = d_alpha > 0.0;
+        if (any_lane(flowing)) {
+            const RealPack eta =
+                stress_triaxiality(in.stress[0][j], in.stress[1][j], in.stress[2][j]);
+            for (int l = 0; l < k_lanes; ++l) {
+                if (!lane(flowing, l)) continue;
+                const Real e = lane(eta, l), size = lane(in.element_size, l), da = lane(d_alpha, l);
+                const Real F = lane(indicator[j], l) + da / failure_strain(e, size);
+                set_lane(indicator[j], l, F);
+                const Real D = damage(std::min(F, 1.0));
+                Real measure = lane(instability[j], l);
+                if (measure < 1.0) {  // not yet unstable
+                    Real d_c = D;
+                    if (f.critical_strain.empty()) {
+                        measure = D >= f.critical_damage ? 1.0 : 0.0;
+                        d_c = f.critical_damage;
+                    } else {
+                        measure += da / interpolate(f.critical_strain, e);
+                    }
+                    set_lane(instability[j], l, std::min(measure, 1.0));
+                    if (measure >= 1.0) set_lane(critical[j], l, d_c);
+                }
+                if (measure >= 1.0) set_lane(next[j], l, fading(D, lane(critical[j], l), size));
+            }
+            last_strain[j] = select(flowing, alpha, last_strain[j]);
+        }
+        const MaskOf<RealPack> fl = indicator[j] >= 1.0;
+        if (!any_lane(fl)) continue;
+        failed[j] = failed[j] || fl;
+        any = true;
+    }
+    return any;
 }
 
 namespace {
@@ -67,10 +121,34 @@ std::vector<std::pair<Real, Real>> read_points(const YamlValue& v, const char* w
     return points;
 }
 
+/// A number > 0 as the one point {0, y}, or `[[x, y], ...]`.
+std::vector<std::pair<Real, Real>> read_points_or_constant(const YamlValue& v, const char* what) {
+    if (v.is_scalar()) return {{0.0, v.positive()}};
+    return read_points(v, what);
+}
+
+/// `fading: {critical_strain | critical_damage, exponent}`.
+TabulatedFailureParameters::Fading read_fading(const YamlValue& v) {
+    const YamlMap m = v.map({"critical_strain", "critical_damage", "exponent"});
+    TabulatedFailureParameters::Fading f;
+    if (m.count({"critical_strain", "critical_damage"}) > 1)
+        v.fail("takes critical_strain or critical_damage, not both");
+    if (const auto c = m.find("critical_strain"))
+        f.critical_strain =
+            read_points_or_constant(*c, "[triaxiality, critical plastic strain] points");
+    if (const auto d = m.find("critical_damage")) {
+        f.critical_damage = d->non_negative();
+        if (!(f.critical_damage < 1)) d->fail("must be below 1, got " + d->describe());
+    }
+    if (const auto e = m.find("exponent"))
+        f.exponent = read_points_or_constant(*e, "[element size, fading exponent] points");
+    return f;
+}
+
 /// `tabulated: {failure_strain: [[eta, eps_f], ...], regularization: [[size, factor], ...],
-/// exponent}`.
+/// exponent, fading: {...}}`.
 std::any read_tabulated(const YamlValue& v, const Material& /*material*/) {
-    const YamlMap m = v.map({"failure_strain", "regularization", "exponent"});
+    const YamlMap m = v.map({"failure_strain", "regularization", "exponent", "fading"});
     TabulatedFailureParameters p;
     p.failure_strain = read_points(m.at("failure_strain", "[[triaxiality, failure strain], ...]"),
                                    "[triaxiality, failure strain] points");
@@ -80,6 +158,7 @@ std::any read_tabulated(const YamlValue& v, const Material& /*material*/) {
         p.exponent = n->positive();
         if (p.exponent < 1) n->fail("must be >= 1 (GISSMO's DMGEXP), got " + n->describe());
     }
+    if (const auto f = m.find("fading")) p.fading = read_fading(*f);
     return p;
 }
 
@@ -109,11 +188,8 @@ void mat_add_damage_gissmo(deck::FailureCard& card) {
     }
     const Real numfip = f.real(4, "NUMFIP", 1.0);
     if (numfip < 0) f.fail("NUMFIP < 0 (a percentage of layers) is not supported");
-    card.failure(tabulated_deck_failure(card, g, 0, 2, 5));
+    card.failure(tabulated_deck_failure(card, g, 0));
     if (numfip > 0) card.failure_points(static_cast<long long>(std::llround(numfip)));
-    card.note(g,
-              "ECRIT, DCRIT, FADEXP: the damage is not coupled to the stress (no fading): a point "
-              "carries its stress until its element erodes at D = 1");
     for (std::size_t k = 0; k < 8; ++k)
         if (h.real(k, "LCSRS, SHRF, BIAXF, LCDLIM, MIDFAIL, HISVN, SOFT, LP2BI") != 0) {
             card.note(h,
@@ -125,9 +201,12 @@ void mat_add_damage_gissmo(deck::FailureCard& card) {
 
 }  // namespace
 
+// LS-DYNA couples the damage to the stress in every GISSMO: ECRIT 0 takes the instability at
+// D = DCRIT (blank: 0, coupled from the start), FADEXP blank is 1.
 std::string tabulated_deck_failure(deck::FailureCard& card, const deck::Card& c,
-                                   std::size_t lcsdg_at, std::size_t dmgexp_at,
-                                   std::size_t lcregd_at) {
+                                   std::size_t lcsdg_at) {
+    const std::size_t ecrit_at = lcsdg_at + 1, dmgexp_at = lcsdg_at + 2, dcrit_at = lcsdg_at + 3,
+                      fadexp_at = lcsdg_at + 4, lcregd_at = lcsdg_at + 5;
     const long long lcsdg = c.id(lcsdg_at, "LCSDG");
     if (lcsdg <= 0)
         c.fail("LCSDG must be a *DEFINE_CURVE of the failure strain against triaxiality");
@@ -138,7 +217,25 @@ std::string tabulated_deck_failure(deck::FailureCard& card, const deck::Card& c,
         if (lcregd < 0) c.fail("LCREGD < 0 (a table over triaxiality) is not supported");
         t += ", regularization: " + card.curve_points(c, lcregd, "LCREGD");
     }
-    return t + "}";
+    std::string fading = "fading: {";
+    const Real ecrit = c.real(ecrit_at, "ECRIT");
+    if (ecrit < 0) {
+        fading += "critical_strain: " +
+                  card.curve_points(c, static_cast<long long>(std::llround(-ecrit)), "ECRIT");
+    } else if (ecrit > 0) {
+        fading += "critical_strain: " + deck::num(ecrit);
+    } else {
+        const Real dcrit = c.real(dcrit_at, "DCRIT");
+        if (dcrit < 0 || dcrit >= 1) c.fail("DCRIT must be in [0, 1)");
+        fading += "critical_damage: " + deck::num(dcrit);
+    }
+    const Real fadexp = c.real(fadexp_at, "FADEXP", 1.0);
+    if (fadexp < 0)
+        fading += ", exponent: " +
+                  card.curve_points(c, static_cast<long long>(std::llround(-fadexp)), "FADEXP");
+    else
+        fading += ", exponent: " + deck::num(fadexp == 0 ? 1.0 : fadexp);
+    return t + ", " + fading + "}}";
 }
 
 FailureCriterion tabulated_criterion() {

@@ -4,10 +4,15 @@
 // D = F^n (n = DMGEXP: D accumulates as n D^(1 - 1/n) d alpha / eps_f), failure at D = 1, i.e. at
 // F = 1 whatever n. eps_f and the factor r are piecewise linear, flat past their ends; l_e is
 // the element's initial size sqrt(2 A_0). Its state per point: F and the plastic strain at the
-// last step. (GISSMO's coupling of D to the stress past ECRIT, its fading, is not modelled: a
-// point carries its stress until its element erodes.)
+// last step.
+// With `fading` (GISSMO's ECRIT, DCRIT, FADEXP; eq. 7.6-6) the damage fades the stress a point
+// carries once the material is unstable: from the damage D_c where the instability measure
+// sum d alpha / eps_crit(eta) reaches 1 (or where D reaches DCRIT), the point carries
+// (1 - w) sigma, w = ((D - D_c) / (1 - D_c))^m; its state then also keeps that sum, D_c, and
+// the w of the next step and of the last (solver/shell_elements_erosion.cpp).
 #pragma once
 
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -22,13 +27,22 @@ struct TabulatedFailureParameters {
     /// (element size, factor) points, sizes increasing, factors > 0; empty: 1
     std::vector<std::pair<Real, Real>> regularization;
     Real exponent = 1;  ///< n >= 1
+    struct Fading {
+        /// (eta, eps_crit) points; empty: the instability at D = critical_damage
+        std::vector<std::pair<Real, Real>> critical_strain;
+        Real critical_damage = 0;  ///< DCRIT, in [0, 1)
+        /// m against the element size (one point: a constant m > 0)
+        std::vector<std::pair<Real, Real>> exponent{{0.0, 1.0}};
+    };
+    std::optional<Fading> fading;
 };
 
 class TabulatedFailure final : public PointFailure {
 public:
     explicit TabulatedFailure(TabulatedFailureParameters p) : p_(std::move(p)) {}
 
-    [[nodiscard]] std::size_t state_fields() const override { return 2; }
+    [[nodiscard]] std::size_t state_fields() const override { return p_.fading ? 6 : 2; }
+    [[nodiscard]] std::size_t fading_field() const override { return p_.fading ? 4 : k_no_field; }
     [[nodiscard]] bool reads_point() const override { return true; }
     bool judge(const FailurePacks& in, Real dt, RealPack* state,
                MaskOf<RealPack>* failed) const override;
@@ -37,8 +51,13 @@ public:
     [[nodiscard]] Real failure_strain(Real eta, Real element_size) const;
     /// The damage D = F^n of a point of indicator F.
     [[nodiscard]] Real damage(Real indicator) const;
+    /// w of eq. 7.6-6 at damage D, D_c the damage at the instability, on an element of that size.
+    [[nodiscard]] Real fading(Real damage, Real critical_damage, Real element_size) const;
 
 private:
+    using Fading = TabulatedFailureParameters::Fading;
+    bool judge_fading(const FailurePacks& in, RealPack* state, MaskOf<RealPack>* failed) const;
+
     TabulatedFailureParameters p_;
 };
 
@@ -47,10 +66,10 @@ private:
 namespace deck {
 class Card;
 }
-/// The `tabulated: {...}` of a GISSMO card c: LCSDG, DMGEXP and LCREGD at those fields
-/// (*MAT_ADD_DAMAGE_GISSMO's card 2; *MAT_ADD_EROSION's card 3 with IDAM 1).
+/// The `tabulated: {...}` of a GISSMO card c whose fields LCSDG, ECRIT, DMGEXP, DCRIT, FADEXP,
+/// LCREGD start at lcsdg_at (*MAT_ADD_DAMAGE_GISSMO's card 2; *MAT_ADD_EROSION's card 3 with
+/// IDAM 1).
 [[nodiscard]] std::string tabulated_deck_failure(deck::FailureCard& card, const deck::Card& c,
-                                                 std::size_t lcsdg_at, std::size_t dmgexp_at,
-                                                 std::size_t lcregd_at);
+                                                 std::size_t lcsdg_at);
 
 }  // namespace fpmshell

@@ -196,10 +196,7 @@ void mat_add_erosion(deck::FailureCard& card) {
         if (h.id(1, "DMGTYP") != 0)
             h.fail("DMGTYP " + std::to_string(h.id(1, "DMGTYP")) +
                    " is not supported (0: damage accumulated, failure at D = 1)");
-        card.failure(tabulated_deck_failure(card, h, 2, 4, 7));
-        card.note(h,
-                  "ECRIT, DCRIT, FADEXP: the damage is not coupled to the stress (no fading): a "
-                  "point carries its stress until its element erodes at D = 1");
+        card.failure(tabulated_deck_failure(card, h, 2));
     } else if (idam != 0) {
         h.fail("IDAM " + std::to_string(idam) +
                " is not supported (0: none; 1: GISSMO; or *MAT_ADD_DAMAGE_GISSMO)");

@@ -6,9 +6,11 @@ namespace {
 /// Points whose iterations run in lockstep (j2_return_mapping_points): enough independent
 /// chains of divisions and square roots to hide their latency.
 constexpr std::size_t k_lockstep_points = 4;
-}  // namespace
 
-ElasticTriangleLoads<RealPack> block_point_loads(const J2Plastic& material, const BlockStep& step) {
+/// The block's loads; with Fades, its points' stress faded by their damage (eq. 7.6-6): a
+/// variant of its own, so that the kernel without fading keeps its code and its bits.
+template <bool Fades>
+ElasticTriangleLoads<RealPack> j2_block_loads(const J2Plastic& material, const BlockStep& step) {
     using namespace block_points_detail;
     using J2 = J2Plastic;
     const std::size_t n_points = step.n_points;
@@ -195,14 +197,22 @@ ElasticTriangleLoads<RealPack> block_point_loads(const J2Plastic& material, cons
         }
     };
     const ElasticTriangleLoads<RealPack> loads =
-        elastic_triangle_loads(*step.motion, *step.constants, step.thickness, stress.data(),
-                               step.viscous_rate, &yield, return_mapping);
+        elastic_triangle_loads<RealPack, decltype(return_mapping), Fades>(
+            *step.motion, *step.constants, step.thickness, stress.data(), step.viscous_rate, &yield,
+            return_mapping, step.fading);
     // the new stresses and filtered rates of the valid lanes
     store_stress(step, loads.valid, stress.data(), J2::k_stress);
     if (yield.new_strain_rate)
         for (std::size_t p = 0; p < n_points; ++p)
             stdx::where(loads.valid, field(p, J2::k_strain_rate)) = new_strain_rate[p];
     return loads;
+}
+
+}  // namespace
+
+ElasticTriangleLoads<RealPack> block_point_loads(const J2Plastic& material, const BlockStep& step) {
+    return step.fading ? j2_block_loads<true>(material, step)
+                       : j2_block_loads<false>(material, step);
 }
 
 }  // namespace fpmshell
