@@ -477,6 +477,20 @@ h_ecrit = deck_against_twin(
                        "[[0.001, 1.2], [0.01, 0.8]], fading: {critical_strain: [[-0.33, 0.015], "
                        "[0.67, 0.004]], exponent: 2}}, points: 1}\n    flow_curves:"))
 check_erodes("GISSMO ECRIT: the strip's elements erode", h_ecrit)
+# FADEXP < 0: the fading exponent a curve against the element size; ECRIT > 0 a constant
+GISSMO_FADEXP = GISSMO.replace("       901       0.0       2.0       0.0       1.0       902",
+                               "       901     0.006       2.0       0.0    -904.0       902") + (
+    "*DEFINE_CURVE\n       904\n               0.001                 1.5\n"
+    "                0.01                 3.0\n")
+h_fadexp = deck_against_twin(
+    "GISSMO FADEXP curve", os.path.join(WORK, "gissmo_fadexp"), os.path.join(STRIP, "strip_pull_mesh.k"),
+    strip_deck.replace("*END\n", GISSMO_FADEXP + "*END\n"),
+    strip_twin.replace("    poisson_ratio: 0.3\n    flow_curves:",
+                       "    poisson_ratio: 0.3\n    failure: {tabulated: {failure_strain: [[-0.33, "
+                       "0.03], [0.33, 0.01], [0.67, 0.008]], exponent: 2, regularization: "
+                       "[[0.001, 1.2], [0.01, 0.8]], fading: {critical_strain: 0.006, exponent: "
+                       "[[0.001, 1.5], [0.01, 3]]}}, points: 1}\n    flow_curves:"))
+check_erodes("GISSMO FADEXP curve: the strip's elements erode", h_fadexp)
 check("GISSMO ECRIT: fading from an instability gives another history than fading from the start",
       h_ecrit is not None and h_gissmo is not None and read(h_ecrit) != read(h_gissmo))
 for name, gissmo, message in (
