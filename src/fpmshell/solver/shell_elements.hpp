@@ -181,7 +181,7 @@ private:
     /// The same of element e computed alone: its points' numbers copied into `f`, which
     /// keep_element_fading writes back after the element's step.
     struct ElementFading {
-        std::array<Real, k_max_block_points> next{}, applied{};
+        std::array<Real, k_max_block_points> next, applied;  // filled where view is set
         StressFading<Real> view{};
     };
     [[nodiscard]] const StressFading<Real>* element_fading(std::size_t e, ElementFading& f);
