@@ -450,47 +450,44 @@ $#   lcsdg     ecrit    dmgexp     dcrit    fadexp    lcregd
                0.001                 1.2
                 0.01                 0.8
 """
-h_gissmo = deck_against_twin(
-    "GISSMO", os.path.join(WORK, "gissmo"), os.path.join(STRIP, "strip_pull_mesh.k"),
-    strip_deck.replace("*END\n", GISSMO + "*END\n"),
-    strip_twin.replace("    poisson_ratio: 0.3\n    flow_curves:",
-                       "    poisson_ratio: 0.3\n    failure: {tabulated: {failure_strain: [[-0.33, "
-                       "0.03], [0.33, 0.01], [0.67, 0.008]], exponent: 2, regularization: "
-                       "[[0.001, 1.2], [0.01, 0.8]], fading: {critical_damage: 0, exponent: 1}}, "
-                       "points: 1}\n    flow_curves:"))
-check_erodes("GISSMO: the strip's elements erode", h_gissmo)
+GISSMO_CARD_2 = "       901       0.0       2.0       0.0       1.0       902"
+
+
+def gissmo_twin(name, folder, card_2, curves, fading):
+    """strip_pull.k with GISSMO whose card 2 is card_2 (and more *DEFINE_CURVEs), against the
+    twin whose tabulated criterion has that `fading`; the deck's history file; its elements
+    erode."""
+    h = deck_against_twin(
+        name, os.path.join(WORK, folder), os.path.join(STRIP, "strip_pull_mesh.k"),
+        strip_deck.replace("*END\n", GISSMO.replace(GISSMO_CARD_2, card_2) + curves + "*END\n"),
+        strip_twin.replace("    poisson_ratio: 0.3\n    flow_curves:",
+                           "    poisson_ratio: 0.3\n    failure: {tabulated: {failure_strain: "
+                           "[[-0.33, 0.03], [0.33, 0.01], [0.67, 0.008]], exponent: 2, "
+                           "regularization: [[0.001, 1.2], [0.01, 0.8]], fading: " + fading +
+                           "}, points: 1}\n    flow_curves:"))
+    check_erodes(name + ": the strip's elements erode", h)
+    return h
+
+
+h_gissmo = gissmo_twin("GISSMO", "gissmo", GISSMO_CARD_2, "",
+                       "{critical_damage: 0, exponent: 1}")
 r = subprocess.run([FPM, "check", os.path.join(WORK, "gissmo", "model.k")], capture_output=True,
                    text=True)
 check("GISSMO: check has no note on ECRIT, DCRIT or FADEXP (they are modelled)",
       r.returncode == 0 and "ECRIT" not in r.stdout + r.stderr, r.stdout + r.stderr)
 # the instability at a critical strain against triaxiality (ECRIT < 0) and FADEXP 2
-GISSMO_ECRIT = GISSMO.replace("       901       0.0       2.0       0.0       1.0       902",
-                              "       901    -903.0       2.0       0.0       2.0       902") + (
+h_ecrit = gissmo_twin(
+    "GISSMO ECRIT", "gissmo_ecrit", "       901    -903.0       2.0       0.0       2.0       902",
     "*DEFINE_CURVE\n       903\n               -0.33               0.015\n"
-    "                0.67               0.004\n")
-h_ecrit = deck_against_twin(
-    "GISSMO ECRIT", os.path.join(WORK, "gissmo_ecrit"), os.path.join(STRIP, "strip_pull_mesh.k"),
-    strip_deck.replace("*END\n", GISSMO_ECRIT + "*END\n"),
-    strip_twin.replace("    poisson_ratio: 0.3\n    flow_curves:",
-                       "    poisson_ratio: 0.3\n    failure: {tabulated: {failure_strain: [[-0.33, "
-                       "0.03], [0.33, 0.01], [0.67, 0.008]], exponent: 2, regularization: "
-                       "[[0.001, 1.2], [0.01, 0.8]], fading: {critical_strain: [[-0.33, 0.015], "
-                       "[0.67, 0.004]], exponent: 2}}, points: 1}\n    flow_curves:"))
-check_erodes("GISSMO ECRIT: the strip's elements erode", h_ecrit)
+    "                0.67               0.004\n",
+    "{critical_strain: [[-0.33, 0.015], [0.67, 0.004]], exponent: 2}")
 # FADEXP < 0: the fading exponent a curve against the element size; ECRIT > 0 a constant
-GISSMO_FADEXP = GISSMO.replace("       901       0.0       2.0       0.0       1.0       902",
-                               "       901     0.006       2.0       0.0    -904.0       902") + (
+gissmo_twin(
+    "GISSMO FADEXP curve", "gissmo_fadexp",
+    "       901     0.006       2.0       0.0    -904.0       902",
     "*DEFINE_CURVE\n       904\n               0.001                 1.5\n"
-    "                0.01                 3.0\n")
-h_fadexp = deck_against_twin(
-    "GISSMO FADEXP curve", os.path.join(WORK, "gissmo_fadexp"), os.path.join(STRIP, "strip_pull_mesh.k"),
-    strip_deck.replace("*END\n", GISSMO_FADEXP + "*END\n"),
-    strip_twin.replace("    poisson_ratio: 0.3\n    flow_curves:",
-                       "    poisson_ratio: 0.3\n    failure: {tabulated: {failure_strain: [[-0.33, "
-                       "0.03], [0.33, 0.01], [0.67, 0.008]], exponent: 2, regularization: "
-                       "[[0.001, 1.2], [0.01, 0.8]], fading: {critical_strain: 0.006, exponent: "
-                       "[[0.001, 1.5], [0.01, 3]]}}, points: 1}\n    flow_curves:"))
-check_erodes("GISSMO FADEXP curve: the strip's elements erode", h_fadexp)
+    "                0.01                 3.0\n",
+    "{critical_strain: 0.006, exponent: [[0.001, 1.5], [0.01, 3]]}")
 check("GISSMO ECRIT: fading from an instability gives another history than fading from the start",
       h_ecrit is not None and h_gissmo is not None and read(h_ecrit) != read(h_gissmo))
 for name, gissmo, message in (
