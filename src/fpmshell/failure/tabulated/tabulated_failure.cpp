@@ -40,68 +40,49 @@ Real TabulatedFailure::fading(Real damage, Real critical_damage, Real element_si
     return std::min(std::pow((damage - critical_damage) / (1.0 - critical_damage), m), 1.0);
 }
 
-// eq. 7.6-3 at the state after the step, lane by lane for the tables; with fading, eq. 7.6-6.
+// eq. 7.6-3 at the state after the step, lane by lane for the tables; with fading, eq. 7.6-6
+// on each flowing lane too. The state: F, the plastic strain at the last step
+// (damage_accumulation), then with fading the instability measure (1 once unstable), D_c, the
+// fading w of the next step and the element's w of the last one. A point's numbers change only in a
+// step it flows in: judging twice changes nothing.
 bool TabulatedFailure::judge(const FailurePacks& in, Real /*dt*/, RealPack* state,
                              MaskOf<RealPack>* failed) const {
-    if (p_.fading) return judge_fading(in, state, failed);
     return accumulate_damage(
         in, state, failed,
-        [&](std::size_t j, const RealPack& /*d_alpha*/, const MaskOf<RealPack>& flowing) {
+        [&](std::size_t j, const RealPack& d_alpha, const MaskOf<RealPack>& flowing) {
             const RealPack eta =
                 stress_triaxiality(in.stress[0][j], in.stress[1][j], in.stress[2][j]);
             RealPack eps(1.0);
-            for (int l = 0; l < k_lanes; ++l)
-                if (lane(flowing, l))
-                    set_lane(eps, l, failure_strain(lane(eta, l), lane(in.element_size, l)));
+            for (int l = 0; l < k_lanes; ++l) {
+                if (!lane(flowing, l)) continue;
+                const Real size = lane(in.element_size, l);
+                set_lane(eps, l, failure_strain(lane(eta, l), size));
+                if (p_.fading)  // F after the step, as accumulate_damage will sum it
+                    fade(state, in.m, j, l, lane(state[j], l) + lane(d_alpha, l) / lane(eps, l),
+                         lane(d_alpha, l), lane(eta, l), size);
+            }
             return eps;
         });
 }
 
-// The state: F, the plastic strain at the last step, the instability measure (1 once
-// unstable), D_c, then the fading w of the next step (and the element's w of the last one).
-// A point's numbers change only in a step it flows in: judging twice changes nothing.
-bool TabulatedFailure::judge_fading(const FailurePacks& in, RealPack* state,
-                                    MaskOf<RealPack>* failed) const {
+void TabulatedFailure::fade(RealPack* state, std::size_t m, std::size_t j, int l, Real indicator,
+                            Real d_alpha, Real eta, Real element_size) const {
     const Fading& f = *p_.fading;
-    const std::size_t m = in.m;
-    RealPack *indicator = state, *last_strain = state + m, *instability = state + 2 * m,
-             *critical = state + 3 * m, *next = state + 4 * m;
-    bool any = false;
-    for (std::size_t j = 0; j < m; ++j) {
-        const RealPack alpha = in.plastic_strain[j];
-        const RealPack d_alpha = alpha - last_strain[j];
-        const MaskOf<RealPack> flowing = d_alpha > 0.0;
-        if (any_lane(flowing)) {
-            const RealPack eta =
-                stress_triaxiality(in.stress[0][j], in.stress[1][j], in.stress[2][j]);
-            for (int l = 0; l < k_lanes; ++l) {
-                if (!lane(flowing, l)) continue;
-                const Real e = lane(eta, l), size = lane(in.element_size, l), da = lane(d_alpha, l);
-                const Real F = lane(indicator[j], l) + da / failure_strain(e, size);
-                set_lane(indicator[j], l, F);
-                const Real D = damage(std::min(F, 1.0));
-                Real measure = lane(instability[j], l);
-                if (measure < 1.0) {  // not yet unstable
-                    Real d_c = D;
-                    if (f.critical_strain.empty()) {
-                        measure = D >= f.critical_damage ? 1.0 : 0.0;
-                        d_c = f.critical_damage;
-                    } else {
-                        measure += da / interpolate(f.critical_strain, e);
-                    }
-                    set_lane(instability[j], l, std::min(measure, 1.0));
-                    if (measure >= 1.0) set_lane(critical[j], l, d_c);
-                }
-                if (measure >= 1.0) set_lane(next[j], l, fading(D, lane(critical[j], l), size));
-            }
-            last_strain[j] = select(flowing, alpha, last_strain[j]);
+    RealPack *instability = state + 2 * m, *critical = state + 3 * m, *next = state + 4 * m;
+    const Real D = damage(std::min(indicator, 1.0));
+    Real measure = lane(instability[j], l);
+    if (measure < 1.0) {  // not yet unstable
+        Real d_c = D;
+        if (f.critical_strain.empty()) {
+            measure = D >= f.critical_damage ? 1.0 : 0.0;
+            d_c = f.critical_damage;
+        } else {
+            measure += d_alpha / interpolate(f.critical_strain, eta);
         }
-        const MaskOf<RealPack> fl = indicator[j] >= 1.0;
-        if (!any_lane(fl)) continue;
-        failed[j] = failed[j] || fl;
-        any = true;
+        set_lane(instability[j], l, std::min(measure, 1.0));
+        if (measure >= 1.0) set_lane(critical[j], l, d_c);
     }
-    return any;
+    if (measure >= 1.0) set_lane(next[j], l, fading(D, lane(critical[j], l), element_size));
 }
 
 namespace {

@@ -56,7 +56,10 @@ public:
 
 private:
     using Fading = TabulatedFailureParameters::Fading;
-    bool judge_fading(const FailurePacks& in, RealPack* state, MaskOf<RealPack>* failed) const;
+    /// eq. 7.6-6 on lane l of pack j (state: state_fields() x m packs) whose indicator after the
+    /// step is `indicator`, of a step of plastic strain d_alpha at triaxiality eta.
+    void fade(RealPack* state, std::size_t m, std::size_t j, int l, Real indicator, Real d_alpha,
+              Real eta, Real element_size) const;
 
     TabulatedFailureParameters p_;
 };
