@@ -173,6 +173,78 @@ def deck_against_twin(name, folder, mesh, deck_text, twin_text):
     return h_deck
 
 
+# ---- an air blast (*LOAD_BLAST_ENHANCED on *LOAD_BLAST_SEGMENT_SET): the panel under 10 g of
+# TNT 0.3 m above its centre, detonated at 0.2 ms, against the twin's `type: blast`; the same
+# faces given as single *LOAD_BLAST_SEGMENT cards; the segments listed the other way round
+# with the charge below the panel: the mirror image; refusals of what is not modelled
+panel_twin = read(os.path.join(PANEL, "pressure_panel.yaml"))
+pressure_line = "  - {type: pressure, elements: shell_set_7, value: 20000, curve: pulse}\n"
+BLAST_SOURCE = ("*LOAD_BLAST_ENHANCED\n$#     bid         m       xbo       ybo       zbo       tbo"
+                "      unit     blast\n         1      0.01      0.15      0.15       0.3    0.0002"
+                "         2         2\n$#     cfm       cfl       cft       cfp     nidbo     death"
+                "    negphs\n" + " " * 50 + "     0.004         1\n")
+
+
+point_force = "*LOAD_NODE_POINT\n$#     nid       dof      lcid        sf\n        61         3         2    -100.0\n"
+point_force_line = "  - {type: force, nodes: centre, value: [0, 0, -100], curve: ramp}\n"
+damping = '*DAMPING_GLOBAL\n$#    lcid    valdmp\n         0      50.0\n'
+
+
+def blast_twin(z, reversed_=False):  # the blast alone (no point force: the mirror test)
+    return panel_twin.replace(point_force_line, "").replace(pressure_line, (
+        "  - {type: blast, elements: shell_set_7, charge_mass: 0.01, centre: [0.15, 0.15, %s],\n"
+        "     burst: free_air, detonation_time: 0.0002, death_time: 0.004%s}\n")
+        % (z, ", reversed: true" if reversed_ else ""))
+
+
+def blast_case(name, cards, twin_text):
+    folder = os.path.join(WORK, "blast", name)
+    # (and without the mass damping: at the step a shock arrives on a panel at rest, the
+    # damping booked over the step ahead stops the run at the energy limit; a known defect)
+    assert point_force in panel_deck and point_force_line in panel_twin and damping in panel_deck
+    return deck_against_twin(name, folder, os.path.join(PANEL, "pressure_panel_mesh.k"),
+                             panel_deck.replace(shell_load, cards).replace(point_force, "")
+                             .replace(damping, ""), twin_text.replace("damping: {mass: 50}\n", ""))
+
+
+h_blast = blast_case("blast on a segment set", BLAST_SOURCE + aligned +
+                     "*LOAD_BLAST_SEGMENT_SET\n         1         3\n", blast_twin("0.3"))
+if h_blast:
+    uz = columns_by_name(h_blast)["node61_uz"]
+    check("blast on a segment set: still before the shock, then pushed away from the charge (-z)",
+          min(uz) < -1e-3 and abs(uz[25]) < 1e-20, "uz %g ... %g" % (uz[25], min(uz)))
+h_single = blast_case("blast on single segments", BLAST_SOURCE + "*LOAD_BLAST_SEGMENT\n" + "".join(
+    f"{1:10d}" + segment_card(e[1:])[:40] + "\n" for e in shells), blast_twin("0.3"))
+check("blast on single segments: the segment set's history",
+      h_blast is not None and h_single is not None and read(h_single) == read(h_blast))
+h_reversed = blast_case("blast on reversed segments", BLAST_SOURCE.replace("       0.3    0.0002",
+                                                                            "      -0.3    0.0002")
+                        + reversed_ + "*LOAD_BLAST_SEGMENT_SET\n         1         4\n",
+                        blast_twin("-0.3", True))
+if h_blast and h_reversed:
+    a, b = columns_by_name(h_blast)["node61_uz"], columns_by_name(h_reversed)["node61_uz"]
+    worst = max(abs(x + y) for x, y in zip(a, b)) / max(abs(x) for x in a)
+    check("blast on reversed segments, the charge below: the mirror image of the panel's motion",
+          worst < 1e-9, f"largest difference {worst:.3g}")
+for name, cards, message in (
+        ("BLAST 3", BLAST_SOURCE.replace("         2         2\n", "         2         3\n"),
+         "BLAST 3"),
+        ("UNIT 1", BLAST_SOURCE.replace("         2         2\n", "         1         2\n"),
+         "UNIT 1"),
+        ("no charge", "", "no *LOAD_BLAST_ENHANCED defines it"),
+        ("ALE coupling", BLAST_SOURCE, "ALEPID")):
+    segment_cards = "*LOAD_BLAST_SEGMENT_SET\n         1         3" + (
+        "         5" if name == "ALE coupling" else "") + "\n"
+    path = panel_variant("blast_" + name.replace(" ", "_"), cards + aligned + segment_cards)
+    r = fpmshell("check", path)
+    errors = [l for l in r.stderr.splitlines() if l.startswith("error:")]
+    check(f"blast refused: {name}", r.returncode == 2 and len(errors) == 1 and message in errors[0]
+          and "pressure_panel.k:" in errors[0], r.stderr)
+r = fpmshell("check", os.path.join(WORK, "blast", "blast on a segment set", "model.k"))
+check("blast: check prints the charge", r.returncode == 0 and "blast of 0.01 TNT (free air)" in r.stdout,
+      r.stdout + r.stderr)
+
+
 # ---- *MAT_POWER_LAW_PLASTICITY: the strip of strip_pull.k in a power-law steel, against the
 # twin with the same material written in YAML
 STRIP = os.path.join(DECKS, "strip_pull")

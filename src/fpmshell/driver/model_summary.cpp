@@ -47,8 +47,14 @@ std::string model_summary(const Model& model) {
             sec.inplane_points);
     }
     out += fmt::format("\nconditions {} boundary, {} loads, {} initial velocities, {} curves",
-                       model.boundary.size(), model.loads.size(), model.initial_conditions.size(),
-                       model.curves.size());
+                       model.boundary.size(), model.loads.size() + model.blast_loads.size(),
+                       model.initial_conditions.size(), model.curves.size());
+    for (const BlastLoad& b : model.blast_loads)  // §6.13
+        out += fmt::format(
+            "\nblast of {:.6g} TNT ({}) at ({:.6g}, {:.6g}, {:.6g}) on {} faces, detonated at "
+            "{:.6g}",
+            b.charge_mass, b.burst == BlastBurst::FreeAir ? "free air" : "surface burst",
+            b.centre.x(), b.centre.y(), b.centre.z(), b.elements.size(), b.detonation_time);
     for (const RigidBody& b : model.rigid_bodies) {
         const std::string at =
             fmt::format("({:.6g}, {:.6g}, {:.6g})", b.point.x(), b.point.y(), b.point.z());

@@ -7,6 +7,7 @@
 
 #include "fpmshell/io/model_blocks.hpp"
 #include "fpmshell/io/model_names.hpp"
+#include "fpmshell/loads/blast/blast_yaml.hpp"
 
 namespace fpmshell {
 
@@ -155,9 +156,15 @@ void read_boundary(const YamlValue& v, Model& model) {
 
 void read_loads(const YamlValue& v, Model& model) {
     for (const YamlValue& item : v.list("loads")) {
+        if (item.is_map() &&
+            item.open_map("a load").at("type", "pressure, force, moment or blast").text() ==
+                "blast") {  // §6.13, its own keys (loads/blast/)
+            model.blast_loads.push_back(read_blast_load(item, model));
+            continue;
+        }
         const YamlMap m = item.map({"type", "nodes", "elements", "value", "curve"});
-        const std::string type =
-            m.at("type", "pressure, force or moment").choice({"pressure", "force", "moment"});
+        const std::string type = m.at("type", "pressure, force, moment or blast")
+                                     .choice({"pressure", "force", "moment", "blast"});
         Load load;
         if (type == "pressure") {
             load.type = LoadType::Pressure;

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "fpmshell/core/types.hpp"
+#include "fpmshell/loads/blast/blast_load.hpp"
 
 namespace fpmshell {
 
@@ -379,6 +380,7 @@ struct Model {
     std::vector<Curve> curves;
     std::vector<BoundaryCondition> boundary;
     std::vector<Load> loads;
+    std::vector<BlastLoad> blast_loads;  ///< the `loads` of type blast, in their order
     std::vector<InitialVelocity> initial_conditions;
     std::vector<RigidBody> rigid_bodies;
     std::vector<NodalRigidBody> nodal_rigid_bodies;  ///< `constraints` of type rigid

@@ -27,6 +27,24 @@ ExternalLoads::ExternalLoads(const Model& model, const MeshTopology& topology)
             g.begin.push_back(static_cast<Index>(g.element.size()));
         }
     }
+    // §6.13 the blasts: each particle's loaded faces, as a pressure's
+    for (const BlastLoad& blast : model.blast_loads) {
+        BlastGather b{BlastFaces(blast, model.nodes, model.triangles), {}, {}};
+        std::vector<std::vector<Index>> of_particle(np);
+        for (std::size_t k = 0; k < blast.elements.size(); ++k)
+            for (Index p : model.triangles[static_cast<std::size_t>(blast.elements[k])])
+                of_particle[static_cast<std::size_t>(p)].push_back(static_cast<Index>(k));
+        b.gather.begin.push_back(0);
+        for (std::size_t p = 0; p < np; ++p) {
+            if (of_particle[p].empty()) continue;
+            b.gather.particle.push_back(static_cast<Index>(p));
+            b.gather.element.insert(b.gather.element.end(), of_particle[p].begin(),
+                                    of_particle[p].end());
+            b.gather.begin.push_back(static_cast<Index>(b.gather.element.size()));
+        }
+        b.face_scale.assign(blast.elements.size(), 0.0);
+        blasts_.push_back(std::move(b));
+    }
     // A first load that is a pressure on every triangle (in element order) is summed in the
     // pass of the normals, over the same triangles in the same order (the same bits).
     if (!model.loads.empty() && model.loads[0].type == LoadType::Pressure) {
@@ -105,6 +123,40 @@ void ExternalLoads::update_normals_and_loads(ParticleState& s, const BoundaryCon
                     s.m_ext[static_cast<std::size_t>(p)] += factor * load.vector;
                 break;
         }
+    }
+    if (!blasts_.empty()) add_blast_loads(s, t, parallel);
+}
+
+void ExternalLoads::add_blast_loads(ParticleState& s, Real t, bool parallel) {
+    for (std::size_t l = 0; l < blasts_.size(); ++l) {
+        const BlastLoad& load = model_.blast_loads[l];
+        BlastGather& b = blasts_[l];
+        // eq. 6.13-4 on each face: its current normal against the line from its current
+        // centroid to the charge; f_i = -p A n / 3 = -p cross / 6 (as a pressure, §6.7)
+        parallel_for_each(static_cast<Index>(b.face_scale.size()), parallel, [&](Index i) {
+            const auto k = static_cast<std::size_t>(i);
+            const auto e = static_cast<std::size_t>(load.elements[k]);
+            const auto& tri = model_.triangles[e];
+            const Vec3 centroid =
+                (s.x[static_cast<std::size_t>(tri[0])] + s.x[static_cast<std::size_t>(tri[1])] +
+                 s.x[static_cast<std::size_t>(tri[2])]) /
+                3.0;
+            const Real side = load.reversed ? -1.0 : 1.0;  // the faces' normal: side n_e
+            const Vec3& cross = element_cross_[e];
+            const Vec3 to_charge = load.centre - centroid;
+            const Real norms = cross.norm() * to_charge.norm();
+            const Real cos_theta = norms > 0 ? side * cross.dot(to_charge) / norms : 1.0;
+            b.face_scale[k] = -side * b.faces.pressure(k, t, cos_theta) / 6.0;
+        });
+        const PressureGather& g = b.gather;
+        parallel_for_each(static_cast<Index>(g.particle.size()), parallel, [&](Index i) {
+            const auto ui = static_cast<std::size_t>(i);
+            Vec3& f = s.f_ext[static_cast<std::size_t>(g.particle[ui])];
+            for (Index j = g.begin[ui]; j < g.begin[ui + 1]; ++j) {
+                const auto k = static_cast<std::size_t>(g.element[static_cast<std::size_t>(j)]);
+                f += b.face_scale[k] * element_cross_[static_cast<std::size_t>(load.elements[k])];
+            }
+        });
     }
 }
 

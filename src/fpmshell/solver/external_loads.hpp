@@ -1,7 +1,7 @@
 // The external loads of the model at time t (theory.md §6.7): follower pressures on elements,
-// forces and moments on nodes, each times its curve; and the tangent-plane normals of the
-// particles (§1.3), computed in the same pass because both come from the triangles' current
-// cross products.
+// forces and moments on nodes, each times its curve, air blasts on faces (§6.13); and the
+// tangent-plane normals of the particles (§1.3), computed in the same pass because both come from
+// the triangles' current cross products.
 #pragma once
 
 #include <array>
@@ -39,11 +39,20 @@ private:
     struct PressureGather {  ///< loaded particle -> its loaded triangles (CSR), in the load's order
         std::vector<Index> particle, begin, element;
     };
+    /// §6.13 a blast: its faces' pulses, and each loaded particle's faces (CSR, indices into
+    /// the load's faces, in the load's order); scratch: -p / 6 of each face at the step
+    struct BlastGather {
+        BlastFaces faces;
+        PressureGather gather;
+        std::vector<Real> face_scale;
+    };
+    void add_blast_loads(ParticleState& s, Real t, bool parallel);
 
     const Model& model_;
     const MeshTopology& topology_;
     bool has_moment_loads_ = false;
     std::vector<PressureGather> pressure_gather_;  ///< per load (empty unless a pressure)
+    std::vector<BlastGather> blasts_;              ///< per model.blast_loads entry
     bool fused_pressure_ =
         false;  ///< load 0: a pressure on every triangle, summed with the normals
     std::vector<Vec3> element_cross_;           ///< scratch: (x2 - x1) x (x3 - x1) per triangle

@@ -163,10 +163,16 @@ void DeckTranslator::write_segment_loads() {
                 group.at = load.at;
                 group.ids = ids;
             }
-            pressures[load.slot].push_back({"  - {type: pressure, elements: " + yaml_name(name) +
-                                                ", value: " + num(flip ? -load.sf : load.sf) +
-                                                ", curve: " + load.curve + "}",
-                                            load.at});
+            if (!load.blast.empty())  // a blast: the faces' normal as the segments'
+                pressures[load.slot].push_back({"  - {type: blast, elements: " + yaml_name(name) +
+                                                    ", " + load.blast +
+                                                    (flip ? ", reversed: true}" : "}"),
+                                                load.at});
+            else
+                pressures[load.slot].push_back(
+                    {"  - {type: pressure, elements: " + yaml_name(name) + ", value: " +
+                         num(flip ? -load.sf : load.sf) + ", curve: " + load.curve + "}",
+                     load.at});
         }
     }
     std::vector<Line> loads;

@@ -48,6 +48,8 @@ const std::vector<CardReader>& card_readers() {
         {"BOUNDARY_PRESCRIBED_MOTION_", true, P::References, &T::prescribed_motion},
         {"INITIAL_VELOCITY", true, P::References, &T::initial_velocity},
         {"LOAD_SEGMENT", true, P::References, &T::segment_load},
+        {"LOAD_BLAST_ENHANCED", false, P::Definitions, &T::blast_source},
+        {"LOAD_BLAST_SEGMENT", true, P::References, &T::blast_segment_load},
         {"LOAD_NODE_", true, P::References, &T::load},
         {"LOAD_SHELL_SET", true, P::References, &T::load},
         {"RIGIDWALL_PLANAR", true, P::References, &T::rigid_wall},

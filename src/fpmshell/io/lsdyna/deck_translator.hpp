@@ -107,6 +107,8 @@ struct SegmentLoad {
     std::string curve;
     Origin at;
     std::size_t slot = 0;  ///< its place among the loads (loads add up in the deck's order)
+    /// a blast's keys after `elements` (*LOAD_BLAST_SEGMENT, deck_blast.cpp); "": a pressure
+    std::string blast;
 };
 
 struct WallDef {
@@ -259,6 +261,9 @@ public:
     /// *LOAD_SEGMENT_SET (SSID, LCID, SF, AT) and *LOAD_SEGMENT (LCID, SF, AT, N1 ... N4): a
     /// pressure along each segment's normal (by its node order), on the shell it covers.
     void segment_load(const DeckBlock& b);
+    /// *LOAD_BLAST_ENHANCED and *LOAD_BLAST_SEGMENT(_SET) (deck_blast.cpp).
+    void blast_source(const DeckBlock& b);
+    void blast_segment_load(const DeckBlock& b);
 
     // ---- rigid walls, contacts, rigid-body constraints and welds (deck_bodies.cpp)
     /// *CONSTRAINED_NODAL_RIGID_BODY (_TITLE): the nodes of NSID move as one rigid body.
@@ -344,6 +349,7 @@ private:
     std::vector<Shell> shells_;  // every shell's number and nodes (for segments)
     std::map<std::string, std::vector<Segment>> segment_sets_;
     std::vector<SegmentLoad> segment_loads_;
+    std::map<long long, std::pair<std::string, Origin>> blast_sources_;  ///< BID: its keys
     /// the model line of a load or prescribed motion on single nodes -> the set of its nodes
     std::map<std::string, std::string> node_group_of_text_;
     std::vector<Line> boundary_, loads_, contact_, control_, constraints_;

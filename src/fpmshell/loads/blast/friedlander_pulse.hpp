@@ -1,0 +1,23 @@
+// The Friedlander pulse of a blast's positive phase (theory.md §6.13, eq. 6.13-3):
+//   p(tau) = P (1 - tau / t0) exp(-b tau / t0),  0 <= tau <= t0,
+// whose impulse over the phase is I = P t0 (b - 1 + e^-b) / b^2; the decay b is solved so that
+// it is the fit's (Kingery & Bulmash give the peak, the duration and the impulse apart).
+#pragma once
+
+#include "fpmshell/core/types.hpp"
+
+namespace fpmshell {
+
+/// (b - 1 + e^-b) / b^2, the impulse of the unit pulse of decay b (1/2 at b = 0: a triangle);
+/// decreasing in b.
+[[nodiscard]] Real friedlander_impulse_ratio(Real b);
+
+/// The decay b whose pulse of peak `peak` and duration `duration` has impulse `impulse`
+/// (b < 0 where the impulse exceeds the triangle's, peak duration / 2: the pulse then bulges);
+/// to 1e-14 of the ratio. Requires 0 < impulse < 0.99 peak duration.
+[[nodiscard]] Real friedlander_decay(Real peak, Real duration, Real impulse);
+
+/// p(tau) of eq. 6.13-3: 0 before the arrival (tau < 0) and after the positive phase.
+[[nodiscard]] Real friedlander_pressure(Real peak, Real duration, Real decay, Real tau);
+
+}  // namespace fpmshell

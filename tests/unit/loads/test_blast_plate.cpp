@@ -1,0 +1,123 @@
+// The air blast on a model (solver/external_loads.cpp, theory.md §6.13): a small free steel
+// plate 1 m from 1 kg of TNT, facing the charge, takes the momentum of the reflected impulse
+// times its area (the 2 %), and to 1 % the sum over its faces of each face's impulse
+// by the angle law (what remains is the step's sampling of a pulse that starts with a jump:
+// about dt / t0); no force before the shock arrives nor after its positive phase; the energy
+// balance closes; a plate whose normal turns away from the charge takes the side-on impulse
+// pushing it toward the charge.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "fpmshell/loads/blast/blast_load.hpp"
+#include "fpmshell/mesh/generators.hpp"
+#include "one_section_model.hpp"
+#include "run_to.hpp"
+
+using namespace fpmshell;
+
+namespace {
+
+constexpr Real k_side = 0.1, k_thickness = 0.005, k_standoff = 1.0;
+
+Model blast_plate(bool facing) {
+    PlateParams pp;
+    pp.length_x = pp.length_y = k_side;
+    pp.nx = pp.ny = 4;
+    Model m = test::one_section_model(generate_plate(pp), k_thickness);
+    BlastLoad b;
+    for (Index e = 0; e < static_cast<Index>(m.triangles.size()); ++e) b.elements.push_back(e);
+    b.charge_mass = 1.0;
+    b.centre = Vec3(0.5 * k_side, 0.5 * k_side, facing ? k_standoff : -k_standoff);
+    m.blast_loads.push_back(b);
+    return m;
+}
+
+Vec3 momentum(const ExplicitSolver& s) {
+    Vec3 p = Vec3::Zero();
+    for (std::size_t i = 0; i < s.state().size(); ++i) p += s.state().mass[i] * s.state().v[i];
+    return p;
+}
+
+/// sum over the faces of A [ir cos^2 + is (1 + cos - 2 cos^2)] (the angle law's impulse), or
+/// of A is where the face does not see the charge
+Real face_impulses(const Model& m) {
+    const BlastLoad& b = m.blast_loads[0];
+    Real sum = 0;
+    for (const auto& t : m.triangles) {
+        const Vec3 &a = m.nodes[static_cast<std::size_t>(t[0])],
+                   &c1 = m.nodes[static_cast<std::size_t>(t[1])],
+                   &c2 = m.nodes[static_cast<std::size_t>(t[2])];
+        const Vec3 cross = (c1 - a).cross(c2 - a), centroid = (a + c1 + c2) / 3.0;
+        const Vec3 to_charge = b.centre - centroid;
+        const Real c = cross.dot(to_charge) / (cross.norm() * to_charge.norm());
+        const BlastWave w = kingery_bulmash(b.burst, b.charge_mass, to_charge.norm());
+        const Real impulse =
+            c > 0 ? w.reflected_impulse * c * c + w.incident_impulse * (1 + c - 2 * c * c)
+                  : w.incident_impulse;
+        sum += 0.5 * cross.norm() * impulse;
+    }
+    return sum;
+}
+
+}  // namespace
+
+TEST(BlastPlate, FreePlateTakesTheReflectedImpulse) {
+    const Model m = blast_plate(true);
+    const BlastWave head_on = kingery_bulmash(BlastBurst::FreeAir, 1.0, k_standoff);
+    ExplicitSolver s(m);
+    // nothing before the nearest face's arrival
+    test::run_to(s, 0.95 * head_on.arrival_time);
+    EXPECT_LT(momentum(s).norm(), 1e-20);  // (rounding of the unloaded plate's forces)
+    // after the furthest face's positive phase
+    const Real far = std::hypot(k_standoff, std::sqrt(0.5) * k_side);
+    const BlastWave last = kingery_bulmash(BlastBurst::FreeAir, 1.0, far);
+    test::run_to(s, last.arrival_time + last.duration);
+    const Vec3 p_end = momentum(s);
+    const Real area = k_side * k_side;
+    EXPECT_NEAR(-p_end.z() / (head_on.reflected_impulse * area), 1.0, 0.02);
+    EXPECT_NEAR(-p_end.z() / face_impulses(m), 1.0, 0.01);
+    EXPECT_NEAR(p_end.x() / p_end.z(), 0.0, 1e-9);  // the charge over the plate's centre
+    // the pulse is over: no more momentum
+    test::run_to(s, s.time() + 0.3e-3);
+    EXPECT_NEAR((momentum(s) - p_end).norm() / p_end.norm(), 0.0, 1e-12);
+    EXPECT_LT(std::abs(s.energy().error()), 1e-3);
+}
+
+TEST(BlastPlate, FaceTurnedAwayTakesTheSideOnImpulseTowardTheCharge) {
+    // the charge below the plate, whose normal points up (away from it): the face does not see
+    // the charge, so it takes the side-on pressure, pushing against its normal (toward -z, the
+    // charge): LS-DYNA's convention, where a segment's normal must point to the charge
+    const Model m = blast_plate(false);
+    ExplicitSolver s(m);
+    const Real far = std::hypot(k_standoff, std::sqrt(0.5) * k_side);
+    const BlastWave last = kingery_bulmash(BlastBurst::FreeAir, 1.0, far);
+    test::run_to(s, last.arrival_time + last.duration);
+    EXPECT_NEAR(-momentum(s).z() / face_impulses(m), 1.0, 0.01);
+    const BlastWave head_on = kingery_bulmash(BlastBurst::FreeAir, 1.0, k_standoff);
+    EXPECT_NEAR(-momentum(s).z() / (head_on.incident_impulse * k_side * k_side), 1.0, 0.02);
+}
+
+TEST(BlastPlate, ModelUnitsConvertTheWave) {
+    // the plate of FreePlateTakesTheReflectedImpulse in mm, kg and ms (LS-DYNA's UNIT 6, whose
+    // pressure unit kg/(mm ms^2) is the GPa): the same pulse, in those units
+    const Model si = blast_plate(true);
+    BlastLoad mm = si.blast_loads[0];
+    std::vector<Vec3> nodes_mm = si.nodes;
+    for (Vec3& x : nodes_mm) x *= 1e3;
+    mm.centre *= 1e3;
+    mm.charge_mass = 1.0;  // kg, the mass unit
+    mm.metres = 1e-3;
+    mm.kilograms = 1.0;
+    mm.seconds = 1e-3;
+    const BlastFaces in_si(si.blast_loads[0], si.nodes, si.triangles);
+    const BlastFaces in_mm(mm, nodes_mm, si.triangles);
+    for (std::size_t k = 0; k < in_si.size(); ++k) {
+        EXPECT_NEAR(in_mm.arrival(k) * 1e-3 / in_si.arrival(k), 1.0, 1e-12);
+        for (const Real tau : {0.1, 0.5, 0.9}) {
+            const Real t = in_si.arrival(k) + tau * in_si.duration(k);
+            EXPECT_NEAR(in_mm.pressure(k, t * 1e3, 0.8) * 1e9 / in_si.pressure(k, t, 0.8), 1.0,
+                        1e-9);
+        }
+    }
+}
