@@ -30,8 +30,9 @@ EnergyFile::EnergyFile(const Model& model, const std::filesystem::path& dir)
 std::vector<Real> EnergyFile::row(const ExplicitSolver& solver, Real time,
                                   std::optional<bool> /*converged*/) const {
     const EnergyBalance& e = solver.energy();
-    std::vector<Real> values = {time,      e.kinetic, e.internal, e.plastic, e.external_work,
-                                e.damping, e.contact, e.error()};
+    std::vector<Real> values = {time,      e.kinetic,       e.internal,
+                                e.plastic, e.external_work, e.dissipated_by_damping(),
+                                e.contact, e.error()};
     if (mass_scaling_) values.push_back(solver.added_mass().total_added());
     if (erosion_) values.push_back(e.eroded_internal);
     return values;

@@ -56,6 +56,20 @@ Real particle_quantity(const ExplicitSolver& solver, Quantity q, Index p) {
             return s.f_ext[up].y();
         case Quantity::ForceZ:
             return s.f_ext[up].z();
+        case Quantity::Pressure: {
+            // a pressure p on every triangle of the particle gives f = -p sum(cross) / 6
+            // (theory.md §6.7): p = -6 f.c / |c|^2, c = sum(cross), at any curvature; on the
+            // positions the loads were computed on (x^n, those of the step before s.x)
+            Vec3 c = Vec3::Zero();
+            for (const Index e : solver.topology().elements_of(p)) {
+                const auto& t = solver.model().triangles[static_cast<std::size_t>(e)];
+                const Vec3& a = s.x_prev[static_cast<std::size_t>(t[0])];
+                c += (s.x_prev[static_cast<std::size_t>(t[1])] - a)
+                         .cross(s.x_prev[static_cast<std::size_t>(t[2])] - a);
+            }
+            const Real c2 = c.squaredNorm();
+            return c2 > 0 ? -6.0 * s.f_ext[up].dot(c) / c2 : 0.0;
+        }
         default:
             break;  // rigid-body quantities: body_quantity
     }

@@ -177,6 +177,7 @@ void read_output(const std::optional<YamlValue>& v, Model& model) {
         {"force_x", Quantity::ForceX},
         {"force_y", Quantity::ForceY},
         {"force_z", Quantity::ForceZ},
+        {"pressure", Quantity::Pressure},
         {"eroded_elements", Quantity::ErodedElements}};  // the model's (read apart below)
     std::vector<std::string> quantity_names;
     for (const auto& [name, q] : quantities) quantity_names.push_back(name);

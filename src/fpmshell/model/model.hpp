@@ -315,6 +315,9 @@ enum class Quantity {
     ForceX,
     ForceY,
     ForceZ,
+    /// the external force against the particle's normal over its area: the pressure its faces
+    /// take (a blast's, a pressure load's)
+    Pressure,
     // rigid bodies (rigid_<name>_<quantity>): displacement, velocity, acceleration, contact force
     RigidUx,
     RigidUy,

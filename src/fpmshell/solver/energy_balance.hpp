@@ -21,8 +21,16 @@ struct EnergyBalance {
     /// taken times this step's rounding of the works. Not a result: it is recomputed every step
     /// (and not kept in restart files).
     Real rounding = 0;
+    /// The part of `damping` booked ahead of the kinetic energy (theory.md eq. 6.8-4): the sum
+    /// over the particles of a_m dt_n m v^{n+1/2}.vbar^n / 2. Recomputed every step (not kept
+    /// in restart files).
+    Real damping_ahead = 0;
 
-    /// (kinetic + internal + eroded internal - external work + damping + contact) / max(kinetic,
+    /// What mass and stiffness damping have dissipated up to t_n, in step with the leapfrog
+    /// kinetic energy (eq. 6.8-4).
+    [[nodiscard]] Real dissipated_by_damping() const { return damping - damping_ahead; }
+
+    /// (kinetic + internal + eroded internal - external work + damped + contact) / max(kinetic,
     /// internal, external, rounding) (theory.md eq. 6.8-1). The rounding floor keeps the ratio of a
     /// model that does not move (held by friction, in equilibrium) from being a ratio of rounding
     /// errors: there every energy is of the order of the last bits of the positions.
@@ -30,7 +38,9 @@ struct EnergyBalance {
         const Real scale =
             std::max({std::abs(kinetic), std::abs(internal), std::abs(external_work), rounding});
         if (scale <= 0) return 0;
-        return (kinetic + internal + eroded_internal - external_work + damping + contact) / scale;
+        return (kinetic + internal + eroded_internal - external_work + dissipated_by_damping() +
+                contact) /
+               scale;
     }
 };
 

@@ -453,6 +453,7 @@ void ExplicitSolver::book_energies(const StepLengths& dt, const ParticleSums& pa
         contact_work + particles.contact_work;  // dissipated (multipliers) or stored (penalty)
     energy_.external_work += external_work + particles.external_work;
     energy_.damping += particles.damping;
+    energy_.damping_ahead = particles.damping_ahead;
     // eq. 6.8-2: this step's rounding, as if every step so far had had it
     energy_.rounding = static_cast<Real>(steps_ + 1) * particles.rounding;
 }

@@ -69,6 +69,7 @@ public:
     /// The rigid bodies (§6.11), and through them the spot welds that failed (eq. 6.11-13).
     [[nodiscard]] const NodalRigidBodies& nodal_rigid_bodies() const { return nodal_rigid_bodies_; }
     [[nodiscard]] const Model& model() const { return model_; }
+    [[nodiscard]] const MeshTopology& topology() const { return topology_; }
     /// The mass added by control.mass_scaling per section (§6.10; zero without it).
     [[nodiscard]] const AddedMass& added_mass() const { return added_mass_; }
     /// a^n = (v^{n+1/2} - v^{n-1/2}) / dt_n of the last cycle.
@@ -92,7 +93,8 @@ public:
     /// The ranks of a distributed run (core/communicator.hpp) and this one's share.
     [[nodiscard]] const DomainDecomposition& decomposition() const { return decomposition_; }
     /// What gather_to_root brings to rank 0: what the history rows read (the history
-    /// particles' positions, velocities, loads, reactions and rotations), or the whole state
+    /// particles' positions, velocities, loads, reactions and rotations, and the positions of
+    /// the fans of the pressure gauges), or the whole state
     /// (frames, restart files, the end of the run).
     enum class Gather { Histories, Everything };
     /// A distributed run: every rank sends the state of the particles it owns (and of the
@@ -124,6 +126,7 @@ private:
         Real kinetic = 0, external_work = 0, contact_work = 0, damping = 0, non_finite = 0;
         Real rounding = 0;  ///< of this step's works (eq. 6.8-2)
         Real residual2 = 0, reference2 = 0;
+        Real damping_ahead = 0;  ///< eq. 6.8-4
     };
     template <class Archive>
     void transfer_state(Archive& ar);
@@ -248,8 +251,8 @@ private:
     std::vector<Vec3> x_pred_, body_u_pred_;           ///< contact scratch: predicted x^{n+1}
     std::vector<Vec3> x_pred_before_, body_u_before_;  ///< the predictor before the multipliers
     std::vector<std::array<Real, 2>> sums2_;           ///< scratch: per-chunk partial sums
-    std::vector<std::array<Real, 6>> sums6_;
-    std::vector<std::array<Real, 8>> sums8_;
+    std::vector<std::array<Real, 7>> sums7_;
+    std::vector<std::array<Real, 9>> sums9_;
     Real time_ = 0;
     Real dt_half_ = 0;       ///< dt_{n-1/2} (0 before the first step)
     Real dt_half_prev_ = 0;  ///< the step before dt_half_

@@ -87,6 +87,9 @@ inline void ExplicitSolver::advance_particle(std::size_t p, const StepLengths& d
         const Vec3 wbar = 0.5 * (s_.omega_prev[p] + s_.omega[p]);
         energy[3] += dt.a_m * dt.dt_n *
                      (s_.mass[p] * vbar.squaredNorm() + s_.inertia[p] * wbar.squaredNorm());
+        // eq. 6.8-4: the half of the last term that the kinetic energy of t_n has not yet seen
+        energy[6] += 0.5 * dt.a_m * dt.dt_n *
+                     (s_.mass[p] * s_.v[p].dot(vbar) + s_.inertia[p] * s_.omega[p].dot(wbar));
     }
     if (constrained) {
         s_.reaction_prev[p] = s_.reaction[p];
@@ -143,12 +146,13 @@ ExplicitSolver::ParticleSums ExplicitSolver::update_velocities_and_advance_parti
     // (every particle's new value is written below).
     std::swap(s_.v, s_.v_prev);
     std::swap(s_.omega, s_.omega_prev);
-    const std::array<Real, 8> sums = atom_sums<8>(sums8_, [&](Index ip, std::array<Real, 8>& acc) {
+    // the energies of advance_particle in 0 ... 6, the residuals in 7 and 8
+    const std::array<Real, 9> sums = atom_sums<9>(sums9_, [&](Index ip, std::array<Real, 9>& acc) {
         const std::size_t p = static_cast<std::size_t>(ip);
-        update_particle_velocity(p, policy, dt, acc.data() + 6);
+        update_particle_velocity(p, policy, dt, acc.data() + 7);
         advance_particle(p, dt, acc.data());
     });
-    return {sums[0], sums[1], sums[2], sums[3], sums[4], sums[5], sums[6], sums[7]};
+    return {sums[0], sums[1], sums[2], sums[3], sums[4], sums[5], sums[7], sums[8], sums[6]};
 }
 
 ExplicitSolver::ParticleSums ExplicitSolver::update_velocities(const CyclePolicy& policy,
@@ -166,8 +170,8 @@ ExplicitSolver::ParticleSums ExplicitSolver::update_velocities(const CyclePolicy
 }
 
 void ExplicitSolver::advance_particles(const StepLengths& dt, ParticleSums& sums) {
-    const std::array<Real, 6> energy =
-        atom_sums<6>(sums6_, [&](Index ip, std::array<Real, 6>& acc) {
+    const std::array<Real, 7> energy =
+        atom_sums<7>(sums7_, [&](Index ip, std::array<Real, 7>& acc) {
             advance_particle(static_cast<std::size_t>(ip), dt, acc.data());
         });
     sums.kinetic = energy[0];
@@ -176,6 +180,7 @@ void ExplicitSolver::advance_particles(const StepLengths& dt, ParticleSums& sums
     sums.damping = energy[3];
     sums.non_finite = energy[4];
     sums.rounding = energy[5];
+    sums.damping_ahead = energy[6];
 }
 
 }  // namespace fpmshell

@@ -61,7 +61,7 @@ namespace {
 template <class F>
 void for_each_history_field(ParticleState& s, std::size_t p, F&& f) {
     for (std::vector<Vec3>* a :
-         {&s.x0, &s.x, &s.v, &s.v_prev, &s.f_ext, &s.reaction, &s.reaction_moment})
+         {&s.x0, &s.x, &s.x_prev, &s.v, &s.v_prev, &s.f_ext, &s.reaction, &s.reaction_moment})
         f((*a)[p]);
     f(s.rotation[p]);
 }
@@ -107,7 +107,14 @@ void ExplicitSolver::gather_to_root(Gather what) {
     if (!all && history_particle_.empty()) {
         history_particle_.assign(s_.size(), 0);
         for (const HistoryRequest& h : model_.output.histories)
-            for (const Index p : h.nodes) history_particle_[static_cast<std::size_t>(p)] = 1;
+            for (const Index p : h.nodes) {
+                history_particle_[static_cast<std::size_t>(p)] = 1;
+                if (h.quantity != Quantity::Pressure) continue;
+                // the gauge reads the positions of the particle's fan (history_sampler.cpp)
+                for (const Index e : topology_.elements_of(p))
+                    for (const Index q : model_.triangles[static_cast<std::size_t>(e)])
+                        history_particle_[static_cast<std::size_t>(q)] = 1;
+            }
     }
     std::vector<char>& bytes = gather_bytes_;
     bytes.clear();

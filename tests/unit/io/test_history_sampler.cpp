@@ -1,5 +1,6 @@
 // The reductions of history requests over their node sets (model-format.md "output"):
-// mass_mean is the set's momentum over its mass, which a free body keeps while it vibrates.
+// mass_mean is the set's momentum over its mass, which a free body keeps while it vibrates;
+// the pressure gauge reads a uniform pressure on a curved shell at every particle.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -65,4 +66,21 @@ TEST(HistorySampler, AFreeBodysMassMeanVelocityStaysWhileItsParticlesVibrate) {
 }
 
 }  // namespace
+TEST(HistorySampler, ThePressureGaugeReadsAUniformPressureOnACurvedShell) {
+    SphericalCapParams cp;
+    cp.radius = 2.0;
+    cp.half_angle_deg = 30;
+    cp.divisions = 6;
+    Model m = test::one_section_model(generate_spherical_cap(cp), 0.01);
+    Load p;
+    p.type = LoadType::Pressure;
+    for (Index e = 0; e < static_cast<Index>(m.triangles.size()); ++e) p.elements.push_back(e);
+    p.pressure = 3.5e5;
+    m.loads.push_back(p);
+    ExplicitSolver s(m);
+    s.step(1e30);
+    for (Index q = 0; q < m.n_particles(); ++q)  // rim, inside, apex: each its own fan
+        EXPECT_NEAR(particle_quantity(s, Quantity::Pressure, q) / p.pressure, 1.0, 1e-12) << q;
+}
+
 }  // namespace fpmshell
