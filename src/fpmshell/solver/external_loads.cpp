@@ -1,5 +1,10 @@
 #include "fpmshell/solver/external_loads.hpp"
 
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+
 #include "fpmshell/core/chunked_loop.hpp"
 
 namespace fpmshell {
@@ -27,24 +32,29 @@ ExternalLoads::ExternalLoads(const Model& model, const MeshTopology& topology)
             g.begin.push_back(static_cast<Index>(g.element.size()));
         }
     }
-    // §6.13 the blasts: each particle's loaded faces, as a pressure's
+    // §6.13 the blasts: each triangle's face, summed in the pass of the normals
     for (const BlastLoad& blast : model.blast_loads) {
-        BlastGather b{BlastFaces(blast, model.nodes, model.triangles), {}, {}};
-        std::vector<std::vector<Index>> of_particle(np);
+        Blast b{BlastFaces(blast, model.nodes, model.triangles),
+                std::vector<Index>(model.triangles.size(), -1),
+                0,
+                0,
+                {},
+                {},
+                false};
         for (std::size_t k = 0; k < blast.elements.size(); ++k)
-            for (Index p : model.triangles[static_cast<std::size_t>(blast.elements[k])])
-                of_particle[static_cast<std::size_t>(p)].push_back(static_cast<Index>(k));
-        b.gather.begin.push_back(0);
-        for (std::size_t p = 0; p < np; ++p) {
-            if (of_particle[p].empty()) continue;
-            b.gather.particle.push_back(static_cast<Index>(p));
-            b.gather.element.insert(b.gather.element.end(), of_particle[p].begin(),
-                                    of_particle[p].end());
-            b.gather.begin.push_back(static_cast<Index>(b.gather.element.size()));
+            b.face_of_element[static_cast<std::size_t>(blast.elements[k])] = static_cast<Index>(k);
+        b.first_arrival = std::numeric_limits<Real>::infinity();
+        b.last_end = -b.first_arrival;
+        for (std::size_t k = 0; k < b.faces.size(); ++k) {
+            b.first_arrival = std::min(b.first_arrival, b.faces.arrival(k));
+            b.last_end = std::max(b.last_end, b.faces.arrival(k) + b.faces.duration(k));
         }
-        b.face_scale.assign(blast.elements.size(), 0.0);
+        const auto w = static_cast<std::size_t>(k_lanes);
+        b.dot.assign((b.faces.size() + w - 1) / w * w, 1.0);  // padding: cos = 1, no pulse
+        b.norms.assign(b.dot.size(), 1.0);
         blasts_.push_back(std::move(b));
     }
+    if (!blasts_.empty()) element_blast_scale_.assign(model.triangles.size(), 0.0);
     // A first load that is a pressure on every triangle (in element order) is summed in the
     // pass of the normals, over the same triangles in the same order (the same bits).
     if (!model.loads.empty() && model.loads[0].type == LoadType::Pressure) {
@@ -61,14 +71,37 @@ void ExternalLoads::update_normals_and_loads(ParticleState& s, const BoundaryCon
     // order of a serial scatter, without its write conflicts).
     const Index ne =
         near_ ? static_cast<Index>(near_->size()) : static_cast<Index>(model_.triangles.size());
+    // §6.13: a blast acts in the span of time in which some face is in its positive phase
+    for (std::size_t l = 0; l < blasts_.size(); ++l) {
+        const BlastLoad& load = model_.blast_loads[l];
+        const Real since = t - load.detonation_time;
+        blasts_[l].active = since >= blasts_[l].first_arrival && since <= blasts_[l].last_end &&
+                            t < load.death_time;
+    }
     parallel_for_each(ne, parallel, [&](Index i) {
         const Index e = near_ ? (*near_)[static_cast<std::size_t>(i)] : i;
         const auto& tri = model_.triangles[static_cast<std::size_t>(e)];
-        element_cross_[static_cast<std::size_t>(e)] =
+        const auto ue = static_cast<std::size_t>(e);
+        element_cross_[ue] =
             (s.x[static_cast<std::size_t>(tri[1])] - s.x[static_cast<std::size_t>(tri[0])])
                 .cross(s.x[static_cast<std::size_t>(tri[2])] -
                        s.x[static_cast<std::size_t>(tri[0])]);
+        for (std::size_t l = 0; l < blasts_.size(); ++l) {  // §6.13, eq. 6.13-4's angle
+            Blast& b = blasts_[l];
+            const Index k = b.active ? b.face_of_element[ue] : -1;
+            if (k < 0) continue;
+            const BlastLoad& load = model_.blast_loads[l];
+            const Vec3 to_charge = load.centre - (s.x[static_cast<std::size_t>(tri[0])] +
+                                                  s.x[static_cast<std::size_t>(tri[1])] +
+                                                  s.x[static_cast<std::size_t>(tri[2])]) /
+                                                     3.0;
+            const Vec3& cross = element_cross_[ue];
+            b.dot[static_cast<std::size_t>(k)] =
+                (load.reversed ? -1.0 : 1.0) * cross.dot(to_charge);
+            b.norms[static_cast<std::size_t>(k)] = cross.squaredNorm() * to_charge.squaredNorm();
+        }
     });
+    if (!blasts_.empty()) blast_scales(t, parallel);
     // §6.7 follower pressure: f_i = -p A_t n_t / 3 (positive pushes against n), A n = cr / 2.
     auto pressure_scale = [&](const Load& load) {
         return -load.pressure * curve_factor(model_.curves, load.curve, t) / 6.0;
@@ -89,6 +122,7 @@ void ExternalLoads::update_normals_and_loads(ParticleState& s, const BoundaryCon
             const Vec3& cross = element_cross_[static_cast<std::size_t>(e)];
             sum += cross;
             if (fused_pressure_) f += fused_scale * cross;
+            if (!blasts_.empty()) f += element_blast_scale_[static_cast<std::size_t>(e)] * cross;
         }
         const Real len = sum.norm();
         s.normal[p] = len > 0 ? Vec3(sum / len) : Vec3::UnitZ();
@@ -124,37 +158,42 @@ void ExternalLoads::update_normals_and_loads(ParticleState& s, const BoundaryCon
                 break;
         }
     }
-    if (!blasts_.empty()) add_blast_loads(s, t, parallel);
 }
 
-void ExternalLoads::add_blast_loads(ParticleState& s, Real t, bool parallel) {
+void ExternalLoads::blast_scales(Real t, bool parallel) {
+    // several blasts add on the triangles they share: each adds to zeros
+    const bool several = blasts_.size() > 1;
+    if (several) std::fill(element_blast_scale_.begin(), element_blast_scale_.end(), 0.0);
+    const auto w = static_cast<std::size_t>(k_lanes);
     for (std::size_t l = 0; l < blasts_.size(); ++l) {
         const BlastLoad& load = model_.blast_loads[l];
-        BlastGather& b = blasts_[l];
-        // eq. 6.13-4 on each face: its current normal against the line from its current
-        // centroid to the charge; f_i = -p A n / 3 = -p cross / 6 (as a pressure, §6.7)
-        parallel_for_each(static_cast<Index>(b.face_scale.size()), parallel, [&](Index i) {
-            const auto k = static_cast<std::size_t>(i);
-            const auto e = static_cast<std::size_t>(load.elements[k]);
-            const auto& tri = model_.triangles[e];
-            const Vec3 centroid =
-                (s.x[static_cast<std::size_t>(tri[0])] + s.x[static_cast<std::size_t>(tri[1])] +
-                 s.x[static_cast<std::size_t>(tri[2])]) /
-                3.0;
-            const Real side = load.reversed ? -1.0 : 1.0;  // the faces' normal: side n_e
-            const Vec3& cross = element_cross_[e];
-            const Vec3 to_charge = load.centre - centroid;
-            const Real norms = cross.norm() * to_charge.norm();
-            const Real cos_theta = norms > 0 ? side * cross.dot(to_charge) / norms : 1.0;
-            b.face_scale[k] = -side * b.faces.pressure(k, t, cos_theta) / 6.0;
-        });
-        const PressureGather& g = b.gather;
-        parallel_for_each(static_cast<Index>(g.particle.size()), parallel, [&](Index i) {
-            const auto ui = static_cast<std::size_t>(i);
-            Vec3& f = s.f_ext[static_cast<std::size_t>(g.particle[ui])];
-            for (Index j = g.begin[ui]; j < g.begin[ui + 1]; ++j) {
-                const auto k = static_cast<std::size_t>(g.element[static_cast<std::size_t>(j)]);
-                f += b.face_scale[k] * element_cross_[static_cast<std::size_t>(load.elements[k])];
+        Blast& b = blasts_[l];
+        // outside the span in which some face is in its phase: zeros, written once
+        if (!b.active) {
+            if (!b.zeroed && !several)
+                for (const Index e : load.elements)
+                    element_blast_scale_[static_cast<std::size_t>(e)] = 0.0;
+            b.zeroed = true;
+            continue;
+        }
+        b.zeroed = false;
+        const BlastFaces& faces = b.faces;
+        const Real scale_factor = (load.reversed ? 1.0 : -1.0) / 6.0;  // -side / 6
+        const auto n_packs = static_cast<Index>(b.dot.size() / w);
+        parallel_for_each(n_packs, parallel, [&](Index i) {
+            const std::size_t first = static_cast<std::size_t>(i) * w;
+            // eq. 6.13-4: cos theta of each face (a zero normal or distance: head on)
+            const RealPack product(b.norms.data() + first, stdx::element_aligned);
+            const RealPack dot(b.dot.data() + first, stdx::element_aligned);
+            const auto loaded = product > 0.0;
+            const RealPack cos_theta = select(
+                loaded, dot / stdx::sqrt(select(loaded, product, RealPack(1.0))), RealPack(1.0));
+            const RealPack scale = scale_factor * faces.pressures(first, t, cos_theta);
+            const std::size_t n = std::min(w, faces.size() - first);
+            for (std::size_t j = 0; j < n; ++j) {
+                Real& out =
+                    element_blast_scale_[static_cast<std::size_t>(load.elements[first + j])];
+                out = (several ? out : 0.0) + lane(scale, static_cast<int>(j));
             }
         });
     }

@@ -39,20 +39,31 @@ private:
     struct PressureGather {  ///< loaded particle -> its loaded triangles (CSR), in the load's order
         std::vector<Index> particle, begin, element;
     };
-    /// §6.13 a blast: its faces' pulses, and each loaded particle's faces (CSR, indices into
-    /// the load's faces, in the load's order); scratch: -p / 6 of each face at the step
-    struct BlastGather {
+    /// §6.13 a blast: its faces' pulses, each triangle's face (-1: not loaded), the span of
+    /// time in which some face is in its positive phase; scratch per face (padded to whole
+    /// packs), from the pass of the cross products: side n.(c - x) and |n|^2 |c - x|^2 of its
+    /// current normal n (the cross product) and centroid x, c the charge
+    struct Blast {
         BlastFaces faces;
-        PressureGather gather;
-        std::vector<Real> face_scale;
+        std::vector<Index> face_of_element;
+        Real first_arrival = 0, last_end = 0;
+        std::vector<Real> dot, norms;
+        bool active = false;  ///< at this step: inside its span
+        bool zeroed = false;  ///< its triangles' scales are zero (outside its span)
     };
-    void add_blast_loads(ParticleState& s, Real t, bool parallel);
+    /// -p / 6 of the blasts on each of their triangles at time t (element_blast_scale_), from
+    /// the current cross products and centroids: f_i = that times the cross product at each
+    /// corner (as a pressure, §6.7); k_lanes faces at a time.
+    void blast_scales(Real t, bool parallel);
 
     const Model& model_;
     const MeshTopology& topology_;
     bool has_moment_loads_ = false;
     std::vector<PressureGather> pressure_gather_;  ///< per load (empty unless a pressure)
-    std::vector<BlastGather> blasts_;              ///< per model.blast_loads entry
+    std::vector<Blast> blasts_;                    ///< per model.blast_loads entry
+    /// scratch: each triangle's blast_scale at the step, summed into the particles in the pass
+    /// of the normals (empty without blasts)
+    std::vector<Real> element_blast_scale_;
     bool fused_pressure_ =
         false;  ///< load 0: a pressure on every triangle, summed with the normals
     std::vector<Vec3> element_cross_;           ///< scratch: (x2 - x1) x (x3 - x1) per triangle

@@ -1,6 +1,8 @@
 #include "fpmshell/loads/blast/blast_load.hpp"
 
-#include "fpmshell/loads/blast/friedlander_pulse.hpp"
+#include <limits>
+
+#include "fpmshell/core/simd_math.hpp"
 
 namespace fpmshell {
 
@@ -14,7 +16,6 @@ BlastFaces::BlastFaces(const BlastLoad& load, const std::vector<Vec3>& nodes,
                        const std::vector<std::array<Index, 3>>& triangles)
     : detonation_time_(load.detonation_time), death_time_(load.death_time) {
     const Real pascals = load.kilograms / (load.metres * load.seconds * load.seconds);
-    faces_.reserve(load.elements.size());
     for (const Index e : load.elements) {
         const auto& t = triangles[static_cast<std::size_t>(e)];
         const Vec3 centroid =
@@ -23,27 +24,42 @@ BlastFaces::BlastFaces(const BlastLoad& load, const std::vector<Vec3>& nodes,
             3.0;
         const BlastWave w = kingery_bulmash(load.burst, load.charge_mass * load.kilograms,
                                             (centroid - load.centre).norm() * load.metres);
-        Face f;
-        f.arrival = w.arrival_time / load.seconds;
-        f.duration = w.duration / load.seconds;
-        f.incident = load.scale * w.incident_pressure / pascals;
-        f.reflected = load.scale * w.reflected_pressure / pascals;
+        arrival_.push_back(w.arrival_time / load.seconds);
+        duration_.push_back(w.duration / load.seconds);
+        incident_.push_back(load.scale * w.incident_pressure / pascals);
+        reflected_.push_back(load.scale * w.reflected_pressure / pascals);
         // eq. 6.13-3: each pulse's decay from its own impulse (SI, as the fits)
-        f.incident_decay = friedlander_decay(w.incident_pressure, w.duration, w.incident_impulse);
-        f.reflected_decay =
-            friedlander_decay(w.reflected_pressure, w.duration, w.reflected_impulse);
-        faces_.push_back(f);
+        incident_decay_.push_back(
+            friedlander_decay(w.incident_pressure, w.duration, w.incident_impulse));
+        reflected_decay_.push_back(
+            friedlander_decay(w.reflected_pressure, w.duration, w.reflected_impulse));
     }
+    // whole packs: the padding faces never arrive
+    const std::size_t n = load.elements.size();
+    const std::size_t padded = (n + k_lanes - 1) / k_lanes * k_lanes;
+    arrival_.resize(padded, std::numeric_limits<Real>::infinity());
+    for (auto* v : {&duration_, &incident_, &reflected_, &incident_decay_, &reflected_decay_})
+        v->resize(padded, 1.0);
+    faces_ = n;
 }
 
-Real BlastFaces::pressure(std::size_t k, Real t, Real cos_theta) const {
-    if (t >= death_time_) return 0.0;
-    const Face& f = faces_[k];
-    const Real tau = t - detonation_time_ - f.arrival;
-    if (tau < 0 || tau > f.duration) return 0.0;
-    return blast_incidence_pressure(
-        friedlander_pressure(f.incident, f.duration, f.incident_decay, tau),
-        friedlander_pressure(f.reflected, f.duration, f.reflected_decay, tau), cos_theta);
+RealPack BlastFaces::pressures(std::size_t k, Real t, const RealPack& cos_theta) const {
+    if (t >= death_time_) return RealPack(0.0);
+    auto at = [&](const std::vector<Real>& v) {
+        return RealPack(v.data() + k, stdx::element_aligned);
+    };
+    const RealPack duration = at(duration_);
+    const RealPack tau = RealPack(t - detonation_time_) - at(arrival_);
+    const auto live = tau >= 0.0 && tau <= duration;
+    if (!any_lane(live)) return RealPack(0.0);
+    const RealPack x = select(live, tau / duration, RealPack(0.0));
+    const RealPack fall = 1.0 - x;
+    const RealPack incident = at(incident_) * fall * vector_exp(-at(incident_decay_) * x);
+    const RealPack reflected = at(reflected_) * fall * vector_exp(-at(reflected_decay_) * x);
+    // eq. 6.13-4
+    const RealPack c2 = cos_theta * cos_theta;
+    const RealPack seen = reflected * c2 + incident * (1.0 + cos_theta - 2.0 * c2);
+    return select(live, select(cos_theta > 0.0, seen, incident), RealPack(0.0));
 }
 
 }  // namespace fpmshell

@@ -10,7 +10,9 @@
 #include <limits>
 #include <vector>
 
+#include "fpmshell/core/simd.hpp"
 #include "fpmshell/core/types.hpp"
+#include "fpmshell/loads/blast/friedlander_pulse.hpp"
 #include "fpmshell/loads/blast/kingery_bulmash.hpp"
 
 namespace fpmshell {
@@ -43,19 +45,28 @@ public:
     BlastFaces(const BlastLoad& load, const std::vector<Vec3>& nodes,
                const std::vector<std::array<Index, 3>>& triangles);
 
-    [[nodiscard]] std::size_t size() const { return faces_.size(); }
+    [[nodiscard]] std::size_t size() const { return faces_; }
     /// The pressure on face k (of load.elements) at time t (model units), whose current
     /// normal makes the angle theta with the line from its centroid to the charge.
-    [[nodiscard]] Real pressure(std::size_t k, Real t, Real cos_theta) const;
+    [[nodiscard]] Real pressure(std::size_t k, Real t, Real cos_theta) const {
+        if (t >= death_time_) return 0.0;
+        const Real tau = t - detonation_time_ - arrival_[k];
+        if (tau < 0 || tau > duration_[k]) return 0.0;
+        return blast_incidence_pressure(
+            friedlander_pressure(incident_[k], duration_[k], incident_decay_[k], tau),
+            friedlander_pressure(reflected_[k], duration_[k], reflected_decay_[k], tau), cos_theta);
+    }
+    /// The same of the k_lanes faces from k on (past size(): 0), a pack at a time: the two
+    /// pulses by vector_exp (core/simd_math.hpp: a lane's bits do not depend on its place).
+    [[nodiscard]] RealPack pressures(std::size_t k, Real t, const RealPack& cos_theta) const;
     /// The pulses' times of face k: its arrival and its positive phase (model units).
-    [[nodiscard]] Real arrival(std::size_t k) const { return faces_[k].arrival; }
-    [[nodiscard]] Real duration(std::size_t k) const { return faces_[k].duration; }
+    [[nodiscard]] Real arrival(std::size_t k) const { return arrival_[k]; }
+    [[nodiscard]] Real duration(std::size_t k) const { return duration_[k]; }
 
 private:
-    struct Face {  ///< model units
-        Real arrival, duration, incident, reflected, incident_decay, reflected_decay;
-    };
-    std::vector<Face> faces_;
+    // per face, model units (padded with faces that never arrive to whole packs)
+    std::vector<Real> arrival_, duration_, incident_, reflected_, incident_decay_, reflected_decay_;
+    std::size_t faces_ = 0;
     Real detonation_time_, death_time_;
 };
 

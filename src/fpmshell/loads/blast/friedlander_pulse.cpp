@@ -12,23 +12,26 @@ Real friedlander_impulse_ratio(Real b) {
 
 Real friedlander_decay(Real peak, Real duration, Real impulse) {
     const Real ratio = impulse / (peak * duration);
-    // bisection on a bracket of the decreasing ratio (g(-4) = 12.9 > 0.99, g(1e4) < 1e-4),
-    // then it has the bits it can have
-    Real low = -4.0, high = 1e4;
-    for (int k = 0; k < 200 && high - low > 1e-14 * (1.0 + std::abs(low)); ++k) {
-        const Real mid = 0.5 * (low + high);
-        if (friedlander_impulse_ratio(mid) > ratio)
-            low = mid;
+    // Newton's method on the decreasing ratio g(b), kept inside a bracket that shrinks with
+    // each step (g(-4) = 12.9 > 0.99, g(1e4) < 1e-4): a step that leaves it bisects instead
+    Real low = -4.0, high = 1e4, b = 1.0;
+    for (int k = 0; k < 200; ++k) {
+        const Real g = friedlander_impulse_ratio(b) - ratio;
+        if (g > 0)
+            low = b;
         else
-            high = mid;
+            high = b;
+        // g'(b) = [(1 - e^-b) b - 2 (b - 1 + e^-b)] / b^3 (-1/6 + b/12 near 0)
+        const Real slope =
+            std::abs(b) < 1e-3
+                ? -1.0 / 6.0 + b / 12.0
+                : ((1.0 - std::exp(-b)) * b - 2.0 * (b - 1.0 + std::exp(-b))) / (b * b * b);
+        Real next = slope < 0 ? b - g / slope : 0.5 * (low + high);
+        if (!(next > low && next < high)) next = 0.5 * (low + high);
+        if (std::abs(next - b) <= 1e-15 * (1.0 + std::abs(b))) return next;
+        b = next;
     }
-    return 0.5 * (low + high);
-}
-
-Real friedlander_pressure(Real peak, Real duration, Real decay, Real tau) {
-    if (tau < 0 || tau > duration) return 0.0;
-    const Real x = tau / duration;
-    return peak * (1.0 - x) * std::exp(-decay * x);
+    return b;
 }
 
 }  // namespace fpmshell

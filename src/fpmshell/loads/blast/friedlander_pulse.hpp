@@ -4,6 +4,8 @@
 // it is the fit's (Kingery & Bulmash give the peak, the duration and the impulse apart).
 #pragma once
 
+#include <cmath>
+
 #include "fpmshell/core/types.hpp"
 
 namespace fpmshell {
@@ -14,10 +16,15 @@ namespace fpmshell {
 
 /// The decay b whose pulse of peak `peak` and duration `duration` has impulse `impulse`
 /// (b < 0 where the impulse exceeds the triangle's, peak duration / 2: the pulse then bulges);
-/// to 1e-14 of the ratio. Requires 0 < impulse < 0.99 peak duration.
+/// by Newton's method in a shrinking bracket, to 1e-15. Requires impulse / (peak duration)
+/// in (1e-4, 12).
 [[nodiscard]] Real friedlander_decay(Real peak, Real duration, Real impulse);
 
 /// p(tau) of eq. 6.13-3: 0 before the arrival (tau < 0) and after the positive phase.
-[[nodiscard]] Real friedlander_pressure(Real peak, Real duration, Real decay, Real tau);
+[[nodiscard]] inline Real friedlander_pressure(Real peak, Real duration, Real decay, Real tau) {
+    if (tau < 0 || tau > duration) return 0.0;
+    const Real x = tau / duration;
+    return peak * (1.0 - x) * std::exp(-decay * x);
+}
 
 }  // namespace fpmshell
