@@ -227,15 +227,15 @@ ShellElements::StepTotals ExplicitSolver::compute_internal_loads(const CyclePoli
     if (tot.eroded_elements > 0) {
         if (eroded_elements_ == 0) first_erosion_time_ = time_;
         eroded_elements_ += tot.eroded_elements;
-        if (contact_ || tied_) drop_eroded_faces();
+        drop_eroded_faces();
     }
     energy_.damping += tot.damping_work;
     return tot;
 }
 
 // §7.6: the faces of the elements eroded this step leave the self-contacts before this step's
-// contact, and the ties to them let go (ties run on one rank only); a distributed run's contact
-// is whole on every rank, so the ranks' lists are joined.
+// contact, the ties to them let go (ties run on one rank only) and the pressures and blasts on
+// them stop; a distributed run's contact is whole on every rank, so the ranks' lists are joined.
 void ExplicitSolver::drop_eroded_faces() {
     std::vector<Index> eroded = elements_.eroded_in_last_step();
     if (decomposition_.distributed()) {
@@ -249,6 +249,7 @@ void ExplicitSolver::drop_eroded_faces() {
     std::sort(eroded.begin(), eroded.end());
     if (contact_) contact_->drop_faces(eroded, true);
     if (tied_) tied_->release_eroded(eroded);
+    loads_->unload(eroded);
 }
 
 // §6.10 during the run: the corners of the elements the loop scaled gain their mass and inertia
@@ -674,6 +675,7 @@ void ExplicitSolver::load(RestartReader& in) {
         // §7.6: the faces eroded before the stop; the loaded candidates are already without
         contact_->drop_faces(elements_.eroded_so_far(), false);
     }
+    loads_->unload(elements_.eroded_so_far());  // §7.6: their pressures and blasts stopped
     in.section("ties");
     if (tied_) {
         tied_->transfer(in);

@@ -121,7 +121,7 @@ void ExternalLoads::update_normals_and_loads(ParticleState& s, const BoundaryCon
         for (const Index e : topology_.elements_of(ip)) {
             const Vec3& cross = element_cross_[static_cast<std::size_t>(e)];
             sum += cross;
-            if (fused_pressure_) f += fused_scale * cross;
+            if (fused_pressure_ && loaded(e)) f += fused_scale * cross;
             if (!blasts_.empty()) f += element_blast_scale_[static_cast<std::size_t>(e)] * cross;
         }
         const Real len = sum.norm();
@@ -142,9 +142,10 @@ void ExternalLoads::update_normals_and_loads(ParticleState& s, const BoundaryCon
                 parallel_for_each(static_cast<Index>(g.particle.size()), parallel, [&](Index i) {
                     const std::size_t ui = static_cast<std::size_t>(i);
                     Vec3& f = s.f_ext[static_cast<std::size_t>(g.particle[ui])];
-                    for (Index k = g.begin[ui]; k < g.begin[ui + 1]; ++k)
-                        f += scale * element_cross_[static_cast<std::size_t>(
-                                         g.element[static_cast<std::size_t>(k)])];
+                    for (Index k = g.begin[ui]; k < g.begin[ui + 1]; ++k) {
+                        const Index e = g.element[static_cast<std::size_t>(k)];
+                        if (loaded(e)) f += scale * element_cross_[static_cast<std::size_t>(e)];
+                    }
                 });
                 break;
             }
@@ -158,6 +159,12 @@ void ExternalLoads::update_normals_and_loads(ParticleState& s, const BoundaryCon
                 break;
         }
     }
+}
+
+void ExternalLoads::unload(const std::vector<Index>& eroded) {
+    if (eroded.empty()) return;
+    if (unloaded_.empty()) unloaded_.assign(model_.triangles.size(), 0);
+    for (const Index e : eroded) unloaded_[static_cast<std::size_t>(e)] = 1;
 }
 
 void ExternalLoads::blast_scales(Real t, bool parallel) {
@@ -185,15 +192,15 @@ void ExternalLoads::blast_scales(Real t, bool parallel) {
             // eq. 6.13-4: cos theta of each face (a zero normal or distance: head on)
             const RealPack product(b.norms.data() + first, stdx::element_aligned);
             const RealPack dot(b.dot.data() + first, stdx::element_aligned);
-            const auto loaded = product > 0.0;
-            const RealPack cos_theta = select(
-                loaded, dot / stdx::sqrt(select(loaded, product, RealPack(1.0))), RealPack(1.0));
+            const auto seen = product > 0.0;
+            const RealPack cos_theta =
+                select(seen, dot / stdx::sqrt(select(seen, product, RealPack(1.0))), RealPack(1.0));
             const RealPack scale = scale_factor * faces.pressures(first, t, cos_theta);
             const std::size_t n = std::min(w, faces.size() - first);
             for (std::size_t j = 0; j < n; ++j) {
-                Real& out =
-                    element_blast_scale_[static_cast<std::size_t>(load.elements[first + j])];
-                out = (several ? out : 0.0) + lane(scale, static_cast<int>(j));
+                const Index e = load.elements[first + j];
+                Real& out = element_blast_scale_[static_cast<std::size_t>(e)];
+                out = (several ? out : 0.0) + (loaded(e) ? lane(scale, static_cast<int>(j)) : 0.0);
             }
         });
     }

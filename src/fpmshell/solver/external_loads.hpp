@@ -5,6 +5,7 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
 #include <vector>
 
 #include "fpmshell/core/types.hpp"
@@ -34,6 +35,10 @@ public:
     }
     void update_normals_and_loads(ParticleState& s, const BoundaryConditions& bc, Real t,
                                   bool parallel);
+    /// §7.6: the pressures and blasts on these eroded triangles stop (their faces are gone, as
+    /// LS-DYNA drops the segment loads of deleted elements); the triangles still turn their
+    /// particles' normals.
+    void unload(const std::vector<Index>& eroded);
 
 private:
     struct PressureGather {  ///< loaded particle -> its loaded triangles (CSR), in the load's order
@@ -64,6 +69,10 @@ private:
     /// scratch: each triangle's blast_scale at the step, summed into the particles in the pass
     /// of the normals (empty without blasts)
     std::vector<Real> element_blast_scale_;
+    std::vector<std::uint8_t> unloaded_;  ///< per triangle: eroded (empty: none)
+    [[nodiscard]] bool loaded(Index e) const {
+        return unloaded_.empty() || unloaded_[static_cast<std::size_t>(e)] == 0;
+    }
     bool fused_pressure_ =
         false;  ///< load 0: a pressure on every triangle, summed with the normals
     std::vector<Vec3> element_cross_;           ///< scratch: (x2 - x1) x (x3 - x1) per triangle

@@ -9,6 +9,7 @@
 
 #include <cmath>
 
+#include "eroding_band.hpp"
 #include "fpmshell/loads/blast/blast_load.hpp"
 #include "fpmshell/mesh/generators.hpp"
 #include "one_section_model.hpp"
@@ -163,4 +164,40 @@ TEST(BlastPlate, ABlastOnARigidPartMovesThePart) {
         }
     EXPECT_LT(hi, -1.0);  // pushed away from the charge, m/s
     EXPECT_LT(hi - lo, 0.2 * std::abs(hi));
+}
+
+TEST(BlastPlate, PressuresAndBlastsOnErodedFacesStop) {
+    // the band of the torn plate (eroding_band.hpp) under a uniform pressure and a blast
+    // passing through the erosion: once every face around a particle has eroded it takes no
+    // load from them (LS-DYNA drops the segment loads of deleted elements); the others still do
+    Model m = test::eroding_band_plate(20);
+    Load p;
+    p.type = LoadType::Pressure;
+    for (Index e = 0; e < static_cast<Index>(m.triangles.size()); ++e) p.elements.push_back(e);
+    p.pressure = 1.0e4;
+    m.loads.push_back(p);
+    BlastLoad b;
+    b.elements = p.elements;
+    b.charge_mass = 1.0;
+    b.centre = Vec3(0.5, 0.5, 2.0);
+    b.detonation_time = 1.0e-3;  // its phase spans the erosion (from about 1.3 ms)
+    m.blast_loads.push_back(b);
+    ExplicitSolver s(m);
+    test::run_to(s, m.control.end_time);
+    ASSERT_GT(s.eroded_elements(), 0);
+    int free = 0, loaded = 0;
+    for (Index q = 0; q < m.n_particles(); ++q) {
+        bool any_live = false;
+        for (const Index e : s.topology().elements_of(q))
+            any_live = any_live || !s.elements().eroded(e);
+        const Real f = s.state().f_ext[static_cast<std::size_t>(q)].norm();
+        if (any_live) {
+            loaded += f > 0;
+        } else {
+            ++free;
+            EXPECT_EQ(f, 0.0) << "particle " << q;
+        }
+    }
+    EXPECT_GT(free, 0);
+    EXPECT_EQ(loaded, m.n_particles() - free);
 }
