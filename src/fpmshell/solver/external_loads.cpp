@@ -52,6 +52,9 @@ ExternalLoads::ExternalLoads(const Model& model, const MeshTopology& topology)
         const auto w = static_cast<std::size_t>(k_lanes);
         b.dot.assign((b.faces.size() + w - 1) / w * w, 1.0);  // padding: cos = 1, no pulse
         b.norms.assign(b.dot.size(), 1.0);
+        b.in_order = blast.elements.size() == model.triangles.size();
+        for (std::size_t k = 0; b.in_order && k < blast.elements.size(); ++k)
+            b.in_order = blast.elements[k] == static_cast<Index>(k);
         blasts_.push_back(std::move(b));
     }
     if (!blasts_.empty()) element_blast_scale_.assign(model.triangles.size(), 0.0);
@@ -67,10 +70,8 @@ ExternalLoads::ExternalLoads(const Model& model, const MeshTopology& topology)
 void ExternalLoads::update_normals_and_loads(ParticleState& s, const BoundaryConditions& bc, Real t,
                                              bool parallel) {
     // §1.3 area-weighted normal, recomputed from the current positions: the cross product of
-    // every triangle, then each particle sums those of its triangles in element order (the
-    // order of a serial scatter, without its write conflicts).
-    const Index ne =
-        near_ ? static_cast<Index>(near_->size()) : static_cast<Index>(model_.triangles.size());
+    // every triangle (cross_products), then each particle sums those of its triangles in
+    // element order (the order of a serial scatter, without its write conflicts).
     // §6.13: a blast acts in the span of time in which some face is in its positive phase
     for (std::size_t l = 0; l < blasts_.size(); ++l) {
         const BlastLoad& load = model_.blast_loads[l];
@@ -78,30 +79,8 @@ void ExternalLoads::update_normals_and_loads(ParticleState& s, const BoundaryCon
         blasts_[l].active = since >= blasts_[l].first_arrival && since <= blasts_[l].last_end &&
                             t < load.death_time;
     }
-    parallel_for_each(ne, parallel, [&](Index i) {
-        const Index e = near_ ? (*near_)[static_cast<std::size_t>(i)] : i;
-        const auto& tri = model_.triangles[static_cast<std::size_t>(e)];
-        const auto ue = static_cast<std::size_t>(e);
-        element_cross_[ue] =
-            (s.x[static_cast<std::size_t>(tri[1])] - s.x[static_cast<std::size_t>(tri[0])])
-                .cross(s.x[static_cast<std::size_t>(tri[2])] -
-                       s.x[static_cast<std::size_t>(tri[0])]);
-        for (std::size_t l = 0; l < blasts_.size(); ++l) {  // §6.13, eq. 6.13-4's angle
-            Blast& b = blasts_[l];
-            const Index k = b.active ? b.face_of_element[ue] : -1;
-            if (k < 0) continue;
-            const BlastLoad& load = model_.blast_loads[l];
-            const Vec3 to_charge = load.centre - (s.x[static_cast<std::size_t>(tri[0])] +
-                                                  s.x[static_cast<std::size_t>(tri[1])] +
-                                                  s.x[static_cast<std::size_t>(tri[2])]) /
-                                                     3.0;
-            const Vec3& cross = element_cross_[ue];
-            b.dot[static_cast<std::size_t>(k)] =
-                (load.reversed ? -1.0 : 1.0) * cross.dot(to_charge);
-            b.norms[static_cast<std::size_t>(k)] = cross.squaredNorm() * to_charge.squaredNorm();
-        }
-    });
-    if (!blasts_.empty()) blast_scales(t, parallel);
+    const bool fused_blast = cross_products(s, t, parallel);
+    if (!blasts_.empty() && !fused_blast) blast_scales(t, parallel);
     // §6.7 follower pressure: f_i = -p A_t n_t / 3 (positive pushes against n), A n = cr / 2.
     auto pressure_scale = [&](const Load& load) {
         return -load.pressure * curve_factor(model_.curves, load.curve, t) / 6.0;
@@ -161,6 +140,76 @@ void ExternalLoads::update_normals_and_loads(ParticleState& s, const BoundaryCon
     }
 }
 
+bool ExternalLoads::cross_products(const ParticleState& s, Real t, bool parallel) {
+    auto cross_of = [&](std::size_t e) {
+        const auto& tri = model_.triangles[e];
+        element_cross_[e] =
+            (s.x[static_cast<std::size_t>(tri[1])] - s.x[static_cast<std::size_t>(tri[0])])
+                .cross(s.x[static_cast<std::size_t>(tri[2])] -
+                       s.x[static_cast<std::size_t>(tri[0])]);
+    };
+    // §6.13, eq. 6.13-4's angle of triangle e's face of blast l: side n.(c - x), |n|^2 |c - x|^2
+    auto angle_of = [&](std::size_t l, std::size_t e, Real& dot, Real& norms) {
+        const BlastLoad& load = model_.blast_loads[l];
+        const auto& tri = model_.triangles[e];
+        const Vec3 to_charge = load.centre - (s.x[static_cast<std::size_t>(tri[0])] +
+                                              s.x[static_cast<std::size_t>(tri[1])] +
+                                              s.x[static_cast<std::size_t>(tri[2])]) /
+                                                 3.0;
+        const Vec3& cross = element_cross_[e];
+        dot = (load.reversed ? -1.0 : 1.0) * cross.dot(to_charge);
+        norms = cross.squaredNorm() * to_charge.squaredNorm();
+    };
+    const std::size_t nt = model_.triangles.size();
+    if (!near_ && blasts_.size() == 1 && blasts_[0].in_order && blasts_[0].active) {
+        // the blast's faces k_lanes triangles at a time, in the pass (its dot and norms stay
+        // in the pack: one pass over the triangles)
+        blasts_[0].zeroed = false;
+        const auto w = static_cast<std::size_t>(k_lanes);
+        parallel_for_each(static_cast<Index>((nt + w - 1) / w), parallel, [&](Index i) {
+            const std::size_t first = static_cast<std::size_t>(i) * w;
+            const std::size_t n = std::min(w, nt - first);
+            alignas(64) std::array<Real, k_lanes> dot, norms;
+            dot.fill(1.0);  // past the faces: cos = 1, no pulse (as Blast::dot's padding)
+            norms.fill(1.0);
+            for (std::size_t j = 0; j < n; ++j) {
+                cross_of(first + j);
+                angle_of(0, first + j, dot[j], norms[j]);
+            }
+            const RealPack scale = face_scales(0, first, dot.data(), norms.data(), t);
+            for (std::size_t j = 0; j < n; ++j)
+                element_blast_scale_[first + j] =
+                    loaded(static_cast<Index>(first + j)) ? lane(scale, static_cast<int>(j)) : 0.0;
+        });
+        return true;
+    }
+    const Index ne = near_ ? static_cast<Index>(near_->size()) : static_cast<Index>(nt);
+    parallel_for_each(ne, parallel, [&](Index i) {
+        const auto e = static_cast<std::size_t>(near_ ? (*near_)[static_cast<std::size_t>(i)] : i);
+        cross_of(e);
+        for (std::size_t l = 0; l < blasts_.size(); ++l) {
+            Blast& b = blasts_[l];
+            const Index k = b.active ? b.face_of_element[e] : -1;
+            if (k >= 0)
+                angle_of(l, e, b.dot[static_cast<std::size_t>(k)],
+                         b.norms[static_cast<std::size_t>(k)]);
+        }
+    });
+    return false;
+}
+
+RealPack ExternalLoads::face_scales(std::size_t l, std::size_t first, const Real* dot,
+                                    const Real* norms, Real t) const {
+    // eq. 6.13-4: cos theta of each face (a zero normal or distance: head on)
+    const RealPack product(norms, stdx::element_aligned);
+    const RealPack d(dot, stdx::element_aligned);
+    const auto seen = product > 0.0;
+    const RealPack cos_theta =
+        select(seen, d / stdx::sqrt(select(seen, product, RealPack(1.0))), RealPack(1.0));
+    const Real scale_factor = (model_.blast_loads[l].reversed ? 1.0 : -1.0) / 6.0;  // -side / 6
+    return scale_factor * blasts_[l].faces.pressures(first, t, cos_theta);
+}
+
 void ExternalLoads::unload(const std::vector<Index>& eroded) {
     if (eroded.empty()) return;
     if (unloaded_.empty()) unloaded_.assign(model_.triangles.size(), 0);
@@ -185,17 +234,11 @@ void ExternalLoads::blast_scales(Real t, bool parallel) {
         }
         b.zeroed = false;
         const BlastFaces& faces = b.faces;
-        const Real scale_factor = (load.reversed ? 1.0 : -1.0) / 6.0;  // -side / 6
         const auto n_packs = static_cast<Index>(b.dot.size() / w);
         parallel_for_each(n_packs, parallel, [&](Index i) {
             const std::size_t first = static_cast<std::size_t>(i) * w;
-            // eq. 6.13-4: cos theta of each face (a zero normal or distance: head on)
-            const RealPack product(b.norms.data() + first, stdx::element_aligned);
-            const RealPack dot(b.dot.data() + first, stdx::element_aligned);
-            const auto seen = product > 0.0;
-            const RealPack cos_theta =
-                select(seen, dot / stdx::sqrt(select(seen, product, RealPack(1.0))), RealPack(1.0));
-            const RealPack scale = scale_factor * faces.pressures(first, t, cos_theta);
+            const RealPack scale =
+                face_scales(l, first, b.dot.data() + first, b.norms.data() + first, t);
             const std::size_t n = std::min(w, faces.size() - first);
             for (std::size_t j = 0; j < n; ++j) {
                 const Index e = load.elements[first + j];

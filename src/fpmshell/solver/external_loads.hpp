@@ -53,13 +53,22 @@ private:
         std::vector<Index> face_of_element;
         Real first_arrival = 0, last_end = 0;
         std::vector<Real> dot, norms;
-        bool active = false;  ///< at this step: inside its span
-        bool zeroed = false;  ///< its triangles' scales are zero (outside its span)
+        bool active = false;    ///< at this step: inside its span
+        bool in_order = false;  ///< its faces are every triangle in order (face k = triangle k)
+        bool zeroed = false;    ///< its triangles' scales are zero (outside its span)
     };
     /// -p / 6 of the blasts on each of their triangles at time t (element_blast_scale_), from
     /// the current cross products and centroids: f_i = that times the cross product at each
     /// corner (as a pressure, §6.7); k_lanes faces at a time.
     void blast_scales(Real t, bool parallel);
+    /// -p / 6 of faces first ... first + k_lanes - 1 of blast l from their dot and norms
+    /// (Blast::dot, norms): the one evaluation of both passes (the same bits either way).
+    [[nodiscard]] RealPack face_scales(std::size_t l, std::size_t first, const Real* dot,
+                                       const Real* norms, Real t) const;
+    /// The pass of the cross products (§1.3) of every triangle; with a single blast on every
+    /// triangle in order and no subset, that blast's scales in the same pass, k_lanes
+    /// triangles at a time (whether it did).
+    bool cross_products(const ParticleState& s, Real t, bool parallel);
 
     const Model& model_;
     const MeshTopology& topology_;
