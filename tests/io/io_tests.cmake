@@ -24,6 +24,14 @@ add_test(NAME io.deck_card_order
                  $<TARGET_FILE:fpmshell> ${CMAKE_BINARY_DIR}/deck_order_test_work)
 set_tests_properties(io.deck_card_order PROPERTIES LABELS io TIMEOUT ${_timeout_300s})
 
+# The air blast of decks (*LOAD_BLAST_ENHANCED, *LOAD_BLAST_SEGMENT(_SET)): variants of
+# examples/decks/blast_panel against it and their twins, and their refusals
+# (tests/io/deck_blast_test.py).
+add_test(NAME io.deck_blast
+         COMMAND ${FPMSHELL_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/io/deck_blast_test.py
+                 $<TARGET_FILE:fpmshell> ${CMAKE_BINARY_DIR}/deck_blast_test_work)
+set_tests_properties(io.deck_blast PROPERTIES LABELS io TIMEOUT ${_timeout_300s})
+
 # The rules through the thickness of decks: NIP (Gauss), *CONTROL_SHELL INTGRD (Lobatto),
 # *INTEGRATION_SHELL (user rules) against YAML twins, and their refusals
 # (tests/io/deck_rules_test.py).
