@@ -216,6 +216,18 @@ expect_invalid("bad_added_mass_limit", BASE.replace(
 expect_invalid("mass_scaling_in_relaxation", BASE.replace(
     CONTROL, "control: {end_time: 1.0e-4, mode: relaxation, mass_scaling: {time_step: 1.0e-6}}"),
     ["mass_scaling_in_relaxation.yaml:11", "control.mass_scaling", "dynamic"])
+BLAST = "  - {type: blast, elements: all, charge_mass: 1.0, centre: [0.5, 0.5, 1.0]}\n"
+PRESSURE = "  - {type: pressure, elements: all, value: 100}\n"
+assert PRESSURE in BASE
+expect_invalid("blast_in_relaxation", BASE.replace(PRESSURE, BLAST).replace(
+    CONTROL, "control: {end_time: 1.0e-4, mode: relaxation}"),
+    ["blast_in_relaxation.yaml:10", "loads.0.type", "dynamic"])
+expect_invalid("blast_without_charge", BASE.replace(PRESSURE, BLAST.replace("charge_mass: 1.0, ", "")),
+               ["blast_without_charge.yaml:10", "loads.0.charge_mass"])
+expect_invalid("blast_centre_of_many_nodes", BASE.replace(PRESSURE, BLAST.replace(
+    "[0.5, 0.5, 1.0]", "boundary")), ["blast_centre_of_many_nodes.yaml:10", "loads.0.centre", "one node"])
+expect_invalid("blast_with_a_curve", BASE.replace(PRESSURE, BLAST.replace("}", ", curve: x}")),
+               ["blast_with_a_curve.yaml:10", "loads.0.curve"])
 scaled = write("scaled.yaml", BASE.replace(
     CONTROL, "control: {end_time: 1.0e-3, rotary_inertia: radioss,\n"
              "          mass_scaling: {time_step: 6.0e-5, added_mass_limit: 0.5}}"))

@@ -7,6 +7,10 @@ namespace fpmshell {
 BlastLoad read_blast_load(const YamlValue& item, const Model& model) {
     const YamlMap m = item.map({"type", "elements", "charge_mass", "centre", "burst",
                                 "detonation_time", "death_time", "scale", "units", "reversed"});
+    if (model.control.mode == SolutionMode::Relaxation)
+        m.at("type").fail(
+            "a blast needs mode: dynamic (its shock is a pulse in time; dynamic relaxation "
+            "runs through load levels in a fictitious time)");
     BlastLoad b;
     b.elements = named_element_set(model, m.at("elements", "an element set name"));
     b.charge_mass =
