@@ -137,6 +137,15 @@ TEST(FriedlanderPulse, ImpulseIsTheFits) {
                     << "Z = " << z << (reflected ? " reflected" : " incident");
             }
         }
+    // the incident decays of the free-air burst by the independent bisection of
+    // tools/theory_checks/test_blast.py (to its 6 printed decimals)
+    const std::array<std::array<Real, 2>, 5> decays{
+        {{0.5, 7.638969}, {1, 8.480013}, {2, 2.442618}, {5, 0.801864}, {10, 0.299021}}};
+    for (const auto& [z, b] : decays) {
+        const BlastWave w = kingery_bulmash(BlastBurst::FreeAir, 1.0, z);
+        EXPECT_NEAR(friedlander_decay(w.incident_pressure, w.duration, w.incident_impulse), b, 1e-6)
+            << "Z = " << z;
+    }
     // the triangle (b = 0) and a decay known in closed form
     EXPECT_NEAR(friedlander_decay(2.0, 3.0, 3.0), 0.0, 1e-12);
     EXPECT_NEAR(friedlander_decay(1.0, 1.0, friedlander_impulse_ratio(2.5)), 2.5, 1e-12);
