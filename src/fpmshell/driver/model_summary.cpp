@@ -49,12 +49,20 @@ std::string model_summary(const Model& model) {
     out += fmt::format("\nconditions {} boundary, {} loads, {} initial velocities, {} curves",
                        model.boundary.size(), model.loads.size() + model.blast_loads.size(),
                        model.initial_conditions.size(), model.curves.size());
-    for (const BlastLoad& b : model.blast_loads)  // §6.13
+    for (const BlastLoad& b : model.blast_loads) {  // §6.13, and where its shock arrives first
+        const BlastFaces faces(b, model.nodes, model.triangles);
+        std::size_t first = 0;
+        for (std::size_t k = 1; k < faces.size(); ++k)
+            if (faces.arrival(k) < faces.arrival(first)) first = k;
         out += fmt::format(
             "\nblast of {:.6g} TNT ({}) at ({:.6g}, {:.6g}, {:.6g}) on {} faces, detonated at "
-            "{:.6g}",
+            "{:.6g}; the shock reaches the first face at {:.6g} and its positive phase there lasts "
+            "{:.6g} (model time units)",
             b.charge_mass, b.burst == BlastBurst::FreeAir ? "free air" : "surface burst",
-            b.centre.x(), b.centre.y(), b.centre.z(), b.elements.size(), b.detonation_time);
+            b.centre.x(), b.centre.y(), b.centre.z(), b.elements.size(), b.detonation_time,
+            faces.size() ? b.detonation_time + faces.arrival(first) : 0.0,
+            faces.size() ? faces.duration(first) : 0.0);
+    }
     for (const RigidBody& b : model.rigid_bodies) {
         const std::string at =
             fmt::format("({:.6g}, {:.6g}, {:.6g})", b.point.x(), b.point.y(), b.point.z());
