@@ -7,6 +7,8 @@ examples/decks/blast_panel (10 g of TNT over a clamped panel, *LOAD_BLAST_ENHANC
   its twin, and the mirror image of the panel's motion;
 - the panel stays still until the shock arrives, then moves away from the charge; `check` prints
   the charge;
+- NEGPHS 0 (also blank, and without card 2) and 10: the negative phase, as its twin with
+  `negative_phase: true`, and a history other than NEGPHS 1's; NEGPHS 11: NEGPHS 1's history;
 - refusals with exit 2 and one sentence naming the place: BLAST 3, UNIT 1, a BID no
   *LOAD_BLAST_ENHANCED defines, ALEPID (ALE coupling).
 
@@ -88,6 +90,31 @@ if h_set and h_mirror:
     worst = max(abs(x + y) for x, y in zip(a, b)) / max(abs(x) for x in a)
     check("blast on reversed segments, the charge below: the mirror image of the panel's motion",
           worst < 1e-9, f"largest difference {worst:.3g}")
+
+# NEGPHS: 0 (written, blank, or card 2 left out) and 10 continue the pulses past their positive
+# phase (theory.md eq. 6.13-5) as the twin with negative_phase: true; 11 is 1 (the panel's)
+NEGPHS_CARD = "                                                       0.004         1\n"
+assert NEGPHS_CARD in deck
+negative_twin = twin.replace("death_time: 0.004}", "death_time: 0.004, negative_phase: true}")
+assert negative_twin != twin
+h_negative = twin_pair("blast NEGPHS 0", write("negphs0", "model.k", deck.replace(NEGPHS_CARD, NEGPHS_CARD[:-11] + "         0\n")),
+                       write("negphs0", "model.yaml", negative_twin))
+check("blast NEGPHS 0: the negative phase changes the panel's motion",
+      h_set is not None and h_negative is not None and h_negative != h_set)
+for name, card in (("blank", NEGPHS_CARD[:-11] + "\n"), ("10", NEGPHS_CARD[:-11] + "        10\n")):
+    r_n, h_n = run(write("negphs_" + name, "model.k", deck.replace(NEGPHS_CARD, card)))
+    check(f"blast NEGPHS {name}: NEGPHS 0's history",
+          r_n.returncode == 0 and h_negative is not None and read(h_n) == h_negative, r_n.stderr)
+without_card_2 = deck.replace("$#     cfm       cfl       cft       cfp     nidbo     death    negphs\n" + NEGPHS_CARD, "")
+assert without_card_2 != deck
+r_n, h_n = run(write("negphs_no_card", "model.k", without_card_2))
+# without card 2 there is no DEATH either: the same as NEGPHS 0 up to 4 ms, then still loaded
+check("blast without card 2: NEGPHS 0's history up to DEATH",
+      r_n.returncode == 0 and h_negative is not None
+      and read(h_n).splitlines()[:400] == h_negative.splitlines()[:400], r_n.stderr)
+r_n, h_n = run(write("negphs_11", "model.k", deck.replace(NEGPHS_CARD, NEGPHS_CARD[:-11] + "        11\n")))
+check("blast NEGPHS 11: NEGPHS 1's history", r_n.returncode == 0 and h_set is not None and read(h_n) == h_set,
+      r_n.stderr)
 
 # refusals: exit 2, one sentence naming the deck's file and line
 for name, text, message in (

@@ -7,6 +7,8 @@
    against Simpson's rule, and the decay b solved from the fits' impulses by bisection (not the
    C++ Newton iteration) at Z = 0.5, 1, 2, 5, 10 of the free-air burst.
 3. The angle law (eq. 6.13-4) at 0, 45, 90 degrees.
+4. The negative phase (eq. 6.13-5): the continued curve's impulse past t0, -e^-b / b^2 per
+   P t0, against Simpson's rule over 60 t0, and its deepest point e^-(1+b) / b.
 Run: cd tools/theory_checks && /usr/bin/python3 test_blast.py
 """
 import math
@@ -97,3 +99,15 @@ c = math.sqrt(0.5)
 for deg, cos, want in ((0, 1.0, 450), (45, c, 225 + 100 * c), (90, 0.0, 100)):
     got = 450 * cos * cos + 100 * (1 + cos - 2 * cos * cos)
     print("3. angle law at %2d deg (Pso 100, Pr 450): %.6f (expected %.6f)" % (deg, got, want))
+
+
+def simpson_tail(b, n=60000, span=60.0):
+    h = span / n
+    f = [(1 - (1 + i * h)) * math.exp(-b * (1 + i * h)) for i in range(n + 1)]
+    return h / 3 * (f[0] + f[-1] + 4 * sum(f[1:-1:2]) + 2 * sum(f[2:-1:2]))
+
+
+tail = max(abs(simpson_tail(b) / (-math.exp(-b) / b ** 2) - 1) for b in (0.8, 2.5, 8.0))
+deepest = max(abs(min((1 - u / 1000) * math.exp(-b * u / 1000) for u in range(1000, 60000))
+                  / (-math.exp(-(1 + b)) / b) - 1) for b in (0.3, 0.8, 2.5))
+print("4. negative phase: impulse closed form against Simpson %.1e; deepest point %.1e" % (tail, deepest))

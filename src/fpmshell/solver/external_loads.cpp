@@ -49,6 +49,7 @@ ExternalLoads::ExternalLoads(const Model& model, const MeshTopology& topology)
             b.first_arrival = std::min(b.first_arrival, b.faces.arrival(k));
             b.last_end = std::max(b.last_end, b.faces.arrival(k) + b.faces.duration(k));
         }
+        if (blast.negative_phase) b.last_end = std::numeric_limits<Real>::infinity();  // eq. 6.13-5
         const auto w = static_cast<std::size_t>(k_lanes);
         b.dot.assign((b.faces.size() + w - 1) / w * w, 1.0);  // padding: cos = 1, no pulse
         b.norms.assign(b.dot.size(), 1.0);
@@ -73,6 +74,7 @@ void ExternalLoads::update_normals_and_loads(ParticleState& s, const BoundaryCon
     // every triangle (cross_products), then each particle sums those of its triangles in
     // element order (the order of a serial scatter, without its write conflicts).
     // §6.13: a blast acts in the span of time in which some face is in its positive phase
+    // (with its negative phase, from the first arrival to its death time)
     for (std::size_t l = 0; l < blasts_.size(); ++l) {
         const BlastLoad& load = model_.blast_loads[l];
         const Real since = t - load.detonation_time;

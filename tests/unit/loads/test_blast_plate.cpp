@@ -21,7 +21,7 @@ namespace {
 
 constexpr Real k_side = 0.1, k_thickness = 0.005, k_standoff = 1.0;
 
-Model blast_plate(bool facing) {
+Model blast_plate(bool facing, Real standoff = k_standoff) {
     PlateParams pp;
     pp.length_x = pp.length_y = k_side;
     pp.nx = pp.ny = 4;
@@ -29,7 +29,7 @@ Model blast_plate(bool facing) {
     BlastLoad b;
     for (Index e = 0; e < static_cast<Index>(m.triangles.size()); ++e) b.elements.push_back(e);
     b.charge_mass = 1.0;
-    b.centre = Vec3(0.5 * k_side, 0.5 * k_side, facing ? k_standoff : -k_standoff);
+    b.centre = Vec3(0.5 * k_side, 0.5 * k_side, facing ? standoff : -standoff);
     m.blast_loads.push_back(b);
     return m;
 }
@@ -41,8 +41,9 @@ Vec3 momentum(const ExplicitSolver& s) {
 }
 
 /// sum over the faces of A [ir cos^2 + is (1 + cos - 2 cos^2)] (the angle law's impulse), or
-/// of A is where the face does not see the charge
-Real face_impulses(const Model& m) {
+/// of A is where the face does not see the charge; with `negative`, of the impulses of the
+/// pulses' negative phases (eq. 6.13-5) instead
+Real face_impulses(const Model& m, bool negative = false) {
     const BlastLoad& b = m.blast_loads[0];
     Real sum = 0;
     for (const auto& t : m.triangles) {
@@ -52,7 +53,15 @@ Real face_impulses(const Model& m) {
         const Vec3 cross = (c1 - a).cross(c2 - a), centroid = (a + c1 + c2) / 3.0;
         const Vec3 to_charge = b.centre - centroid;
         const Real c = cross.dot(to_charge) / (cross.norm() * to_charge.norm());
-        const BlastWave w = kingery_bulmash(b.burst, b.charge_mass, to_charge.norm());
+        BlastWave w = kingery_bulmash(b.burst, b.charge_mass, to_charge.norm());
+        if (negative) {
+            const Real b_i = friedlander_decay(w.incident_pressure, w.duration, w.incident_impulse);
+            const Real b_r =
+                friedlander_decay(w.reflected_pressure, w.duration, w.reflected_impulse);
+            w.incident_impulse = friedlander_negative_impulse(w.incident_pressure, w.duration, b_i);
+            w.reflected_impulse =
+                friedlander_negative_impulse(w.reflected_pressure, w.duration, b_r);
+        }
         const Real impulse =
             c > 0 ? w.reflected_impulse * c * c + w.incident_impulse * (1 + c - 2 * c * c)
                   : w.incident_impulse;
@@ -97,6 +106,66 @@ TEST(BlastPlate, FaceTurnedAwayTakesTheSideOnImpulseTowardTheCharge) {
     EXPECT_NEAR(-momentum(s).z() / face_impulses(m), 1.0, 0.01);
     const BlastWave head_on = kingery_bulmash(BlastBurst::FreeAir, 1.0, k_standoff);
     EXPECT_NEAR(-momentum(s).z() / (head_on.incident_impulse * k_side * k_side), 1.0, 0.02);
+}
+
+TEST(BlastPlate, NegativePhaseTakesBackTheContinuedCurvesImpulse) {
+    // eq. 6.13-5 at Z = 5 (1 kg at 5 m: decays near 1, a suction a tenth of the peak, far from
+    // the floor): after the positive phase the plate has the angle law's impulse; 30 positive
+    // phases later (e^-30b: the tail is spent) the negative phases' impulse has come back off
+    // it, to 1 % (the step's sampling, as the positive phase's); the balance closes
+    constexpr Real standoff = 5.0;
+    Model m = blast_plate(true, standoff);
+    m.blast_loads[0].negative_phase = true;
+    ExplicitSolver s(m);
+    const Real far = std::hypot(standoff, std::sqrt(0.5) * k_side);
+    const BlastWave last = kingery_bulmash(BlastBurst::FreeAir, 1.0, far);
+    test::run_to(s, last.arrival_time + last.duration);
+    const Real positive = -momentum(s).z();
+    EXPECT_NEAR(positive / face_impulses(m), 1.0, 0.01);
+    test::run_to(s, last.arrival_time + 30 * last.duration);
+    const Real negative = -momentum(s).z() - positive;
+    const Real expected = face_impulses(m, true);
+    EXPECT_LT(expected, -0.5 * positive);  // a suction that matters (0.75 of the positive)
+    EXPECT_NEAR(negative / expected, 1.0, 0.01);
+    EXPECT_LT(std::abs(s.energy().error()), 1e-3);
+}
+
+TEST(BlastPlate, SuctionStopsAtTheVacuum) {
+    // 1 kg of TNT 10 m behind a face (normal +z, away from it: the side-on pulse, decay 0.30),
+    // its pressure scaled 100 times: the continued curve's deepest point, at tau = t0 (1 + 1/b),
+    // would be -1 MPa; the pressure stops at -p_ambient (model units m, t, s: kPa), and
+    // without the negative phase there is none
+    BlastLoad b;
+    b.elements = {0};
+    b.charge_mass = 1.0e-3;  // t
+    b.centre = Vec3(0, 0, -10.0);
+    b.kilograms = 1e3;
+    b.scale = 100;
+    const std::vector<Vec3> nodes{{-0.01, -0.01, 0}, {0.01, -0.01, 0}, {0, 0.01, 0}};
+    const std::vector<std::array<Index, 3>> tri{{0, 1, 2}};
+    b.negative_phase = true;
+    const BlastFaces with(b, nodes, tri);
+    b.negative_phase = false;
+    const BlastFaces without(b, nodes, tri);
+    const BlastWave w = kingery_bulmash(BlastBurst::FreeAir, 1.0, 10.0);
+    const Real decay = friedlander_decay(w.incident_pressure, w.duration, w.incident_impulse);
+    const Real deepest = with.arrival(0) + (1.0 + 1.0 / decay) * with.duration(0);
+    ASSERT_LT(100 * friedlander_pressure(w.incident_pressure, w.duration, decay,
+                                         (1.0 + 1.0 / decay) * w.duration, true),
+              -5 * BlastFaces::k_ambient_pressure);
+    EXPECT_EQ(with.pressure(0, deepest, -1.0), -101.325);
+    EXPECT_EQ(without.pressure(0, deepest, -1.0), 0.0);
+    const RealPack packed = with.pressures(0, deepest, RealPack(-1.0));
+    EXPECT_EQ(lane(packed, 0), -101.325);
+    for (int l = 1; l < k_lanes; ++l) EXPECT_EQ(lane(packed, l), 0.0);  // padding
+    // the scalar and the pack agree along the pulse, in and past its positive phase
+    for (const Real tau : {0.2, 0.9, 1.1, 3.0, 12.0, 40.0}) {
+        const Real t = with.arrival(0) + tau * with.duration(0);
+        EXPECT_NEAR(lane(with.pressures(0, t, RealPack(0.3)), 0), with.pressure(0, t, 0.3),
+                    1e-12 * 101.325)
+            << tau;
+        if (tau > 1) EXPECT_LT(with.pressure(0, t, 0.3), 0.0) << tau;
+    }
 }
 
 TEST(BlastPlate, ModelUnitsConvertTheWave) {

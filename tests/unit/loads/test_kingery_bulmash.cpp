@@ -152,6 +152,27 @@ TEST(FriedlanderPulse, ImpulseIsTheFits) {
     EXPECT_NEAR(friedlander_impulse_ratio(1e-4), friedlander_impulse_ratio(1.0001e-3), 2e-4);
 }
 
+TEST(FriedlanderPulse, NegativePhaseContinuesTheCurve) {
+    // eq. 6.13-5: past t0 the curve goes on below zero; its impulse there is -P t0 e^-b / b^2
+    // (Simpson's rule over 60 t0, where e^-60b has left no digit of it); a pulse of b <= 0 has
+    // none (its continuation would grow without bound); off, nothing past t0
+    const Real peak = 7.0e4, t0 = 3.3e-3;
+    for (const Real b : {0.8, 2.5}) {
+        const int n = 60000;
+        const Real h = 60.0 * t0 / n;
+        Real sum = 0;
+        for (int i = 0; i <= n; ++i) {
+            const Real weight = i == 0 || i == n ? 1.0 : (i % 2 ? 4.0 : 2.0);
+            sum += weight * friedlander_pressure(peak, t0, b, t0 + i * h, true);
+        }
+        EXPECT_NEAR(sum * h / 3.0 / friedlander_negative_impulse(peak, t0, b), 1.0, 1e-9) << b;
+        EXPECT_LT(friedlander_pressure(peak, t0, b, 1.5 * t0, true), 0.0);
+        EXPECT_EQ(friedlander_pressure(peak, t0, b, 1.5 * t0, false), 0.0);
+    }
+    EXPECT_EQ(friedlander_pressure(peak, t0, -0.1, 1.5 * t0, true), 0.0);
+    EXPECT_GT(friedlander_pressure(peak, t0, -0.1, 0.5 * t0, true), 0.0);
+}
+
 TEST(BlastIncidence, AngleLawAtZeroFortyFiveNinetyAndBehind) {
     const Real pso = 100, pr = 450;
     EXPECT_DOUBLE_EQ(blast_incidence_pressure(pso, pr, 1.0), pr);  // head on: reflected

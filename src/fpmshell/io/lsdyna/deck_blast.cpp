@@ -99,19 +99,11 @@ void DeckTranslator::blast_source(const DeckBlock& b) {
         const long long negphs = g.id(6, "NEGPHS");
         if (negphs != 0 && negphs != 1 && negphs != 10 && negphs != 11)
             g.fail("NEGPHS " + std::to_string(negphs) + " is not 0, 1, 10 or 11");
-        if (negphs == 0 || negphs == 10)
-            note(b, g.line(),
-                 "NEGPHS " + std::to_string(negphs) +
-                     ": the negative phase is not modelled (the positive phase only, as "
-                     "NEGPHS 1)");
-        if (negphs >= 10)
-            note(b, g.line(),
-                 "NEGPHS " + std::to_string(negphs) +
-                     ": the positive phase lasts the Kingery-Bulmash duration (as NEGPHS 1)");
+        // 0 and 10: the Friedlander curve continued (eq. 6.13-5); 1 and 11: the positive
+        // phase only. The duration is the Kingery-Bulmash (ConWep) one for all four.
+        if (negphs == 0 || negphs == 10) keys += ", negative_phase: true";
     } else {
-        note(b, f.line(),
-             "NEGPHS 0 (blank): the negative phase is not modelled (the positive phase only, "
-             "as NEGPHS 1)");
+        keys += ", negative_phase: true";  // NEGPHS 0, LS-DYNA's default
     }
     if (unit != 2)
         keys += ", units: {length: " + num(u.length) + ", mass: " + num(u.mass) +

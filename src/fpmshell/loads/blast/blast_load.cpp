@@ -14,8 +14,11 @@ Real blast_incidence_pressure(Real incident, Real reflected, Real cos_theta) {
 
 BlastFaces::BlastFaces(const BlastLoad& load, const std::vector<Vec3>& nodes,
                        const std::vector<std::array<Index, 3>>& triangles)
-    : detonation_time_(load.detonation_time), death_time_(load.death_time) {
+    : detonation_time_(load.detonation_time),
+      death_time_(load.death_time),
+      negative_phase_(load.negative_phase) {
     const Real pascals = load.kilograms / (load.metres * load.seconds * load.seconds);
+    floor_ = -k_ambient_pressure / pascals;
     for (const Index e : load.elements) {
         const auto& t = triangles[static_cast<std::size_t>(e)];
         const Vec3 centroid =
@@ -50,16 +53,25 @@ RealPack BlastFaces::pressures(std::size_t k, Real t, const RealPack& cos_theta)
     };
     const RealPack duration = at(duration_);
     const RealPack tau = RealPack(t - detonation_time_) - at(arrival_);
-    const auto live = tau >= 0.0 && tau <= duration;
+    const auto positive = tau <= duration;
+    auto live = tau >= 0.0;
+    if (!negative_phase_) live = live && positive;
     if (!any_lane(live)) return RealPack(0.0);
     const RealPack x = select(live, tau / duration, RealPack(0.0));
     const RealPack fall = 1.0 - x;
-    const RealPack incident = at(incident_) * fall * vector_exp(-at(incident_decay_) * x);
-    const RealPack reflected = at(reflected_) * fall * vector_exp(-at(reflected_decay_) * x);
+    // eq. 6.13-5: past its positive phase a pulse of decay b <= 0 has no negative phase
+    auto pulse = [&](const std::vector<Real>& peak, const std::vector<Real>& decay) {
+        const RealPack b = at(decay);
+        const RealPack p = at(peak) * fall * vector_exp(-b * x);
+        return negative_phase_ ? select(positive || b > 0.0, p, RealPack(0.0)) : p;
+    };
+    const RealPack incident = pulse(incident_, incident_decay_);
+    const RealPack reflected = pulse(reflected_, reflected_decay_);
     // eq. 6.13-4
     const RealPack c2 = cos_theta * cos_theta;
     const RealPack seen = reflected * c2 + incident * (1.0 + cos_theta - 2.0 * c2);
-    return select(live, select(cos_theta > 0.0, seen, incident), RealPack(0.0));
+    const RealPack p = select(cos_theta > 0.0, seen, incident);
+    return select(live, negative_phase_ ? max(p, RealPack(floor_)) : p, RealPack(0.0));
 }
 
 }  // namespace fpmshell

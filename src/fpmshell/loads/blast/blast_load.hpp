@@ -3,9 +3,12 @@
 // (kingery_bulmash.hpp) as two Friedlander pulses (friedlander_pulse.hpp), incident and
 // normally reflected, arriving at the face's arrival time; at each step they are combined by
 // the angle of incidence between the face's current normal and the line from its centroid
-// to the charge (eq. 6.13-4) and act as a pressure on the face's current area.
+// to the charge (eq. 6.13-4) and act as a pressure on the face's current area. With the
+// negative phase, each pulse continues past its positive phase (eq. 6.13-5) and the pressure
+// never falls below the vacuum's, -p_ambient.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <limits>
 #include <vector>
@@ -29,6 +32,9 @@ struct BlastLoad {
     /// the faces' normal against their elements' (a segment listed in the other order): it
     /// decides which side sees the charge and the pressure pushes against it
     bool reversed = false;
+    /// eq. 6.13-5: the pulses continued past their positive phase as LS-DYNA's NEGPHS 0 (off:
+    /// the positive phase only, NEGPHS 1)
+    bool negative_phase = false;
     /// the model's units in SI: metres, kilograms, seconds per model unit
     Real metres = 1, kilograms = 1, seconds = 1;
 };
@@ -51,10 +57,14 @@ public:
     [[nodiscard]] Real pressure(std::size_t k, Real t, Real cos_theta) const {
         if (t >= death_time_) return 0.0;
         const Real tau = t - detonation_time_ - arrival_[k];
-        if (tau < 0 || tau > duration_[k]) return 0.0;
-        return blast_incidence_pressure(
-            friedlander_pressure(incident_[k], duration_[k], incident_decay_[k], tau),
-            friedlander_pressure(reflected_[k], duration_[k], reflected_decay_[k], tau), cos_theta);
+        if (tau < 0 || (tau > duration_[k] && !negative_phase_)) return 0.0;
+        const Real p = blast_incidence_pressure(
+            friedlander_pressure(incident_[k], duration_[k], incident_decay_[k], tau,
+                                 negative_phase_),
+            friedlander_pressure(reflected_[k], duration_[k], reflected_decay_[k], tau,
+                                 negative_phase_),
+            cos_theta);
+        return negative_phase_ ? std::max(p, floor_) : p;
     }
     /// The same of the k_lanes faces from k on (past size(): 0), a pack at a time: the two
     /// pulses by vector_exp (core/simd_math.hpp: a lane's bits do not depend on its place).
@@ -62,12 +72,18 @@ public:
     /// The pulses' times of face k: its arrival and its positive phase (model units).
     [[nodiscard]] Real arrival(std::size_t k) const { return arrival_[k]; }
     [[nodiscard]] Real duration(std::size_t k) const { return duration_[k]; }
+    /// Whether the pulses go on past their positive phase (eq. 6.13-5).
+    [[nodiscard]] bool negative_phase() const { return negative_phase_; }
+    /// The standard atmosphere's pressure, 101 325 Pa: the deepest suction is -p_ambient.
+    static constexpr Real k_ambient_pressure = 101325.0;
 
 private:
     // per face, model units (padded with faces that never arrive to whole packs)
     std::vector<Real> arrival_, duration_, incident_, reflected_, incident_decay_, reflected_decay_;
     std::size_t faces_ = 0;
     Real detonation_time_, death_time_;
+    bool negative_phase_;
+    Real floor_;  ///< -p_ambient in model units, where the negative phase is on
 };
 
 }  // namespace fpmshell

@@ -5,8 +5,9 @@
 namespace fpmshell {
 
 BlastLoad read_blast_load(const YamlValue& item, const Model& model) {
-    const YamlMap m = item.map({"type", "elements", "charge_mass", "centre", "burst",
-                                "detonation_time", "death_time", "scale", "units", "reversed"});
+    const YamlMap m =
+        item.map({"type", "elements", "charge_mass", "centre", "burst", "detonation_time",
+                  "death_time", "scale", "units", "reversed", "negative_phase"});
     if (model.control.mode == SolutionMode::Relaxation)
         m.at("type").fail(
             "a blast needs mode: dynamic (its shock is a pulse in time; dynamic relaxation "
@@ -33,6 +34,7 @@ BlastLoad read_blast_load(const YamlValue& item, const Model& model) {
     b.death_time = m.positive_or("death_time", b.death_time);
     b.scale = m.positive_or("scale", 1.0);
     b.reversed = m.choice_or("reversed", {"true", "false"}, "false") == "true";
+    b.negative_phase = m.choice_or("negative_phase", {"true", "false"}, "false") == "true";
     if (const auto units = m.find("units")) {
         const YamlMap u = units->map({"length", "mass", "time"});
         b.metres = u.positive_or("length", 1.0);
