@@ -76,6 +76,7 @@ check("plastic_panel", panel, ["control.end_time=5e-5"])
 check("plate", plate, ["mesh.nx=100", "mesh.ny=100", "control.end_time=3e-5"])
 # an air blast (theory.md §6.13) on the dome: its faces on every rank, the shock over the ranks
 check("blast_dome", os.path.join(ROOT, "examples/blast_dome/model.yaml"), ["control.end_time=4e-4"])
+check("blast_torn_plate", os.path.join(ROOT, "examples/blast_torn_plate/model.yaml"), ["control.end_time=4e-4"])
 
 # Stopped at t1 (its restart file) and resumed to t2 on 2 ranks: as on one process.
 for ranks in (1, 2):
