@@ -7,7 +7,6 @@
 
 #include "fpmshell/core/byte_buffer.hpp"
 #include "fpmshell/core/chunked_loop.hpp"
-#include "fpmshell/core/communicator.hpp"
 #include "fpmshell/core/errors.hpp"
 #include "fpmshell/core/rotation.hpp"
 #include "fpmshell/io/restart_archive.hpp"
@@ -23,13 +22,13 @@ constexpr Index k_parallel_min_particles = 2000;
 }  // namespace
 
 ExplicitSolver::ExplicitSolver(const Model& model)
-    : model_(model), topology_(model), elements_(model, topology_), nodal_rigid_bodies_(model) {
+    : model_(model),
+      topology_(model),
+      elements_(model, topology_),
+      ranks_(model, topology_, elements_),
+      nodal_rigid_bodies_(model) {
     const std::size_t np = model.nodes.size();
-    const Communicator& comm = Communicator::world();
-    decomposition_ =
-        decompose(model, topology_, elements_.assembly(),
-                  element_costs(model, elements_.assembly().blocks()), comm.rank(), comm.size());
-    elements_.set_decomposition(&decomposition_);
+    elements_.set_decomposition(&ranks_.decomposition());
     s_.resize(np);
     s_.x0 = model.nodes;
     s_.x = model.nodes;
@@ -107,8 +106,9 @@ ExplicitSolver::ExplicitSolver(const Model& model)
     }
     energy_.external_work += nodal_rigid_bodies_.extra_kinetic_energy(s_);  // eq. 6.11-10
     loads_ = std::make_unique<ExternalLoads>(model, topology_);
-    if (decomposition_.distributed())
-        loads_->set_subset(&decomposition_.near_elements, &decomposition_.held_particles);
+    if (ranks_.distributed())
+        loads_->set_subset(&ranks_.decomposition().near_elements,
+                           &ranks_.decomposition().held_particles);
     parallel_particles_ = static_cast<Index>(np) >= k_parallel_min_particles;
     // Rigid bodies and contact (theory.md §8).
     bodies_ = RigidBodyState::from_model(model);
@@ -124,13 +124,7 @@ ExplicitSolver::ExplicitSolver(const Model& model)
         if (!model.tied_surfaces.empty()) tied_ = std::make_unique<TiedSurfaces>(model, thickness);
     }
     refresh_contact_masses();
-    if (contact_ && decomposition_.distributed()) {  // the contact runs whole on every rank
-        contact_owned_.resize(static_cast<std::size_t>(decomposition_.ranks));
-        for (const Index p : contact_->particles())
-            contact_owned_[static_cast<std::size_t>(
-                               decomposition_.particle_owner[static_cast<std::size_t>(p)])]
-                .push_back(p);
-    }
+    if (contact_) ranks_.set_contact_particles(contact_->particles());  // whole on every rank
     energy_.kinetic = energy_.external_work;
     // Without prescribed motions and Lagrange contact, which change v^{n+1/2} between the two,
     // the velocity update and the energy pass are one sweep over the particle arrays instead
@@ -165,7 +159,7 @@ void ExplicitSolver::step(Real max_dt) {
 // The cycle t_n -> t_{n+1} (§6.8).
 void ExplicitSolver::cycle(const CyclePolicy& policy, Real load_time, Real dt_cap) {
     const ShellElements::StepTotals elements = compute_internal_loads(policy);  // 1 §2-§5
-    finish_position_exchange();  // distributed: the positions step 2 reads around the held ones
+    ranks_.finish_positions(s_.x);  // distributed: the positions step 2 reads around the held ones
     loads_->update_normals_and_loads(s_, *bc_, load_time, parallel_particles_);  // 2 §1.3, §6.7
     const StepLengths dt = next_step_lengths(policy, elements, dt_cap);          // 3 §6.4
     penalty_contact(dt);                                                         // 4 §8.2
@@ -192,21 +186,17 @@ void ExplicitSolver::cycle(const CyclePolicy& policy, Real load_time, Real dt_ca
     }
     book_energies(dt, particles);  // 8 §6.8
     finish_step(dt, particles);    // 9
-    if (decomposition_.distributed()) start_position_exchange();
+    ranks_.start_positions(s_.x);
 }
 
-ExplicitSolver::~ExplicitSolver() { finish_position_exchange(); }
+ExplicitSolver::~ExplicitSolver() = default;
 
 template <class F>
 Real ExplicitSolver::max_over_particles(F&& value) const {
     Real largest = 0;
-    const bool distributed = decomposition_.distributed();
     for (std::size_t p = 0; p < s_.size(); ++p)
-        if (!distributed || decomposition_.particle_owner[p] == decomposition_.rank)
-            largest = std::max(largest, value(p));
-    if (distributed)  // the largest over the ranks, as the smallest of its negative
-        largest = -Communicator::world().min_loc(-largest, 0).first;
-    return largest;
+        if (ranks_.owns(p)) largest = std::max(largest, value(p));
+    return ranks_.max(largest);
 }
 
 ShellElements::StepTotals ExplicitSolver::compute_internal_loads(const CyclePolicy& policy) {
@@ -237,16 +227,7 @@ ShellElements::StepTotals ExplicitSolver::compute_internal_loads(const CyclePoli
 // contact, the ties to them let go (ties run on one rank only) and the pressures and blasts on
 // them stop; a distributed run's contact is whole on every rank, so the ranks' lists are joined.
 void ExplicitSolver::drop_eroded_faces() {
-    std::vector<Index> eroded = elements_.eroded_in_last_step();
-    if (decomposition_.distributed()) {
-        const Communicator& comm = Communicator::world();
-        const std::vector<Real> mine(eroded.begin(), eroded.end());
-        const std::vector<int> counts = comm.allgather(static_cast<int>(mine.size()));
-        std::vector<Real> all;
-        comm.allgather(mine, counts, all);
-        eroded.assign(all.begin(), all.end());
-    }
-    std::sort(eroded.begin(), eroded.end());
+    const std::vector<Index> eroded = ranks_.join_sorted(elements_.eroded_in_last_step());
     if (contact_) contact_->drop_faces(eroded, true);
     if (tied_) tied_->release_eroded(eroded);
     loads_->unload(eroded);
@@ -271,22 +252,7 @@ void ExplicitSolver::add_scaled_mass() {
         }
     }
     constexpr std::size_t k_record = 6;
-    if (decomposition_.distributed()) {
-        const Communicator& comm = Communicator::world();
-        std::vector<int> counts = comm.allgather(static_cast<int>(records.size()));
-        std::vector<Real> all;
-        comm.allgather(records, counts, all);
-        // each rank's records are in element order: sort the records of all by element
-        std::vector<std::size_t> order(all.size() / k_record);
-        for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
-        std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-            return all[k_record * a] < all[k_record * b];
-        });
-        records.clear();
-        for (const std::size_t i : order)
-            records.insert(records.end(), all.begin() + static_cast<std::ptrdiff_t>(k_record * i),
-                           all.begin() + static_cast<std::ptrdiff_t>(k_record * (i + 1)));
-    }
+    records = ranks_.join_records(records, k_record);  // in element order, as one process
     for (std::size_t i = 0; i + k_record <= records.size(); i += k_record) {
         const auto ue = static_cast<std::size_t>(records[i]);
         const Real mass = records[i + 1], inertia = records[i + 2];
@@ -371,7 +337,7 @@ void ExplicitSolver::penalty_contact(const StepLengths& dt) {
     if (!contact_->has_penalty()) return;
     const Real motion2 =
         max_over_particles([&](std::size_t p) { return (s_.x[p] - s_.x_prev[p]).squaredNorm(); });
-    if (decomposition_.distributed()) share_contact_particles(s_.x, s_.x_prev);
+    ranks_.share_contact_particles(s_.x, s_.x_prev);
     body_u_pred_.resize(bodies_.size());  // here: the bodies at t_n
     for (std::size_t b = 0; b < bodies_.size(); ++b) body_u_pred_[b] = bodies_[b].u;
     contact_->penalty_forces(s_.x, s_.v, body_u_pred_, bodies_, dt.c1 * dt.dt_n * dt.dt_new,
@@ -413,7 +379,7 @@ void ExplicitSolver::lagrange_contact(const StepLengths& dt) {
     // the velocities follow: v^{n+1/2} = (x^{n+1} - x^n) / dt (§8.3).
     const std::size_t np = s_.size();
     const Real dt_new = dt.dt_new;
-    if (decomposition_.distributed()) share_contact_particles(s_.x, s_.v);
+    ranks_.share_contact_particles(s_.x, s_.v);
     x_pred_.resize(np);
     for (std::size_t p = 0; p < np; ++p) x_pred_[p] = s_.x[p] + dt_new * s_.v[p];
     const Real motion2 =
@@ -487,13 +453,11 @@ void ExplicitSolver::report_failed_element(Index e) const {
 
 void ExplicitSolver::report_non_finite_state() const {
     const std::size_t np = s_.size();
-    if (decomposition_.distributed()) {  // the first owned one over the ranks
+    if (ranks_.distributed()) {  // the first owned one over the ranks
         Index first = -1;
         for (std::size_t p = 0; p < np && first < 0; ++p)
-            if (decomposition_.particle_owner[p] == decomposition_.rank &&
-                !finite_state(p, s_.x[p]))
-                first = static_cast<Index>(p);
-        first = Communicator::world().min_loc(first >= 0 ? 0.0 : 1.0, first).second;
+            if (ranks_.owns(p) && !finite_state(p, s_.x[p])) first = static_cast<Index>(p);
+        first = ranks_.index_at_min(first >= 0 ? 0.0 : 1.0, first);
         std::ostringstream msg;
         msg << "the solution became NaN or infinite at step " << steps_ << " (t = " << time_
             << ") at particle " << first + 1;
@@ -515,11 +479,11 @@ void ExplicitSolver::check_energy_balance() const {
     if (steps_ <= 10 || std::abs(err) <= model_.control.energy_error_limit) return;
     // Where: the particle with the largest kinetic energy (an instability grows fastest there)
     // and the element that sets the stable step.
-    const bool distributed = decomposition_.distributed();
+    const bool distributed = ranks_.distributed();
     std::size_t hot = 0;
     Real hot_ke = -1;
     for (std::size_t p = 0; p < s_.size(); ++p) {
-        if (distributed && decomposition_.particle_owner[p] != decomposition_.rank) continue;
+        if (!ranks_.owns(p)) continue;
         const Real ke =
             s_.mass[p] * s_.v[p].squaredNorm() + s_.inertia[p] * s_.omega[p].squaredNorm();
         if (ke > hot_ke) {
@@ -529,8 +493,7 @@ void ExplicitSolver::check_energy_balance() const {
     }
     Index critical = -1;
     if (distributed) {  // over the ranks: the largest kinetic energy, the last step's element
-        hot = static_cast<std::size_t>(
-            Communicator::world().min_loc(-hot_ke, static_cast<Index>(hot)).second);
+        hot = static_cast<std::size_t>(ranks_.index_at_min(-hot_ke, static_cast<Index>(hot)));
         critical = min_dt_element_;
     } else {
         (void)elements_.min_critical_dt(s_.x, &critical);

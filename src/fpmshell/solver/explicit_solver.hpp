@@ -11,7 +11,6 @@
 
 #include "fpmshell/contact/contact_solver.hpp"
 #include "fpmshell/contact/rigid_body_state.hpp"
-#include "fpmshell/core/communicator.hpp"
 #include "fpmshell/core/types.hpp"
 #include "fpmshell/model/mesh_topology.hpp"
 #include "fpmshell/model/model.hpp"
@@ -23,6 +22,7 @@
 #include "fpmshell/solver/mass_scaling.hpp"
 #include "fpmshell/solver/nodal_rigid_bodies.hpp"
 #include "fpmshell/solver/particle_state.hpp"
+#include "fpmshell/solver/rank_exchange.hpp"
 #include "fpmshell/solver/shell_elements.hpp"
 #include "fpmshell/solver/tied_surfaces.hpp"
 
@@ -91,16 +91,20 @@ public:
     }
 
     /// The ranks of a distributed run (core/communicator.hpp) and this one's share.
-    [[nodiscard]] const DomainDecomposition& decomposition() const { return decomposition_; }
+    [[nodiscard]] const DomainDecomposition& decomposition() const {
+        return ranks_.decomposition();
+    }
     /// What gather_to_root brings to rank 0: what the history rows read (the history
     /// particles' positions, velocities, loads, reactions and rotations, and the positions of
     /// the fans of the pressure gauges), or the whole state
     /// (frames, restart files, the end of the run).
-    enum class Gather { Histories, Everything };
+    using Gather = RankExchange::Gather;
     /// A distributed run: every rank sends the state of the particles it owns (and of the
     /// elements it computes) to rank 0, which then holds it for the result and restart files
     /// it writes. Collective; nothing to do on one rank.
-    void gather_to_root(Gather what = Gather::Everything);
+    void gather_to_root(Gather what = Gather::Everything) {
+        ranks_.gather_to_root(what, model_, topology_, s_, elements_);
+    }
 
     /// The whole state of a dynamic run at t_n, for a restart file (io/restart_archive.hpp):
     /// a solver built from the same model and loaded continues bitwise like this one.
@@ -200,15 +204,6 @@ private:
     /// particle, the sums of the owned ones added atom by atom, exactly, over the ranks.
     template <int N, class Body>
     std::array<Real, N> atom_sums(std::vector<std::array<Real, N>>& scratch, Body&& body);
-    /// A distributed run: the positions x^{n+1} of the particles around the held ones that
-    /// other ranks hold (DomainDecomposition), sent at the end of a step and received after
-    /// the next step's element loop (which does not read them).
-    void start_position_exchange();
-    void finish_position_exchange();
-    /// A distributed run: a and b (two of the particle arrays) of every particle the contact
-    /// reads, from their owners to every rank, which then computes the whole contact as one
-    /// process does.
-    void share_contact_particles(std::vector<Vec3>& a, std::vector<Vec3>& b);
     /// The largest of value(p) over the particles (over the ranks: each over those it owns).
     template <class F>
     [[nodiscard]] Real max_over_particles(F&& value) const;
@@ -225,13 +220,7 @@ private:
     const Model& model_;
     MeshTopology topology_;
     ShellElements elements_;
-    DomainDecomposition decomposition_;  ///< this rank's share (all of it on one rank)
-    std::vector<std::vector<Real>> position_send_, position_recv_;  ///< exchange buffers
-    Communicator::Pending positions_in_flight_;      ///< start_position_exchange's messages
-    std::vector<std::uint8_t> history_particle_;     ///< per particle: in a history's node set
-    std::vector<std::vector<Index>> contact_owned_;  ///< per rank: the contact's particles it owns
-    std::vector<Real> contact_send_, contact_all_;   ///< share_contact_particles buffers
-    std::vector<char> gather_bytes_;                 ///< gather_to_root's buffer
+    RankExchange ranks_;  ///< this rank's share and the traffic between the ranks
     AddedMass added_mass_;
     ParticleState s_;
     EnergyBalance energy_;

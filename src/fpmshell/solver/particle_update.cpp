@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <limits>
 
-#include "fpmshell/core/communicator.hpp"
 #include "fpmshell/core/exact_sum.hpp"
 #include "fpmshell/core/rotation.hpp"
 #include "fpmshell/solver/explicit_solver.hpp"
@@ -110,7 +109,7 @@ inline void ExplicitSolver::advance_particle(std::size_t p, const StepLengths& d
 template <int N, class Body>
 std::array<Real, N> ExplicitSolver::atom_sums(std::vector<std::array<Real, N>>& scratch,
                                               Body&& body) {
-    const DomainDecomposition& d = decomposition_;
+    const DomainDecomposition& d = ranks_.decomposition();
     const auto n_atoms = static_cast<Index>(d.own_atoms.size());
     const auto n_shared = static_cast<Index>(d.held_not_owned.size());
     scratch.resize(static_cast<std::size_t>(n_atoms));
@@ -134,7 +133,7 @@ std::array<Real, N> ExplicitSolver::atom_sums(std::vector<std::array<Real, N>>& 
     std::array<ExactSum, N> exact;
     for (const std::array<Real, N>& part : scratch)
         for (std::size_t k = 0; k < exact.size(); ++k) exact[k].add(part[k]);
-    if (d.distributed()) Communicator::world().sum(exact);
+    ranks_.sum(exact);
     std::array<Real, N> total{};
     for (std::size_t k = 0; k < total.size(); ++k) total[k] = exact[k].value();
     return total;

@@ -1,15 +1,35 @@
-// The exchanges of the explicit solver between the ranks of a distributed run
-// (solver/domain_decomposition.hpp, docs/architecture.md "On several ranks"): the contact
-// particles shared before the contact, the positions of the particles held around each rank's
-// own, and the gathers to rank 0 for output and restart.
+// The traffic between the ranks of a distributed run; described in rank_exchange.hpp.
+#include "fpmshell/solver/rank_exchange.hpp"
+
+#include <algorithm>
+
 #include "fpmshell/core/byte_buffer.hpp"
-#include "fpmshell/core/communicator.hpp"
-#include "fpmshell/solver/explicit_solver.hpp"
+#include "fpmshell/solver/unit_partition.hpp"
 
 namespace fpmshell {
 
-void ExplicitSolver::share_contact_particles(std::vector<Vec3>& a, std::vector<Vec3>& b) {
-    const DomainDecomposition& d = decomposition_;
+RankExchange::RankExchange(const Model& model, const MeshTopology& topology,
+                           const ShellElements& elements) {
+    const Communicator& comm = Communicator::world();
+    d_ = decompose(model, topology, elements.assembly(),
+                   element_costs(model, elements.assembly().blocks()), comm.rank(), comm.size());
+}
+
+RankExchange::~RankExchange() {
+    if (positions_in_flight_.active()) Communicator::world().wait(positions_in_flight_);
+}
+
+void RankExchange::set_contact_particles(const std::vector<Index>& particles) {
+    contact_owned_.assign(d_.distributed() ? static_cast<std::size_t>(d_.ranks) : 0, {});
+    if (!d_.distributed()) return;
+    for (const Index p : particles)
+        contact_owned_[static_cast<std::size_t>(d_.particle_owner[static_cast<std::size_t>(p)])]
+            .push_back(p);
+}
+
+void RankExchange::share_contact_particles(std::vector<Vec3>& a, std::vector<Vec3>& b) {
+    if (!d_.distributed()) return;
+    const DomainDecomposition& d = d_;
     contact_send_.clear();
     for (const Index p : contact_owned_[static_cast<std::size_t>(d.rank)])
         for (const Vec3* v : {&a[static_cast<std::size_t>(p)], &b[static_cast<std::size_t>(p)]})
@@ -26,8 +46,9 @@ void ExplicitSolver::share_contact_particles(std::vector<Vec3>& a, std::vector<V
             }
 }
 
-void ExplicitSolver::start_position_exchange() {
-    const DomainDecomposition& d = decomposition_;
+void RankExchange::start_positions(const std::vector<Vec3>& x) {
+    if (!d_.distributed()) return;
+    const DomainDecomposition& d = d_;
     const std::size_t n_peers = d.position_peers.size();
     position_send_.resize(n_peers);
     position_recv_.resize(n_peers);
@@ -35,8 +56,8 @@ void ExplicitSolver::start_position_exchange() {
         std::vector<Real>& out = position_send_[k];
         out.resize(3 * d.position_send[k].size());
         for (std::size_t i = 0; i < d.position_send[k].size(); ++i) {
-            const Vec3& x = s_.x[static_cast<std::size_t>(d.position_send[k][i])];
-            for (int c = 0; c < 3; ++c) out[3 * i + static_cast<std::size_t>(c)] = x[c];
+            const Vec3& xp = x[static_cast<std::size_t>(d.position_send[k][i])];
+            for (int c = 0; c < 3; ++c) out[3 * i + static_cast<std::size_t>(c)] = xp[c];
         }
         position_recv_[k].resize(3 * d.position_recv[k].size());
     }
@@ -44,15 +65,15 @@ void ExplicitSolver::start_position_exchange() {
         Communicator::world().start_exchange(d.position_peers, position_send_, position_recv_);
 }
 
-void ExplicitSolver::finish_position_exchange() {
+void RankExchange::finish_positions(std::vector<Vec3>& x) {
     if (!positions_in_flight_.active()) return;
-    const DomainDecomposition& d = decomposition_;
+    const DomainDecomposition& d = d_;
     Communicator::world().wait(positions_in_flight_);
     for (std::size_t k = 0; k < d.position_peers.size(); ++k)
         for (std::size_t i = 0; i < d.position_recv[k].size(); ++i) {
-            Vec3& x = s_.x[static_cast<std::size_t>(d.position_recv[k][i])];
+            Vec3& xp = x[static_cast<std::size_t>(d.position_recv[k][i])];
             for (int c = 0; c < 3; ++c)
-                x[c] = position_recv_[k][3 * i + static_cast<std::size_t>(c)];
+                xp[c] = position_recv_[k][3 * i + static_cast<std::size_t>(c)];
         }
 }
 
@@ -98,21 +119,22 @@ void for_each_particle_field(ParticleState& s, std::size_t p, F&& f) {
 }
 }  // namespace
 
-void ExplicitSolver::gather_to_root(Gather what) {
+void RankExchange::gather_to_root(Gather what, const Model& model, const MeshTopology& topology,
+                                  ParticleState& s, ShellElements& elements) {
     const Communicator& comm = Communicator::world();
-    if (!decomposition_.distributed()) return;
-    finish_position_exchange();
-    const DomainDecomposition& d = decomposition_;
+    if (!d_.distributed()) return;
+    finish_positions(s.x);
+    const DomainDecomposition& d = d_;
     const bool all = what == Gather::Everything;
     if (!all && history_particle_.empty()) {
-        history_particle_.assign(s_.size(), 0);
-        for (const HistoryRequest& h : model_.output.histories)
+        history_particle_.assign(s.size(), 0);
+        for (const HistoryRequest& h : model.output.histories)
             for (const Index p : h.nodes) {
                 history_particle_[static_cast<std::size_t>(p)] = 1;
                 if (h.quantity != Quantity::Pressure) continue;
                 // the gauge reads the positions of the particle's fan (history_sampler.cpp)
-                for (const Index e : topology_.elements_of(p))
-                    for (const Index q : model_.triangles[static_cast<std::size_t>(e)])
+                for (const Index e : topology.elements_of(p))
+                    for (const Index q : model.triangles[static_cast<std::size_t>(e)])
                         history_particle_[static_cast<std::size_t>(q)] = 1;
             }
     }
@@ -125,13 +147,13 @@ void ExplicitSolver::gather_to_root(Gather what) {
             if (!all && !history_particle_[p]) continue;
             append_bytes(bytes, static_cast<Index>(p));
             if (all)
-                for_each_particle_field(s_, p, [&](auto& v) { append_bytes(bytes, v); });
+                for_each_particle_field(s, p, [&](auto& v) { append_bytes(bytes, v); });
             else
-                for_each_history_field(s_, p, [&](auto& v) { append_bytes(bytes, v); });
+                for_each_history_field(s, p, [&](auto& v) { append_bytes(bytes, v); });
         }
     const std::vector<std::vector<char>> particles = comm.gather(bytes);
-    const std::vector<std::vector<char>> elements =
-        all ? comm.gather(elements_.pack_state(true)) : std::vector<std::vector<char>>{};
+    const std::vector<std::vector<char>> element_states =
+        all ? comm.gather(elements.pack_state(true)) : std::vector<std::vector<char>>{};
     if (!comm.root()) return;
     for (std::size_t r = 1; r < particles.size(); ++r) {
         const std::vector<char>& b = particles[r];
@@ -140,14 +162,52 @@ void ExplicitSolver::gather_to_root(Gather what) {
             Index p = 0;
             read_bytes(b, at, p);
             if (all)
-                for_each_particle_field(s_, static_cast<std::size_t>(p),
+                for_each_particle_field(s, static_cast<std::size_t>(p),
                                         [&](auto& v) { read_bytes(b, at, v); });
             else
-                for_each_history_field(s_, static_cast<std::size_t>(p),
+                for_each_history_field(s, static_cast<std::size_t>(p),
                                        [&](auto& v) { read_bytes(b, at, v); });
         }
-        if (all) elements_.unpack_state(elements[r]);
+        if (all) elements.unpack_state(element_states[r]);
     }
+}
+
+std::vector<Index> RankExchange::join_sorted(std::vector<Index> mine) const {
+    if (d_.distributed()) {
+        const Communicator& comm = Communicator::world();
+        const std::vector<Real> sent(mine.begin(), mine.end());
+        const std::vector<int> counts = comm.allgather(static_cast<int>(sent.size()));
+        std::vector<Real> all;
+        comm.allgather(sent, counts, all);
+        mine.assign(all.begin(), all.end());
+    }
+    std::sort(mine.begin(), mine.end());
+    return mine;
+}
+
+std::vector<Real> RankExchange::join_records(const std::vector<Real>& mine,
+                                             std::size_t width) const {
+    if (!d_.distributed()) return mine;
+    const Communicator& comm = Communicator::world();
+    const std::vector<int> counts = comm.allgather(static_cast<int>(mine.size()));
+    std::vector<Real> all;
+    comm.allgather(mine, counts, all);
+    // each rank's records are in order: sort the records of all by their first number
+    std::vector<std::size_t> order(all.size() / width);
+    for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+    std::sort(order.begin(), order.end(),
+              [&](std::size_t a, std::size_t b) { return all[width * a] < all[width * b]; });
+    std::vector<Real> joined;
+    joined.reserve(all.size());
+    for (const std::size_t i : order)
+        joined.insert(joined.end(), all.begin() + static_cast<std::ptrdiff_t>(width * i),
+                      all.begin() + static_cast<std::ptrdiff_t>(width * (i + 1)));
+    return joined;
+}
+
+Real RankExchange::max(Real value) const {
+    if (!d_.distributed()) return value;
+    return -Communicator::world().min_loc(-value, 0).first;  // the smallest of its negative
 }
 
 }  // namespace fpmshell

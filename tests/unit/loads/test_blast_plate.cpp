@@ -164,7 +164,9 @@ TEST(BlastPlate, SuctionStopsAtTheVacuum) {
         EXPECT_NEAR(lane(with.pressures(0, t, RealPack(0.3)), 0), with.pressure(0, t, 0.3),
                     1e-12 * 101.325)
             << tau;
-        if (tau > 1) EXPECT_LT(with.pressure(0, t, 0.3), 0.0) << tau;
+        if (tau > 1) {
+            EXPECT_LT(with.pressure(0, t, 0.3), 0.0) << tau;
+        }
     }
 }
 
