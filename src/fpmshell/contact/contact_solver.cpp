@@ -10,6 +10,7 @@
 #include "fpmshell/contact/closest_point.hpp"
 #include "fpmshell/contact/stopwatch.hpp"
 #include "fpmshell/io/restart_archive.hpp"
+#include "fpmshell/model/mesh_pieces.hpp"
 #include "fpmshell/model/node_thickness.hpp"
 #include "fpmshell/model/rigid_body_partition.hpp"
 #include "fpmshell/model/rigid_face.hpp"
@@ -87,6 +88,7 @@ ContactSolver::ContactSolver(const Model& model, const MeshTopology& topology,
     const std::size_t np = model.nodes.size();
     node_thickness_ = mean_node_thickness(model.triangles, element_thickness, np);
     rigid_body_of_ = rigid_body_partition(model).body_of_particle;
+    mesh_piece_ = mesh_pieces(np, model.triangles);
 
     for (const ContactDefinition& def : model.contacts) {
         Definition d;
@@ -218,8 +220,9 @@ void ContactSolver::search(Definition& d, const std::vector<Vec3>& x) {
                     d.slave_offset[i] + 0.5 * element_thickness_[static_cast<std::size_t>(e)];
                 const TriangleClosestPoint cp = closest_point_on_triangle(xs, a, b, c, 0.0);
                 if ((xs - cp.point).norm() > offset + d.margin) return;
-                // Self-contact exclusion (theory.md §8.1, R8): material that starts closer than
-                // the exclusion radius is held together by the shell itself, not by contact.
+                // Self-contact exclusion (theory.md §8.1, R8): material of one piece of the
+                // mesh that starts closer than the exclusion radius is held together by the
+                // shell itself, not by contact (separate pieces: by nothing, so never excluded).
                 const TriangleClosestPoint cp0 =
                     closest_point_on_triangle(xs0, model_.nodes[static_cast<std::size_t>(t[0])],
                                               model_.nodes[static_cast<std::size_t>(t[1])],
@@ -229,6 +232,8 @@ void ContactSolver::search(Definition& d, const std::vector<Vec3>& x) {
                 // A rigid solid's faces (thickness 0) are no shell: nothing holds them to what
                 // they start near, so they are never excluded.
                 if (distance0 < d.exclusion_radius &&
+                    mesh_piece_[static_cast<std::size_t>(s)] ==
+                        mesh_piece_[static_cast<std::size_t>(t[0])] &&
                     element_thickness_[static_cast<std::size_t>(e)] > 0 &&
                     node_thickness_[static_cast<std::size_t>(s)] > 0)
                     return;

@@ -267,6 +267,7 @@ private:
     /// per particle, its rigid body (model/rigid_body_partition.hpp), -1 outside them: a body's
     /// particles never touch its own faces
     std::vector<Index> rigid_body_of_;
+    std::vector<Index> mesh_piece_;  ///< per particle: its piece of the mesh (R8's exclusion)
     std::vector<Definition> definitions_;
     std::vector<Vec3> slave_force_;  ///< per definition: the force on its slaves at t_n
     bool has_penalty_ = false, has_lagrange_ = false;

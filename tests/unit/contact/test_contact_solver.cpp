@@ -222,6 +222,50 @@ TEST(Contact, TwoPlatesDrivenTogetherDoNotInterpenetrate) {
     EXPECT_GT(s.energy().contact, 0);  // Lagrange multipliers dissipate at impact
 }
 
+TEST(Contact, SeparatePartsStartingWithinTheExclusionRadiusStillTouch) {
+    // theory.md R8: the exclusion holds within one piece of the mesh. The two plates of
+    // TwoPlatesDrivenTogetherDoNotInterpenetrate, the top one 1.05 h above the bottom one
+    // (inside the default radius, 1.5 h) and moving down at 5 m/s: they are separate pieces,
+    // nothing holds them apart but the contact, which must act (before, their pairs were
+    // excluded and the plates passed through each other)
+    PlateParams bottom;
+    bottom.nx = bottom.ny = 8;
+    PlateParams top;
+    top.length_x = top.length_y = 0.6;
+    top.nx = top.ny = 6;
+    top.origin = Vec3(0.2, 0.2, 0.0105);
+    top.pattern = DiagonalPattern::Right;
+    MeshData a = generate_plate(bottom), b = generate_plate(top);
+    MeshData both = a;
+    const auto offset = static_cast<Index>(a.nodes.size());
+    both.nodes.insert(both.nodes.end(), b.nodes.begin(), b.nodes.end());
+    for (auto t : b.triangles)
+        both.triangles.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
+    Model m = from_mesh(both, 0.01, k_steel);
+    std::vector<Index> top_nodes, bottom_elements;
+    for (Index p = offset; p < m.n_particles(); ++p) top_nodes.push_back(p);
+    for (Index e = 0; e < static_cast<Index>(a.triangles.size()); ++e) bottom_elements.push_back(e);
+    BoundaryCondition clamp;
+    clamp.nodes = a.node_sets["boundary"];
+    clamp.fixed.fill(true);
+    m.boundary.push_back(clamp);
+    m.initial_conditions.push_back({top_nodes, Vec3(0, 0, -5), Vec3::Zero()});
+    ContactDefinition c;
+    c.type = ContactType::Self;
+    c.elements = m.element_sets["all"];
+    m.contacts.push_back(c);
+    ExplicitSolver s(m);
+    Real closest = 1e30;
+    while (s.time() < 1e-3) {
+        s.step(1e30);
+        closest = std::min(closest, min_face_distance(m, s.state().x, top_nodes, bottom_elements));
+    }
+    EXPECT_GT(s.contact_statistics()->max_active, 0);
+    EXPECT_EQ(s.contact_statistics()->initial_penetrations, 0);
+    EXPECT_GE(closest, 0.9 * 0.01);  // (without the contact: 0.0105 - 5 m/s x 1 ms < 0)
+    EXPECT_LT(std::abs(s.energy().error()), 1e-3);
+}
+
 TEST(Contact, FallingShellOnAPlaneKeepsTheEnergyBalance) {
     // A shallow cylindrical panel (R = 1, 20 deg, convex side up, h = 0.01) falls at 5 m/s on
     // a fixed plane, lands on its straight edges, flexes and bounces off.
@@ -457,8 +501,9 @@ TEST(Contact, TheSlaveForceOfASelfContactIsTheWeightItCarries) {
 // Initial penetrations (theory.md R8; LS-DYNA reports them): a 0.6 x 0.6 plate of 7 x 7
 // particles 0.5 h above a 1 x 1 plate, both h = 0.01, so every particle of the small plate and
 // the 7 x 7 of the big one below it start closer to a face than the offset h; the first search
-// counts them once (98), and the contact leaves those pairs out (the exclusion radius): the
-// plates pass through each other where they overlap, as the exclusion says, and no force acts.
+// counts them once (98), and the contact leaves those pairs out (a pair closer than the offset
+// at t_n has no side, theory.md §8.2): the plates pass through each other where they overlap,
+// and no force acts.
 TEST(Contact, InitialPenetrationsAreCountedAtTheFirstSearch) {
     PlateParams bottom;
     bottom.nx = bottom.ny = 10;
