@@ -23,6 +23,16 @@ using namespace fpmshell;
 
 namespace {
 
+/// The particles and triangles of b after those of a (b's numbered from a's count on).
+MeshData stacked(const MeshData& a, const MeshData& b) {
+    MeshData both = a;
+    const auto offset = static_cast<Index>(a.nodes.size());
+    both.nodes.insert(both.nodes.end(), b.nodes.begin(), b.nodes.end());
+    for (auto t : b.triangles)
+        both.triangles.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
+    return both;
+}
+
 Model from_mesh(const MeshData& mesh, Real h, Material mat) {
     Model m;
     m.title = "contact test";
@@ -184,13 +194,9 @@ TEST(Contact, TwoPlatesDrivenTogetherDoNotInterpenetrate) {
     top.nx = top.ny = 6;
     top.origin = Vec3(0.2, 0.2, 0.03);
     top.pattern = DiagonalPattern::Right;
-    MeshData a = generate_plate(bottom), b = generate_plate(top);
-    MeshData both = a;
+    const MeshData a = generate_plate(bottom);
     const auto offset = static_cast<Index>(a.nodes.size());
-    both.nodes.insert(both.nodes.end(), b.nodes.begin(), b.nodes.end());
-    for (auto t : b.triangles)
-        both.triangles.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
-    Model m = from_mesh(both, 0.01, k_steel);
+    Model m = from_mesh(stacked(a, generate_plate(top)), 0.01, k_steel);
     std::vector<Index> top_nodes, bottom_elements, top_elements, bottom_nodes;
     for (Index p = 0; p < offset; ++p) bottom_nodes.push_back(p);
     for (Index p = offset; p < m.n_particles(); ++p) top_nodes.push_back(p);
@@ -198,7 +204,7 @@ TEST(Contact, TwoPlatesDrivenTogetherDoNotInterpenetrate) {
         (static_cast<std::size_t>(e) < a.triangles.size() ? bottom_elements : top_elements)
             .push_back(e);
     BoundaryCondition clamp;
-    clamp.nodes = a.node_sets["boundary"];
+    clamp.nodes = a.node_sets.at("boundary");
     clamp.fixed.fill(true);
     m.boundary.push_back(clamp);
     m.initial_conditions.push_back({top_nodes, Vec3(0, 0, -60), Vec3::Zero()});
@@ -235,18 +241,14 @@ TEST(Contact, SeparatePartsStartingWithinTheExclusionRadiusStillTouch) {
     top.nx = top.ny = 6;
     top.origin = Vec3(0.2, 0.2, 0.0105);
     top.pattern = DiagonalPattern::Right;
-    MeshData a = generate_plate(bottom), b = generate_plate(top);
-    MeshData both = a;
+    const MeshData a = generate_plate(bottom);
     const auto offset = static_cast<Index>(a.nodes.size());
-    both.nodes.insert(both.nodes.end(), b.nodes.begin(), b.nodes.end());
-    for (auto t : b.triangles)
-        both.triangles.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
-    Model m = from_mesh(both, 0.01, k_steel);
+    Model m = from_mesh(stacked(a, generate_plate(top)), 0.01, k_steel);
     std::vector<Index> top_nodes, bottom_elements;
     for (Index p = offset; p < m.n_particles(); ++p) top_nodes.push_back(p);
     for (Index e = 0; e < static_cast<Index>(a.triangles.size()); ++e) bottom_elements.push_back(e);
     BoundaryCondition clamp;
-    clamp.nodes = a.node_sets["boundary"];
+    clamp.nodes = a.node_sets.at("boundary");
     clamp.fixed.fill(true);
     m.boundary.push_back(clamp);
     m.initial_conditions.push_back({top_nodes, Vec3(0, 0, -5), Vec3::Zero()});
@@ -511,13 +513,7 @@ TEST(Contact, InitialPenetrationsAreCountedAtTheFirstSearch) {
     top.length_x = top.length_y = 0.6;
     top.nx = top.ny = 6;
     top.origin = Vec3(0.2, 0.2, 0.005);
-    MeshData a = generate_plate(bottom), b = generate_plate(top);
-    MeshData both = a;
-    const auto offset = static_cast<Index>(a.nodes.size());
-    both.nodes.insert(both.nodes.end(), b.nodes.begin(), b.nodes.end());
-    for (auto t : b.triangles)
-        both.triangles.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
-    Model m = from_mesh(both, 0.01, k_steel);
+    Model m = from_mesh(stacked(generate_plate(bottom), generate_plate(top)), 0.01, k_steel);
     ContactDefinition self;
     self.elements = m.element_sets["all"];
     m.contacts.push_back(self);
