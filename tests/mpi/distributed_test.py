@@ -4,10 +4,13 @@
 usage: distributed_test.py FPMSHELL MPIEXEC WORK_DIR [FPMSHELL_WITH_TEST_LAWS]
 
 For each model, `fpmshell run --threads 1` and `MPIEXEC -np 2 fpmshell run --threads 1` (and, on
-the elastic cap, -np 1 and -np 3 with 2 threads each) must write byte-identical history.csv, energy.csv
-and last field frame; summary.json says how many ranks ran. A run stopped at t1 and resumed on 2
-ranks must equal the same on one process; so must the tube with contact, with and without mass
-scaling, and with friction (static, dynamic and its decay); so must a plate whose elements erode
+the elastic cap, -np 1 and -np 3 with 2 threads each) must write byte-identical history.csv and
+energy.csv, and the same last field frame: on several ranks its pieces (one .vtu per rank, listed
+by a .pvtu; no whole frame written), loaded by VTK and joined, hold every cell once and every
+value bit for bit (frame_pieces.py); summary.json says how many ranks ran and holds the same
+results (the plastic strain peaks reduced over the ranks, erosion, contact statistics). A run stopped at t1
+and resumed on 2 ranks must equal the same on one process, as must one stopped on 2 ranks and
+resumed on 1 or 3 (the restart file in pieces, one per rank, a newer file's replacing them); so must the tube with contact, with and without mass scaling, and with friction (static, dynamic and its decay); so must a plate whose elements erode
 (by plastic strain, by Johnson-Cook damage), and a strip
 of the test-only material law (tests/material_law/, its own point state gathered from the ranks;
 with the build of the program that holds that law, FPMSHELL_WITH_TEST_LAWS).
@@ -19,6 +22,9 @@ import os
 import shutil
 import subprocess
 import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import frame_pieces  # noqa: E402
 
 FPM, MPIEXEC, WORK = sys.argv[1], sys.argv[2], sys.argv[3]
 FPM_TEST_LAWS = sys.argv[4] if len(sys.argv) > 4 else None
@@ -35,15 +41,48 @@ def run(cmd, out_dir, *extra, ranks=1, threads=1, launcher=False, program=None):
     return subprocess.run(args, capture_output=True, text=True, timeout=600)
 
 
+def last_frame(d):
+    """The last frame of result folder d: fields/frame_NNNNN.vtu, or .pvtu on several ranks."""
+    frames = sorted(f for f in os.listdir(os.path.join(d, "fields"))
+                    if f.endswith(".pvtu") or (f.endswith(".vtu") and "_rank" not in f))
+    return os.path.join(d, "fields", frames[-1]) if frames else None
+
+
+# summary.json keys that depend on the machine or the run's layout, not on the results
+VARYING = {"wall_seconds", "element_steps_per_second", "threads", "ranks", "seconds",
+           "share_of_time_loop"}
+
+
+def results_of(summary):
+    """summary.json without the keys of VARYING (at any depth)."""
+    if isinstance(summary, dict):
+        return {k: results_of(v) for k, v in summary.items() if k not in VARYING}
+    return summary
+
+
 def same_files(a, b, label):
-    names = ["history.csv", "energy.csv"]
-    frames = sorted(os.listdir(os.path.join(a, "fields")))
-    if frames:
-        names.append(os.path.join("fields", frames[-1]))
-    for name in names:
+    with open(os.path.join(a, "summary.json")) as fa, open(os.path.join(b, "summary.json")) as fb:
+        sa, sb = results_of(json.load(fa)), results_of(json.load(fb))
+    if sa != sb:
+        failures.append("%s: summary.json differs from the single-process run: %s" % (
+            label, [k for k in sa if sa.get(k) != sb.get(k)]))
+    for name in ["history.csv", "energy.csv"]:
         with open(os.path.join(a, name), "rb") as fa, open(os.path.join(b, name), "rb") as fb:
             if fa.read() != fb.read():
                 failures.append("%s: %s differs from the single-process run" % (label, name))
+    fa, fb = last_frame(a), last_frame(b)
+    if fa is None or fb is None or os.path.basename(fa)[:11] != os.path.basename(fb)[:11]:
+        failures.append("%s: last frames %s and %s" % (label, fa, fb))
+    elif fb.endswith(".pvtu"):
+        # the pieces each rank wrote, joined, against the single-process frame
+        failures.extend("%s: %s" % (label, d) for d in frame_pieces.differences(fa, fb))
+        if any(f.startswith("frame_") and f.endswith(".vtu") and "_rank" not in f
+               for f in os.listdir(os.path.dirname(fb))):
+            failures.append("%s: a distributed run wrote a whole frame" % label)
+    else:
+        with open(fa, "rb") as x, open(fb, "rb") as y:
+            if x.read() != y.read():
+                failures.append("%s: %s differs from the single-process run" % (label, fb))
 
 
 def check(label, model, sets, ranks=2, threads=1, program=None):
@@ -89,6 +128,39 @@ for ranks in (1, 2):
             ranks, first.returncode, second.returncode, (second.stderr or first.stderr)[-500:]))
 if not failures:
     same_files(os.path.join(WORK, "resume-1"), os.path.join(WORK, "resume-2"), "resumed run")
+# Stopped on 2 ranks and resumed on 1 and on 3 (the model cut anew): as on one process; the .pvd
+# lists the frames of both segments (.pvtu before the restart point; .vtu after it on 1 rank).
+for ranks in (1, 3):
+    d = os.path.join(WORK, "resume-2-then-%d" % ranks)
+    shutil.rmtree(d, ignore_errors=True)
+    first = run(cap, d, "--set", "control.end_time=4e-5", "--restart-every", "1000", ranks=2)
+    # every rank wrote its piece; restart.bin holds none of the particles' or elements' state
+    pieces = sorted(f for f in os.listdir(d) if f.startswith("restart_rank"))
+    if len(pieces) != 2 or not all(os.path.getsize(os.path.join(d, f)) >
+                                   os.path.getsize(os.path.join(d, "restart.bin")) for f in pieces):
+        failures.append("2 ranks: restart pieces %s beside restart.bin of %d bytes" % (
+            pieces, os.path.getsize(os.path.join(d, "restart.bin"))))
+    second = run(cap, d, "--set", "control.end_time=8e-5", "--resume", "--restart-every", "1000",
+                 ranks=ranks, launcher=True)
+    if first.returncode or second.returncode:
+        failures.append("2 ranks resumed on %d exited %d, %d: %s" % (
+            ranks, first.returncode, second.returncode, (second.stderr or first.stderr)[-500:]))
+        continue
+    # the resumed run's restart file replaced the first's pieces: its own (3) or none (1 rank)
+    left = sorted(f for f in os.listdir(d) if f.startswith("restart_rank"))
+    if len(left) != (3 if ranks == 3 else 0) or set(left) & set(pieces):
+        failures.append("2 ranks resumed on %d: restart pieces left %s" % (ranks, left))
+    same_files(os.path.join(WORK, "resume-1"), d, "2 ranks resumed on %d" % ranks)
+    with open(os.path.join(d, "fields.pvd")) as f:
+        listed = [line.split('file="')[1].split('"')[0] for line in f if "<DataSet" in line]
+    if [os.path.splitext(x)[1] for x in listed] != [".pvtu"] * 2 + ([".vtu"] * 2 if ranks == 1 else [".pvtu"] * 2):
+        failures.append("2 ranks resumed on %d: fields.pvd lists %s" % (ranks, listed))
+    with open(os.path.join(d, "summary.json")) as f:
+        cells = json.load(f)["elements"]
+    for x in listed:
+        if frame_pieces.load(os.path.join(d, x)).GetNumberOfCells() != cells:
+            failures.append("2 ranks resumed on %d: %s does not load with the cap's %d cells"
+                            % (ranks, x, cells))
 
 # Contact (self and rigid) computed whole on every rank: the quick tube struck by its mass, and
 # the same with mass scaling to 6e-7 s (every element scaled at set-up, some more during the run).

@@ -1,5 +1,5 @@
 // Values of fixed size copied into and out of a byte buffer: what one rank of a distributed run
-// sends to another (ExplicitSolver::gather_to_root, ShellElements::pack_state). Both ranks run the
+// sends to another (RankExchange::gather_histories, ShellElements::pack_state). Both ranks run the
 // same build, so the layout is that of memory, without conversion.
 #pragma once
 

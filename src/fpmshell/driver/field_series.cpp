@@ -4,7 +4,9 @@
 #include <fmt/format.h>
 
 #include <exception>
+#include <stdexcept>
 
+#include "fpmshell/core/communicator.hpp"
 #include "fpmshell/io/restart_archive.hpp"
 #include "fpmshell/io/run_directory.hpp"
 #include "fpmshell/solver/explicit_solver.hpp"
@@ -18,25 +20,69 @@ FieldSeries::FieldSeries(const Model& model, std::filesystem::path dir,
 void FieldSeries::load(RestartReader& restart) {
     restart.section("fields");
     restart(frames_);
+    frame_count_ = frames_.size();
     resumed_ = true;
 }
 
 void FieldSeries::start(const ExplicitSolver& /*solver*/) {
-    if (resumed_) remove_frames_from(dir_, static_cast<int>(frames_.size()));
-    pvd_.emplace(dir_ / "fields.pvd");
-    for (const auto& [time, file] : frames_) pvd_->add(time, file);
+    const Communicator& comm = Communicator::world();
+    if (comm.root()) {
+        if (resumed_) remove_frames_from(dir_, static_cast<int>(frames_.size()));
+        pvd_.emplace(dir_ / "fields.pvd");
+        for (const auto& [time, file] : frames_) pvd_->add(time, file);
+    }
+    // after rank 0 has removed the frames past the restart point, before any rank writes one
+    if (comm.distributed())
+        frame_count_ = static_cast<std::size_t>(
+            comm.max(comm.root() ? static_cast<long>(frames_.size()) : 0L));
+}
+
+std::string FieldSeries::write_pieces(const ExplicitSolver& solver, Real time,
+                                      const std::vector<Vec3>& positions, std::size_t number,
+                                      const VtuFormat& format) {
+    const Communicator& comm = Communicator::world();
+    if (!piece_) piece_ = frame_piece(model_, solver.elements().computed_elements(), comm.root());
+    const std::string stem = fmt::format("frame_{:05d}", number);
+    std::string error;
+    try {
+        field_frame(fields_, {model_, solver, positions}, time, *piece_, frame_);
+        write_vtu(dir_ / k_fields_folder / fmt::format("{}_rank{}.vtu", stem, comm.rank()), frame_,
+                  format);
+    } catch (const std::exception& e) {
+        error = e.what();
+    }
+    // every piece on disk (or one rank's failure known to all) before the .pvtu names them
+    if (comm.max(error.empty() ? 0L : 1L) != 0)
+        throw std::runtime_error(
+            error.empty() ? fmt::format("another rank could not write its piece of {}", stem)
+                          : error);
+    const std::string file = fmt::format("{}/{}.pvtu", k_fields_folder, stem);
+    if (comm.root()) {
+        std::vector<std::string> pieces;
+        for (int r = 0; r < comm.size(); ++r)
+            pieces.push_back(fmt::format("{}_rank{}.vtu", stem, r));
+        write_pvtu(dir_ / file, frame_, pieces);
+    }
+    return file;
 }
 
 void FieldSeries::frame(const ExplicitSolver& solver, Real time,
                         const std::vector<Vec3>& positions) {
-    const std::string file = fmt::format("{}/frame_{:05d}.vtu", k_fields_folder, frames_.size());
     const OutputControl& output = model_.output;
     const VtuFormat format(output.fields_encoding == FieldsEncoding::Base64  ? VtuEncoding::Base64
                            : output.fields_encoding == FieldsEncoding::Ascii ? VtuEncoding::Ascii
                                                                              : VtuEncoding::Raw,
                            output.fields_zlib ? VtuCompression::Zlib : VtuCompression::None);
-    field_frame(fields_, {model_, solver, positions}, time, frame_);
-    write_vtu(dir_ / file, frame_, format);
+    std::string file;
+    if (Communicator::world().distributed()) {
+        file = write_pieces(solver, time, positions, frame_count_, format);
+    } else {
+        file = fmt::format("{}/frame_{:05d}.vtu", k_fields_folder, frame_count_);
+        field_frame(fields_, {model_, solver, positions}, time, frame_);
+        write_vtu(dir_ / file, frame_, format);
+    }
+    ++frame_count_;
+    if (!pvd_) return;  // a rank other than 0
     frames_.emplace_back(time, file);
     pvd_->add(time, file);
 }

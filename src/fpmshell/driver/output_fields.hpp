@@ -4,6 +4,7 @@
 // the fields of the list in list order; a new field is one more entry in standard_fields(model).
 #pragma once
 
+#include <array>
 #include <functional>
 #include <span>
 #include <string>
@@ -30,9 +31,9 @@ struct FieldSource {
 };
 
 struct OutputField {
-    /// Writes the values of the particles (Point) or triangles (Cell) first .. last - 1 to
-    /// `out`, item after item, `components` values each.
-    using Values = std::function<void(const FieldSource& source, Index first, Index last,
+    /// Writes the values of the particles (Point) or triangles (Cell) `items` to `out`, item
+    /// after item, `components` values each.
+    using Values = std::function<void(const FieldSource& source, std::span<const Index> items,
                                       std::span<Real> out)>;
 
     std::string name;  ///< the array name in the .vtu file
@@ -55,6 +56,26 @@ struct OutputField {
 /// gathering the values. The items are gathered on the OpenMP threads.
 void field_frame(const std::vector<OutputField>& fields, const FieldSource& source, Real time,
                  FieldFrame& frame);
+
+/// The part of a frame that one rank of a distributed run writes (fields/frame_NNNNN_rankR.vtu):
+/// the elements it computes and the particles of those elements (every one of them updated on
+/// this rank: their state is that of a single-process run), with rank 0 also the particles of no
+/// element; all in ascending order.
+struct FramePiece {
+    std::vector<Index> particles, elements;
+    std::vector<std::array<Index, 3>> triangles;  ///< the elements' corners, indices into particles
+};
+
+/// The piece of `elements` (ascending): their particles, and with `lone_particles` also the
+/// particles that no triangle of the model names.
+[[nodiscard]] FramePiece frame_piece(const Model& model, std::vector<Index> elements,
+                                     bool lone_particles);
+
+/// The piece's frame: its particles and triangles, one array per field over its items, then
+/// the point array `particle_index` and the cell array `element_index` (each item's index in
+/// the single-process frame, from 0), so that the pieces of a frame join into it.
+void field_frame(const std::vector<OutputField>& fields, const FieldSource& source, Real time,
+                 const FramePiece& piece, FieldFrame& frame);
 
 /// Surfaces of the shell at which the plastic strain is reported.
 enum class ShellSurface { Bottom, Middle, Top };

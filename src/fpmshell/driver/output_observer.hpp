@@ -43,6 +43,9 @@ struct StepReport {
     std::optional<Real> residual_ratio;
     StepOutcome outcome = StepOutcome::Continues;
     double wall_seconds = 0;  ///< wall time of the time loop so far, all segments of a run
+    /// A distributed run: whether every rank writes its piece of the restart file after this
+    /// step (agreed by the ranks; RestartFiles decides by itself when empty).
+    std::optional<bool> restart_agreed;
 };
 
 /// How the run ended.

@@ -1,9 +1,17 @@
 // Restart file observer; the cadence and layout are in restart_files.hpp.
 #include "fpmshell/driver/restart_files.hpp"
 
+#include <fmt/format.h>
+
+#include <exception>
+#include <stdexcept>
+#include <string>
+#include <system_error>
 #include <utility>
 
+#include "fpmshell/core/communicator.hpp"
 #include "fpmshell/io/restart_archive.hpp"
+#include "fpmshell/io/run_directory.hpp"
 #include "fpmshell/solver/explicit_solver.hpp"
 
 namespace fpmshell {
@@ -21,25 +29,76 @@ bool RestartFiles::clock_due(const StepReport& report) const {
 }
 
 void RestartFiles::step_done(const ExplicitSolver& solver, const StepReport& report) {
-    if (clock_due(report) || report.outcome == StepOutcome::Pauses)
-        write(solver, report.wall_seconds);
+    const bool due = report.restart_agreed
+                         ? *report.restart_agreed
+                         : clock_due(report) || report.outcome == StepOutcome::Pauses;
+    if (due) write(solver, report.wall_seconds);
 }
 
 void RestartFiles::write(const ExplicitSolver& solver, double wall_seconds) {
-    results_.flush();  // the files on disk hold at least what the restart file holds
-    RestartWriter w;
-    solver.save(w);
-    w.section("driver");
-    w(schedule_, wall_seconds);
-    results_.save(w);
-    w.save(path_);
+    const Communicator& comm = Communicator::world();
+    const bool in_pieces = comm.distributed();
+    const std::filesystem::path dir = path_.parent_path();
+    if (in_pieces) {
+        // every rank its own particles and elements: no rank gathers the state
+        std::string error;
+        try {
+            RestartWriter piece;
+            solver.save_piece(piece);
+            piece.save(dir / restart_piece_file(comm.rank(), solver.steps()));
+        } catch (const std::exception& e) {
+            error = e.what();
+        }
+        // every piece on disk (or one rank's failure known to all) before restart.bin names them
+        if (comm.max(error.empty() ? 0L : 1L) != 0)
+            throw std::runtime_error(
+                error.empty() ? "another rank could not write its piece of the restart file"
+                              : error);
+    }
+    if (comm.root()) {
+        results_.flush();  // the files on disk hold at least what the restart file holds
+        RestartWriter w;
+        w.section("layout");
+        w(in_pieces ? comm.size() : 0, solver.steps());
+        solver.save(w, in_pieces);
+        w.section("driver");
+        w(schedule_, wall_seconds);
+        results_.save(w);
+        w.save(path_);
+        // the pieces of the file just replaced (and of any file cut short) are stale now
+        remove_restart_pieces_except(dir, in_pieces ? solver.steps() : -1);
+    }
     last_write_ = Clock::now();
 }
+
+namespace {
+
+/// Reads restart.bin's layout and loads the solver from it (and from its pieces).
+void load_solver(RestartReader& r, ExplicitSolver& solver) {
+    r.section("layout");
+    int pieces = 0;
+    long step = 0;
+    r(pieces, step);
+    if (pieces < 0 || step < 0) r.fail("restart file is damaged: its layout is not a layout");
+    const std::filesystem::path dir = r.path().parent_path();
+    solver.load(r, pieces, [&r, &dir, pieces, step](int rank) {
+        const std::filesystem::path piece = dir / restart_piece_file(rank, step);
+        std::error_code ec;
+        if (!std::filesystem::is_regular_file(piece, ec))
+            r.fail(
+                fmt::format("the piece {} of this restart file (written on {} ranks after "
+                            "step {}) is missing; resume needs every piece",
+                            piece.filename().string(), pieces, step));
+        return RestartReader(piece);
+    });
+}
+
+}  // namespace
 
 double RestartFiles::resume(const std::filesystem::path& path, ExplicitSolver& solver,
                             OutputSchedule& schedule, OutputObserver& results) {
     RestartReader r(path);
-    solver.load(r);
+    load_solver(r, solver);
     r.section("driver");
     double wall_seconds = 0;
     r(schedule, wall_seconds);
@@ -53,7 +112,7 @@ double RestartFiles::resume(const std::filesystem::path& path, ExplicitSolver& s
 double RestartFiles::resume_solver(const std::filesystem::path& path, ExplicitSolver& solver,
                                    OutputSchedule& schedule) {
     RestartReader r(path);
-    solver.load(r);
+    load_solver(r, solver);
     r.section("driver");
     double wall_seconds = 0;
     r(schedule, wall_seconds);

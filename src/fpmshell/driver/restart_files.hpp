@@ -3,9 +3,17 @@
 // every `every` wall seconds and at the end of the run (when `every` > 0), and always when the
 // run pauses (a signal, --stop-at-step).
 //
-// Layout after the header: the solver's sections, section "driver" (next history row and
-// frame times, wall seconds so far), then the sections of the observers that keep a state
-// (history, energy, fields), in the order of the observer list.
+// Layout after the header: section "layout" (the number of pieces, 0 for one process, and the
+// step), the solver's sections, section "driver" (next history row and frame times, wall seconds
+// so far), then the sections of the observers that keep a state (history, energy, fields), in
+// the order of the observer list.
+//
+// On several ranks every rank writes its piece, restart_rankR_stepN.bin (the state of the
+// particles it owns and of the elements it computes: ExplicitSolver::save_piece), and rank 0,
+// once every piece is on disk, restart.bin without that state; then the pieces of older files
+// are removed. A resume on any number of ranks reads restart.bin and every piece it names: no
+// rank gathers the state to write it. The file a run cut short while writing leaves behind
+// still names its own pieces, which are kept until a newer file is complete.
 #pragma once
 
 #include <chrono>
@@ -32,12 +40,12 @@ public:
     static double resume(const std::filesystem::path& path, ExplicitSolver& solver,
                          OutputSchedule& schedule, OutputObserver& results);
     /// resume without the result files' state (the ranks of a distributed run other than 0,
-    /// which write no results).
+    /// which write no results but their pieces of the frames and restart files).
     static double resume_solver(const std::filesystem::path& path, ExplicitSolver& solver,
                                 OutputSchedule& schedule);
     /// Whether step_done would write the restart file for this report, by the wall clock or
-    /// at the end (not counting a pause); a distributed run asks rank 0 before the step's
-    /// collective gathering of the state.
+    /// at the end (not counting a pause); a distributed run asks rank 0's and tells every
+    /// rank's step_done the agreed answer (StepReport::restart_agreed): writing is collective.
     [[nodiscard]] bool clock_due(const StepReport& report) const;
 
 private:

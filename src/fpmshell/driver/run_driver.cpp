@@ -21,6 +21,7 @@
 #include "fpmshell/driver/history_file.hpp"
 #include "fpmshell/driver/interrupt_guard.hpp"
 #include "fpmshell/driver/output_schedule.hpp"
+#include "fpmshell/driver/plastic_strain_peaks.hpp"
 #include "fpmshell/driver/restart_files.hpp"
 #include "fpmshell/driver/run_report.hpp"
 #include "fpmshell/driver/summary_file.hpp"
@@ -110,20 +111,22 @@ RunEnd advance_in_time(Run& run) {
         const bool row = run.schedule.row_due(t, at_end);
         const bool frame = run.schedule.frame_due(t, at_end);
         int signal = at_end ? 0 : InterruptGuard::received();
+        std::optional<bool> restart_agreed;  // a distributed run's, for every rank's pieces
         if (comm.distributed()) {
             // one decision for every rank: a signal that any rank received, rank 0's restart
-            // clock; then the state of every rank on rank 0 when a result file needs it
+            // clock; then what the history rows read on rank 0 (each rank writes its own piece
+            // of a frame and of a restart file, and summary.json's element peaks are reduced)
             const bool clock =
-                run.restart && run.restart->clock_due(
-                                   {t, std::nullopt, StepOutcome::Continues, run.clock.seconds()});
+                comm.root() && run.restart &&
+                run.restart->clock_due({t, std::nullopt,
+                                        at_end ? StepOutcome::Ends : StepOutcome::Continues,
+                                        run.clock.seconds(), std::nullopt});
             const long flags = comm.max(2L * signal + (clock ? 1 : 0));
             signal = static_cast<int>(flags / 2);
             const bool pausing =
                 signal != 0 || (!at_end && stop_at_step > 0 && solver.steps() >= stop_at_step);
-            if (frame || at_end || pausing || (flags & 1) != 0)
-                solver.gather_to_root(ExplicitSolver::Gather::Everything);
-            else if (row)
-                solver.gather_to_root(ExplicitSolver::Gather::Histories);
+            restart_agreed = pausing || (flags & 1) != 0;
+            if (row) solver.gather_histories();
         }
         if (row) run.out.sample(solver, t, std::nullopt);
         if (frame) run.out.frame(solver, t, solver.state().x);
@@ -132,7 +135,7 @@ RunEnd advance_in_time(Run& run) {
         const StepOutcome outcome = at_end  ? StepOutcome::Ends
                                     : pause ? StepOutcome::Pauses
                                             : StepOutcome::Continues;
-        run.out.step_done(solver, {t, std::nullopt, outcome, run.clock.seconds()});
+        run.out.step_done(solver, {t, std::nullopt, outcome, run.clock.seconds(), restart_agreed});
         if (body_stopped) {
             const std::string& name =
                 run.model.rigid_bodies[static_cast<std::size_t>(run.model.control.end_body)].name;
@@ -182,7 +185,7 @@ RunEnd relax_load_levels(Run& run, std::vector<Vec3>& last_good) {
         if (run.schedule.frame_due(t, k == levels)) run.out.frame(solver, t, solver.state().x);
         run.out.step_done(
             solver, {t, r.residual_ratio, k == levels ? StepOutcome::Ends : StepOutcome::Continues,
-                     run.clock.seconds()});
+                     run.clock.seconds(), std::nullopt});
     }
     if (unconverged > 0)
         return run_end(0, fmt::format("completed; {} of {} load levels did not converge",
@@ -192,21 +195,26 @@ RunEnd relax_load_levels(Run& run, std::vector<Vec3>& last_good) {
 
 /// The result files of model-format.md and the run's report, in the order they are told: the
 /// progress line first, then the files, the options' observers, and the closing log lines.
-const RestartFiles* add_result_files(ObserverList& out, const Model& model, const RunOptions& opt,
-                                     LogFile& log, const OutputSchedule& schedule) {
+struct ResultFiles {
+    RestartFiles* restart = nullptr;  ///< dynamic runs
+    SummaryFile* summary = nullptr;
+};
+
+ResultFiles add_result_files(ObserverList& out, const Model& model, const RunOptions& opt,
+                             LogFile& log, const OutputSchedule& schedule) {
     out.add<ProgressReport>(log, model.control.end_time, opt.quiet);
     const HistoryFile& history = out.add<HistoryFile>(model, opt.output_dir);
     out.add<EnergyFile>(model, opt.output_dir);
     out.add<FieldSeries>(model, opt.output_dir, standard_fields(model),
                          [&log](const std::string& line) { log.line(line); });
-    out.add<SummaryFile>(model, opt.output_dir, history);
-    const RestartFiles* restart = nullptr;
+    ResultFiles files;
+    files.summary = &out.add<SummaryFile>(model, opt.output_dir, history);
     if (model.control.mode == SolutionMode::Dynamic)
-        restart = &out.add<RestartFiles>(opt.output_dir / k_restart_file, opt.restart_every,
-                                         schedule, out);
+        files.restart = &out.add<RestartFiles>(opt.output_dir / k_restart_file, opt.restart_every,
+                                               schedule, out);
     for (OutputObserver* o : opt.observers) out.attach(*o);
     out.add<ClosingReport>(log, opt.output_dir);
-    return restart;
+    return files;
 }
 
 /// What a run on several ranks does not do yet, refused before it starts (exit 2).
@@ -294,8 +302,18 @@ int run_model(const Model& model, const RunOptions& opt) {
     OutputSchedule schedule(model);
     const std::filesystem::path restart_path = opt.output_dir / k_restart_file;
     ObserverList out;
-    const RestartFiles* restart =
-        comm.root() ? add_result_files(out, model, opt, log, schedule) : nullptr;
+    // Rank 0 writes every result file; every other rank its pieces of the frames and of the
+    // restart files.
+    ResultFiles result_files;
+    if (comm.root()) {
+        result_files = add_result_files(out, model, opt, log, schedule);
+    } else {
+        out.add<FieldSeries>(model, opt.output_dir, standard_fields(model),
+                             [&log](const std::string& line) { log.line(line); });
+        result_files.restart =
+            &out.add<RestartFiles>(restart_path, opt.restart_every, schedule, out);
+    }
+    const RestartFiles* restart = result_files.restart;
 
     double wall_before = 0;  // wall seconds of the earlier segments of a resumed run
     if (opt.resume) {
@@ -319,18 +337,22 @@ int run_model(const Model& model, const RunOptions& opt) {
     } catch (const RunFailure& failure) {
         end = run_end(1, std::string("failed: ") + failure.what());
         // The positions of a failed state that are no longer finite give way to those before
-        // the failed step, which the solver keeps as x_prev, or before the load level.
-        solver.gather_to_root();
+        // the failed step, which the solver keeps as x_prev, or before the load level (one
+        // choice for every rank: each writes its piece of the last frame).
         const std::vector<Vec3>& x = solver.state().x;
+        const bool finite = comm.max(all_finite(x) ? 0L : 1L) == 0;
         out.failure(solver, failure.what(),
-                    all_finite(x) ? x
-                    : relaxation  ? last_good
-                                  : solver.state().x_prev);
+                    finite       ? x
+                    : relaxation ? last_good
+                                 : solver.state().x_prev);
     }
     if (!relaxation) report_mass_scaling(model, solver.added_mass(), "by the end of the run", log);
     end.wall_seconds = run.clock.seconds();
     end.threads = threads;
     end.ranks = comm.size();
+    const PlasticStrainPeaks plastic_strain = plastic_strain_peaks(solver);  // collective
+    if (result_files.summary != nullptr)
+        result_files.summary->set_plastic_strain_peaks(plastic_strain);
     out.finish(solver, end);
     return end.exit_code;
 }

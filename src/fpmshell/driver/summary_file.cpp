@@ -28,30 +28,15 @@ JsonValue peaks_json(const Model& model, const HistoryFile& history) {
 
 /// Peak equivalent plastic strain per surface (it never decreases, so the last state holds
 /// it), averaged over the in-plane points of an element like the VTU fields.
-JsonValue plastic_strain_json(const Model& model, const ExplicitSolver& solver) {
+JsonValue plastic_strain_json(const PlasticStrainPeaks& peaks) {
     JsonValue plastic = JsonValue::object();
-    const std::pair<ShellSurface, const char*> surfaces[] = {{ShellSurface::Bottom, "bottom"},
-                                                             {ShellSurface::Middle, "middle"},
-                                                             {ShellSurface::Top, "top"}};
-    Real best = 0;
-    Index best_element = -1;
-    std::string best_surface = "none";
-    for (const auto& [surface, name] : surfaces) {
-        Real peak = 0;
-        for (Index e = 0; e < model.n_elements(); ++e) {
-            const Real v = surface_plastic_strain(solver.elements(), e, surface);
-            peak = std::max(peak, v);
-            if (v > best) {
-                best = v;
-                best_element = e;
-                best_surface = name;
-            }
-        }
-        plastic.set(std::string("max_") + name, peak);
-    }
-    plastic.set("max", best);
-    plastic.set("element", best_element >= 0 ? best_element + 1 : 0);
-    plastic.set("surface", best_surface);
+    const char* names[] = {"bottom", "middle", "top"};
+    for (std::size_t s = 0; s < 3; ++s) plastic.set(std::string("max_") + names[s], peaks.peak[s]);
+    const int best = peaks.surface();
+    const auto b = static_cast<std::size_t>(best < 0 ? 0 : best);
+    plastic.set("max", best < 0 ? 0.0 : peaks.peak[b]);
+    plastic.set("element", best < 0 ? Index{0} : peaks.element[b] + 1);
+    plastic.set("surface", std::string(best < 0 ? "none" : names[b]));
     return plastic;
 }
 
@@ -131,7 +116,8 @@ void SummaryFile::finish(const ExplicitSolver& solver, const RunEnd& end) {
     j.set("ranks", end.ranks);
     j.set("energy_error", solver.energy().error());
     j.set("peaks", peaks_json(model_, history_));
-    j.set("plastic_strain", plastic_strain_json(model_, solver));
+    j.set("plastic_strain",
+          plastic_strain_json(plastic_strain_ ? *plastic_strain_ : plastic_strain_peaks(solver)));
     j.set("plastic_work", solver.energy().plastic);
     if (const ContactStatistics* c = solver.contact_statistics())
         j.set("contact", contact_json(*c, wall));

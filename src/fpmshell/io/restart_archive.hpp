@@ -138,6 +138,8 @@ public:
     void finish() const;
     /// Throws InputError "<file>: <message>" (for checks of the content by the caller).
     [[noreturn]] void fail(const std::string& message) const;
+    /// The file read.
+    [[nodiscard]] const std::filesystem::path& path() const { return path_; }
     /// Format version of the file: the one this build writes (io/restart_archive.cpp), since
     /// the constructor refuses any other.
     [[nodiscard]] std::uint32_t format() const { return format_; }

@@ -47,10 +47,27 @@ bool starts_with(const std::string& s, std::string_view prefix) {
     return s.size() >= prefix.size() && s.compare(0, prefix.size(), prefix) == 0;
 }
 
-/// True for a VTU frame written by the run ("frame_*.vtu") or one's leftover temporary file.
+/// The step of a restart piece "restart_rankR_stepN.bin" (or of its temporary file), -1 for a
+/// name of another file.
+long restart_piece_step(const std::string& name) {
+    if (!starts_with(name, "restart_rank")) return -1;
+    const std::size_t at = name.find("_step");
+    const std::size_t end = name.find(".bin");
+    if (at == std::string::npos || end == std::string::npos || end <= at + 5) return -1;
+    try {
+        std::size_t used = 0;
+        const long step = std::stol(name.substr(at + 5, end - at - 5), &used);
+        return used == end - at - 5 && step >= 0 ? step : -1;
+    } catch (const std::exception&) {
+        return -1;
+    }
+}
+
+/// True for a VTU frame written by the run ("frame_*.vtu"; on several ranks "frame_*.pvtu" and
+/// its pieces "frame_*_rank*.vtu") or one's leftover temporary file.
 bool is_frame_file(const std::string& name) {
-    return starts_with(name, "frame_") &&
-           (name.ends_with(".vtu") || name.find(".vtu.tmp.") != std::string::npos);
+    return starts_with(name, "frame_") && (name.ends_with(".vtu") || name.ends_with(".pvtu") ||
+                                           name.find("vtu.tmp.") != std::string::npos);
 }
 
 bool holds_frames(const fs::path& fields) {
@@ -92,6 +109,9 @@ void remove_our_files(const fs::path& dir, bool results) {
                 ours = true;
         }
         if (starts_with(name, std::string(k_model_marker) + ".tmp.")) ours = true;
+        const long piece_step = restart_piece_step(name);
+        if (piece_step >= 0 && (results || name.find(".bin.tmp.") != std::string::npos))
+            ours = true;
         if (ours && !entry.is_directory(ec)) remove_file(dir, entry.path());
     }
 }
@@ -179,13 +199,25 @@ void prepare_resume_directory(const fs::path& dir, const fs::path& model_file, b
                            ec.message() + ").");
 }
 
+void remove_restart_pieces_except(const fs::path& dir, long keep_step) {
+    std::error_code ec;
+    for (const auto& entry : fs::directory_iterator(dir, ec)) {
+        const std::string name = entry.path().filename().string();
+        const long step = restart_piece_step(name);
+        const bool temporary = name.find(".bin.tmp.") != std::string::npos;
+        if (step >= 0 && (step != keep_step || temporary) && !entry.is_directory(ec))
+            remove_file(dir, entry.path());
+    }
+}
+
 void remove_frames_from(const fs::path& dir, int first) {
     std::error_code ec;
     for (const auto& entry : fs::directory_iterator(dir / k_fields_folder, ec)) {
         const std::string name = entry.path().filename().string();
         if (!is_frame_file(name) || entry.is_directory(ec)) continue;
-        // frame_NNNNN.vtu: the number follows "frame_"; a temporary file is always stale.
-        const bool temporary = name.find(".vtu.tmp.") != std::string::npos;
+        // frame_NNNNN.vtu (.pvtu, _rankR.vtu): the number follows "frame_"; a temporary file is
+        // always stale.
+        const bool temporary = name.find("vtu.tmp.") != std::string::npos;
         int index = -1;
         try {
             index = std::stoi(name.substr(6));

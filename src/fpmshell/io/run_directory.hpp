@@ -28,13 +28,22 @@ inline constexpr std::array<const char*, 8> k_result_files = {
 /// Folder of the VTU frames, inside DIR.
 inline constexpr const char* k_fields_folder = "fields";
 
+/// The piece of a distributed run's restart file (restart.bin) that rank `rank` wrote after step
+/// `step`: restart_rankR_stepN.bin in DIR.
+[[nodiscard]] inline std::string restart_piece_file(int rank, long step) {
+    return fmt::format("restart_rank{}_step{}.bin", rank, step);
+}
+/// Deletes DIR's restart pieces of every step but `keep_step` (those of an older restart file,
+/// or of one whose writing was cut short) and their leftover temporary files.
+void remove_restart_pieces_except(const std::filesystem::path& dir, long keep_step);
+
 /// Makes `dir` ready for a run of `model_file`:
 ///  - creates it (and its parents) when missing, with a `fields/` folder inside;
 ///  - when it holds results (any of k_result_files, or frames in fields/) of another model, or
 ///    of a model it cannot tell (no marker), throws InputError unless `overwrite` is true;
 ///  - otherwise (same model, or `overwrite`) deletes those result files, the fields/frame_*.vtu
-///    frames and leftover temporary files, and nothing else (DIR may be a folder the user keeps
-///    other files in);
+///    frames, the restart pieces of distributed runs and leftover temporary files, and nothing else
+///    (DIR may be a folder the user keeps other files in);
 ///  - records the absolute path of `model_file` in DIR/.fpmshell_model.
 /// Throws InputError (one sentence naming DIR) when DIR is a file or cannot be created or
 /// cleaned.

@@ -335,6 +335,36 @@ void write_vtu(const std::filesystem::path& path, const FieldFrame& frame, VtuFo
     write_file_atomic(path, file.pieces());
 }
 
+void write_pvtu(const std::filesystem::path& path, const FieldFrame& layout,
+                const std::vector<std::string>& pieces) {
+    std::string out;
+    fmt::format_to(std::back_inserter(out),
+                   "<?xml version=\"1.0\"?>\n"
+                   "<VTKFile type=\"PUnstructuredGrid\" version=\"1.0\" byte_order=\"{}\" "
+                   "header_type=\"UInt64\">\n"
+                   "  <PUnstructuredGrid GhostLevel=\"0\">\n",
+                   byte_order_name());
+    const auto declare = [&out](const char* tag, const std::vector<FieldArray>& arrays) {
+        fmt::format_to(std::back_inserter(out), "    <{}>\n", tag);
+        for (const FieldArray& a : arrays)
+            fmt::format_to(std::back_inserter(out),
+                           "      <PDataArray type=\"Float64\" Name=\"{}\" "
+                           "NumberOfComponents=\"{}\"/>\n",
+                           xml_escape(a.name), a.components);
+        fmt::format_to(std::back_inserter(out), "    </{}>\n", tag);
+    };
+    declare("PPointData", layout.point_data);
+    declare("PCellData", layout.cell_data);
+    out +=
+        "    <PPoints>\n"
+        "      <PDataArray type=\"Float64\" Name=\"Points\" NumberOfComponents=\"3\"/>\n"
+        "    </PPoints>\n";
+    for (const std::string& piece : pieces)
+        fmt::format_to(std::back_inserter(out), "    <Piece Source=\"{}\"/>\n", xml_escape(piece));
+    out += "  </PUnstructuredGrid>\n</VTKFile>\n";
+    write_file_atomic(path, out);
+}
+
 PvdSeries::PvdSeries(std::filesystem::path pvd_path) : pvd_path_(std::move(pvd_path)) { write(); }
 
 void PvdSeries::add(Real time, const std::string& relative_vtu_path) {

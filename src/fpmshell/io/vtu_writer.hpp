@@ -19,6 +19,8 @@
 //  - Encoding Base64: format="binary", base64 of [UInt64 byte count][values] inline: the file
 //    stays well-formed XML. Encoding Ascii: format="ascii" values (shortest round-trip decimal
 //    form): larger, slower, for debugging and diffing.
+// A frame of a distributed run is a .pvtu file (PUnstructuredGrid, GhostLevel 0) that declares
+// the arrays and lists one .vtu piece per rank, each piece a file as above.
 // Every file is replaced atomically (io/atomic_file.hpp).
 #pragma once
 
@@ -53,6 +55,13 @@ struct VtuFormat {
 /// for an inconsistent frame (see vtu_text) and std::runtime_error when the file cannot be
 /// written.
 void write_vtu(const std::filesystem::path& path, const FieldFrame& frame, VtuFormat format = {});
+
+/// Writes the .pvtu file (VTK XML PUnstructuredGrid) of a frame cut into pieces, one .vtu file
+/// each (`pieces`: their paths relative to the folder of `path`): it declares the arrays of
+/// `layout` (their names and components; every piece holds the same arrays) and lists the
+/// pieces. Atomically; throws std::runtime_error when the file cannot be written.
+void write_pvtu(const std::filesystem::path& path, const FieldFrame& layout,
+                const std::vector<std::string>& pieces);
 
 /// A ParaView time series (.pvd). Every add() rewrites the whole file atomically, so the file
 /// on disk always lists exactly the frames written so far.

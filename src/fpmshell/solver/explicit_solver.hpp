@@ -5,6 +5,7 @@
 #pragma once
 
 #include <array>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -94,23 +95,26 @@ public:
     [[nodiscard]] const DomainDecomposition& decomposition() const {
         return ranks_.decomposition();
     }
-    /// What gather_to_root brings to rank 0: what the history rows read (the history
-    /// particles' positions, velocities, loads, reactions and rotations, and the positions of
-    /// the fans of the pressure gauges), or the whole state
-    /// (frames, restart files, the end of the run).
-    using Gather = RankExchange::Gather;
-    /// A distributed run: every rank sends the state of the particles it owns (and of the
-    /// elements it computes) to rank 0, which then holds it for the result and restart files
-    /// it writes. Collective; nothing to do on one rank.
-    void gather_to_root(Gather what = Gather::Everything) {
-        ranks_.gather_to_root(what, model_, topology_, s_, elements_);
-    }
+    /// A distributed run: every rank sends the state that the history rows read of the
+    /// particles it owns to rank 0, which then holds it for history.csv (RankExchange::
+    /// gather_histories). Collective; nothing to do on one rank.
+    void gather_histories() { ranks_.gather_histories(model_, topology_, s_); }
 
     /// The whole state of a dynamic run at t_n, for a restart file (io/restart_archive.hpp):
-    /// a solver built from the same model and loaded continues bitwise like this one.
-    void save(RestartWriter& out) const;
-    /// Throws InputError when the file belongs to another model (other particles).
-    void load(RestartReader& in);
+    /// a solver built from the same model and loaded continues bitwise like this one. With
+    /// `in_pieces` (a distributed run) without the particles' and elements' state, which every
+    /// rank writes of its own with save_piece.
+    void save(RestartWriter& out, bool in_pieces = false) const;
+    /// This rank's piece of a distributed run's restart file: the state of the particles it
+    /// owns and of the elements it computes, after its step and time.
+    void save_piece(RestartWriter& out) const;
+    /// The reader of the piece that rank r wrote (RestartFiles opens the files).
+    using RestartPieces = std::function<RestartReader(int rank)>;
+    /// Loads a restart file: whole (`pieces` 0), or written on `pieces` ranks, whose pieces
+    /// `open_piece` opens; they may have been written on any number of ranks. Throws
+    /// InputError when the file or a piece belongs to another model (other particles or
+    /// elements), to another step, or is damaged.
+    void load(RestartReader& in, int pieces = 0, const RestartPieces& open_piece = {});
 
 private:
     /// The lengths of this cycle's steps and the central-difference factors (§6.6):
@@ -132,8 +136,12 @@ private:
         Real residual2 = 0, reference2 = 0;
         Real damping_ahead = 0;  ///< eq. 6.8-4
     };
+    /// The state of the cycle, with `particles` the particles' too.
     template <class Archive>
-    void transfer_state(Archive& ar);
+    void transfer_state(Archive& ar, bool particles);
+    /// The particles' and elements' state from the pieces of a distributed restart file
+    /// (`in`: its restart.bin, for the messages): each must hold them once.
+    void load_pieces(const RestartReader& in, int ranks, const RestartPieces& pieces);
 
     /// The cycle t_n -> t_{n+1} (§6.8), shared by dynamic and relaxation modes. load_time: the
     /// time at which loads and prescribed motions are evaluated; dt_cap: the largest step.

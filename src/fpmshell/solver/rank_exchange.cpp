@@ -1,7 +1,10 @@
 // The traffic between the ranks of a distributed run; described in rank_exchange.hpp.
 #include "fpmshell/solver/rank_exchange.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
+#include <stdexcept>
 
 #include "fpmshell/core/byte_buffer.hpp"
 #include "fpmshell/solver/unit_partition.hpp"
@@ -119,14 +122,62 @@ void for_each_particle_field(ParticleState& s, std::size_t p, F&& f) {
 }
 }  // namespace
 
-void RankExchange::gather_to_root(Gather what, const Model& model, const MeshTopology& topology,
-                                  ParticleState& s, ShellElements& elements) {
+std::vector<char> RankExchange::owned_particle_records(ParticleState& s, bool history_only) const {
+    const DomainDecomposition& d = d_;
+    std::vector<char> bytes;
+    const auto put = [&](std::size_t p) {
+        if (history_only && !history_particle_[p]) return;
+        append_bytes(bytes, static_cast<Index>(p));
+        if (history_only)
+            for_each_history_field(s, p, [&](auto& v) { append_bytes(bytes, v); });
+        else
+            for_each_particle_field(s, p, [&](auto& v) { append_bytes(bytes, v); });
+    };
+    if (!d.distributed()) {
+        for (std::size_t p = 0; p < s.size(); ++p) put(p);
+        return bytes;
+    }
+    for (const Index a : d.own_atoms)
+        for (Index k = d.atom_particle_begin[static_cast<std::size_t>(a)];
+             k < d.atom_particle_begin[static_cast<std::size_t>(a) + 1]; ++k)
+            put(static_cast<std::size_t>(d.atom_particles[static_cast<std::size_t>(k)]));
+    return bytes;
+}
+
+void RankExchange::read_particle_records(const std::vector<char>& bytes, ParticleState& s,
+                                         bool history_only, std::vector<std::uint8_t>* seen) {
+    std::size_t record = sizeof(Index);
+    {
+        ParticleState one;
+        one.resize(1);
+        if (history_only)
+            for_each_history_field(one, 0, [&](auto& v) { record += sizeof(v); });
+        else
+            for_each_particle_field(one, 0, [&](auto& v) { record += sizeof(v); });
+    }
+    if (bytes.size() % record != 0)
+        throw std::invalid_argument("the particle records are cut short");
+    std::size_t at = 0;
+    while (at < bytes.size()) {
+        Index p = 0;
+        read_bytes(bytes, at, p);
+        if (p < 0 || static_cast<std::size_t>(p) >= s.size())
+            throw std::invalid_argument(fmt::format("a record of particle {} of {}", p, s.size()));
+        const auto up = static_cast<std::size_t>(p);
+        if (history_only)
+            for_each_history_field(s, up, [&](auto& v) { read_bytes(bytes, at, v); });
+        else
+            for_each_particle_field(s, up, [&](auto& v) { read_bytes(bytes, at, v); });
+        if (seen != nullptr) ++(*seen)[up];
+    }
+}
+
+void RankExchange::gather_histories(const Model& model, const MeshTopology& topology,
+                                    ParticleState& s) {
     const Communicator& comm = Communicator::world();
     if (!d_.distributed()) return;
     finish_positions(s.x);
-    const DomainDecomposition& d = d_;
-    const bool all = what == Gather::Everything;
-    if (!all && history_particle_.empty()) {
+    if (history_particle_.empty()) {
         history_particle_.assign(s.size(), 0);
         for (const HistoryRequest& h : model.output.histories)
             for (const Index p : h.nodes) {
@@ -138,38 +189,10 @@ void RankExchange::gather_to_root(Gather what, const Model& model, const MeshTop
                         history_particle_[static_cast<std::size_t>(q)] = 1;
             }
     }
-    std::vector<char>& bytes = gather_bytes_;
-    bytes.clear();
-    for (const Index a : d.own_atoms)
-        for (Index k = d.atom_particle_begin[static_cast<std::size_t>(a)];
-             k < d.atom_particle_begin[static_cast<std::size_t>(a) + 1]; ++k) {
-            const auto p = static_cast<std::size_t>(d.atom_particles[static_cast<std::size_t>(k)]);
-            if (!all && !history_particle_[p]) continue;
-            append_bytes(bytes, static_cast<Index>(p));
-            if (all)
-                for_each_particle_field(s, p, [&](auto& v) { append_bytes(bytes, v); });
-            else
-                for_each_history_field(s, p, [&](auto& v) { append_bytes(bytes, v); });
-        }
-    const std::vector<std::vector<char>> particles = comm.gather(bytes);
-    const std::vector<std::vector<char>> element_states =
-        all ? comm.gather(elements.pack_state(true)) : std::vector<std::vector<char>>{};
+    const std::vector<std::vector<char>> particles = comm.gather(owned_particle_records(s, true));
     if (!comm.root()) return;
-    for (std::size_t r = 1; r < particles.size(); ++r) {
-        const std::vector<char>& b = particles[r];
-        std::size_t at = 0;
-        while (at < b.size()) {
-            Index p = 0;
-            read_bytes(b, at, p);
-            if (all)
-                for_each_particle_field(s, static_cast<std::size_t>(p),
-                                        [&](auto& v) { read_bytes(b, at, v); });
-            else
-                for_each_history_field(s, static_cast<std::size_t>(p),
-                                       [&](auto& v) { read_bytes(b, at, v); });
-        }
-        if (all) elements.unpack_state(element_states[r]);
-    }
+    for (std::size_t r = 1; r < particles.size(); ++r)
+        read_particle_records(particles[r], s, true, nullptr);
 }
 
 std::vector<Index> RankExchange::join_sorted(std::vector<Index> mine) const {

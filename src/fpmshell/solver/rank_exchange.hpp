@@ -1,7 +1,7 @@
 // The traffic of a distributed run between its ranks (docs/architecture.md "On several ranks"):
 // this rank's share of the model (DomainDecomposition), the positions of the particles held
 // around its own, the contact's particles shared before the contact, the joins of per-rank
-// lists, and the gathers to rank 0 for output and restart. On one rank every call is a no-op
+// lists, and the gather to rank 0 of what the history rows read. On one rank every call is a no-op
 // (or the identity), so the solver calls them unconditionally where that reads better.
 #pragma once
 
@@ -65,14 +65,23 @@ public:
         return d_.distributed() ? Communicator::world().min_loc(value, index).second : index;
     }
 
-    /// What gather_to_root brings to rank 0 (ExplicitSolver::Gather).
-    enum class Gather { Histories, Everything };
-    /// Every rank sends the state of the particles it owns (and of the elements it computes)
-    /// to rank 0, which then holds it in s and elements: what the history rows read (the
+    /// Every rank sends the state that the history rows read of the particles it owns (the
     /// history particles' positions, velocities, loads, reactions and rotations, and the
-    /// positions of the fans of the pressure gauges), or everything. Collective.
-    void gather_to_root(Gather what, const Model& model, const MeshTopology& topology,
-                        ParticleState& s, ShellElements& elements);
+    /// positions of the fans of the pressure gauges) to rank 0, which then holds it in s.
+    /// Collective.
+    void gather_histories(const Model& model, const MeshTopology& topology, ParticleState& s);
+
+    /// The records of the particles this rank owns (all on one rank), in the order of its
+    /// atoms: each particle's index, then every array of its state, or with `history_only`
+    /// those the history rows read (of the particles they read). What gather_histories sends and
+    /// a distributed restart file's pieces hold.
+    [[nodiscard]] std::vector<char> owned_particle_records(ParticleState& s,
+                                                           bool history_only) const;
+    /// Writes such records into s, counting each particle in `seen` (if given, one entry per
+    /// particle). Throws std::invalid_argument for a record cut short or of a particle s does
+    /// not have (records read from a file).
+    static void read_particle_records(const std::vector<char>& bytes, ParticleState& s,
+                                      bool history_only, std::vector<std::uint8_t>* seen);
 
 private:
     DomainDecomposition d_;
@@ -81,7 +90,6 @@ private:
     std::vector<std::vector<Index>> contact_owned_;  ///< per rank: the contact's particles it owns
     std::vector<Real> contact_send_, contact_all_;   ///< share_contact_particles' buffers
     std::vector<std::uint8_t> history_particle_;     ///< per particle: read by a history row
-    std::vector<char> gather_bytes_;                 ///< gather_to_root's buffer
 };
 
 }  // namespace fpmshell

@@ -115,10 +115,16 @@ public:
     /// A distributed run: compute only the units of `d` (null: all), receive the other ranks'
     /// slots at the shared particles, sum only the held particles. d must outlive this.
     void set_decomposition(const DomainDecomposition* d);
-    /// The state of the elements this rank computes (or of all), as bytes for
-    /// unpack_state on another rank (a distributed run's results on rank 0).
-    [[nodiscard]] std::vector<char> pack_state(bool own_only) const;
-    void unpack_state(const std::vector<char>& bytes);
+    /// The elements this rank computes (its units of the element loop, blocks then those
+    /// alone; every element on one rank).
+    [[nodiscard]] std::vector<Index> computed_elements() const;
+    /// The state of the elements this rank computes, as bytes for unpack_state (a
+    /// distributed run's pieces of a restart file).
+    [[nodiscard]] std::vector<char> pack_state() const;
+    /// Counts each element in `seen` (if given, one entry per element). Throws
+    /// std::invalid_argument for states cut short or of an element this model lacks (states
+    /// read from a file).
+    void unpack_state(const std::vector<char>& bytes, std::vector<std::uint8_t>* seen = nullptr);
 
 private:
     /// What the step totals need of a set of elements (a block, an element computed alone,

@@ -1,5 +1,9 @@
-// The state ShellElements carries from step to step: as bytes for another rank (a distributed
-// run's results on rank 0) and in a restart file.
+// The state ShellElements carries from step to step: in a restart file, whole or as the bytes of
+// a distributed run's pieces.
+#include <fmt/format.h>
+
+#include <stdexcept>
+
 #include "fpmshell/core/byte_buffer.hpp"
 #include "fpmshell/io/restart_archive.hpp"
 #include "fpmshell/solver/shell_elements.hpp"
@@ -9,6 +13,8 @@ namespace fpmshell {
 namespace {
 template <class T>
 T take(const std::vector<char>& bytes, std::size_t& at) {
+    if (bytes.size() - at < sizeof(T))  // at <= size always
+        throw std::invalid_argument("the element states are cut short");
     T v;
     read_bytes(bytes, at, v);
     return v;
@@ -18,10 +24,10 @@ T take(const std::vector<char>& bytes, std::size_t& at) {
 // Per element: its index, thickness, N, M, bending step ratio and length, its mass scaling
 // state (§6.10), where elements can fail its erosion state and its criteria's (§7.6), then its
 // points.
-std::vector<char> ShellElements::pack_state(bool own_only) const {
+std::vector<Index> ShellElements::computed_elements() const {
     std::vector<Index> elements;
     const ElementBlocks& blocks = assembly_.blocks();
-    if (own_only && decomposition_) {
+    if (decomposition_) {
         for (const Index b : decomposition_->own_blocks)
             for (Index l = 0; l < k_lanes; ++l)
                 elements.push_back(
@@ -31,6 +37,11 @@ std::vector<char> ShellElements::pack_state(bool own_only) const {
     } else {
         for (Index e = 0; e < size(); ++e) elements.push_back(e);
     }
+    return elements;
+}
+
+std::vector<char> ShellElements::pack_state() const {
+    const std::vector<Index> elements = computed_elements();
     std::vector<char> bytes;
     auto& self = const_cast<ShellElements&>(*this);  // the step ratios have no const access
     for (const Index e : elements) {
@@ -61,10 +72,14 @@ std::vector<char> ShellElements::pack_state(bool own_only) const {
     return bytes;
 }
 
-void ShellElements::unpack_state(const std::vector<char>& bytes) {
+void ShellElements::unpack_state(const std::vector<char>& bytes, std::vector<std::uint8_t>* seen) {
     std::size_t at = 0;
     while (at < bytes.size()) {
-        const auto ue = static_cast<std::size_t>(take<Index>(bytes, at));
+        const Index e = take<Index>(bytes, at);
+        if (e < 0 || static_cast<std::size_t>(e) >= tri_.size())
+            throw std::invalid_argument(fmt::format("a state of element {} of {}", e, tri_.size()));
+        const auto ue = static_cast<std::size_t>(e);
+        if (seen != nullptr) ++(*seen)[ue];
         thickness_[ue] = take<Real>(bytes, at);
         Voigt3 n, m;
         for (int c = 0; c < 3; ++c) n[c] = take<Real>(bytes, at);

@@ -4,6 +4,7 @@
 #include <unistd.h>
 #include <zlib.h>
 
+#include <algorithm>
 #include <atomic>
 #include <cmath>
 #include <cstdint>
@@ -372,6 +373,56 @@ TEST(PvdSeries, ListsAllFrames) {
                                                "fields/frame_00002.vtu"}));
     EXPECT_EQ(times, (std::vector<double>{0.0, 1e-4, 2e-4}));
     EXPECT_EQ(series.size(), 3u);
+}
+
+// Proves the .pvtu of a frame in pieces is well-formed XML that declares the frame's arrays with
+// their components, in order, and lists the pieces by their paths.
+TEST(PvtuWriter, DeclaresTheArraysAndListsThePieces) {
+    TempDir tmp;
+    const fs::path file = tmp.path() / "frame_00003.pvtu";
+    const FieldFrame frame = two_triangle_frame();
+    write_pvtu(file, frame, {"frame_00003_rank0.vtu", "frame_00003_rank1.vtu"});
+    const std::string xml = read_text(file);
+    EXPECT_EQ(check_xml(xml), "");
+    EXPECT_NE(xml.find("type=\"PUnstructuredGrid\""), std::string::npos);
+    EXPECT_NE(xml.find("header_type=\"UInt64\""), std::string::npos);
+    std::regex declared(
+        R"re(<PDataArray type="Float64" Name="(\w+)" NumberOfComponents="(\d)"/>)re");
+    std::vector<std::string> arrays;
+    for (auto it = std::sregex_iterator(xml.begin(), xml.end(), declared);
+         it != std::sregex_iterator(); ++it)
+        arrays.push_back((*it)[1].str() + "/" + (*it)[2].str());
+    std::vector<std::string> expected;
+    for (const auto* list : {&frame.point_data, &frame.cell_data})
+        for (const FieldArray& a : *list)
+            expected.push_back(a.name + "/" + std::to_string(a.components));
+    expected.emplace_back("Points/3");
+    EXPECT_EQ(arrays, expected);
+    EXPECT_LT(xml.find("<Piece Source=\"frame_00003_rank0.vtu\"/>"),
+              xml.find("<Piece Source=\"frame_00003_rank1.vtu\"/>"));
+}
+
+// Proves a resumed run's clean-up removes the frames from a number on in every form: whole
+// frames, the .pvtu of a distributed run and its pieces, and leftover temporary files.
+TEST(RunDirectory, RemovesFramesFromANumberOnWholeOrInPieces) {
+    TempDir tmp;
+    const fs::path fields = tmp.path() / "fields";
+    fs::create_directories(fields);
+    const std::vector<std::string> names{"frame_00000.pvtu",           "frame_00000_rank0.vtu",
+                                         "frame_00000_rank1.vtu",      "frame_00001.vtu",
+                                         "frame_00002.pvtu",           "frame_00002_rank0.vtu",
+                                         "frame_00002_rank1.vtu",      "frame_00003.vtu",
+                                         "frame_00001.pvtu.tmp.12",    "notes.txt",
+                                         "frame_00003_rank2.vtu.tmp.7"};
+    for (const std::string& n : names) write_file_atomic(fields / n, "<x/>");
+    remove_frames_from(tmp.path(), 2);
+    std::vector<std::string> left;
+    for (const auto& entry : fs::directory_iterator(fields))
+        left.push_back(entry.path().filename().string());
+    std::sort(left.begin(), left.end());
+    EXPECT_EQ(left,
+              (std::vector<std::string>{"frame_00000.pvtu", "frame_00000_rank0.vtu",
+                                        "frame_00000_rank1.vtu", "frame_00001.vtu", "notes.txt"}));
 }
 
 // Proves a CSV table reads back with the same header and values (10 significant digits),
