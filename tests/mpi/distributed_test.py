@@ -14,7 +14,8 @@ resumed on 1 or 3 (the restart file in pieces, one per rank, a newer file's repl
 (by plastic strain, by Johnson-Cook damage), and a strip
 of the test-only material law (tests/material_law/, its own point state gathered from the ranks;
 with the build of the program that holds that law, FPMSHELL_WITH_TEST_LAWS).
-A relaxation is refused (exit 2, one message).
+A diverging run exits 1 on 2 ranks with the last good frame of one process. A relaxation is
+refused (exit 2, one message).
 Exit status 0 when every check passes; each failure is printed.
 """
 import json
@@ -116,6 +117,19 @@ check("plate", plate, ["mesh.nx=100", "mesh.ny=100", "control.end_time=3e-5"])
 # an air blast (theory.md §6.13) on the dome: its faces on every rank, the shock over the ranks
 check("blast_dome", os.path.join(ROOT, "examples/blast_dome/model.yaml"), ["control.end_time=4e-4"])
 check("blast_torn_plate", os.path.join(ROOT, "examples/blast_torn_plate/model.yaml"), ["control.end_time=4e-4"])
+
+# A diverging run (a pressure far beyond collapse): exit 1 on every rank, and the last good frame
+# in pieces, the same as one process's.
+boom = ["--set", "loads.0.value=6e9", "--set", "control.end_time=1e-4"]
+for ranks in (1, 2):
+    d = os.path.join(WORK, "boom-%d" % ranks)
+    shutil.rmtree(d, ignore_errors=True)
+    p = run(cap, d, *boom, ranks=ranks)
+    if p.returncode != 1:
+        failures.append("a diverging run on %d ranks exited %d (expected 1): %s" % (
+            ranks, p.returncode, (p.stderr or p.stdout)[-400:]))
+if not any(f.startswith("a diverging run") for f in failures):
+    same_files(os.path.join(WORK, "boom-1"), os.path.join(WORK, "boom-2"), "diverging run")
 
 # Stopped at t1 (its restart file) and resumed to t2 on 2 ranks: as on one process.
 for ranks in (1, 2):
