@@ -40,7 +40,10 @@ ExternalLoads::ExternalLoads(const Model& model, const MeshTopology& topology)
                 0,
                 {},
                 {},
-                false};
+                false,
+                false,
+                false,
+                {}};
         for (std::size_t k = 0; k < blast.elements.size(); ++k)
             b.face_of_element[static_cast<std::size_t>(blast.elements[k])] = static_cast<Index>(k);
         b.first_arrival = std::numeric_limits<Real>::infinity();
@@ -65,6 +68,23 @@ ExternalLoads::ExternalLoads(const Model& model, const MeshTopology& topology)
         const PressureGather& g = pressure_gather_[0];
         fused_pressure_ = g.particle.size() == np && g.begin == topology_.element_begin &&
                           g.element == topology_.element;
+    }
+}
+
+void ExternalLoads::set_subset(const std::vector<Index>* near, const std::vector<Index>* held) {
+    near_ = near;
+    held_ = held;
+    // a blast's pulses only where this rank's triangles are: the packs that hold one
+    const auto w = static_cast<std::size_t>(k_lanes);
+    for (Blast& b : blasts_) {
+        b.near_packs.clear();
+        if (near_ == nullptr) continue;
+        for (const Index e : *near_)
+            if (const Index k = b.face_of_element[static_cast<std::size_t>(e)]; k >= 0)
+                b.near_packs.push_back(static_cast<Index>(static_cast<std::size_t>(k) / w));
+        std::sort(b.near_packs.begin(), b.near_packs.end());
+        b.near_packs.erase(std::unique(b.near_packs.begin(), b.near_packs.end()),
+                           b.near_packs.end());
     }
 }
 
@@ -236,9 +256,12 @@ void ExternalLoads::blast_scales(Real t, bool parallel) {
         }
         b.zeroed = false;
         const BlastFaces& faces = b.faces;
-        const auto n_packs = static_cast<Index>(b.dot.size() / w);
+        // every pack, or with a subset the packs of its triangles (the same lanes: the same
+        // bits for the faces computed)
+        const auto n_packs = static_cast<Index>(near_ ? b.near_packs.size() : b.dot.size() / w);
         parallel_for_each(n_packs, parallel, [&](Index i) {
-            const std::size_t first = static_cast<std::size_t>(i) * w;
+            const Index pack = near_ ? b.near_packs[static_cast<std::size_t>(i)] : i;
+            const std::size_t first = static_cast<std::size_t>(pack) * w;
             const RealPack scale =
                 face_scales(l, first, b.dot.data() + first, b.norms.data() + first, t);
             const std::size_t n = std::min(w, faces.size() - first);

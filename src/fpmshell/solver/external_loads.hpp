@@ -29,10 +29,7 @@ public:
     /// to s.f_ext_prev, s.m_ext_prev (for the work of the step). parallel: particle loops in
     /// parallel (bitwise the same either way). A distributed run (`near`: the triangles
     /// around the held particles, `held`: those particles) computes only those.
-    void set_subset(const std::vector<Index>* near, const std::vector<Index>* held) {
-        near_ = near;
-        held_ = held;
-    }
+    void set_subset(const std::vector<Index>* near, const std::vector<Index>* held);
     void update_normals_and_loads(ParticleState& s, const BoundaryConditions& bc, Real t,
                                   bool parallel);
     /// §7.6: the pressures and blasts on these eroded triangles stop (their faces are gone, as
@@ -56,6 +53,9 @@ private:
         bool active = false;    ///< at this step: inside its span
         bool in_order = false;  ///< its faces are every triangle in order (face k = triangle k)
         bool zeroed = false;    ///< its triangles' scales are zero (outside its span)
+        /// with a subset: the packs of k_lanes faces that hold one of its triangles
+        /// (ascending); the others' pulses are not evaluated here
+        std::vector<Index> near_packs;
     };
     /// -p / 6 of the blasts on each of their triangles at time t (element_blast_scale_), from
     /// the current cross products and centroids: f_i = that times the cross product at each
