@@ -165,6 +165,21 @@ for ranks in (1, 3):
     if len(left) != (3 if ranks == 3 else 0) or set(left) & set(pieces):
         failures.append("2 ranks resumed on %d: restart pieces left %s" % (ranks, left))
     same_files(os.path.join(WORK, "resume-1"), d, "2 ranks resumed on %d" % ranks)
+    if ranks == 3:
+        # a piece missing, or one of another rank in its place: refused (exit 2, one message naming it)
+        for damage in ("missing", "another rank's"):
+            broken = d + "-" + damage.replace(" ", "-").replace("'", "")
+            shutil.rmtree(broken, ignore_errors=True)
+            shutil.copytree(d, broken)
+            named = sorted(f for f in os.listdir(broken) if f.startswith("restart_rank"))
+            if damage == "missing":
+                os.remove(os.path.join(broken, named[1]))
+            else:
+                shutil.copy(os.path.join(broken, named[0]), os.path.join(broken, named[1]))
+            p = run(cap, broken, "--set", "control.end_time=1e-4", "--resume")
+            if p.returncode != 2 or p.stderr.count("error:") != 1 or named[1] not in p.stderr:
+                failures.append("a restart piece %s: exit %d, %r (expected exit 2 naming %s)" % (
+                    damage, p.returncode, p.stderr[-300:], named[1]))
     with open(os.path.join(d, "fields.pvd")) as f:
         listed = [line.split('file="')[1].split('"')[0] for line in f if "<DataSet" in line]
     if [os.path.splitext(x)[1] for x in listed] != [".pvtu"] * 2 + ([".vtu"] * 2 if ranks == 1 else [".pvtu"] * 2):

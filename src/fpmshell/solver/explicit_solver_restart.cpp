@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include <exception>
+#include <string>
 
 #include "fpmshell/io/restart_archive.hpp"
 #include "fpmshell/solver/explicit_solver.hpp"
@@ -78,9 +79,10 @@ void ExplicitSolver::load_pieces(const RestartReader& in, int ranks, const Resta
         for (const std::uint8_t n : *seen)
             if (n != 1)
                 in.fail(
-                    fmt::format("restart file of another model: its {} pieces do not hold "
-                                "every particle and element of this mesh once",
-                                ranks));
+                    fmt::format("restart file of another model: {} not hold every "
+                                "particle and element of this mesh once",
+                                ranks == 1 ? std::string("its piece does")
+                                           : fmt::format("its {} pieces do", ranks)));
 }
 
 void ExplicitSolver::load(RestartReader& in, int pieces, const RestartPieces& open_piece) {
