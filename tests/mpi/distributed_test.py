@@ -215,7 +215,8 @@ with open(friction_tube, "w") as f:
 check("tube_friction", friction_tube, quick + ["control.end_time=1.5e-3"])
 
 # Erosion (theory.md §7.6): a plate torn along a weak band, its elements eroding over 12 steps;
-# the last frame carries the cell field `eroded` gathered from the ranks.
+# the last frame carries the cell field `eroded` from the ranks' pieces; its histories reduce
+# over the ranks in every way (sum, mean, mass mean, max).
 band = os.path.join(WORK, "eroding_band.yaml")
 with open(band, "w") as f:
     f.write("""title: a plate torn along a weak band
@@ -240,6 +241,10 @@ output:
   every: 2.0e-5
   histories:
     - {name: eroded, quantity: eroded_elements}
+    - {name: vx_mean, nodes: all, quantity: vx, reduce: mean}
+    - {name: vx_mass_mean, nodes: band, quantity: vx, reduce: mass_mean}
+    - {name: ux_max, nodes: all, quantity: ux, reduce: max}
+    - {name: fx_sum, nodes: xmax, quantity: reaction_x, reduce: sum}
 """)
 check("eroding_band", band, [])
 check("eroding_band", band, [], ranks=3, threads=2)

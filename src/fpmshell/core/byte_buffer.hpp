@@ -1,6 +1,7 @@
-// Values of fixed size copied into and out of a byte buffer: what one rank of a distributed run
-// sends to another (RankExchange::gather_histories, ShellElements::pack_state). Both ranks run the
-// same build, so the layout is that of memory, without conversion.
+// Values of fixed size copied into and out of a byte buffer: the state a rank of a distributed
+// run writes into its piece of a restart file (RankExchange::owned_particle_records,
+// ShellElements::pack_state). The pieces are read back by the same build, so the layout is that
+// of memory, without conversion.
 #pragma once
 
 #include <cstddef>

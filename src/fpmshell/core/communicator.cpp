@@ -70,6 +70,12 @@ long Communicator::max(long value) const {
     return all;
 }
 
+void Communicator::min(std::span<Real> values) const {
+    if (size_ == 1 || values.empty()) return;
+    MPI_Allreduce(MPI_IN_PLACE, values.data(), static_cast<int>(values.size()), MPI_DOUBLE, MPI_MIN,
+                  MPI_COMM_WORLD);
+}
+
 void Communicator::sum(std::span<ExactSum> sums) const {
     if (size_ == 1 || sums.empty()) return;
     // the carried digits of every sum (each below 2^32 but the last), added digit by digit:
@@ -202,6 +208,7 @@ std::pair<Real, Index> Communicator::min_loc(Real value, Index index) const {
     return {value, index};
 }
 long Communicator::max(long value) const { return value; }
+void Communicator::min(std::span<Real>) const {}
 void Communicator::sum(std::span<ExactSum>) const {}
 struct Communicator::Pending::Requests {};
 Communicator::Pending Communicator::start_exchange(const std::vector<int>&,

@@ -34,6 +34,9 @@ public:
     [[nodiscard]] std::pair<Real, Index> min_loc(Real value, Index index) const;
     /// The largest value over the ranks.
     [[nodiscard]] long max(long value) const;
+    /// The least over the ranks of each of `values` (every rank gets them; no value may be
+    /// NaN).
+    void min(std::span<Real> values) const;
     /// The exact sums over the ranks of each of `sums` (every rank gets the totals).
     void sum(std::span<ExactSum> sums) const;
     /// Messages in flight between start_exchange and wait.

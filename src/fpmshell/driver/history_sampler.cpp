@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <limits>
 
+#include "fpmshell/core/communicator.hpp"
+#include "fpmshell/core/exact_sum.hpp"
 #include "fpmshell/core/rotation.hpp"
 
 namespace fpmshell {
@@ -110,9 +112,43 @@ Real body_quantity(const ExplicitSolver& solver, Quantity q, Index b) {
 }
 
 std::vector<Real> sample_histories(const Model& model, const ExplicitSolver& solver) {
+    // A history over particles: its sums and extremes over the particles this rank owns (all
+    // on one rank), then over the ranks. The sums are exact (core/exact_sum.hpp), so that a
+    // row is the same bits on any number of ranks without bringing the particles to one rank.
+    const DomainDecomposition& d = solver.decomposition();
+    const std::vector<HistoryRequest>& requests = model.output.histories;
+    std::vector<ExactSum> sums;     // per history over particles: values, mass x values, masses
+    std::vector<Real> lowest;       // per history over particles: its least value, then minus
+    std::vector<Real> neg_highest;  // its largest (one reduction to the least takes both)
+    for (const HistoryRequest& h : requests) {
+        if (h.body >= 0 || h.model_wide || h.contact >= 0) continue;
+        ExactSum acc, weighted, mass;
+        Real lo = std::numeric_limits<Real>::infinity(), hi = -lo;
+        for (const Index p : h.nodes) {
+            if (d.distributed() && d.particle_owner[static_cast<std::size_t>(p)] != d.rank)
+                continue;
+            const Real v = particle_quantity(solver, h.quantity, p);
+            const Real m = solver.state().mass[static_cast<std::size_t>(p)];
+            acc.add(v);
+            weighted.add(m * v);
+            mass.add(m);
+            lo = std::min(lo, v);  // NaN is passed over (std::min keeps lo)
+            hi = std::max(hi, v);
+        }
+        sums.insert(sums.end(), {acc, weighted, mass});
+        lowest.push_back(lo);
+        neg_highest.push_back(-hi);
+    }
+    const Communicator& comm = Communicator::world();
+    comm.sum(sums);
+    lowest.insert(lowest.end(), neg_highest.begin(), neg_highest.end());
+    comm.min(lowest);  // never NaN: the least of numbers and infinities
+
     std::vector<Real> out;
-    out.reserve(model.output.histories.size());
-    for (const HistoryRequest& h : model.output.histories) {
+    out.reserve(requests.size());
+    const std::size_t n_particle_histories = neg_highest.size();
+    std::size_t k = 0;  // the particle history
+    for (const HistoryRequest& h : requests) {
         if (h.body >= 0) {
             out.push_back(body_quantity(solver, h.quantity, h.body));
             continue;
@@ -128,17 +164,10 @@ std::vector<Real> sample_histories(const Model& model, const ExplicitSolver& sol
                                                                   : f.z());
             continue;
         }
-        Real acc = 0, weighted = 0, mass = 0;
-        Real lo = std::numeric_limits<Real>::infinity(), hi = -lo;
-        for (Index p : h.nodes) {
-            const Real v = particle_quantity(solver, h.quantity, p);
-            const Real m = solver.state().mass[static_cast<std::size_t>(p)];
-            acc += v;
-            weighted += m * v;
-            mass += m;
-            lo = std::min(lo, v);
-            hi = std::max(hi, v);
-        }
+        const Real acc = sums[3 * k].value(), weighted = sums[3 * k + 1].value(),
+                   mass = sums[3 * k + 2].value();
+        const Real lo = lowest[k], hi = -lowest[n_particle_histories + k];
+        ++k;
         switch (h.reduce) {
             case Reduce::Single:
             case Reduce::Sum:
@@ -159,6 +188,11 @@ std::vector<Real> sample_histories(const Model& model, const ExplicitSolver& sol
         }
     }
     return out;
+}
+
+void HistoryShare::sample(const ExplicitSolver& solver, Real /*time*/,
+                          std::optional<bool> /*converged*/) {
+    (void)sample_histories(model_, solver);
 }
 
 }  // namespace fpmshell

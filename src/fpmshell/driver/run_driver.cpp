@@ -19,6 +19,7 @@
 #include "fpmshell/driver/energy_file.hpp"
 #include "fpmshell/driver/field_series.hpp"
 #include "fpmshell/driver/history_file.hpp"
+#include "fpmshell/driver/history_sampler.hpp"
 #include "fpmshell/driver/interrupt_guard.hpp"
 #include "fpmshell/driver/output_schedule.hpp"
 #include "fpmshell/driver/plastic_strain_peaks.hpp"
@@ -114,8 +115,8 @@ RunEnd advance_in_time(Run& run) {
         std::optional<bool> restart_agreed;  // a distributed run's, for every rank's pieces
         if (comm.distributed()) {
             // one decision for every rank: a signal that any rank received, rank 0's restart
-            // clock; then what the history rows read on rank 0 (each rank writes its own piece
-            // of a frame and of a restart file, and summary.json's element peaks are reduced)
+            // clock (every rank writes its piece of a restart file then; history rows and
+            // summary.json's peaks are reduced over the ranks, frames written in pieces)
             const bool clock =
                 comm.root() && run.restart &&
                 run.restart->clock_due({t, std::nullopt,
@@ -126,7 +127,6 @@ RunEnd advance_in_time(Run& run) {
             const bool pausing =
                 signal != 0 || (!at_end && stop_at_step > 0 && solver.steps() >= stop_at_step);
             restart_agreed = pausing || (flags & 1) != 0;
-            if (row) solver.gather_histories();
         }
         if (row) run.out.sample(solver, t, std::nullopt);
         if (frame) run.out.frame(solver, t, solver.state().x);
@@ -302,12 +302,13 @@ int run_model(const Model& model, const RunOptions& opt) {
     OutputSchedule schedule(model);
     const std::filesystem::path restart_path = opt.output_dir / k_restart_file;
     ObserverList out;
-    // Rank 0 writes every result file; every other rank its pieces of the frames and of the
-    // restart files.
+    // Rank 0 writes every result file; every other rank takes its part in the history rows and
+    // writes its pieces of the frames and of the restart files.
     ResultFiles result_files;
     if (comm.root()) {
         result_files = add_result_files(out, model, opt, log, schedule);
     } else {
+        out.add<HistoryShare>(model);
         out.add<FieldSeries>(model, opt.output_dir, standard_fields(model),
                              [&log](const std::string& line) { log.line(line); });
         result_files.restart =

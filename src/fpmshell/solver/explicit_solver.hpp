@@ -95,11 +95,6 @@ public:
     [[nodiscard]] const DomainDecomposition& decomposition() const {
         return ranks_.decomposition();
     }
-    /// A distributed run: every rank sends the state that the history rows read of the
-    /// particles it owns to rank 0, which then holds it for history.csv (RankExchange::
-    /// gather_histories). Collective; nothing to do on one rank.
-    void gather_histories() { ranks_.gather_histories(model_, topology_, s_); }
-
     /// The whole state of a dynamic run at t_n, for a restart file (io/restart_archive.hpp):
     /// a solver built from the same model and loaded continues bitwise like this one. With
     /// `in_pieces` (a distributed run) without the particles' and elements' state, which every

@@ -43,7 +43,7 @@ void ExplicitSolver::save_piece(RestartWriter& out) const {
     out.section("piece");
     out(d.rank, d.ranks, steps_, time_);
     out.section("particles");
-    out(ranks_.owned_particle_records(self.s_, false));
+    out(ranks_.owned_particle_records(self.s_));
     out.section("elements");
     out(elements_.pack_state());
 }
@@ -69,7 +69,7 @@ void ExplicitSolver::load_pieces(const RestartReader& in, int ranks, const Resta
         piece(elements);
         piece.finish();
         try {
-            RankExchange::read_particle_records(particles, s_, false, &particle_seen);
+            RankExchange::read_particle_records(particles, s_, particle_seen);
             elements_.unpack_state(elements, &element_seen);
         } catch (const std::exception& e) {
             piece.fail(fmt::format("restart piece is damaged: {}", e.what()));

@@ -81,14 +81,6 @@ void RankExchange::finish_positions(std::vector<Vec3>& x) {
 }
 
 namespace {
-/// The arrays of a particle's state that the history rows read (driver/history_sampler.cpp).
-template <class F>
-void for_each_history_field(ParticleState& s, std::size_t p, F&& f) {
-    for (std::vector<Vec3>* a :
-         {&s.x0, &s.x, &s.x_prev, &s.v, &s.v_prev, &s.f_ext, &s.reaction, &s.reaction_moment})
-        f((*a)[p]);
-    f(s.rotation[p]);
-}
 /// Every array of a particle's state, in one order for writing and reading.
 template <class F>
 void for_each_particle_field(ParticleState& s, std::size_t p, F&& f) {
@@ -122,16 +114,12 @@ void for_each_particle_field(ParticleState& s, std::size_t p, F&& f) {
 }
 }  // namespace
 
-std::vector<char> RankExchange::owned_particle_records(ParticleState& s, bool history_only) const {
+std::vector<char> RankExchange::owned_particle_records(ParticleState& s) const {
     const DomainDecomposition& d = d_;
     std::vector<char> bytes;
     const auto put = [&](std::size_t p) {
-        if (history_only && !history_particle_[p]) return;
         append_bytes(bytes, static_cast<Index>(p));
-        if (history_only)
-            for_each_history_field(s, p, [&](auto& v) { append_bytes(bytes, v); });
-        else
-            for_each_particle_field(s, p, [&](auto& v) { append_bytes(bytes, v); });
+        for_each_particle_field(s, p, [&](auto& v) { append_bytes(bytes, v); });
     };
     if (!d.distributed()) {
         for (std::size_t p = 0; p < s.size(); ++p) put(p);
@@ -145,15 +133,12 @@ std::vector<char> RankExchange::owned_particle_records(ParticleState& s, bool hi
 }
 
 void RankExchange::read_particle_records(const std::vector<char>& bytes, ParticleState& s,
-                                         bool history_only, std::vector<std::uint8_t>* seen) {
+                                         std::vector<std::uint8_t>& seen) {
     std::size_t record = sizeof(Index);
     {
         ParticleState one;
         one.resize(1);
-        if (history_only)
-            for_each_history_field(one, 0, [&](auto& v) { record += sizeof(v); });
-        else
-            for_each_particle_field(one, 0, [&](auto& v) { record += sizeof(v); });
+        for_each_particle_field(one, 0, [&](auto& v) { record += sizeof(v); });
     }
     if (bytes.size() % record != 0)
         throw std::invalid_argument("the particle records are cut short");
@@ -164,35 +149,9 @@ void RankExchange::read_particle_records(const std::vector<char>& bytes, Particl
         if (p < 0 || static_cast<std::size_t>(p) >= s.size())
             throw std::invalid_argument(fmt::format("a record of particle {} of {}", p, s.size()));
         const auto up = static_cast<std::size_t>(p);
-        if (history_only)
-            for_each_history_field(s, up, [&](auto& v) { read_bytes(bytes, at, v); });
-        else
-            for_each_particle_field(s, up, [&](auto& v) { read_bytes(bytes, at, v); });
-        if (seen != nullptr) ++(*seen)[up];
+        for_each_particle_field(s, up, [&](auto& v) { read_bytes(bytes, at, v); });
+        ++seen[up];
     }
-}
-
-void RankExchange::gather_histories(const Model& model, const MeshTopology& topology,
-                                    ParticleState& s) {
-    const Communicator& comm = Communicator::world();
-    if (!d_.distributed()) return;
-    finish_positions(s.x);
-    if (history_particle_.empty()) {
-        history_particle_.assign(s.size(), 0);
-        for (const HistoryRequest& h : model.output.histories)
-            for (const Index p : h.nodes) {
-                history_particle_[static_cast<std::size_t>(p)] = 1;
-                if (h.quantity != Quantity::Pressure) continue;
-                // the gauge reads the positions of the particle's fan (history_sampler.cpp)
-                for (const Index e : topology.elements_of(p))
-                    for (const Index q : model.triangles[static_cast<std::size_t>(e)])
-                        history_particle_[static_cast<std::size_t>(q)] = 1;
-            }
-    }
-    const std::vector<std::vector<char>> particles = comm.gather(owned_particle_records(s, true));
-    if (!comm.root()) return;
-    for (std::size_t r = 1; r < particles.size(); ++r)
-        read_particle_records(particles[r], s, true, nullptr);
 }
 
 std::vector<Index> RankExchange::join_sorted(std::vector<Index> mine) const {

@@ -1,8 +1,9 @@
 // The traffic of a distributed run between its ranks (docs/architecture.md "On several ranks"):
 // this rank's share of the model (DomainDecomposition), the positions of the particles held
 // around its own, the contact's particles shared before the contact, the joins of per-rank
-// lists, and the gather to rank 0 of what the history rows read. On one rank every call is a no-op
-// (or the identity), so the solver calls them unconditionally where that reads better.
+// lists, and the records of its particles' state for a restart file's pieces. On one rank every
+// call is a no-op (or the identity), so the solver calls them unconditionally where that reads
+// better.
 #pragma once
 
 #include <cstdint>
@@ -65,23 +66,15 @@ public:
         return d_.distributed() ? Communicator::world().min_loc(value, index).second : index;
     }
 
-    /// Every rank sends the state that the history rows read of the particles it owns (the
-    /// history particles' positions, velocities, loads, reactions and rotations, and the
-    /// positions of the fans of the pressure gauges) to rank 0, which then holds it in s.
-    /// Collective.
-    void gather_histories(const Model& model, const MeshTopology& topology, ParticleState& s);
-
     /// The records of the particles this rank owns (all on one rank), in the order of its
-    /// atoms: each particle's index, then every array of its state, or with `history_only`
-    /// those the history rows read (of the particles they read). What gather_histories sends and
-    /// a distributed restart file's pieces hold.
-    [[nodiscard]] std::vector<char> owned_particle_records(ParticleState& s,
-                                                           bool history_only) const;
-    /// Writes such records into s, counting each particle in `seen` (if given, one entry per
-    /// particle). Throws std::invalid_argument for a record cut short or of a particle s does
-    /// not have (records read from a file).
+    /// atoms: each particle's index, then every array of its state. What a distributed restart
+    /// file's pieces hold.
+    [[nodiscard]] std::vector<char> owned_particle_records(ParticleState& s) const;
+    /// Writes such records into s, counting each particle in `seen` (one entry per particle).
+    /// Throws std::invalid_argument for a record cut short or of a particle s does not have
+    /// (records read from a file).
     static void read_particle_records(const std::vector<char>& bytes, ParticleState& s,
-                                      bool history_only, std::vector<std::uint8_t>* seen);
+                                      std::vector<std::uint8_t>& seen);
 
 private:
     DomainDecomposition d_;
@@ -89,7 +82,6 @@ private:
     Communicator::Pending positions_in_flight_;      ///< start_positions' messages
     std::vector<std::vector<Index>> contact_owned_;  ///< per rank: the contact's particles it owns
     std::vector<Real> contact_send_, contact_all_;   ///< share_contact_particles' buffers
-    std::vector<std::uint8_t> history_particle_;     ///< per particle: read by a history row
 };
 
 }  // namespace fpmshell
