@@ -94,9 +94,13 @@ public:
     }
     /// Marks the start of a named section (checked when reading).
     void section(std::string_view name) { put(std::string(name)); }
+    /// Writes `bytes` as operator() writes a std::vector<char> (its length, then its bytes),
+    /// keeping the vector instead of copying it into the file's bytes: a large block (a
+    /// distributed run's restart piece) is written from its own memory.
+    void put_block(std::vector<char> bytes);
     /// Writes the file atomically (write_file_atomic). Throws std::runtime_error on failure.
     void save(const std::filesystem::path& path) const;
-    [[nodiscard]] std::size_t size() const { return bytes_.size(); }
+    [[nodiscard]] std::size_t size() const { return bytes_.size() + block_bytes_; }
     /// The file whose content (magic word and sections) is `content`: the content and its
     /// checksum (for tools and tests that make restart files of their own).
     [[nodiscard]] static std::string with_checksum(std::string_view content);
@@ -118,6 +122,9 @@ private:
     }
 
     std::string bytes_;
+    /// put_block's vectors, each with the place in bytes_ at which it stands
+    std::vector<std::pair<std::size_t, std::vector<char>>> blocks_;
+    std::size_t block_bytes_ = 0;
 };
 
 class RestartReader {

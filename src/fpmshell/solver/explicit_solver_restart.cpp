@@ -43,9 +43,9 @@ void ExplicitSolver::save_piece(RestartWriter& out) const {
     out.section("piece");
     out(d.rank, d.ranks, steps_, time_);
     out.section("particles");
-    out(ranks_.owned_particle_records(self.s_));
+    out.put_block(ranks_.owned_particle_records(self.s_));
     out.section("elements");
-    out(elements_.pack_state());
+    out.put_block(elements_.pack_state());
 }
 
 void ExplicitSolver::load_pieces(const RestartReader& in, int ranks, const RestartPieces& pieces) {

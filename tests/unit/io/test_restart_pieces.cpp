@@ -5,11 +5,15 @@
 //   piece that holds it continues bit for bit like one loaded from the whole file, amid erosion;
 // - restart.bin in pieces holds none of that state (it is far smaller than the whole file);
 // - a piece that leaves the elements out, or one of another step, is refused with an
-//   InputError that names it.
+//   InputError that names it;
+// - a block the writer keeps in its own memory (put_block, how a piece holds its state) makes
+//   the same file as the vector written in line.
 #include <gtest/gtest.h>
 #include <unistd.h>
 
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <string>
 #include <vector>
 
@@ -149,6 +153,46 @@ TEST(RestartPieces, APieceWithoutTheElementsOrOfAnotherStepIsRefused) {
     // the unaltered piece loads
     ExplicitSolver solver(model);
     EXPECT_NO_THROW(load_from_pieces(solver, files.dir, files.dir / "piece.bin"));
+}
+
+TEST(RestartPieces, ABlockKeptApartMakesTheSameFileAsTheVectorInLine) {
+    const PieceFiles files;
+    std::vector<char> big(100000), small{'a', 'b'};
+    for (std::size_t i = 0; i < big.size(); ++i) big[i] = static_cast<char>(i * 7919 % 251);
+    RestartWriter in_line, apart;
+    for (RestartWriter* w : {&in_line, &apart}) {
+        w->section("one");
+        (*w)(Real(1.5), std::vector<Real>{2, 3});
+    }
+    in_line(big);
+    apart.put_block(big);
+    for (RestartWriter* w : {&in_line, &apart}) {
+        w->section("two");
+        (*w)(long(7));
+    }
+    in_line(small);
+    apart.put_block(small);
+    EXPECT_EQ(apart.size(), in_line.size());
+    in_line.save(files.dir / "in_line.bin");
+    apart.save(files.dir / "apart.bin");
+    auto bytes_of = [](const fs::path& p) {
+        std::ifstream in(p, std::ios::binary);
+        return std::string(std::istreambuf_iterator<char>(in), {});
+    };
+    EXPECT_EQ(bytes_of(files.dir / "apart.bin"), bytes_of(files.dir / "in_line.bin"));
+    RestartReader r(files.dir / "apart.bin");  // its checksum holds
+    r.section("one");
+    Real a = 0;
+    std::vector<Real> b;
+    std::vector<char> c, e;
+    long d = 0;
+    r(a, b, c);
+    r.section("two");
+    r(d, e);
+    r.finish();
+    EXPECT_EQ(c, big);
+    EXPECT_EQ(e, small);
+    EXPECT_EQ(d, 7);
 }
 
 }  // namespace
