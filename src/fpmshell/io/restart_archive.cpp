@@ -54,20 +54,14 @@ RestartWriter::RestartWriter() {
     put(static_cast<std::uint8_t>(sizeof(int)));
 }
 
-void RestartWriter::put_block(std::vector<char> bytes) {
-    put(static_cast<std::uint64_t>(bytes.size()));
-    block_bytes_ += bytes.size();
-    blocks_.emplace_back(bytes_.size(), std::move(bytes));
-}
-
 void RestartWriter::save(const std::filesystem::path& path) const {
     // the file's pieces in order, written and checksummed where they lie (no copy of a piece)
     std::vector<std::string_view> pieces;
     std::size_t at = 0;
-    for (const auto& [place, block] : blocks_) {
-        pieces.emplace_back(bytes_.data() + at, place - at);
-        pieces.emplace_back(block.data(), block.size());
-        at = place;
+    for (const Block& block : blocks_) {
+        pieces.emplace_back(bytes_.data() + at, block.place - at);
+        pieces.emplace_back(block.bytes);
+        at = block.place;
     }
     pieces.emplace_back(bytes_.data() + at, bytes_.size() - at);
     uLong crc = ::crc32_z(0L, nullptr, 0);

@@ -18,6 +18,7 @@
 #include <cstdint>
 #include <cstring>
 #include <filesystem>
+#include <memory>
 #include <string>
 #include <string_view>
 #include <type_traits>
@@ -94,10 +95,19 @@ public:
     }
     /// Marks the start of a named section (checked when reading).
     void section(std::string_view name) { put(std::string(name)); }
-    /// Writes `bytes` as operator() writes a std::vector<char> (its length, then its bytes),
-    /// keeping the vector instead of copying it into the file's bytes: a large block (a
-    /// distributed run's restart piece) is written from its own memory.
-    void put_block(std::vector<char> bytes);
+    /// Writes `items` as operator() writes a std::vector of them (its length, then its items'
+    /// bytes), keeping the vector instead of copying it into the file's bytes: a large block (a
+    /// distributed run's restart piece, the elements' points) is written from its own memory.
+    template <class T>
+    requires restart_detail::is_raw<T>
+    void put_block(std::vector<T> items) {
+        put(static_cast<std::uint64_t>(items.size()));
+        auto owner = std::make_shared<const std::vector<T>>(std::move(items));
+        const std::string_view view(reinterpret_cast<const char*>(owner->data()),
+                                    owner->size() * sizeof(T));
+        block_bytes_ += view.size();
+        blocks_.push_back({bytes_.size(), std::move(owner), view});
+    }
     /// Writes the file atomically (write_file_atomic). Throws std::runtime_error on failure.
     void save(const std::filesystem::path& path) const;
     [[nodiscard]] std::size_t size() const { return bytes_.size() + block_bytes_; }
@@ -123,7 +133,12 @@ private:
 
     std::string bytes_;
     /// put_block's vectors, each with the place in bytes_ at which it stands
-    std::vector<std::pair<std::size_t, std::vector<char>>> blocks_;
+    struct Block {
+        std::size_t place = 0;
+        std::shared_ptr<const void> owner;  ///< the vector
+        std::string_view bytes;             ///< its items
+    };
+    std::vector<Block> blocks_;
     std::size_t block_bytes_ = 0;
 };
 

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <stdexcept>
+#include <utility>
 
 #include "fpmshell/core/byte_buffer.hpp"
 #include "fpmshell/io/restart_archive.hpp"
@@ -123,7 +124,8 @@ void ShellElements::save(RestartWriter& out) const {
         m[e] = resultant(e, 3);
     }
     auto& self = const_cast<ShellElements&>(*this);  // the archive's interface is shared with load
-    out(fields, self.thickness_, self.time_steps_.ratio(), self.time_steps_.ratio_length(), n, m);
+    out.put_block(std::move(fields));  // the largest list: written from its own memory
+    out(self.thickness_, self.time_steps_.ratio(), self.time_steps_.ratio_length(), n, m);
     // §7.6 (empty: none can fail), the criteria's state element by element
     std::vector<Real> failure;
     for (std::size_t e = 0; e < tri_.size(); ++e)
