@@ -54,6 +54,43 @@ Model from_mesh(const MeshData& mesh, Real h, Material mat) {
 
 const Material k_steel{"steel", "elastic", 7800, 2.1e11, 0.3};
 
+/// A 1 x 1 plate of 8 x 8 squares (diagonals `pattern`) clamped at its edges, and a 0.6 x 0.6
+/// plate of 6 x 6 squares at height z above it moving down at `speed`; both steel, h = 0.01,
+/// in one self-contact. The particles and elements of each plate, for the distances.
+struct PlateOverPlate {
+    Model model;
+    std::vector<Index> top_nodes, bottom_nodes, top_elements, bottom_elements;
+};
+PlateOverPlate plate_over_plate(Real z, Real speed, DiagonalPattern pattern) {
+    PlateParams bottom;
+    bottom.nx = bottom.ny = 8;
+    bottom.pattern = pattern;
+    PlateParams top;
+    top.length_x = top.length_y = 0.6;
+    top.nx = top.ny = 6;
+    top.origin = Vec3(0.2, 0.2, z);
+    top.pattern = DiagonalPattern::Right;
+    const MeshData a = generate_plate(bottom);
+    const auto offset = static_cast<Index>(a.nodes.size());
+    PlateOverPlate pp{from_mesh(stacked(a, generate_plate(top)), 0.01, k_steel), {}, {}, {}, {}};
+    Model& m = pp.model;
+    for (Index p = 0; p < m.n_particles(); ++p)
+        (p < offset ? pp.bottom_nodes : pp.top_nodes).push_back(p);
+    for (Index e = 0; e < m.n_elements(); ++e)
+        (static_cast<std::size_t>(e) < a.triangles.size() ? pp.bottom_elements : pp.top_elements)
+            .push_back(e);
+    BoundaryCondition clamp;
+    clamp.nodes = a.node_sets.at("boundary");
+    clamp.fixed.fill(true);
+    m.boundary.push_back(clamp);
+    m.initial_conditions.push_back({pp.top_nodes, Vec3(0, 0, -speed), Vec3::Zero()});
+    ContactDefinition c;
+    c.type = ContactType::Self;
+    c.elements = m.element_sets["all"];
+    m.contacts.push_back(c);
+    return pp;
+}
+
 /// Adds the body and a contact of every particle with it.
 void add_body_with_contact(Model& m, const RigidBody& body, ContactMethod method) {
     m.rigid_bodies.push_back(body);
@@ -186,32 +223,10 @@ TEST(Contact, TwoPlatesDrivenTogetherDoNotInterpenetrate) {
     // Bottom plate 1 x 1 clamped at its edges; top plate 0.6 x 0.6 above it, moving down fast
     // (a few per cent of the thickness per step). Both h = 0.01: the mid-surfaces must stay
     // h apart; 10 % of h is allowed (the gaps are linearised at the predictor, §8.2).
-    PlateParams bottom;
-    bottom.nx = bottom.ny = 8;
-    bottom.pattern = DiagonalPattern::Alternate;
-    PlateParams top;
-    top.length_x = top.length_y = 0.6;
-    top.nx = top.ny = 6;
-    top.origin = Vec3(0.2, 0.2, 0.03);
-    top.pattern = DiagonalPattern::Right;
-    const MeshData a = generate_plate(bottom);
-    const auto offset = static_cast<Index>(a.nodes.size());
-    Model m = from_mesh(stacked(a, generate_plate(top)), 0.01, k_steel);
-    std::vector<Index> top_nodes, bottom_elements, top_elements, bottom_nodes;
-    for (Index p = 0; p < offset; ++p) bottom_nodes.push_back(p);
-    for (Index p = offset; p < m.n_particles(); ++p) top_nodes.push_back(p);
-    for (Index e = 0; e < m.n_elements(); ++e)
-        (static_cast<std::size_t>(e) < a.triangles.size() ? bottom_elements : top_elements)
-            .push_back(e);
-    BoundaryCondition clamp;
-    clamp.nodes = a.node_sets.at("boundary");
-    clamp.fixed.fill(true);
-    m.boundary.push_back(clamp);
-    m.initial_conditions.push_back({top_nodes, Vec3(0, 0, -60), Vec3::Zero()});
-    ContactDefinition c;
-    c.type = ContactType::Self;
-    c.elements = m.element_sets["all"];
-    m.contacts.push_back(c);
+    const PlateOverPlate pp = plate_over_plate(0.03, 60, DiagonalPattern::Alternate);
+    const Model& m = pp.model;
+    const std::vector<Index>&top_nodes = pp.top_nodes, &bottom_nodes = pp.bottom_nodes;
+    const std::vector<Index>&top_elements = pp.top_elements, &bottom_elements = pp.bottom_elements;
     ExplicitSolver s(m);
     Real closest = 1e30;
     int steps_in_contact = 0;
@@ -234,28 +249,9 @@ TEST(Contact, SeparatePartsStartingWithinTheExclusionRadiusStillTouch) {
     // (inside the default radius, 1.5 h) and moving down at 5 m/s: they are separate pieces,
     // nothing holds them apart but the contact, which must act (before, their pairs were
     // excluded and the plates passed through each other)
-    PlateParams bottom;
-    bottom.nx = bottom.ny = 8;
-    PlateParams top;
-    top.length_x = top.length_y = 0.6;
-    top.nx = top.ny = 6;
-    top.origin = Vec3(0.2, 0.2, 0.0105);
-    top.pattern = DiagonalPattern::Right;
-    const MeshData a = generate_plate(bottom);
-    const auto offset = static_cast<Index>(a.nodes.size());
-    Model m = from_mesh(stacked(a, generate_plate(top)), 0.01, k_steel);
-    std::vector<Index> top_nodes, bottom_elements;
-    for (Index p = offset; p < m.n_particles(); ++p) top_nodes.push_back(p);
-    for (Index e = 0; e < static_cast<Index>(a.triangles.size()); ++e) bottom_elements.push_back(e);
-    BoundaryCondition clamp;
-    clamp.nodes = a.node_sets.at("boundary");
-    clamp.fixed.fill(true);
-    m.boundary.push_back(clamp);
-    m.initial_conditions.push_back({top_nodes, Vec3(0, 0, -5), Vec3::Zero()});
-    ContactDefinition c;
-    c.type = ContactType::Self;
-    c.elements = m.element_sets["all"];
-    m.contacts.push_back(c);
+    const PlateOverPlate pp = plate_over_plate(0.0105, 5, DiagonalPattern::Right);
+    const Model& m = pp.model;
+    const std::vector<Index>&top_nodes = pp.top_nodes, &bottom_elements = pp.bottom_elements;
     ExplicitSolver s(m);
     Real closest = 1e30;
     while (s.time() < 1e-3) {
