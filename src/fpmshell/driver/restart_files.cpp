@@ -93,17 +93,25 @@ void load_solver(RestartReader& r, ExplicitSolver& solver) {
     });
 }
 
-}  // namespace
-
-double RestartFiles::resume(const std::filesystem::path& path, ExplicitSolver& solver,
-                            OutputSchedule& schedule, OutputObserver& results) {
-    RestartReader r(path);
+/// The solver (layout, solver sections) and the driver's section of restart.bin; returns the
+/// wall seconds of the earlier segments.
+double load_solver_and_schedule(RestartReader& r, ExplicitSolver& solver,
+                                OutputSchedule& schedule) {
     load_solver(r, solver);
     r.section("driver");
     double wall_seconds = 0;
     r(schedule, wall_seconds);
     if (!schedule.fits_time(solver.time()))
         r.fail("restart file is damaged: its next output times do not fit its time");
+    return wall_seconds;
+}
+
+}  // namespace
+
+double RestartFiles::resume(const std::filesystem::path& path, ExplicitSolver& solver,
+                            OutputSchedule& schedule, OutputObserver& results) {
+    RestartReader r(path);
+    const double wall_seconds = load_solver_and_schedule(r, solver, schedule);
     results.load(r);
     r.finish();
     return wall_seconds;
@@ -112,13 +120,7 @@ double RestartFiles::resume(const std::filesystem::path& path, ExplicitSolver& s
 double RestartFiles::resume_solver(const std::filesystem::path& path, ExplicitSolver& solver,
                                    OutputSchedule& schedule) {
     RestartReader r(path);
-    load_solver(r, solver);
-    r.section("driver");
-    double wall_seconds = 0;
-    r(schedule, wall_seconds);
-    if (!schedule.fits_time(solver.time()))
-        r.fail("restart file is damaged: its next output times do not fit its time");
-    return wall_seconds;
+    return load_solver_and_schedule(r, solver, schedule);
 }
 
 }  // namespace fpmshell

@@ -70,7 +70,7 @@ void ExplicitSolver::load_pieces(const RestartReader& in, int ranks, const Resta
         piece.finish();
         try {
             RankExchange::read_particle_records(particles, s_, particle_seen);
-            elements_.unpack_state(elements, &element_seen);
+            elements_.unpack_state(elements, element_seen);
         } catch (const std::exception& e) {
             piece.fail(fmt::format("restart piece is damaged: {}", e.what()));
         }

@@ -121,10 +121,10 @@ public:
     /// The state of the elements this rank computes, as bytes for unpack_state (a
     /// distributed run's pieces of a restart file).
     [[nodiscard]] std::vector<char> pack_state() const;
-    /// Counts each element in `seen` (if given, one entry per element). Throws
+    /// Counts each element in `seen` (one entry per element). Throws
     /// std::invalid_argument for states cut short or of an element this model lacks (states
     /// read from a file).
-    void unpack_state(const std::vector<char>& bytes, std::vector<std::uint8_t>* seen = nullptr);
+    void unpack_state(const std::vector<char>& bytes, std::vector<std::uint8_t>& seen);
 
 private:
     /// What the step totals need of a set of elements (a block, an element computed alone,

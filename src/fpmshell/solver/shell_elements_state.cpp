@@ -73,14 +73,14 @@ std::vector<char> ShellElements::pack_state() const {
     return bytes;
 }
 
-void ShellElements::unpack_state(const std::vector<char>& bytes, std::vector<std::uint8_t>* seen) {
+void ShellElements::unpack_state(const std::vector<char>& bytes, std::vector<std::uint8_t>& seen) {
     std::size_t at = 0;
     while (at < bytes.size()) {
         const Index e = take<Index>(bytes, at);
         if (e < 0 || static_cast<std::size_t>(e) >= tri_.size())
             throw std::invalid_argument(fmt::format("a state of element {} of {}", e, tri_.size()));
         const auto ue = static_cast<std::size_t>(e);
-        if (seen != nullptr) ++(*seen)[ue];
+        ++seen[ue];
         thickness_[ue] = take<Real>(bytes, at);
         Voigt3 n, m;
         for (int c = 0; c < 3; ++c) n[c] = take<Real>(bytes, at);
