@@ -11,7 +11,9 @@ value bit for bit (frame_pieces.py); summary.json says how many ranks ran and ho
 results (the plastic strain peaks reduced over the ranks, erosion, contact statistics). A run stopped at t1
 and resumed on 2 ranks must equal the same on one process, as must one stopped on 2 ranks and
 resumed on 1 or 3 (the restart file in pieces, one per rank, a newer file's replacing them); so must the tube with contact, with and without mass scaling, and with friction (static, dynamic and its decay); so must a plate whose elements erode
-(by plastic strain, by Johnson-Cook damage), and a strip
+(by plastic strain, by Johnson-Cook damage), the rigid parts, nodal rigid bodies, spot welds
+(failing, and resumed on 1 rank after failing on 2) and ties (breaking) of the decks' YAML twins,
+and a strip
 of the test-only material law (tests/material_law/, its own point state gathered from the ranks;
 with the build of the program that holds that law, FPMSHELL_WITH_TEST_LAWS).
 A diverging run exits 1 on 2 ranks with the last good frame of one process. A relaxation is
@@ -264,6 +266,61 @@ check("damaging_band", damage_band, [])
 with open(os.path.join(WORK, "damaging_band-2x1", "summary.json")) as f:
     if not json.load(f).get("eroded_elements"):
         failures.append("damaging_band: no element eroded (the check compares nothing)")
+
+# Rigid parts, nodal rigid bodies, spot welds and ties (theory.md §6.11, §6.12), run whole on
+# every rank on their particles' values brought from their owners: the hammer spun by a
+# prescribed rigid motion on a plate held by a rigid edge and welded to its doubler; the block of
+# a given inertia (its enclosed solid) dropped on a plate; the hammer's welds letting go
+# (summary.json counts them); the doubler tied instead, its ties breaking; and the failing welds
+# stopped on 2 ranks and resumed on 1 (the failed welds in the restart file).
+decks = os.path.join(ROOT, "examples", "decks")
+
+
+def deck_twin(name, folder, edit=lambda text: text):
+    """The YAML twin examples/decks/<folder>/<folder>.yaml edited, written to WORK/<name>.yaml with
+    its mesh file's path made absolute."""
+    with open(os.path.join(decks, folder, folder + ".yaml")) as f:
+        text = f.read()
+    mesh = text.split("mesh: {file: ")[1].split("}")[0]
+    text = edit(text.replace("mesh: {file: %s}" % mesh, "mesh: {file: %s}" % os.path.normpath(
+        os.path.join(decks, folder, mesh))))
+    path = os.path.join(WORK, name + ".yaml")
+    with open(path, "w") as f:
+        f.write(text)
+    return path
+
+
+WELDS = "".join("  - {type: rigid, nodes: weld_%s}\n" % w for w in "abcd")
+spin = deck_twin("hammer_spin", "hammer_spin")
+check("hammer_spin", spin, ["control.end_time=1e-3"])
+check("hammer_spin", spin, ["control.end_time=6e-4"], ranks=3, threads=2)
+check("block_drop", deck_twin("block_drop", "block_drop"), ["control.end_time=1e-3"])
+failing = deck_twin("failing_welds", "plate_hammer", lambda t: t.replace(WELDS, WELDS.replace(
+    "}\n", ", failure: {normal_force: 200, shear_force: 100}}\n")))
+check("failing_welds", failing, [], ranks=3)
+with open(os.path.join(WORK, "failing_welds-3x1", "summary.json")) as f:
+    if not json.load(f).get("failed_welds"):
+        failures.append("failing_welds: no weld failed (the check compares nothing)")
+check("tiebreak", deck_twin("tiebreak", "plate_hammer", lambda t: t.replace(
+    WELDS, "  - {type: tied, nodes: part_2, elements: part_1, tolerance: 0.006, "
+           "failure: {normal_force: 2, shear_force: 1}}\n")), [])
+with open(os.path.join(WORK, "tiebreak-2x1", "summary.json")) as f:
+    tied = json.load(f)
+if not tied.get("tied_particles") or not tied.get("broken_ties"):
+    failures.append("tiebreak: ties %s, broken %s (the check compares nothing)" % (
+        tied.get("tied_particles"), tied.get("broken_ties")))
+for ranks in (1, 2):  # stopped at 1 ms (after the welds failed) on 1 or 2 ranks, resumed on 1
+    d = os.path.join(WORK, "failing_welds-%d-then-1" % ranks)
+    shutil.rmtree(d, ignore_errors=True)
+    first = run(failing, d, "--set", "control.end_time=1e-3", "--restart-every", "100000",
+                ranks=ranks)
+    second = run(failing, d, "--resume", launcher=True)
+    if first.returncode or second.returncode:
+        failures.append("failing welds resumed: exit %d, %d: %s" % (
+            first.returncode, second.returncode, (second.stderr or first.stderr)[-500:]))
+if not any(f.startswith("failing welds resumed") for f in failures):
+    same_files(os.path.join(WORK, "failing_welds-1-then-1"), os.path.join(
+        WORK, "failing_welds-2-then-1"), "failing welds stopped on 2 ranks, resumed on 1")
 
 # The materials seam: a law of the tests' own (its 7 numbers per point) through the gather of
 # the element state to rank 0 (the last frame's stresses) and on 3 ranks of 2 threads.

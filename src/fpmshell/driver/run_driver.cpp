@@ -229,12 +229,6 @@ void check_distributable(const Model& model, int ranks) {
     if (model.control.mode == SolutionMode::Relaxation) refuse("control.mode", "relaxation");
     if (model.control.membrane == MembraneKernel::Smoothed)
         refuse("control.membrane", "the smoothed membrane");
-    if (!model.nodal_rigid_bodies.empty())
-        refuse("constraints", "a nodal rigid body (constraints of type rigid)");
-    if (!model.tied_surfaces.empty())
-        refuse("constraints", "a tied surface (constraints of type tied)");
-    for (const Material& m : model.materials)
-        if (m.rigid) refuse("materials", "a rigid material");
 }
 
 /// control.mass_scaling (§6.10): the mass added (`when`: at set-up, or by the end of the run),

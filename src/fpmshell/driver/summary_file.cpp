@@ -134,6 +134,11 @@ void SummaryFile::finish(const ExplicitSolver& solver, const RunEnd& end) {
         if (welds.failed_welds() > 0)
             j.set("first_weld_failure_time", welds.first_weld_failure_time());
     }
+    if (const TiedSurfaces* tied = solver.tied_surfaces()) {  // theory.md §6.12
+        j.set("tied_particles", tied->tied());
+        j.set("untied_particles", tied->untied());
+        j.set("broken_ties", tied->broken());
+    }
     j.set("version", FPMSHELL_VERSION);
     j.set("exit_reason", end.reason);
     write_json_file(dir_ / "summary.json", j);

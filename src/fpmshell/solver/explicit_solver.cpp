@@ -124,7 +124,14 @@ ExplicitSolver::ExplicitSolver(const Model& model)
         if (!model.tied_surfaces.empty()) tied_ = std::make_unique<TiedSurfaces>(model, thickness);
     }
     refresh_contact_masses();
-    if (contact_) ranks_.set_contact_particles(contact_->particles());  // whole on every rank
+    // distributed: the contact and the constraints run whole on every rank
+    if (contact_) ranks_.set_whole_particles(RankExchange::Whole::contact, contact_->particles());
+    if (ranks_.distributed() && (!nodal_rigid_bodies_.empty() || tied_)) {
+        std::vector<Index> constrained = tied_ ? tied_->particles() : std::vector<Index>{};
+        for (const std::vector<Index>& body : nodal_rigid_bodies_.bodies())
+            constrained.insert(constrained.end(), body.begin(), body.end());
+        ranks_.set_whole_particles(RankExchange::Whole::constraints, constrained);
+    }
     energy_.kinetic = energy_.external_work;
     // Without prescribed motions and Lagrange contact, which change v^{n+1/2} between the two,
     // the velocity update and the energy pass are one sweep over the particle arrays instead
@@ -172,6 +179,9 @@ void ExplicitSolver::cycle(const CyclePolicy& policy, Real load_time, Real dt_ca
         impose_prescribed_motions(policy, load_time, dt);  // 6 §6.7
         update_body_velocities(dt);
         const PrescribedMotionTimes at = prescribed_motion_times(policy, load_time, dt);
+        if (!nodal_rigid_bodies_.empty() || tied_)  // what 6b and 6c read, from the owners
+            ranks_.share(RankExchange::Whole::constraints,
+                         {&s_.x, &s_.v, &s_.omega, &s_.v_prev, &s_.omega_prev, &s_.normal});
         nodal_rigid_bodies_.make_rigid(s_, at, model_.curves);      // 6b §6.11
         if (tied_) tied_->impose(s_, *bc_, dt.c1 * dt.dt_n, true);  // 6c §6.12
         lagrange_contact(dt);                                       // 7 §8.3
@@ -337,7 +347,7 @@ void ExplicitSolver::penalty_contact(const StepLengths& dt) {
     if (!contact_->has_penalty()) return;
     const Real motion2 =
         max_over_particles([&](std::size_t p) { return (s_.x[p] - s_.x_prev[p]).squaredNorm(); });
-    ranks_.share_contact_particles(s_.x, s_.x_prev);
+    ranks_.share(RankExchange::Whole::contact, {&s_.x, &s_.x_prev});
     body_u_pred_.resize(bodies_.size());  // here: the bodies at t_n
     for (std::size_t b = 0; b < bodies_.size(); ++b) body_u_pred_[b] = bodies_[b].u;
     contact_->penalty_forces(s_.x, s_.v, body_u_pred_, bodies_, dt.c1 * dt.dt_n * dt.dt_new,
@@ -379,7 +389,7 @@ void ExplicitSolver::lagrange_contact(const StepLengths& dt) {
     // the velocities follow: v^{n+1/2} = (x^{n+1} - x^n) / dt (§8.3).
     const std::size_t np = s_.size();
     const Real dt_new = dt.dt_new;
-    ranks_.share_contact_particles(s_.x, s_.v);
+    ranks_.share(RankExchange::Whole::contact, {&s_.x, &s_.v});
     x_pred_.resize(np);
     for (std::size_t p = 0; p < np; ++p) x_pred_[p] = s_.x[p] + dt_new * s_.v[p];
     const Real motion2 =

@@ -22,29 +22,34 @@ RankExchange::~RankExchange() {
     if (positions_in_flight_.active()) Communicator::world().wait(positions_in_flight_);
 }
 
-void RankExchange::set_contact_particles(const std::vector<Index>& particles) {
-    contact_owned_.assign(d_.distributed() ? static_cast<std::size_t>(d_.ranks) : 0, {});
+void RankExchange::set_whole_particles(Whole part, const std::vector<Index>& particles) {
+    WholeParticles& w = whole_[static_cast<std::size_t>(part)];
+    w.owned.assign(d_.distributed() ? static_cast<std::size_t>(d_.ranks) : 0, {});
     if (!d_.distributed()) return;
     for (const Index p : particles)
-        contact_owned_[static_cast<std::size_t>(d_.particle_owner[static_cast<std::size_t>(p)])]
-            .push_back(p);
+        w.owned[static_cast<std::size_t>(d_.particle_owner[static_cast<std::size_t>(p)])].push_back(
+            p);
 }
 
-void RankExchange::share_contact_particles(std::vector<Vec3>& a, std::vector<Vec3>& b) {
+void RankExchange::share(Whole part, std::initializer_list<std::vector<Vec3>*> arrays) {
     if (!d_.distributed()) return;
-    const DomainDecomposition& d = d_;
-    contact_send_.clear();
-    for (const Index p : contact_owned_[static_cast<std::size_t>(d.rank)])
-        for (const Vec3* v : {&a[static_cast<std::size_t>(p)], &b[static_cast<std::size_t>(p)]})
-            contact_send_.insert(contact_send_.end(), v->data(), v->data() + 3);
+    WholeParticles& w = whole_[static_cast<std::size_t>(part)];
+    const int per_particle = 3 * static_cast<int>(arrays.size());
+    w.send.clear();
+    for (const Index p : w.owned[static_cast<std::size_t>(d_.rank)])
+        for (const std::vector<Vec3>* a : arrays) {
+            const Vec3& v = (*a)[static_cast<std::size_t>(p)];
+            w.send.insert(w.send.end(), v.data(), v.data() + 3);
+        }
     std::vector<int> counts;
-    for (const auto& owned : contact_owned_) counts.push_back(6 * static_cast<int>(owned.size()));
-    Communicator::world().allgather(contact_send_, counts, contact_all_);
+    for (const auto& owned : w.owned)
+        counts.push_back(per_particle * static_cast<int>(owned.size()));
+    Communicator::world().allgather(w.send, counts, w.all);
     std::size_t at = 0;
-    for (const auto& owned : contact_owned_)
+    for (const auto& owned : w.owned)
         for (const Index p : owned)
-            for (Vec3* v : {&a[static_cast<std::size_t>(p)], &b[static_cast<std::size_t>(p)]}) {
-                *v = Vec3(contact_all_[at], contact_all_[at + 1], contact_all_[at + 2]);
+            for (std::vector<Vec3>* a : arrays) {
+                (*a)[static_cast<std::size_t>(p)] = Vec3(w.all[at], w.all[at + 1], w.all[at + 2]);
                 at += 3;
             }
 }

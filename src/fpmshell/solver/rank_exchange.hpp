@@ -1,12 +1,15 @@
 // The traffic of a distributed run between its ranks (docs/architecture.md "On several ranks"):
 // this rank's share of the model (DomainDecomposition), the positions of the particles held
-// around its own, the contact's particles shared before the contact, the joins of per-rank
+// around its own, the particles shared whole on every rank before the parts of the step that run
+// whole there (the contact, the nodal rigid bodies and the ties), the joins of per-rank
 // lists, and the records of its particles' state for a restart file's pieces. On one rank every
 // call is a no-op (or the identity), so the solver calls them unconditionally where that reads
 // better.
 #pragma once
 
+#include <array>
 #include <cstdint>
+#include <initializer_list>
 #include <span>
 #include <vector>
 
@@ -42,11 +45,16 @@ public:
     void start_positions(const std::vector<Vec3>& x);
     void finish_positions(std::vector<Vec3>& x);
 
-    /// The particles the contact reads (the contact runs whole on every rank); then
-    /// share_contact_particles brings a and b (two particle arrays) of each of them from its
-    /// owner to every rank.
-    void set_contact_particles(const std::vector<Index>& particles);
-    void share_contact_particles(std::vector<Vec3>& a, std::vector<Vec3>& b);
+    /// The parts of the step that run whole on every rank, each reading its own particles.
+    enum class Whole : std::size_t {
+        contact,      ///< the contact's particles
+        constraints,  ///< those of the nodal rigid bodies and of the ties (§6.11, §6.12)
+    };
+    /// The particles that `part` reads (sorted or not); then share brings the given particle
+    /// arrays of each of them from its owner to every rank, so that every rank runs `part` on
+    /// the single process's values.
+    void set_whole_particles(Whole part, const std::vector<Index>& particles);
+    void share(Whole part, std::initializer_list<std::vector<Vec3>*> arrays);
 
     /// Every rank's list of element indices joined and sorted (this rank's alone on one rank).
     [[nodiscard]] std::vector<Index> join_sorted(std::vector<Index> mine) const;
@@ -79,9 +87,12 @@ public:
 private:
     DomainDecomposition d_;
     std::vector<std::vector<Real>> position_send_, position_recv_;
-    Communicator::Pending positions_in_flight_;      ///< start_positions' messages
-    std::vector<std::vector<Index>> contact_owned_;  ///< per rank: the contact's particles it owns
-    std::vector<Real> contact_send_, contact_all_;   ///< share_contact_particles' buffers
+    Communicator::Pending positions_in_flight_;  ///< start_positions' messages
+    struct WholeParticles {
+        std::vector<std::vector<Index>> owned;  ///< per rank: the part's particles it owns
+        std::vector<Real> send, all;            ///< share's buffers
+    };
+    std::array<WholeParticles, 2> whole_;  ///< per Whole
 };
 
 }  // namespace fpmshell

@@ -118,6 +118,17 @@ std::vector<Index> TiedSurfaces::slaves() const {
     return out;
 }
 
+std::vector<Index> TiedSurfaces::particles() const {
+    std::vector<Index> out;
+    for (const Tie& t : ties_) {
+        out.push_back(t.slave);
+        out.insert(out.end(), t.corner.begin(), t.corner.end());
+    }
+    std::sort(out.begin(), out.end());
+    out.erase(std::unique(out.begin(), out.end()), out.end());
+    return out;
+}
+
 void TiedSurfaces::impose(ParticleState& s, const BoundaryConditions& bc, Real impulse_time,
                           bool new_step) {
     if (ties_.empty()) return;

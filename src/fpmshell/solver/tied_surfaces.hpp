@@ -47,6 +47,8 @@ public:
     /// Per tie, in tie order: its slave, and the force in tension and in shear at the last
     /// impose (0 for a broken tie).
     [[nodiscard]] std::vector<Index> slaves() const;
+    /// The particles impose reads and moves: every tie's slave and its face's corners, sorted.
+    [[nodiscard]] std::vector<Index> particles() const;
     [[nodiscard]] const std::vector<Real>& tension() const { return tension_; }
     [[nodiscard]] const std::vector<Real>& shear() const { return shear_; }
 
