@@ -18,7 +18,11 @@ given as --mirrors). For each deck the script
 usage: tools/deck_corpus.py [--fpmshell build/fpmshell] [--mirrors /work/.mirror]
                             [--work build/deck_corpus] [--output docs/decks.md]
                             [--end-time T] [--timeout S] [--only NAME ...]
-Exits 1 when a deck's result is not what its scope asks (the table is written all the same).
+                            [--ranks N [--mpiexec mpirun]]
+With --ranks, every deck that ran runs again on N ranks (`mpirun -np N`, one thread each), whose
+history.csv and energy.csv must be the same bytes as the single process's (a column of the table).
+Exits 1 when a deck's result is not what its scope asks, or differs on N ranks (the table is
+written all the same).
 """
 import argparse
 import datetime
@@ -87,6 +91,29 @@ def run_deck(fpm, deck_path, end_time, timeout):
     return "failed", "exit %d: %s" % (r.returncode, errors[0] if errors else (r.stdout + r.stderr)[-300:]), elements, wall
 
 
+def same_on_ranks(fpm, mpiexec, ranks, deck_path, end_time, timeout):
+    """Runs the deck on `ranks` ranks beside its single-process results; (whether its
+    history.csv and energy.csv are the same bytes, what the table says)."""
+    folder = os.path.dirname(deck_path)
+    out = os.path.join(folder, "results_%d_ranks" % ranks)
+    args = [mpiexec, "-np", str(ranks), "--oversubscribe", fpm, "run", deck_path, "-o", out,
+            "--quiet", "--overwrite", "--threads", "1"]
+    if end_time:
+        args += ["--set", "control.end_time=%g" % end_time]
+    try:
+        r = subprocess.run(args, capture_output=True, text=True, timeout=timeout)
+    except subprocess.TimeoutExpired:
+        return False, "still running after %d s" % timeout
+    if r.returncode != 0:
+        return False, "exit %d" % r.returncode
+    for name in ("history.csv", "energy.csv"):
+        with open(os.path.join(folder, "results", name), "rb") as a, \
+                open(os.path.join(out, name), "rb") as b:
+            if a.read() != b.read():
+                return False, "%s differs" % name
+    return True, "the same bytes"
+
+
 def published_values(deck, results):
     """For each published LS-DYNA value of the deck (manifest key `published`), fpmshell's from
     its run's results: (entry, fpmshell value or None)."""
@@ -120,6 +147,9 @@ def main():
                     help="run each deck to this time instead of its own end time")
     ap.add_argument("--timeout", type=int, default=1800, help="seconds a run may take")
     ap.add_argument("--only", nargs="*", default=None)
+    ap.add_argument("--ranks", type=int, default=0,
+                    help="also run every deck that ran on this many ranks and compare")
+    ap.add_argument("--mpiexec", default="mpirun")
     args = ap.parse_args()
     fpm = os.path.abspath(args.fpmshell)
     decks = json.load(open(args.manifest))["decks"]
@@ -134,13 +164,19 @@ def main():
             result, detail, elements, wall = "not laid out", str(e), None, 0.0
         expected = "ran" if deck["scope"] == "shells" else "refused"
         as_promised = result == expected
+        on_ranks = ""
+        if args.ranks > 1 and result == "ran":
+            same, on_ranks = same_on_ranks(fpm, args.mpiexec, args.ranks, path, args.end_time,
+                                           args.timeout)
+            as_promised = as_promised and same
         wrong += 0 if as_promised else 1
         detail = detail.replace(os.path.abspath(args.work) + os.sep, "")
         results = os.path.join(os.path.dirname(path), "results") if result == "ran" else ""
         compared = published_values(deck, results) if result == "ran" and not args.end_time else []
-        rows.append((deck, result, detail, elements, wall, as_promised, compared))
-        print("%-14s %-8s %s%s" % (deck["name"], result, "" if as_promised else "(NOT AS PROMISED) ",
-                                  detail[:200]))
+        rows.append((deck, result, detail, elements, wall, as_promised, compared, on_ranks))
+        print("%-14s %-8s %s%s%s" % (deck["name"], result, "" if as_promised else "(NOT AS PROMISED) ",
+                                    detail[:200], " on %d ranks: %s" % (args.ranks, on_ranks)
+                                    if on_ranks else ""))
     lines = [
         "# Public LS-DYNA decks",
         "",
@@ -151,22 +187,24 @@ def main():
         % (datetime.date.today().isoformat(),
            subprocess.run([fpm, "--version"], capture_output=True, text=True).stdout.strip()),
         "",
-        "| deck | source | what | elements | scope | result | wall s | as promised |",
-        "|---|---|---|---|---|---|---|---|",
+        "| deck | source | what | elements | scope | result | wall s |%s as promised |"
+        % (" on %d ranks |" % args.ranks if args.ranks > 1 else ""),
+        "|---|---|---|---|---|---|---|%s---|" % ("---|" if args.ranks > 1 else ""),
     ]
-    for deck, result, detail, elements, wall, ok, _ in rows:
+    for deck, result, detail, elements, wall, ok, _, on_ranks in rows:
         source = "%s `%s` (%s)" % (deck["repo"], deck["files"][0], deck["licence"])
         text = result + (": " + detail.replace("|", "\\|") if detail else "")
-        lines.append("| %s | %s | %s | %s | %s | %s | %s | %s |" % (
+        lines.append("| %s | %s | %s | %s | %s | %s | %s |%s %s |" % (
             deck["name"], source, deck["what"], elements if elements is not None else "",
-            deck["scope"], text, "%.1f" % wall if result == "ran" else "", "yes" if ok else "**no**"))
+            deck["scope"], text, "%.1f" % wall if result == "ran" else "",
+            " %s |" % on_ranks if args.ranks > 1 else "", "yes" if ok else "**no**"))
     lines += ["", "%d of %d decks as promised." % (len(rows) - wrong, len(rows)), ""]
-    table = [r for r in rows if r[6]]
+    table = [r for r in rows if r[6]]  # those with published values
     if table:
         lines += ["## Published LS-DYNA results beside fpmshell's", "",
                   "| deck | quantity | LS-DYNA | LS-DYNA's runs spread | fpmshell | difference | source |",
                   "|---|---|---|---|---|---|---|"]
-        for deck, *_, compared in table:
+        for deck, *_, compared, _ in table:
             for entry, value in compared:
                 ref = entry["lsdyna"]
                 diff = "%+.1f %%" % (100 * (value - ref) / abs(ref)) if value is not None and ref else ""

@@ -6,7 +6,8 @@ history.csv bytes:
   about x (DOF 5), pushed by an acceleration (VAD 1), lowered by a displacement (VAD 2) -> `boundary` entries of type rigid_body;
 - *CONSTRAINED_EXTRA_NODES_NODE / _SET and *CONSTRAINED_RIGID_BODIES -> `constraints` entries over
   a list of node sets; *CONTACT_TIED_SURFACE_TO_SURFACE_OFFSET -> a `constraints` entry of type
-  tied;
+  tied; *CONSTRAINED_GENERALIZED_WELD_SPOT over three nodes with SN, SS -> groups of three with
+  `failure` (theory.md eq. 6.11-14), which the hammer's blow lets go;
 - refusals with exit 2 and one sentence naming the place: VAD 1, DOF 4 with a vector, a
   rotation given as an angle, a part that is not rigid; the YAML keys' errors.
 
@@ -393,6 +394,28 @@ for name, fields, keys, fail in (
         r_plain, h_plain = run(write(os.path.join(WORK, "welds_plain"), "model.k", deck))
         check("welds out of reach: the history of welds without failure data, byte for byte",
               r_plain.returncode == 0 and history is not None and read(h_plain) == history, r_plain.stderr)
+# *CONSTRAINED_GENERALIZED_WELD_SPOT over three nodes each (the doubler's weld particle and its
+# neighbour, the plate's particle below; theory.md eq. 6.11-14) with SN, SS, against the twin's
+# groups of three with `failure`: the same history.csv bytes, and the hammer's blow lets them go.
+TRIPLES = {"a": (101, 102, 21), "b": (105, 104, 25), "c": (121, 122, 57), "d": (125, 124, 61)}
+general = "".join(
+    "*SET_NODE_LIST\n%10d\n%10d%10d%10d\n*CONSTRAINED_GENERALIZED_WELD_SPOT\n%10d\n"
+    "   1.0e+20       0.0     200.0     100.0       2.0       2.0\n" % ((900 + k,) + t + (900 + k,))
+    for k, t in enumerate(TRIPLES.values()))
+t_text = twin
+for w, t in TRIPLES.items():
+    t_text = t_text.replace("  weld_%s: {node_ids: [%d, %d]}\n" % (w, t[0], t[2]),
+                            "  weld_%s: {node_ids: [%d, %d, %d]}\n" % ((w,) + t))
+    t_text = t_text.replace("  - {type: rigid, nodes: weld_%s}\n" % w,
+                            "  - {type: rigid, nodes: weld_%s, failure: {normal_force: 200, "
+                            "shear_force: 100, normal_exponent: 2, shear_exponent: 2}}\n" % w)
+assert t_text.count("failure:") == 4 and "102, 21]" in t_text
+folder = os.path.join(WORK, "generalized_welds")
+history = twin_pair("generalized welds of three nodes", write(folder, "model.k", deck.replace(
+    weld_cards, general)), write(folder, "model.yaml", t_text))
+summary = read(os.path.join(folder, "out_k", "summary.json"))
+check("generalized welds of three nodes: the hammer's blow lets them go (summary.json)",
+      '"failed_welds": 4' in summary, summary[-600:])
 refused("weld with a temperature curve", "*CONSTRAINED_SPOTWELD\n        41        42     -12.0\n",
         "model.k:", "*CONSTRAINED_SPOTWELD", "SN or SS < 0")
 

@@ -281,9 +281,9 @@ void read_tied_surface(const YamlValue& item, Model& model) {
     model.tied_surfaces.push_back(std::move(t));
 }
 
-/// A spot weld's `failure` (theory.md eq. 6.11-13): the forces at which it lets go, their
-/// exponents, a time; only a group of two particles.
-void read_weld_failure(const YamlValue& f, const YamlValue& nodes, NodalRigidBody& body) {
+/// A spot weld's `failure` (theory.md eqs. 6.11-13, 6.11-14): the forces at which it lets go,
+/// their exponents, a time.
+void read_weld_failure(const YamlValue& f, NodalRigidBody& body) {
     const YamlMap fm =
         f.map({"normal_force", "shear_force", "normal_exponent", "shear_exponent", "time"});
     NodalRigidBody::Failure& w = body.failure;
@@ -296,9 +296,6 @@ void read_weld_failure(const YamlValue& f, const YamlValue& nodes, NodalRigidBod
         f.fail(
             "a spot weld's failure needs normal_force or shear_force > 0 (the force at which it "
             "lets go) or a time");
-    if (body.nodes.size() != 2)
-        nodes.fail("a rigid group with failure is a spot weld of two particles; it has " +
-                   std::to_string(body.nodes.size()));
 }
 
 }  // namespace
@@ -343,7 +340,7 @@ void read_constraints(const YamlValue& v, Model& model) {
                 nodes.fail("particle " + std::to_string(p + 1) +
                            " of the rigid body also has a boundary condition (a rigid body "
                            "moves as a whole: constrain none of its particles)");
-        if (const auto f = m.find("failure")) read_weld_failure(*f, nodes, body);
+        if (const auto f = m.find("failure")) read_weld_failure(*f, body);
         model.nodal_rigid_bodies.push_back(std::move(body));
     }
 }

@@ -3,6 +3,7 @@
 #include "fpmshell/model/spot_weld_sides.hpp"
 
 #include <algorithm>
+#include <iterator>
 
 #include "fpmshell/model/rigid_body_partition.hpp"
 
@@ -63,6 +64,44 @@ std::vector<Index> reached(const GroupGraph& g, Index from, std::size_t cut,
     return out;
 }
 
+/// The sides of group `cut`, a generalized weld of `nodes` (entry `entry`): each particle's side
+/// with the group cut, which must hold none of the group's other particles, and at most one of
+/// which may hold a rigid material's particle (its force is then the others' negative sum).
+template <class HoldsRigid>
+SpotWeldSide generalized_weld(const GroupGraph& graph, std::size_t cut, std::size_t entry,
+                              const std::vector<Index>& nodes, std::vector<std::uint8_t>& seen,
+                              const HoldsRigid& holds_rigid_material,
+                              std::optional<std::pair<std::size_t, std::string>>& problem) {
+    SpotWeldSide w;
+    w.entry = entry;
+    std::vector<Index> sorted_nodes = nodes;
+    std::sort(sorted_nodes.begin(), sorted_nodes.end());
+    for (std::size_t k = 0; k < nodes.size(); ++k) {
+        std::vector<Index> side = reached(graph, nodes[k], cut, seen);
+        std::vector<Index> shared;
+        std::set_intersection(side.begin(), side.end(), sorted_nodes.begin(), sorted_nodes.end(),
+                              std::back_inserter(shared));
+        if (shared.size() > 1) {
+            problem = {entry,
+                       "the generalized weld's particles are joined also through other "
+                       "constraints or rigid parts, so the forces it carries are not "
+                       "determined: a weld that can fail must be their only link"};
+            return w;
+        }
+        if (holds_rigid_material(side)) {
+            if (w.derived >= 0) {
+                problem = {entry,
+                           "two of the generalized weld's particles are joined to rigid parts, "
+                           "whose reactions leave the forces it carries undetermined"};
+                return w;
+            }
+            w.derived = static_cast<std::ptrdiff_t>(k);
+        }
+        w.node_sides.push_back(std::move(side));
+    }
+    return w;
+}
+
 }  // namespace
 
 SpotWeldSides spot_weld_sides(const Model& model, const std::vector<std::uint8_t>& let_go) {
@@ -85,7 +124,14 @@ SpotWeldSides spot_weld_sides(const Model& model, const std::vector<std::uint8_t
         if (groups[i].entry < 0) continue;
         const auto entry = static_cast<std::size_t>(groups[i].entry);
         if (!model.nodal_rigid_bodies[entry].can_fail()) continue;
-        const Index a = groups[i].nodes[0], b = groups[i].nodes[1];
+        const std::vector<Index>& nodes = groups[i].nodes;
+        if (nodes.size() > 2) {
+            out.welds.push_back(
+                generalized_weld(graph, i, entry, nodes, seen, holds_rigid_material, out.problem));
+            if (out.problem) return out;
+            continue;
+        }
+        const Index a = nodes[0], b = nodes[1];
         std::vector<Index> side_a = reached(graph, a, i, seen);
         if (std::binary_search(side_a.begin(), side_a.end(), b)) {
             out.problem = {entry,

@@ -24,6 +24,7 @@ NodalRigidBodies::NodalRigidBodies(const Model& model) : model_(&model) {
             weld_force_.assign(let_go_.size(), Vec3::Zero());
             weld_tension_.assign(let_go_.size(), 0);
             weld_shear_.assign(let_go_.size(), 0);
+            node_force_.assign(let_go_.size(), {});
         }
     rebuild();
 }
@@ -66,10 +67,15 @@ void NodalRigidBodies::set_weld_sides() {
     welds_ = std::move(sides.welds);
     weld_slot_.assign(model_->nodes.size(), -1);
     Index slots = 0;
-    for (const SpotWeldSide& w : welds_)
-        for (const Index p : w.side)
+    const auto add_slots = [&](const std::vector<Index>& side) {
+        for (const Index p : side)
             if (weld_slot_[static_cast<std::size_t>(p)] < 0)
                 weld_slot_[static_cast<std::size_t>(p)] = slots++;
+    };
+    for (const SpotWeldSide& w : welds_) {
+        add_slots(w.side);
+        for (const std::vector<Index>& side : w.node_sides) add_slots(side);
+    }
     weld_impulse_.assign(static_cast<std::size_t>(slots), Vec3::Zero());
 }
 
@@ -77,41 +83,97 @@ std::size_t NodalRigidBodies::failed_welds() const {
     return static_cast<std::size_t>(std::count(let_go_.begin(), let_go_.end(), 1));
 }
 
+Vec3 NodalRigidBodies::side_force(const std::vector<Index>& side, Real impulse_time) const {
+    Vec3 force = Vec3::Zero();
+    for (const Index p : side)
+        force += weld_impulse_[static_cast<std::size_t>(weld_slot_[static_cast<std::size_t>(p)])];
+    return force / impulse_time;
+}
+
+NodalRigidBodies::WeldLoad NodalRigidBodies::load_along(const NodalRigidBody& group,
+                                                        const Vec3& force, const Vec3& axis,
+                                                        bool coincident) {
+    WeldLoad load;
+    load.force = force;
+    const Real along = force.dot(axis);
+    load.tension = coincident ? std::abs(along) : std::max(Real(0), along);
+    load.shear = (force - along * axis).norm();
+    const NodalRigidBody::Failure& limit = group.failure;  // eq. 6.11-13
+    if (limit.normal_force > 0)
+        load.criterion += std::pow(load.tension / limit.normal_force, limit.normal_exponent);
+    if (limit.shear_force > 0)
+        load.criterion += std::pow(load.shear / limit.shear_force, limit.shear_exponent);
+    return load;
+}
+
+NodalRigidBodies::WeldLoad NodalRigidBodies::weld_load(const SpotWeldSide& w,
+                                                       const ParticleState& s,
+                                                       Real impulse_time) const {
+    const NodalRigidBody& group = model_->nodal_rigid_bodies[w.entry];
+    // the force on the first particle's side through the weld
+    const Vec3 force = w.sign * side_force(w.side, impulse_time);
+    const auto a = static_cast<std::size_t>(group.nodes[0]);
+    const auto b = static_cast<std::size_t>(group.nodes[1]);
+    // the weld's axis, from the first particle to the second; for coincident particles
+    // their mean normal, either way in tension
+    const Vec3 chord = s.x[b] - s.x[a];
+    const Real reach = std::max(s.x[a].cwiseAbs().maxCoeff(), s.x[b].cwiseAbs().maxCoeff());
+    const bool coincident = !(chord.norm() > 1e-9 * reach);
+    const Vec3 axis =
+        coincident ? Vec3((s.normal[a] + s.normal[b]).normalized()) : Vec3(chord / chord.norm());
+    return load_along(group, force, axis, coincident);
+}
+
+// A generalized weld (eq. 6.11-14): each particle's side takes the force through the group, its
+// normal from the particle to the group's geometric centre (OpenRadioss's reading of LS-DYNA's
+// *CONSTRAINED_GENERALIZED_WELD_SPOT); the particle whose criterion is largest judges the weld.
+NodalRigidBodies::WeldLoad NodalRigidBodies::generalized_weld_load(const SpotWeldSide& w,
+                                                                   const ParticleState& s,
+                                                                   Real impulse_time) {
+    const NodalRigidBody& group = model_->nodal_rigid_bodies[w.entry];
+    const std::size_t n = group.nodes.size();
+    std::vector<Vec3>& node_force = node_force_[w.entry];
+    node_force.assign(n, Vec3::Zero());
+    Vec3 others = Vec3::Zero(), centre = Vec3::Zero();
+    Real reach = 0;
+    for (std::size_t k = 0; k < n; ++k) {
+        const Vec3& x = s.x[static_cast<std::size_t>(group.nodes[k])];
+        centre += x;
+        reach = std::max(reach, x.cwiseAbs().maxCoeff());
+        if (static_cast<std::ptrdiff_t>(k) == w.derived) continue;
+        node_force[k] = side_force(w.node_sides[k], impulse_time);
+        others += node_force[k];
+    }
+    centre /= static_cast<Real>(n);
+    if (w.derived >= 0) node_force[static_cast<std::size_t>(w.derived)] = -others;
+    WeldLoad worst;
+    for (std::size_t k = 0; k < n; ++k) {
+        const auto p = static_cast<std::size_t>(group.nodes[k]);
+        const Vec3 inward = centre - s.x[p];
+        // a particle at the centre: its normal, either way in tension
+        const bool coincident = !(inward.norm() > 1e-9 * reach);
+        const Vec3 axis = coincident ? s.normal[p] : Vec3(inward / inward.norm());
+        const WeldLoad load = load_along(group, node_force[k], axis, coincident);
+        if (k == 0 || load.criterion > worst.criterion) worst = load;
+    }
+    return worst;
+}
+
 std::size_t NodalRigidBodies::judge_welds(const ParticleState& s, Real impulse_time, Real time) {
     std::size_t failed = 0;
     std::fill(weld_force_.begin(), weld_force_.end(), Vec3::Zero());
     std::fill(weld_tension_.begin(), weld_tension_.end(), Real(0));
     std::fill(weld_shear_.begin(), weld_shear_.end(), Real(0));
+    for (std::vector<Vec3>& forces : node_force_)
+        std::fill(forces.begin(), forces.end(), Vec3::Zero());
     for (const SpotWeldSide& w : welds_) {
         const NodalRigidBody& group = model_->nodal_rigid_bodies[w.entry];
-        const NodalRigidBody::Failure& limit = group.failure;
-        // the force on the first particle's side through the weld
-        Vec3 force = Vec3::Zero();
-        for (const Index p : w.side)
-            force +=
-                weld_impulse_[static_cast<std::size_t>(weld_slot_[static_cast<std::size_t>(p)])];
-        force *= w.sign / impulse_time;
-        const auto a = static_cast<std::size_t>(group.nodes[0]);
-        const auto b = static_cast<std::size_t>(group.nodes[1]);
-        // the weld's axis, from the first particle to the second; for coincident particles
-        // their mean normal, either way in tension
-        const Vec3 chord = s.x[b] - s.x[a];
-        const Real reach = std::max(s.x[a].cwiseAbs().maxCoeff(), s.x[b].cwiseAbs().maxCoeff());
-        const bool coincident = !(chord.norm() > 1e-9 * reach);
-        const Vec3 axis = coincident ? Vec3((s.normal[a] + s.normal[b]).normalized())
-                                     : Vec3(chord / chord.norm());
-        const Real along = force.dot(axis);
-        const Real tension = coincident ? std::abs(along) : std::max(Real(0), along);
-        const Real shear = (force - along * axis).norm();
-        weld_force_[w.entry] = force;
-        weld_tension_[w.entry] = tension;
-        weld_shear_[w.entry] = shear;
-        Real criterion = 0;  // eq. 6.11-13
-        if (limit.normal_force > 0)
-            criterion += std::pow(tension / limit.normal_force, limit.normal_exponent);
-        if (limit.shear_force > 0)
-            criterion += std::pow(shear / limit.shear_force, limit.shear_exponent);
-        if (criterion >= 1 || time >= limit.time) {
+        const WeldLoad load = w.node_sides.empty() ? weld_load(w, s, impulse_time)
+                                                   : generalized_weld_load(w, s, impulse_time);
+        weld_force_[w.entry] = load.force;
+        weld_tension_[w.entry] = load.tension;
+        weld_shear_[w.entry] = load.shear;
+        if (load.criterion >= 1 || time >= group.failure.time) {
             let_go_[w.entry] = 1;
             ++failed;
         }

@@ -78,12 +78,19 @@ public:
     /// Whether some spot weld can fail (the model has failure data on a weld).
     [[nodiscard]] bool has_failing_welds() const { return !let_go_.empty(); }
     /// Per entry of Model::nodal_rigid_bodies (empty where no weld can fail): whether it has
-    /// failed, and at the last judge_welds the force it carried onto its first particle's side,
-    /// its tension and its shear (zero for a failed weld or a group that cannot fail).
+    /// failed, and at the last judge_welds the force it carried onto its first particle's side
+    /// (a generalized weld: onto the side of its particle nearest failure, eq. 6.11-14), its
+    /// tension and its shear (zero for a failed weld or a group that cannot fail).
     [[nodiscard]] const std::vector<std::uint8_t>& welds_failed() const { return let_go_; }
     [[nodiscard]] const std::vector<Vec3>& weld_forces() const { return weld_force_; }
     [[nodiscard]] const std::vector<Real>& weld_tensions() const { return weld_tension_; }
     [[nodiscard]] const std::vector<Real>& weld_shears() const { return weld_shear_; }
+    /// Per entry, for a generalized weld that can fail (more than two particles; eq. 6.11-14):
+    /// at the last judge_welds the force through it onto each of its particles' sides, in the
+    /// group's order (empty for other entries; zero once it has failed).
+    [[nodiscard]] const std::vector<std::vector<Vec3>>& generalized_weld_forces() const {
+        return node_force_;
+    }
     /// Per particle its body, -1 outside the bodies.
     [[nodiscard]] const std::vector<Index>& body_of_particle() const { return body_of_particle_; }
 
@@ -124,6 +131,21 @@ private:
 
     /// The welds' side particles and their slots in weld_impulse_ (eq. 6.11-13).
     void set_weld_sides();
+    /// What a weld carries at the step's end (eqs. 6.11-13, 6.11-14): the force onto the side it
+    /// is judged on, its tension and shear, and the criterion's value (failed at 1).
+    struct WeldLoad {
+        Vec3 force = Vec3::Zero();
+        Real tension = 0, shear = 0, criterion = 0;
+    };
+    /// The force through the weld onto `side`: its particles' constraint impulses over the time.
+    [[nodiscard]] Vec3 side_force(const std::vector<Index>& side, Real impulse_time) const;
+    /// force split along the unit `axis` (tension positive; either way for coincident ends).
+    [[nodiscard]] static WeldLoad load_along(const NodalRigidBody& group, const Vec3& force,
+                                             const Vec3& axis, bool coincident);
+    [[nodiscard]] WeldLoad weld_load(const SpotWeldSide& w, const ParticleState& s,
+                                     Real impulse_time) const;
+    WeldLoad generalized_weld_load(const SpotWeldSide& w, const ParticleState& s,
+                                   Real impulse_time);
 
     const Model* model_ = nullptr;
     std::vector<std::vector<Index>> bodies_;
@@ -140,6 +162,8 @@ private:
     std::vector<Index> weld_slot_;     ///< per particle: its slot, -1 on no weld side
     std::vector<Vec3> weld_impulse_;   ///< per slot: the step's constraint impulse
     std::vector<Vec3> weld_force_;     ///< per entry, at the last judge_welds
+    /// per entry, for a generalized weld: the force onto each of its particles' sides
+    std::vector<std::vector<Vec3>> node_force_;
     std::vector<Real> weld_tension_, weld_shear_;
 };
 

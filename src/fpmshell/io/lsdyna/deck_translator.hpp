@@ -281,8 +281,6 @@ public:
     /// The `failure` keys of a weld card: SN at field `sn` (SS, N, M after it), TF at `tf`;
     /// `defaulted` set where a blank exponent is taken as 2.
     std::string weld_failure(const Card& f, std::size_t sn, std::size_t tf, bool& defaulted);
-    /// The number of nodes *SET_NODE(_LIST) `sid` lists, 0 where it is not a list.
-    std::size_t listed_node_count(long long sid);
     void rigid_wall(const DeckBlock& b);
     void add_wall(const WallDef& w, const Card& f);
     static std::array<Real, 3> unit(const std::array<Real, 3>& v);
