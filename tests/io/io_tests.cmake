@@ -47,6 +47,13 @@ add_test(NAME io.deck_rigid_bodies
                  $<TARGET_FILE:fpmshell> ${CMAKE_BINARY_DIR}/deck_rigid_test_work)
 set_tests_properties(io.deck_rigid_bodies PROPERTIES LABELS io TIMEOUT ${_timeout_300s})
 
+# Point masses of decks (*ELEMENT_MASS, _NODE_SET) against a YAML twin, and their refusals
+# (tests/io/deck_mass_test.py).
+add_test(NAME io.deck_point_masses
+         COMMAND ${FPMSHELL_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/io/deck_mass_test.py
+                 $<TARGET_FILE:fpmshell> ${CMAKE_BINARY_DIR}/deck_mass_test_work)
+set_tests_properties(io.deck_point_masses PROPERTIES LABELS io TIMEOUT ${_timeout_300s})
+
 # Rigid parts of solids and *PART_INERTIA in decks against YAML twins, the two-card form of
 # *ELEMENT_SOLID, and their refusals (tests/io/deck_solid_test.py).
 add_test(NAME io.deck_rigid_solids

@@ -19,6 +19,16 @@ std::string model_summary(const Model& model) {
     out += fmt::format("particles  {}\nelements   {}\n", model.n_particles(), model.n_elements());
     const auto& m = solver.state().mass;
     out += fmt::format("total mass {:.6g}\n", std::accumulate(m.begin(), m.end(), 0.0));
+    if (!model.point_masses.empty()) {  // `masses`: in the total
+        Real points = 0;
+        std::size_t carriers = 0;
+        for (const PointMass& pm : model.point_masses) {
+            points += pm.mass * static_cast<Real>(pm.nodes.size());
+            carriers += pm.nodes.size();
+        }
+        out +=
+            fmt::format("point masses {:.6g} on {} particles (in the total)\n", points, carriers);
+    }
     if (model.control.mass_scaling.time_step > 0)
         out += fmt::format("added mass {:.6g} (mass scaling to time step {:.6g}; in the total)\n",
                            solver.added_mass().total_added(), model.control.mass_scaling.time_step);

@@ -38,6 +38,8 @@ void read_curves(const YamlValue& v, Model& model);
 void read_boundary(const YamlValue& v, Model& model);
 void read_loads(const YamlValue& v, Model& model);
 void read_initial_conditions(const YamlValue& v, Model& model);
+/// `masses`: point masses on node sets (LS-DYNA's *ELEMENT_MASS, _NODE_SET).
+void read_point_masses(const YamlValue& v, Model& model);
 /// `moves`: node sets translated before the run (LS-DYNA's *PART_MOVE), in their order.
 void read_moves(const YamlValue& v, Model& model);
 /// `constraints`, after `boundary` (a particle of a nodal rigid body takes no boundary

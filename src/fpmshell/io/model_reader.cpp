@@ -32,7 +32,7 @@ const std::vector<std::string> k_top_keys = {"title",       "mesh",         "set
                                              "curves",      "loads",        "initial_conditions",
                                              "constraints", "rigid_bodies", "contact",
                                              "damping",     "control",      "output",
-                                             "moves"};
+                                             "moves",       "masses"};
 
 YAML::Node load_yaml(const std::string& path) {
     std::error_code ec;
@@ -157,6 +157,7 @@ Model read_model_tree(YamlContext& ctx, YAML::Node root, const std::string& path
     if (const auto b = top.find("boundary")) read_boundary(*b, model);
     if (const auto l = top.find("loads")) read_loads(*l, model);
     if (const auto i = top.find("initial_conditions")) read_initial_conditions(*i, model);
+    if (const auto pm = top.find("masses")) read_point_masses(*pm, model);
     if (const auto c = top.find("constraints"); c && !c->is_null()) {
         read_constraints(*c, model);
         // a weld that can fail must be its body's only link between its particles (eq. 6.11-13)

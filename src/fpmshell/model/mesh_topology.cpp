@@ -122,6 +122,10 @@ MeshTopology::MeshTopology(const Model& model) {
             inertia_share_inertia[p] += shares.inertia[k];
         }
     }
+    for (const PointMass& m : model.point_masses) {  // §6.1: a point mass adds no inertia
+        if (point_mass.empty()) point_mass.assign(np, 0.0);
+        for (const Index p : m.nodes) point_mass[static_cast<std::size_t>(p)] += m.mass;
+    }
     sum_particle_shares();
 }
 
@@ -145,6 +149,7 @@ void MeshTopology::sum_particle_shares() {
         particle_mass[p] += inertia_share_mass[p];
         particle_inertia[p] += inertia_share_inertia[p];
     }
+    for (std::size_t p = 0; p < point_mass.size(); ++p) particle_mass[p] += point_mass[p];
 }
 
 void MeshTopology::scale_element_masses(const std::vector<Real>& factor) {

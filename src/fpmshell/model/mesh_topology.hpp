@@ -60,9 +60,13 @@ struct MeshTopology {
     /// per particle, its shares of the rigid sections with a given inertia (eq. 6.11-9);
     /// empty without such sections
     std::vector<Real> inertia_share_mass, inertia_share_inertia;
+    /// per particle, the point masses of `masses` it carries (§6.1), in their order; empty
+    /// without them
+    std::vector<Real> point_mass;
 
 private:
-    /// particle_mass and particle_inertia from the element shares, in element order.
+    /// particle_mass and particle_inertia from the element shares, in element order, then the
+    /// rigid sections' shares and the point masses.
     void sum_particle_shares();
     std::vector<Index> corner_particle;  ///< 3 e + i: corner i of element e
 };

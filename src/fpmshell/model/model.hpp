@@ -141,6 +141,13 @@ struct Load {
     Index curve = -1;             ///< -1 = factor 1 at all times
 };
 
+/// One entry of `masses` (LS-DYNA's *ELEMENT_MASS, _NODE_SET): each particle of `nodes` gains
+/// `mass` (§6.1), a point mass without rotary inertia of its own.
+struct PointMass {
+    std::vector<Index> nodes;
+    Real mass = 0;  ///< per particle
+};
+
 /// One entry of `initial_conditions`.
 struct InitialVelocity {
     std::vector<Index> nodes;
@@ -385,6 +392,7 @@ struct Model {
     std::vector<Load> loads;
     std::vector<BlastLoad> blast_loads;  ///< the `loads` of type blast, in their order
     std::vector<InitialVelocity> initial_conditions;
+    std::vector<PointMass> point_masses;  ///< `masses`, in their order
     std::vector<RigidBody> rigid_bodies;
     std::vector<NodalRigidBody> nodal_rigid_bodies;  ///< `constraints` of type rigid
     std::vector<TiedSurface> tied_surfaces;          ///< `constraints` of type tied

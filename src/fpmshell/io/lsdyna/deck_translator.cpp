@@ -29,6 +29,7 @@ const std::vector<CardReader>& card_readers() {
         {"NODE", false, P::Definitions, &T::mesh_only},
         {"ELEMENT_SHELL", true, P::Definitions, &T::element_shell},
         {"ELEMENT_SOLID", false, P::Definitions, &T::element_solid},
+        {"ELEMENT_MASS", true, P::References, &T::element_mass},
         {"SET_NODE", true, P::Definitions, &T::set_header},
         {"SET_SHELL", true, P::Definitions, &T::set_header},
         {"SET_PART", true, P::Definitions, &T::set_header},
@@ -289,6 +290,7 @@ DeckTranslation DeckTranslator::write() {
     initial.insert(initial.end(), initial_nodes_.begin(), initial_nodes_.end());
     initial.insert(initial.end(), initial_bodies_.begin(), initial_bodies_.end());
     write_list(out, "initial_conditions", initial);
+    write_list(out, "masses", masses_);
     write_list(out, "constraints", constraints_);
     write_walls(out);
     write_list(out, "contact", contact_);

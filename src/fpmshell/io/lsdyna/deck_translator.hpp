@@ -176,6 +176,8 @@ public:
     void element_shell(const DeckBlock& b);
     /// *ELEMENT_SOLID: the parts of the solids (the mesh reader makes their outer faces).
     void element_solid(const DeckBlock& b);
+    /// *ELEMENT_MASS, _NODE_SET: point masses (deck_masses.cpp).
+    void element_mass(const DeckBlock& b);
     void set_header(const DeckBlock& b);
     /// The name of set `sid` of `kind` (node, shell, part), which the deck must define.
     std::string set_name(const Card& f, const std::string& kind, long long sid) const;
@@ -351,7 +353,8 @@ private:
     /// the model line of a load or prescribed motion on single nodes -> the set of its nodes
     std::map<std::string, std::string> node_group_of_text_;
     std::vector<Line> boundary_, loads_, contact_, control_, constraints_;
-    std::vector<Line> moves_;  ///< *PART_MOVE
+    std::vector<Line> moves_;   ///< *PART_MOVE
+    std::vector<Line> masses_;  ///< *ELEMENT_MASS, _NODE_SET
     /// initial velocities of *INITIAL_VELOCITY, _GENERATION and _NODE, written in that order
     std::vector<Line> initial_sets_, initial_generated_, initial_nodes_;
     std::vector<Line> initial_bodies_;  ///< of *PART_INERTIA: written last (they win)

@@ -1,0 +1,76 @@
+#!/usr/bin/env python3
+"""Point masses of decks (model-format.md `masses`): plate_drop.k with *ELEMENT_MASS (nodes 41
+and 42 of 0.5 kg each, node 43 of 0.25 kg with a PID, noted) and *ELEMENT_MASS_NODE_SET (2 kg
+shared by nodes 1-4) against its YAML twin with the same `masses`: the same history.csv bytes,
+and `check` counts 3.25 kg more than the plate's 0.157 kg. Refusals, exit 2 with one sentence
+naming the card: *ELEMENT_MASS_PART (not read), a mass that is not > 0, a node of no shell.
+
+usage: deck_mass_test.py FPMSHELL WORKDIR
+"""
+import os
+import shutil
+import sys
+
+FPM, WORK = sys.argv[1], sys.argv[2]
+ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+DROP = os.path.join(ROOT, "examples", "decks", "plate_drop")
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from check_tally import check, finish  # noqa: E402
+import deck_variant  # noqa: E402
+from deck_variant import fpmshell, read, twin_pair  # noqa: E402
+from deck_variant import write as write_beside  # noqa: E402
+
+deck_variant.FPM = FPM
+
+
+def write(folder, name, text):
+    return write_beside(folder, name, text, os.path.join(DROP, "plate_drop_mesh.k"))
+
+
+shutil.rmtree(WORK, ignore_errors=True)
+deck, twin = read(os.path.join(DROP, "plate_drop.k")), read(os.path.join(DROP, "plate_drop.yaml"))
+AT = "*INITIAL_VELOCITY_GENERATION"
+assert AT in deck and "\nsets:\n" in twin and "\ninitial_conditions:" in twin
+
+
+def mass_card(eid, node, mass, pid=None):
+    return "%8d%8d%16.4f%s\n" % (eid, node, mass, "" if pid is None else "%8d" % pid)
+
+
+MASSES = ("*ELEMENT_MASS\n$#   eid     nid            mass     pid\n" +
+          mass_card(900001, 41, 0.5) + mass_card(900002, 42, 0.5) + mass_card(900003, 43, 0.25, 1) +
+          "*SET_NODE_LIST\n        77\n         1         2         3         4\n"
+          "*ELEMENT_MASS_NODE_SET\n" + mass_card(900004, 77, 2.0))
+folder = os.path.join(WORK, "masses")
+d = write(folder, "model.k", deck.replace(AT, MASSES + AT, 1))
+t = write(folder, "model.yaml", twin.replace(
+    "\nsets:\n", "\nsets:\n  weights: {node_ids: [41, 42]}\n  weight: {node_ids: [43]}\n"
+                 "  corners: {node_ids: [1, 2, 3, 4]}\n").replace(
+    "\ninitial_conditions:", "\nmasses:\n  - {nodes: weights, mass: 0.5}\n  - {nodes: weight, mass: "
+                             "0.25}\n  - {nodes: corners, total: 2}\n\ninitial_conditions:"))
+twin_pair("point masses", d, t)
+c = fpmshell("check", d)
+check("point masses: check counts them in the total and notes the PID",
+      c.returncode == 0 and "total mass 3.407" in c.stdout and
+      "point masses 3.25 on 7 particles" in c.stdout and "PID: the mass joins its node" in c.stdout,
+      c.stdout + c.stderr)
+plain = fpmshell("check", os.path.join(DROP, "plate_drop.k"))
+check("point masses: the plate alone weighs 0.157 kg", "total mass 0.157" in plain.stdout,
+      plain.stdout)
+
+for name, cards, words in (
+        ("a part's mass", "*ELEMENT_MASS_PART\n       1          10.0\n",
+         ("*ELEMENT_MASS_PART", "this form of it is not supported")),
+        ("a mass not > 0", "*ELEMENT_MASS\n" + mass_card(900001, 41, 0.0), ("MASS must be > 0",)),
+        ("a node of no shell", "*NODE\n   90001             0.0             0.0             0.1\n"
+                               "*ELEMENT_MASS\n" + mass_card(900001, 90001, 1.0),
+         ("*ELEMENT_MASS", "node 90001"))):
+    path = write(os.path.join(WORK, name.replace(" ", "_").replace("'", "")), "model.k",
+                 deck.replace(AT, cards + AT, 1))
+    r = fpmshell("check", path)
+    errors = [line for line in r.stderr.splitlines() if line.startswith("error:")]
+    check(f"{name}: exit 2 with one sentence naming the card", r.returncode == 2 and
+          len(errors) == 1 and "model.k:" in errors[0] and all(w in errors[0] for w in words),
+          r.stderr)
+
+sys.exit(finish())
