@@ -3,7 +3,8 @@
 and 42 of 0.5 kg each, node 43 of 0.25 kg with a PID, noted) and *ELEMENT_MASS_NODE_SET (2 kg
 shared by nodes 1-4) against its YAML twin with the same `masses`: the same history.csv bytes,
 and `check` counts 3.25 kg more than the plate's 0.157 kg. Refusals, exit 2 with one sentence
-naming the card: *ELEMENT_MASS_PART (not read), a mass that is not > 0, a node of no shell.
+naming the card: *ELEMENT_MASS_PART (not read), a mass that is not > 0, a node the deck does
+not define. A mass on a node of no shell, hung by a nodal rigid body, is a particle of its own.
 
 usage: deck_mass_test.py FPMSHELL WORKDIR
 """
@@ -62,8 +63,7 @@ for name, cards, words in (
         ("a part's mass", "*ELEMENT_MASS_PART\n       1          10.0\n",
          ("*ELEMENT_MASS_PART", "this form of it is not supported")),
         ("a mass not > 0", "*ELEMENT_MASS\n" + mass_card(900001, 41, 0.0), ("MASS must be > 0",)),
-        ("a node of no shell", "*NODE\n   90001             0.0             0.0             0.1\n"
-                               "*ELEMENT_MASS\n" + mass_card(900001, 90001, 1.0),
+        ("a mass on an undefined node", "*ELEMENT_MASS\n" + mass_card(900001, 90001, 1.0),
          ("*ELEMENT_MASS", "node 90001"))):
     path = write(os.path.join(WORK, name.replace(" ", "_").replace("'", "")), "model.k",
                  deck.replace(AT, cards + AT, 1))
@@ -72,5 +72,36 @@ for name, cards, words in (
     check(f"{name}: exit 2 with one sentence naming the card", r.returncode == 2 and
           len(errors) == 1 and "model.k:" in errors[0] and all(w in errors[0] for w in words),
           r.stderr)
+
+# A mass of 1.5 kg on a node of no shell above the plate's centre, joined to three plate nodes by
+# *CONSTRAINED_NODAL_RIGID_BODY (an engine's mass hung on a structure): the node is a particle of
+# its own, the body's motion carries it, and the run closes its energy balance. A model whose
+# mesh file keeps such a node but gives it no mass is refused naming `mesh`.
+HUNG = ("*NODE\n   90001            0.05            0.05            0.08\n*ELEMENT_MASS\n" +
+        mass_card(900010, 90001, 1.5) + "*SET_NODE_LIST\n        78\n     90001        40        41"
+        "        42\n*CONSTRAINED_NODAL_RIGID_BODY\n       500         0        78\n")
+d = write(os.path.join(WORK, "hung_mass"), "model.k", deck.replace(AT, HUNG + AT, 1))
+c = fpmshell("check", d)
+check("a hung mass: its node is a particle (82) and its mass counts (0.157 + 1.5 kg)",
+      c.returncode == 0 and "particles  82" in c.stdout and "total mass 1.657" in c.stdout and
+      "nodal rigid bodies: 1 (4 particles)" in c.stdout, c.stdout + c.stderr)
+r = fpmshell("run", d, "-o", os.path.join(WORK, "hung_mass", "out"), "--quiet", "--overwrite")
+summary = read(os.path.join(WORK, "hung_mass", "out", "summary.json")) if r.returncode == 0 else ""
+error = float(summary.split('"energy_error":')[1].split(",")[0]) if summary else 1.0
+check("a hung mass: the run closes its energy balance (|error| < 1e-4)", abs(error) < 1e-4,
+      r.stderr[-400:] + summary[:300])
+mesh_with_mass = read(os.path.join(DROP, "plate_drop_mesh.k")).replace(
+    "*END", "*NODE\n   90001            0.05            0.05            0.08\n*ELEMENT_MASS\n" +
+    mass_card(900010, 90001, 1.5) + "*END")
+folder = os.path.join(WORK, "massless")
+os.makedirs(folder, exist_ok=True)
+with open(os.path.join(folder, "plate_drop_mesh.k"), "w") as f:
+    f.write(mesh_with_mass)
+with open(os.path.join(folder, "model.yaml"), "w") as f:
+    f.write(twin)
+r = fpmshell("check", os.path.join(folder, "model.yaml"))
+check("a mesh file's mass node without `masses`: exit 2 naming mesh and the particle",
+      r.returncode == 2 and "key 'mesh'" in r.stderr and "no entry of `masses`" in r.stderr,
+      r.stderr)
 
 sys.exit(finish())

@@ -3,6 +3,7 @@
 // each other (model_blocks.hpp); the checks that span blocks are here.
 #include "fpmshell/io/model_reader.hpp"
 
+#include <fmt/format.h>
 #include <yaml-cpp/yaml.h>
 
 #include <algorithm>
@@ -64,6 +65,24 @@ YAML::Node load_yaml(const std::string& path) {
                                               "); check the indentation, colons, quotes and "
                                               "brackets on this line and the lines just before"));
     }
+}
+
+/// A particle of no shell element (a node its mesh file gives a point mass, LS-DYNA's
+/// *ELEMENT_MASS) must carry a point mass of `masses`: without mass it could not move.
+void check_every_particle_has_mass(const YamlMap& top, const Model& model) {
+    std::vector<std::uint8_t> carried(model.nodes.size(), 0);
+    for (const auto& t : model.triangles)
+        for (const Index p : t) carried[static_cast<std::size_t>(p)] = 1;
+    for (const PointMass& m : model.point_masses)
+        for (const Index p : m.nodes) carried[static_cast<std::size_t>(p)] = 1;
+    for (std::size_t p = 0; p < carried.size(); ++p)
+        if (!carried[p]) {
+            const Vec3& x = model.nodes[p];
+            top.at("mesh").fail(fmt::format(
+                "particle {} at ({:g}, {:g}, {:g}) belongs to no shell element and no entry of "
+                "`masses` gives it a mass: it could not move",
+                p + 1, x.x(), x.y(), x.z()));
+        }
 }
 
 /// The model of the tree `root`: `path` names the model (its title by default, messages),
@@ -158,6 +177,7 @@ Model read_model_tree(YamlContext& ctx, YAML::Node root, const std::string& path
     if (const auto l = top.find("loads")) read_loads(*l, model);
     if (const auto i = top.find("initial_conditions")) read_initial_conditions(*i, model);
     if (const auto pm = top.find("masses")) read_point_masses(*pm, model);
+    check_every_particle_has_mass(top, model);
     if (const auto c = top.find("constraints"); c && !c->is_null()) {
         read_constraints(*c, model);
         // a weld that can fail must be its body's only link between its particles (eq. 6.11-13)

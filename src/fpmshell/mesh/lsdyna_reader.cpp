@@ -59,7 +59,7 @@ std::vector<std::string> card_fields(const std::string& line,
     return split_blanks(line);
 }
 
-enum class Block { Skip, Node, Shell, Solid, NodeSet, ShellSet, PartSet };
+enum class Block { Skip, Node, Shell, Solid, NodeSet, ShellSet, PartSet, Mass, MassSet };
 
 class LsDynaReader {
 public:
@@ -87,6 +87,13 @@ public:
                 if (it != raw_.element_sets.end())
                     members.insert(members.end(), it->second.begin(), it->second.end());
             }
+        }
+        // the nodes of *ELEMENT_MASS_NODE_SET's sets carry their masses, shells or not
+        for (const long long sid : mass_sets_) {
+            const auto name = node_set_names_.find(sid);
+            if (name == node_set_names_.end()) continue;  // the translator names the missing set
+            const auto& ids = raw_.node_sets[name->second];
+            raw_.mass_nodes.insert(raw_.mass_nodes.end(), ids.begin(), ids.end());
         }
         MeshData mesh = finish_raw_mesh(raw_);
         for (const SolidElement& e : solids_)
@@ -125,6 +132,8 @@ private:
         }
         if (name == "NODE") {
             block_ = Block::Node;
+        } else if (name == "ELEMENT_MASS" || name == "ELEMENT_MASS_NODE_SET") {
+            block_ = name == "ELEMENT_MASS" ? Block::Mass : Block::MassSet;
         } else if (name == "ELEMENT_SOLID") {
             block_ = Block::Solid;
             solid_waiting_ = false;
@@ -232,6 +241,17 @@ private:
             case Block::Solid:
                 solid_card(line, number);
                 return;
+            case Block::Mass:
+            case Block::MassSet: {  // EID, NID or NSID, MASS, PID: a point mass (its node kept)
+                const auto f =
+                    card_fields(line, {width(8), width(8)},
+                                [](std::size_t, const auto& s) { return blank_or_id(s); });
+                long long n = 0;
+                if (f.size() < 2 || !parse_whole(f[1], n) || n <= 0)
+                    return;  // the translator says why
+                (block_ == Block::Mass ? raw_.mass_nodes : mass_sets_).push_back(n);
+                return;
+            }
             case Block::NodeSet:
             case Block::ShellSet:
             case Block::PartSet: {
@@ -254,6 +274,7 @@ private:
                                                  sid);
                     auto& sets = nodes ? raw_.node_sets : raw_.element_sets;
                     (void)sets[set_];
+                    if (nodes) node_set_names_[sid] = set_;
                     raw_.set_lines.try_emplace(set_, number);
                     return;
                 }
@@ -377,6 +398,8 @@ private:
     std::string set_;
     std::string main_path_;
     std::map<std::string, std::vector<long long>> part_sets_;  // name -> part ids
+    std::map<long long, std::string> node_set_names_;          // SID -> the node set's name
+    std::vector<long long> mass_sets_;                         // the SIDs of point masses
 };
 
 }  // namespace

@@ -145,9 +145,12 @@ MeshData finish_raw_mesh(const RawMesh& raw) {
                                      std::to_string(n) + ", which the file does not define");
     }
 
-    // Compact node numbering, in increasing id order, of the nodes used by shells.
+    // Compact node numbering, in increasing id order, of the nodes used by shells and those
+    // that carry a point mass (the file's own; any other is named where the mass is read).
     std::vector<long long> used;
     for (const auto& e : raw.shells) used.insert(used.end(), e.nodes.begin(), e.nodes.end());
+    for (const long long n : raw.mass_nodes)
+        if (raw.nodes.count(n) != 0) used.push_back(n);
     std::sort(used.begin(), used.end());
     used.erase(std::unique(used.begin(), used.end()), used.end());
     MeshData mesh;

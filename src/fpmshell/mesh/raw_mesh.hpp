@@ -33,6 +33,9 @@ struct RawMesh {
     std::map<std::string, std::vector<long long>> node_sets;               ///< name -> node ids
     std::map<std::string, std::vector<long long>> element_sets;            ///< name -> element ids
     std::map<std::string, int> set_lines;                                  ///< name -> first line
+    /// nodes that carry a point mass (LS-DYNA's *ELEMENT_MASS): particles whether or not a
+    /// shell uses them
+    std::vector<long long> mass_nodes;
     std::uintmax_t file_bytes = 0;  ///< the size of the file (bounds what GENERATE may list)
     long long generated = 0;        ///< the members listed by GENERATE ranges so far
 

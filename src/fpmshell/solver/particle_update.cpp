@@ -32,7 +32,10 @@ inline void ExplicitSolver::update_particle_velocity(std::size_t p, const CycleP
     const Vec3 moment_tangent = bc.tangent_part(p, moment, normal);
     const Vec3 omega_tangent = bc.tangent_part(p, s_.omega_prev[p], normal);
     const Real j = s_.inertia[p];
-    const Vec3 w_free = dt.c1 * (dt.c2 * omega_tangent + (dt.dt_n / j) * moment_tangent);
+    // a particle of no element (a point mass alone, model-format.md `masses`) has no rotary
+    // inertia: no moment turns it
+    const Real turn = j > 0 ? dt.dt_n / j : Real(0);
+    const Vec3 w_free = dt.c1 * (dt.c2 * omega_tangent + turn * moment_tangent);
     const Vec3 w_new =
         bc.tangent_plane_only(p) ? w_free : bc.without_constrained_rotation(p, w_free, normal);
     s_.omega[p] = w_new;
