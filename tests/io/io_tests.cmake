@@ -11,11 +11,18 @@ add_test(NAME io.vtu_reader
 set_tests_properties(io.vtu_reader PROPERTIES LABELS io TIMEOUT ${_timeout_300s})
 
 # LS-DYNA keyword decks run as they are: each test deck of examples/decks against its YAML twin,
-# `fpmshell convert`, `check`, refused and ignored cards (tests/io/deck_test.py).
+# The test decks against their YAML twins, `fpmshell convert` and `check` (tests/io/deck_test.py).
 add_test(NAME io.lsdyna_decks
          COMMAND ${FPMSHELL_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/io/deck_test.py
                  $<TARGET_FILE:fpmshell> ${CMAKE_BINARY_DIR}/deck_test_work)
 set_tests_properties(io.lsdyna_decks PROPERTIES LABELS io TIMEOUT ${_timeout_300s})
+
+# Refused, noted and misread cards of small decks, each one sentence naming file, line and card
+# (tests/io/deck_messages_test.py).
+add_test(NAME io.lsdyna_deck_messages
+         COMMAND ${FPMSHELL_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/io/deck_messages_test.py
+                 $<TARGET_FILE:fpmshell> ${CMAKE_BINARY_DIR}/deck_messages_test_work)
+set_tests_properties(io.lsdyna_deck_messages PROPERTIES LABELS io TIMEOUT ${_timeout_300s})
 
 # Card order is free: every test deck with its cards reversed, shuffled and spread over nested
 # *INCLUDE files gives the same model and history.csv bytes (tests/io/deck_order_test.py).
