@@ -226,7 +226,6 @@ void check_distributable(const Model& model, int ranks) {
                         "rank (with --threads)",
                         what, ranks)));
     };
-    if (model.control.mode == SolutionMode::Relaxation) refuse("control.mode", "relaxation");
     if (model.control.membrane == MembraneKernel::Smoothed)
         refuse("control.membrane", "the smoothed membrane");
 }

@@ -552,11 +552,13 @@ ExplicitSolver::RelaxResult ExplicitSolver::relax(Real load_time) {
         res.iterations = it;
         res.residual_ratio = reference2_ > 0 ? std::sqrt(residual2_ / reference2_) : 0.0;
         // Kinetic damping: at a peak of the kinetic energy, stop every particle.
-        Real ke = 0;
-        for (std::size_t p = 0; p < s_.size(); ++p)
-            ke += s_.mass[p] * s_.v[p].squaredNorm() + s_.inertia[p] * s_.omega[p].squaredNorm();
+        Real ke = kinetic_measure();
         if (ke < ke_prev) {
             move_to_kinetic_energy_peak(ke_prev2, ke_prev, ke);
+            // distributed: the positions sent at the end of the cycle were those before the
+            // move; the held particles' moved positions go instead
+            ranks_.finish_positions(s_.x);
+            ranks_.start_positions(s_.x);
             // The kinetic energy taken out is dissipated, like damping: the balance stays closed.
             energy_.damping += energy_.kinetic;
             energy_.kinetic = 0;

@@ -182,6 +182,9 @@ private:
     /// 8-9 energies at t_n (into sums) and x^{n+1}, dtheta^{n+1/2} of every particle (the
     /// second sweep).
     void advance_particles(const StepLengths& dt, ParticleSums& sums);
+    /// Kinetic damping's measure of the motion at v^{n+1/2} (twice the kinetic energy), summed
+    /// atom by atom: the same bits on any number of threads and ranks.
+    [[nodiscard]] Real kinetic_measure();
     /// 8 the energy balance at t_n (§6.8) from the particles' sums and the rigid bodies.
     void book_energies(const StepLengths& dt, const ParticleSums& particles);
     /// 9 the rigid bodies' positions, the step lengths and the step count.
@@ -242,7 +245,8 @@ private:
     Real length_scale_ = 1;  ///< mean edge length: converts moments to forces in residuals
     std::vector<Vec3> x_pred_, body_u_pred_;           ///< contact scratch: predicted x^{n+1}
     std::vector<Vec3> x_pred_before_, body_u_before_;  ///< the predictor before the multipliers
-    std::vector<std::array<Real, 2>> sums2_;           ///< scratch: per-chunk partial sums
+    std::vector<std::array<Real, 1>> sums1_;           ///< scratch: per-chunk partial sums
+    std::vector<std::array<Real, 2>> sums2_;
     std::vector<std::array<Real, 7>> sums7_;
     std::vector<std::array<Real, 9>> sums9_;
     Real time_ = 0;

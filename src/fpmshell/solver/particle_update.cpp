@@ -171,6 +171,13 @@ ExplicitSolver::ParticleSums ExplicitSolver::update_velocities(const CyclePolicy
     return sums;
 }
 
+Real ExplicitSolver::kinetic_measure() {
+    return atom_sums<1>(sums1_, [&](Index ip, std::array<Real, 1>& acc) {
+        const auto p = static_cast<std::size_t>(ip);
+        acc[0] += s_.mass[p] * s_.v[p].squaredNorm() + s_.inertia[p] * s_.omega[p].squaredNorm();
+    })[0];
+}
+
 void ExplicitSolver::advance_particles(const StepLengths& dt, ParticleSums& sums) {
     const std::array<Real, 7> energy =
         atom_sums<7>(sums7_, [&](Index ip, std::array<Real, 7>& acc) {
