@@ -3,8 +3,9 @@
 and 42 of 0.5 kg each, node 43 of 0.25 kg with a PID, noted) and *ELEMENT_MASS_NODE_SET (2 kg
 shared by nodes 1-4) against its YAML twin with the same `masses`: the same history.csv bytes,
 and `check` counts 3.25 kg more than the plate's 0.157 kg. Refusals, exit 2 with one sentence
-naming the card: *ELEMENT_MASS_PART (not read), a mass that is not > 0, a node the deck does
-not define. A mass on a node of no shell, hung by a nodal rigid body, is a particle of its own.
+naming the card: a part's mass by a curve (LCID), *ELEMENT_MASS_MATRIX, a mass that is not > 0,
+a node the deck does not define. MAREA and *ELEMENT_MASS_PART (ADDMASS, FINMASS) against the
+twin's `area_mass` and masses spread on elements. A mass on a node of no shell, hung by a nodal rigid body, is a particle of its own.
 
 usage: deck_mass_test.py FPMSHELL WORKDIR
 """
@@ -60,8 +61,11 @@ check("point masses: the plate alone weighs 0.157 kg", "total mass 0.157" in pla
       plain.stdout)
 
 for name, cards, words in (
-        ("a part's mass", "*ELEMENT_MASS_PART\n       1          10.0\n",
-         ("*ELEMENT_MASS_PART", "this form of it is not supported")),
+        ("a part's mass by a curve", "*ELEMENT_MASS_PART\n       1            10.0"
+                                     "             0.0               7\n",
+         ("*ELEMENT_MASS_PART", "LCID")),
+        ("a matrix of masses", "*ELEMENT_MASS_MATRIX\n       1       1\n",
+         ("*ELEMENT_MASS_MATRIX", "this form of it is not supported")),
         ("a mass not > 0", "*ELEMENT_MASS\n" + mass_card(900001, 41, 0.0), ("MASS must be > 0",)),
         ("a mass on an undefined node", "*ELEMENT_MASS\n" + mass_card(900001, 90001, 1.0),
          ("*ELEMENT_MASS", "node 90001"))):
@@ -72,6 +76,28 @@ for name, cards, words in (
     check(f"{name}: exit 2 with one sentence naming the card", r.returncode == 2 and
           len(errors) == 1 and "model.k:" in errors[0] and all(w in errors[0] for w in words),
           r.stderr)
+
+# Non-structural mass: MAREA of 5 kg/m^2 on the section (the plate of 0.1 m x 0.1 m: 0.05 kg)
+# and *ELEMENT_MASS_PART spreading 0.3 kg more over part 1 by area, against the twin's
+# `area_mass` and `masses: - {elements: part_1, total: 0.3}`; then FINMASS 1.0 (the part's mass
+# once added, MAREA's included), the twin's `final: 1`.
+SECTION_T = "$#      t1        t2        t3        t4      nloc\n    &thick    &thick    &thick    &thick"
+assert SECTION_T in deck
+nsm_deck = deck.replace(SECTION_T, SECTION_T + "       0.0       5.0", 1)
+for name, card, entry, total in (
+        ("area and part masses", "%8d%16.4f%16.4f\n" % (1, 0.3, 0.0), "total: 0.3", "0.507"),
+        ("a part's final mass", "%8d%16.4f%16.4f\n" % (1, 0.0, 1.0), "final: 1", "1\n")):
+    folder = os.path.join(WORK, name.replace(" ", "_").replace("'", ""))
+    d = write(folder, "model.k", nsm_deck.replace(AT, "*ELEMENT_MASS_PART\n" + card + AT, 1))
+    t = write(folder, "model.yaml", twin.replace(
+        "thickness: 0.002,", "thickness: 0.002, area_mass: 5,").replace(
+        "\ninitial_conditions:", "\nmasses:\n  - {elements: part_1, %s}\n\ninitial_conditions:"
+        % entry))
+    assert "area_mass: 5" in read(t)
+    twin_pair(name, d, t)
+    c = fpmshell("check", d)
+    check(f"{name}: check counts the plate's 0.157 kg and the masses ({total.strip()} kg in all)",
+          c.returncode == 0 and "total mass %s" % total in c.stdout, c.stdout + c.stderr)
 
 # A mass of 1.5 kg on a node of no shell above the plate's centre, joined to three plate nodes by
 # *CONSTRAINED_NODAL_RIGID_BODY (an engine's mass hung on a structure): the node is a particle of

@@ -3,8 +3,11 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <numeric>
+#include <vector>
 
 #include "fpmshell/solver/explicit_solver.hpp"
 #include "fpmshell/solver/nodal_rigid_bodies.hpp"
@@ -22,10 +25,13 @@ std::string model_summary(const Model& model) {
     if (!model.point_masses.empty()) {  // `masses`: in the total
         Real points = 0;
         std::size_t carriers = 0;
-        for (const PointMass& pm : model.point_masses) {
-            points += pm.mass * static_cast<Real>(pm.nodes.size());
-            carriers += pm.nodes.size();
-        }
+        std::vector<std::uint8_t> carries(model.nodes.size(), 0);
+        for (const PointMass& pm : model.point_masses)
+            for (std::size_t k = 0; k < pm.nodes.size(); ++k) {
+                points += pm.masses[k];
+                carries[static_cast<std::size_t>(pm.nodes[k])] = 1;
+            }
+        carriers = static_cast<std::size_t>(std::count(carries.begin(), carries.end(), 1));
         out +=
             fmt::format("point masses {:.6g} on {} particles (in the total)\n", points, carriers);
     }

@@ -38,8 +38,13 @@ void read_curves(const YamlValue& v, Model& model);
 void read_boundary(const YamlValue& v, Model& model);
 void read_loads(const YamlValue& v, Model& model);
 void read_initial_conditions(const YamlValue& v, Model& model);
-/// `masses`: point masses on node sets (LS-DYNA's *ELEMENT_MASS, _NODE_SET).
+// Masses lumped on particles (model_point_masses.cpp).
+
+/// `masses`: point masses on node sets and masses spread on element sets by area (LS-DYNA's
+/// *ELEMENT_MASS, _NODE_SET, _PART), after the sections.
 void read_point_masses(const YamlValue& v, Model& model);
+/// The sections' `area_mass` as point masses, after the sections.
+void add_area_masses(Model& model);
 /// `moves`: node sets translated before the run (LS-DYNA's *PART_MOVE), in their order.
 void read_moves(const YamlValue& v, Model& model);
 /// `constraints`, after `boundary` (a particle of a nodal rigid body takes no boundary

@@ -195,25 +195,6 @@ void read_moves(const YamlValue& v, Model& model) {
     }
 }
 
-void read_point_masses(const YamlValue& v, Model& model) {
-    for (const YamlValue& item : v.list("point masses")) {
-        const YamlMap m = item.map({"nodes", "mass", "total"});
-        PointMass pm;
-        const YamlValue nodes = m.at("nodes", "a node set name");
-        pm.nodes = named_node_set(model, nodes);
-        if (pm.nodes.empty()) nodes.fail("the set has no particles to carry the mass");
-        if (m.count({"mass", "total"}) != 1)
-            item.fail(
-                "a point mass needs exactly one of `mass` (each particle of the set gains it) and "
-                "`total` (shared equally by the set's particles)");
-        if (const auto each = m.find("mass"))  // each particle's
-            pm.mass = each->positive();
-        else  // the set's, shared equally
-            pm.mass = m.at("total", "").positive() / static_cast<Real>(pm.nodes.size());
-        model.point_masses.push_back(std::move(pm));
-    }
-}
-
 void read_initial_conditions(const YamlValue& v, Model& model) {
     for (const YamlValue& item : v.list("initial conditions")) {
         const YamlMap m =

@@ -204,7 +204,7 @@ void read_sections(const YamlValue& v, Model& model) {
     std::vector<std::pair<Index, YamlValue>> given_inertia;  // checked once every section is in
     for (const YamlValue& item : items) {
         const YamlMap m = item.map({"elements", "material", "thickness", "thickness_points",
-                                    "thickness_rule", "inplane_points", "inertia"});
+                                    "thickness_rule", "inplane_points", "inertia", "area_mass"});
         const auto& elements =
             named_element_set(model, m.at("elements", "an element set name such as all"));
         Section s;
@@ -219,6 +219,11 @@ void read_sections(const YamlValue& v, Model& model) {
                               : m.at("thickness", "a number > 0").positive();
         read_thickness_rule(m, s);
         if (inertia) read_rigid_inertia(*inertia, model, elements, s);
+        if (const auto nsm = m.find("area_mass")) {  // §6.1, LS-DYNA's MAREA
+            s.area_mass = nsm->non_negative();
+            if (inertia && s.area_mass > 0)
+                nsm->fail("a section with a given inertia carries its whole mass in it");
+        }
         if (const auto ip = m.find("inplane_points")) {
             const long long n = ip->integer(3, 7);
             if (n != 3 && n != 7)

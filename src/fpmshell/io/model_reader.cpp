@@ -176,6 +176,7 @@ Model read_model_tree(YamlContext& ctx, YAML::Node root, const std::string& path
     if (const auto b = top.find("boundary")) read_boundary(*b, model);
     if (const auto l = top.find("loads")) read_loads(*l, model);
     if (const auto i = top.find("initial_conditions")) read_initial_conditions(*i, model);
+    add_area_masses(model);
     if (const auto pm = top.find("masses")) read_point_masses(*pm, model);
     check_every_particle_has_mass(top, model);
     if (const auto c = top.find("constraints"); c && !c->is_null()) {

@@ -124,7 +124,8 @@ MeshTopology::MeshTopology(const Model& model) {
     }
     for (const PointMass& m : model.point_masses) {  // §6.1: a point mass adds no inertia
         if (point_mass.empty()) point_mass.assign(np, 0.0);
-        for (const Index p : m.nodes) point_mass[static_cast<std::size_t>(p)] += m.mass;
+        for (std::size_t k = 0; k < m.nodes.size(); ++k)
+            point_mass[static_cast<std::size_t>(m.nodes[k])] += m.masses[k];
     }
     sum_particle_shares();
 }

@@ -105,6 +105,9 @@ struct Section {
     /// their own, and their thickness may be 0 (the contact surface of a solid)
     bool has_inertia = false;
     RigidInertia inertia{};
+    /// non-structural mass per unit area (`area_mass`, LS-DYNA's MAREA): lumped on the
+    /// particles by area as point masses (Model::point_masses)
+    Real area_mass = 0;
 };
 
 /// Acceleration: the velocity steps by dt_n a(t_n) from the one before (the central difference
@@ -141,11 +144,12 @@ struct Load {
     Index curve = -1;             ///< -1 = factor 1 at all times
 };
 
-/// One entry of `masses` (LS-DYNA's *ELEMENT_MASS, _NODE_SET): each particle of `nodes` gains
-/// `mass` (§6.1), a point mass without rotary inertia of its own.
+/// Masses lumped on particles (§6.1), without rotary inertia of their own: an entry of `masses`
+/// (LS-DYNA's *ELEMENT_MASS, _NODE_SET, _PART) or a section's `area_mass` (*SECTION_SHELL's
+/// MAREA), each particle of `nodes` gaining its `masses` entry.
 struct PointMass {
     std::vector<Index> nodes;
-    Real mass = 0;  ///< per particle
+    std::vector<Real> masses;  ///< per particle of `nodes`
 };
 
 /// One entry of `initial_conditions`.

@@ -54,8 +54,8 @@ TEST(PointMasses, AddToTheParticlesOfTheirSets) {
     const Model m = plate_with("  - {nodes: left, mass: 2.5}\n  - {nodes: right, total: 6}\n");
     ASSERT_EQ(m.point_masses.size(), 2u);
     ASSERT_EQ(m.point_masses[0].nodes.size(), 3u);  // the plate's edge x = 0: 3 particles
-    EXPECT_EQ(m.point_masses[0].mass, 2.5);
-    EXPECT_EQ(m.point_masses[1].mass, 2.0);  // 6 over the 3 particles of x = 2
+    EXPECT_EQ(m.point_masses[0].masses, std::vector<Real>(3, 2.5));
+    EXPECT_EQ(m.point_masses[1].masses, std::vector<Real>(3, 2.0));  // 6 over x = 2's 3
     const ExplicitSolver plain(none), massive(m);
     EXPECT_NEAR(sum(plain.state().mass), 156.0, 1e-9);
     EXPECT_NEAR(sum(massive.state().mass), 156.0 + 7.5 + 6.0, 1e-9);
@@ -95,6 +95,51 @@ TEST(PointMasses, TheWholeMassTakesTheLoad) {
     EXPECT_NEAR(sum(heavy.state().mass) / sum(light.state().mass), 216.0 / 156.0, 1e-12);
 }
 
+// Masses spread by area (LS-DYNA's *ELEMENT_MASS_PART, and MAREA as a section's `area_mass`):
+// a third of each element's share on each corner, so every particle gains the mass per area
+// times a third of its triangles' area, and the whole mass is the total; `final` adds what the
+// elements' own mass (156, with their area mass) leaves.
+TEST(PointMasses, SpreadOnElementsByArea) {
+    const Model none = plate_with("  []\n");
+    const ExplicitSolver plain(none);
+    const auto gained = [&](const Model& m) {
+        const ExplicitSolver s(m);
+        std::vector<Real> out(s.state().size());
+        for (std::size_t p = 0; p < out.size(); ++p)
+            out[p] = s.state().mass[p] - plain.state().mass[p];
+        return out;
+    };
+    // the element shares of plain: rho h A / 3 per corner, so a mass per area q gives q / (rho h)
+    // times the plain particle mass
+    const Real rho_h = 7800 * 0.01;
+    const Model total = plate_with("  - {elements: all, total: 8}\n");
+    const std::vector<Real> by_total = gained(total);
+    for (std::size_t p = 0; p < by_total.size(); ++p)
+        EXPECT_NEAR(by_total[p], 4.0 / rho_h * plain.state().mass[p], 1e-12);
+    EXPECT_NEAR(sum(by_total), 8.0, 1e-12);
+    const Model final_mass = plate_with("  - {elements: all, final: 200}\n");
+    EXPECT_NEAR(sum(gained(final_mass)), 44.0, 1e-9);
+    // a section's area mass, 5 per unit area: 10 on the plate, counted as its own by `final`
+    const std::filesystem::path path =
+        std::filesystem::temp_directory_path() /
+        ("fpmshell_area_mass_" + std::to_string(::getpid()) + ".yaml");
+    std::ofstream(path) << "title: t\n"
+                           "mesh: {generator: plate, length_x: 2, length_y: 1, nx: 4, ny: 2}\n"
+                           "materials:\n"
+                           "  steel: {type: elastic, density: 7800, youngs_modulus: 2.1e11, "
+                           "poisson_ratio: 0.3}\n"
+                           "sections:\n"
+                           "  - {elements: all, material: steel, thickness: 0.01, area_mass: 5}\n"
+                           "masses:\n"
+                           "  - {elements: all, final: 200}\n"
+                           "control:\n"
+                           "  end_time: 1.0e-3\n";
+    const Model nsm = read_model(path.string());
+    std::filesystem::remove(path);
+    const std::vector<Real> by_nsm = gained(nsm);
+    EXPECT_NEAR(sum(by_nsm), 44.0, 1e-9);  // 10 of area mass, 34 more to reach 200
+}
+
 // Each mistake is one InputError naming the file, the line and the key.
 TEST(PointMasses, AWrongEntryIsOneSentence) {
     for (const auto& [entry, words] : std::vector<std::pair<std::string, std::string>>{
@@ -103,7 +148,10 @@ TEST(PointMasses, AWrongEntryIsOneSentence) {
              {"  - {nodes: left, mass: -1}\n", "masses.0.mass"},
              {"  - {nodes: left, total: 0}\n", "masses.0.total"},
              {"  - {nodes: nowhere, mass: 1}\n", "masses.0.nodes"},
-             {"  - {nodes: left, mass: 1, inertia: 2}\n", "inertia"}}) {
+             {"  - {nodes: left, mass: 1, inertia: 2}\n", "inertia"},
+             {"  - {nodes: left, elements: all, total: 1}\n", "exactly one of `nodes`"},
+             {"  - {elements: all, mass: 1}\n", "exactly one of `total`"},
+             {"  - {elements: all, final: 100}\n", "already weigh 156"}}) {
         try {
             (void)plate_with(entry);
             ADD_FAILURE() << entry << ": no error";

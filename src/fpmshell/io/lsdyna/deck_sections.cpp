@@ -14,7 +14,7 @@ void DeckTranslator::section_shell(const DeckBlock& b) {
     for (const std::string& o : opt)
         if (o != "TITLE") refuse(b, "*SECTION_SHELL_" + o + " is not supported");
     const Card f = required_card(b, first, "SECID, ELFORM, SHRF, NIP, PROPT, QR");
-    const Card t = required_card(b, first + 1, "T1, T2, T3, T4, NLOC");
+    const Card t = required_card(b, first + 1, "T1, T2, T3, T4, NLOC, MAREA");
     const long long id = f.id(0, "SECID");
     const long long elform = f.id(1, "ELFORM", 2);
     long long nip = f.id(3, "NIP", 2);
@@ -39,10 +39,12 @@ void DeckTranslator::section_shell(const DeckBlock& b) {
                 "supported");
     }
     if (t.real(4, "NLOC") != 0) t.fail("NLOC: only the mid-surface reference (0) is supported");
+    const Real area_mass = t.real(5, "MAREA");  // non-structural mass per unit area
+    if (area_mass < 0) t.fail("MAREA must be >= 0 (a mass per unit area)");
     if (const auto other = sections_.find(id); other != sections_.end())
         f.fail("section " + std::to_string(id) + " is defined twice (first at " +
                place(other->second.at) + ")");
-    sections_[id] = {{&b, f.line()}, t1, static_cast<int>(nip), qr < 0 ? -qr : 0};
+    sections_[id] = {{&b, f.line()}, t1, static_cast<int>(nip), qr < 0 ? -qr : 0, area_mass};
     note(b, f.line(),
          fmt::format("ELFORM {} mapped to fpmshell's finite-particle triangle (CST membrane, "
                      "DKT bending; quadrangles split in two)",
@@ -167,7 +169,8 @@ void DeckTranslator::write_sections(std::vector<Line>& out) {
         add(out,
             "  - {elements: part_" + std::to_string(pid) + ", material: mat_" +
                 std::to_string(part.material) + ", thickness: " + num(thickness) + ", " + rule +
-                (inertia.empty() ? "" : ", " + inertia) + "}",
+                (inertia.empty() ? "" : ", " + inertia) +
+                (s->second.area_mass > 0 ? ", area_mass: " + num(s->second.area_mass) : "") + "}",
             part.at);
     }
     for (const auto& [pid, e] : solid_parts_) write_solid_section(out, pid, e, first);

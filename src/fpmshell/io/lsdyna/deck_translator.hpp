@@ -64,6 +64,7 @@ struct SectionDef {
     Real thickness = 0;
     int points = 2;           ///< NIP
     long long user_rule = 0;  ///< |QR| of a QR < 0: the IRID of an *INTEGRATION_SHELL; 0 none
+    Real area_mass = 0;       ///< MAREA: non-structural mass per unit area
 };
 
 /// *INTEGRATION_SHELL: (S, WF) per point, the weights fractions of the thickness summing to 1.
@@ -176,8 +177,9 @@ public:
     void element_shell(const DeckBlock& b);
     /// *ELEMENT_SOLID: the parts of the solids (the mesh reader makes their outer faces).
     void element_solid(const DeckBlock& b);
-    /// *ELEMENT_MASS, _NODE_SET: point masses (deck_masses.cpp).
+    /// *ELEMENT_MASS, _NODE_SET, _PART, _PART_SET: lumped masses (deck_masses.cpp).
     void element_mass(const DeckBlock& b);
+    void part_mass(const DeckBlock& b, const std::set<std::string>& opt);
     void set_header(const DeckBlock& b);
     /// The name of set `sid` of `kind` (node, shell, part), which the deck must define.
     std::string set_name(const Card& f, const std::string& kind, long long sid) const;
