@@ -10,27 +10,14 @@ twin's `area_mass` and masses spread on elements. A mass on a node of no shell, 
 usage: deck_mass_test.py FPMSHELL WORKDIR
 """
 import os
-import shutil
 import sys
 
-FPM, WORK = sys.argv[1], sys.argv[2]
-ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-DROP = os.path.join(ROOT, "examples", "decks", "plate_drop")
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from check_tally import check, finish  # noqa: E402
 import deck_variant  # noqa: E402
 from deck_variant import fpmshell, read, twin_pair  # noqa: E402
-from deck_variant import write as write_beside  # noqa: E402
 
-deck_variant.FPM = FPM
-
-
-def write(folder, name, text):
-    return write_beside(folder, name, text, os.path.join(DROP, "plate_drop_mesh.k"))
-
-
-shutil.rmtree(WORK, ignore_errors=True)
-deck, twin = read(os.path.join(DROP, "plate_drop.k")), read(os.path.join(DROP, "plate_drop.yaml"))
+WORK, DROP, deck, twin, write = deck_variant.start(sys.argv, "plate_drop")
 AT = "*INITIAL_VELOCITY_GENERATION"
 assert AT in deck and "\nsets:\n" in twin and "\ninitial_conditions:" in twin
 

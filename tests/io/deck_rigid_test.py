@@ -14,27 +14,14 @@ history.csv bytes:
 usage: deck_rigid_test.py FPMSHELL WORKDIR
 """
 import os
-import shutil
 import sys
 
-FPM, WORK = sys.argv[1], sys.argv[2]
-ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-HAMMER = os.path.join(ROOT, "examples", "decks", "plate_hammer")
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from check_tally import check, finish  # noqa: E402
 import deck_variant  # noqa: E402
 from deck_variant import fpmshell, read, run, twin_pair  # noqa: E402
-from deck_variant import write as write_beside  # noqa: E402
 
-deck_variant.FPM = FPM
-
-
-def write(folder, name, text):
-    return write_beside(folder, name, text, os.path.join(HAMMER, "plate_hammer_mesh.k"))
-
-
-shutil.rmtree(WORK, ignore_errors=True)
-deck, twin = read(os.path.join(HAMMER, "plate_hammer.k")), read(os.path.join(HAMMER, "plate_hammer.yaml"))
+WORK, HAMMER, deck, twin, write = deck_variant.start(sys.argv, "plate_hammer")
 END = "*END\n"
 assert deck.endswith(END) and "\noutput:" in twin and "\nboundary:" not in twin
 # the hammer (initial velocity -10 m/s) driven on at -10 m/s and sent back up at 5 m/s from 0.7 ms,

@@ -12,27 +12,14 @@
 usage: deck_rules_test.py FPMSHELL WORKDIR
 """
 import os
-import shutil
 import sys
 
-FPM, WORK = sys.argv[1], sys.argv[2]
-ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-DROP = os.path.join(ROOT, "examples", "decks", "plate_drop")
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from check_tally import check, finish  # noqa: E402
 import deck_variant  # noqa: E402
 from deck_variant import fpmshell, read, run, twin_pair  # noqa: E402
-from deck_variant import write as write_beside  # noqa: E402
 
-deck_variant.FPM = FPM
-
-
-def write(folder, name, text):
-    return write_beside(folder, name, text, os.path.join(DROP, "plate_drop_mesh.k"))
-
-
-shutil.rmtree(WORK, ignore_errors=True)
-deck, twin = read(os.path.join(DROP, "plate_drop.k")), read(os.path.join(DROP, "plate_drop.yaml"))
+WORK, DROP, deck, twin, write = deck_variant.start(sys.argv, "plate_drop")
 SECTION = "         1         2    0.8333         5         1\n"
 TWIN_SECTION = "thickness: 0.002, thickness_points: 5, thickness_rule: gauss}"
 assert SECTION in deck and TWIN_SECTION in twin

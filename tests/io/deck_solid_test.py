@@ -13,28 +13,15 @@ variants of examples/decks/block_drop against YAML twins, the same history.csv b
 usage: deck_solid_test.py FPMSHELL WORKDIR
 """
 import os
-import shutil
 import sys
 
-FPM, WORK = sys.argv[1], sys.argv[2]
-ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-BLOCK = os.path.join(ROOT, "examples", "decks", "block_drop")
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from check_tally import check, finish  # noqa: E402
 import deck_variant  # noqa: E402
 from deck_variant import fpmshell, read, run, twin_pair  # noqa: E402
-from deck_variant import write as write_beside  # noqa: E402
 
-deck_variant.FPM = FPM
+WORK, BLOCK, deck, twin, write = deck_variant.start(sys.argv, "block_drop")
 MESH = os.path.join(BLOCK, "block_drop_mesh.k")
-
-
-def write(folder, name, text, mesh=MESH):
-    return write_beside(folder, name, text, mesh)
-
-
-shutil.rmtree(WORK, ignore_errors=True)
-deck, twin = read(os.path.join(BLOCK, "block_drop.k")), read(os.path.join(BLOCK, "block_drop.yaml"))
 PART = "*PART\nblock\n         2         2         2\n"
 VELOCITY = deck[deck.index("*INITIAL_VELOCITY_NODE"):deck.index("*CONTROL_TERMINATION")]
 TWIN_SECTION = "  - {elements: part_2, material: block, thickness: 0, inertia: enclosed}\n"

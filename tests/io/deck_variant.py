@@ -1,13 +1,33 @@
-"""What the deck scripts (tests/io/deck_rules_test.py, deck_rigid_test.py) share: running
-fpmshell, writing a variant of a test deck or twin beside its mesh, running a model into a folder
-beside it, and the check that a deck and its twin give the same history.csv bytes."""
+"""What the deck scripts (tests/io/deck_rules_test.py, deck_rigid_test.py, ...) share: their start
+on a test deck of examples/decks, running fpmshell, writing a variant of a test deck or twin
+beside its mesh, running a model into a folder beside it, and the check that a deck and its twin
+give the same history.csv bytes."""
 import os
 import shutil
 import subprocess
 
 from check_tally import check
 
-FPM = None  # the fpmshell program: each script sets it from its arguments
+FPM = None  # the fpmshell program: start sets it from the script's arguments
+ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+
+
+def start(argv, example):
+    """The start of a script `SCRIPT FPMSHELL WORKDIR` on the test deck examples/decks/<example>:
+    sets FPM, empties WORKDIR; returns (WORKDIR, the example's folder, its deck's and its twin's
+    text, write), write(folder, name, text, mesh=<example>_mesh.k) writing beside a copy of a
+    mesh file."""
+    global FPM
+    FPM, work = argv[1], argv[2]
+    folder = os.path.join(ROOT, "examples", "decks", example)
+    mesh_file = os.path.join(folder, example + "_mesh.k")
+
+    def write_variant(where, name, text, mesh=mesh_file):
+        return write(where, name, text, mesh)
+
+    shutil.rmtree(work, ignore_errors=True)
+    return (work, folder, read(os.path.join(folder, example + ".k")),
+            read(os.path.join(folder, example + ".yaml")), write_variant)
 
 
 def fpmshell(*args):
