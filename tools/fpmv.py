@@ -98,6 +98,45 @@ def load_levels_row(problem, history, mesh, wall, plot):
                relative=False, note="levels whose relaxation met control.tolerance")
 
 
+def load_path_runs(args, problem, model, plot, rows, runs):
+    """The relaxation runs of a problem along its load path, one per mesh of `runs` (mesh label,
+    folder in --out, overrides): run_or_failure_row, then each run's 'converged load levels' row
+    (load_levels_row); yields (mesh label, history, wall s) of each run that completed."""
+    for mesh, folder, overrides in runs:
+        got = run_or_failure_row(args, model, os.path.join(args.out, folder), overrides, problem,
+                                 mesh, rows)
+        if got is None:
+            continue
+        res, wall = got
+        rows.append(load_levels_row(problem, res["history"], mesh, wall, plot))
+        yield mesh, res["history"], wall
+
+
+def strip_load_path_runs(args, problem, model, plot, rows, cases, overrides):
+    """load_path_runs of a strip's cases (nx, ny, bending kernel, output interval), each run
+    with overrides(nx, ny, bending, every), labelled '<nx>x<ny> right, <bending>'."""
+    return load_path_runs(args, problem, model, plot, rows, [
+        ("%dx%d right, %s" % (nx, ny, bending), "%s_%dx%d" % (bending, nx, ny),
+         overrides(nx, ny, bending, every)) for nx, ny, bending, every in cases])
+
+
+def end_load_overrides(per_node):
+    """The --set overrides of an edge load given as loads 0 (every node of the edge), 1 and 2
+    (its two corners, which take half of it: minus half there)."""
+    return ["loads.0.value=[0, 0, %.17g]" % per_node,
+            "loads.1.value=[0, 0, %.17g]" % (-0.5 * per_node),
+            "loads.2.value=[0, 0, %.17g]" % (-0.5 * per_node)]
+
+
+def reference_levels(history, reference):
+    """The load levels of `reference` rows (t, values...) that the run computed, t = 0 left out:
+    (index in the history, ' (level NOT converged)' or '', the row's values)."""
+    for t, *values in reference:
+        level = load_level(history, t) if t != 0 else None
+        if level is not None:
+            yield level[0], level[1], t, values
+
+
 def load_level(history, t):
     """(index, flag) of the load level at load parameter t in the history of a relaxation run,
     flag ' (level NOT converged)' or ''; None when no level was computed at t."""
@@ -240,6 +279,41 @@ def kernel_studies(problem, quantity, reference, kernels, meshes, solve, toleran
     return rows, results
 
 
+def run_kernel(args, model, kernel, mesh, overrides):
+    """A run of `model` with the bending kernel `kernel` (control.bending) on a mesh (its
+    number of divisions, or a label such as 20x1), into <kernel>-<mesh> of --out, on one
+    thread: (results, wall s)."""
+    return run(args.fpmshell, model, os.path.join(args.out, "%s-%s" % (kernel, mesh)),
+               list(overrides) + ["control.bending=" + kernel], threads=1)
+
+
+def square_plate_study(problem, description, model, reference, note, reference_label, title,
+                       kernels, meshes, tolerances, side):
+    """The centre deflection of a square plate's quarter model under pressure (validation/
+    plate_clamped, plate_simply_supported): its history `w_centre` on n x n meshes of the quarter
+    (`meshes`: (quick, full)) for each bending kernel, against `reference` (m) with
+    `tolerances` (quick, full), the observed orders, and the figure against the element size
+    h / a (`side` a). Returns the script's exit status (finish)."""
+    args, cases, plot, plot_name = start(problem, description, meshes[0], meshes[1])
+
+    def solve(kernel, n):
+        res, wall = run_kernel(args, model, kernel, n, ["mesh.nx=%d" % n, "mesh.ny=%d" % n])
+        h = res["history"]
+        return (-h["w_centre"][-1], wall, "quarter %dx%d (h=a/%d)" % (n, n, 2 * n), note,
+                bool(h["converged"][-1]))
+
+    rows, results = kernel_studies(
+        problem, "w_centre", reference, kernels, cases, solve,
+        tolerances[0] if args.quick else tolerances[1], plot_name,
+        "log2((w1-w2)/(w2-w3)); report only (expected 2)", unit="m")
+    draw_plate_deflection_study(
+        plot, [side / (2 * n) for n in cases],
+        [("fpmshell " + k, mark, [results[(k, n)] for n in cases])
+         for k, mark in zip(kernels, ["o-", "s--"])],
+        reference, reference_label, tolerances[1], title)
+    return finish(args.out, rows)
+
+
 def observed_order(w1, w2, w3):
     """Convergence order from three meshes, each halving the element size:
     log2((w1 - w2) / (w2 - w3)); nan when the sequence is not monotone."""
@@ -247,6 +321,19 @@ def observed_order(w1, w2, w3):
     if d2 == 0 or d1 / d2 <= 0:
         return float("nan")
     return math.log(d1 / d2, 2)
+
+
+def write_grid_triangles(f, n_u, n_v, node, triangles):
+    """The *ELEMENT, TYPE=S3 block of an Abaqus mesh file over a grid of n_u x n_v cells, the
+    elements numbered from 1 in cell order: triangles(i, a, b, c, d) the cell's triangles, a ... d
+    its corners node(i, j), node(i + 1, j), node(i + 1, j + 1), node(i, j + 1)."""
+    f.write("*ELEMENT, TYPE=S3\n")
+    e = 0
+    for j in range(n_v):
+        for i in range(n_u):
+            for t in triangles(i, node(i, j), node(i + 1, j), node(i + 1, j + 1), node(i, j + 1)):
+                e += 1
+                f.write("%d, %d, %d, %d\n" % ((e,) + t))
 
 
 def parabola_vertex(tm, w, i):
@@ -342,10 +429,33 @@ def draw_plate_deflection_study(path, sizes, deflections, reference, reference_l
     save_figure(fig, path, title)
 
 
+def figure(*args, **kwargs):
+    """A figure and its axes: matplotlib's subplots (offscreen, pyplot())."""
+    return pyplot().subplots(*args, **kwargs)
+
+
+def label_axes(ax, xlabel, ylabel, legend_size=8, below=False, loc=None, grid=False,
+               title=None):
+    """The axes' labels, title and grid, and their legend (below: under the axes, in two
+    columns; else at loc, matplotlib's best place by default)."""
+    ax.set_xlabel(xlabel)
+    ax.set_ylabel(ylabel)
+    if title:
+        ax.set_title(title)
+    if grid:
+        ax.grid(True, alpha=0.3)
+    if below:
+        ax.legend(fontsize=legend_size, loc="upper center", bbox_to_anchor=(0.5, -0.14), ncol=2)
+    else:
+        ax.legend(fontsize=legend_size, **({"loc": loc} if loc else {}))
+
+
 def save_figure(fig, path, title, dpi=110):
-    """Titles (the axes of a one-axes figure, else the figure), lays out, writes and closes a
-    figure."""
-    if len(fig.axes) == 1:
+    """Titles (the axes of a one-axes figure, else the figure; None: neither), lays out, writes
+    and closes a figure."""
+    if title is None:
+        pass
+    elif len(fig.axes) == 1:
         fig.axes[0].set_title(title)
     else:
         fig.suptitle(title)

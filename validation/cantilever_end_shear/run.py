@@ -28,34 +28,17 @@ FULL = [(20, 1, "dkt", 0.05), (40, 2, "dkt", 0.05), (20, 1, "bciz", 0.05), (40, 
 def overrides(nx, ny, bending, every):
     per_node = P_MAX / ny  # P/ny on every tip node, minus half of it on the two corners
     return ["mesh.nx=%d" % nx, "mesh.ny=%d" % ny, "control.bending=%s" % bending,
-            "output.every=%g" % every,
-            "loads.0.value=[0, 0, %.17g]" % per_node,
-            "loads.1.value=[0, 0, %.17g]" % (-0.5 * per_node),
-            "loads.2.value=[0, 0, %.17g]" % (-0.5 * per_node)]
+            "output.every=%g" % every] + fpmv.end_load_overrides(per_node)
 
 
 def main():
     args, cases, plot, _ = fpmv.start(PROBLEM, __doc__, QUICK, FULL)
     ref = fpmv.read_reference_csv(os.path.join(HERE, "reference.csv"))
     rows, runs = [], []
-    for nx, ny, bending, every in cases:
-        mesh = "%dx%d right, %s" % (nx, ny, bending)
-        out = os.path.join(args.out, "%s_%dx%d" % (bending, nx, ny))
-        got = fpmv.run_or_failure_row(args, os.path.join(HERE, "model.yaml"), out,
-                                      overrides(nx, ny, bending, every), PROBLEM, mesh, rows)
-        if got is None:
-            continue
-        res, wall = got
-        h = res["history"]
+    for mesh, h, wall in fpmv.strip_load_path_runs(
+            args, PROBLEM, os.path.join(HERE, "model.yaml"), plot, rows, cases, overrides):
         runs.append((mesh, h))
-        rows.append(fpmv.load_levels_row(PROBLEM, h, mesh, wall, plot))
-        for t, mu_ref, w_ref in ref:
-            if t == 0:
-                continue
-            level = fpmv.load_level(h, t)
-            if level is None:
-                continue
-            i, flag = level
+        for i, flag, t, (mu_ref, w_ref) in fpmv.reference_levels(h, ref):
             for name, val, r in (("-u_tip", -h["tip_u"][i], mu_ref), ("w_tip", h["tip_w"][i], w_ref)):
                 rows.append(fpmv.row(
                     PROBLEM, "%s at P/Pmax = %.2f" % (name, t), r, val, TOL + TABLE_HALF_UNIT / r,
@@ -66,8 +49,7 @@ def main():
 
 
 def draw(path, ref, runs):
-    plt = fpmv.pyplot()
-    fig, ax = plt.subplots(figsize=(7, 5))
+    fig, ax = fpmv.figure(figsize=(7, 5))
     t = [r[0] for r in ref]
     ax.plot([r[1] for r in ref], t, "ko", mfc="none", label="Sze et al. 2004: -u_tip")
     ax.plot([r[2] for r in ref], t, "ks", mfc="none", label="Sze et al. 2004: w_tip")
@@ -75,10 +57,8 @@ def draw(path, ref, runs):
         lev = [x * 1.0 for x in h["time"]]
         ax.plot([-u for u in h["tip_u"]], lev, "-", color=c, marker=".", label="fpmshell %s" % mesh)
         ax.plot(h["tip_w"], lev, "--", color=c, marker=".")
-    ax.set_xlabel("tip displacement: -u_tip (solid), w_tip (dashed)")
-    ax.set_ylabel("P / P_max  (P_max = 4)")
-    ax.grid(True, alpha=0.3)
-    ax.legend(fontsize=8, loc="lower right")
+    fpmv.label_axes(ax, "tip displacement: -u_tip (solid), w_tip (dashed)",
+                    "P / P_max  (P_max = 4)", loc="lower right", grid=True)
     fpmv.save_figure(fig, path, "Cantilever under end shear (L = 10, h = 0.1)", dpi=120)
 
 

@@ -40,11 +40,9 @@ def main():
     for kernel in KERNELS:
         def solve(m):
             nx, ny = m
-            out = os.path.join(args.out, "%s-%dx%d" % (kernel, nx, ny))
-            res, wall = fpmv.run(args.fpmshell, model, out,
-                                 ["mesh.nx=%d" % nx, "mesh.ny=%d" % ny,
-                                  "loads.0.value=[0,0,%.12g]" % (-1.0 / (ny + 1)),
-                                  "control.bending=" + kernel], threads=1)
+            res, wall = fpmv.run_kernel(args, model, kernel, "%dx%d" % (nx, ny),
+                                        ["mesh.nx=%d" % nx, "mesh.ny=%d" % ny,
+                                         "loads.0.value=[0,0,%.12g]" % (-1.0 / (ny + 1))])
             t, w = res["history"]["time"], res["history"]["w_tip"]
             period = fpmv.fit_period(t, w, T_REF)
             curves[(kernel, nx, ny)] = (t, w)
@@ -59,8 +57,7 @@ def main():
 
 
 def draw(path, curves, periods):
-    plt = fpmv.pyplot()
-    fig, ax = plt.subplots(figsize=(8, 5.5))
+    fig, ax = fpmv.figure(figsize=(8, 5.5))
     for (kernel, nx, ny), (t, w) in sorted(curves.items()):
         ax.plot([x * 1e3 for x in t], [x * 1e6 for x in w], "-" if kernel == "bciz" else "--",
                 lw=1, label="fpmshell %s %dx%d: T = %.3f ms" % (kernel, nx, ny,
@@ -68,9 +65,7 @@ def draw(path, curves, periods):
     for k in range(1, 6):
         ax.axvline(k * T_REF * 1e3, color="k", lw=0.6, ls=":",
                    label="reference period %.3f ms" % (T_REF * 1e3) if k == 1 else None)
-    ax.set_xlabel("time [ms]")
-    ax.set_ylabel("tip deflection [$\\mu$m]")
-    ax.legend(fontsize=7, loc="upper center", bbox_to_anchor=(0.5, -0.14), ncol=2)
+    fpmv.label_axes(ax, "time [ms]", "tip deflection [$\\mu$m]", 7, below=True)
     fpmv.save_figure(fig, path, "Cantilever strip, step tip force: first bending period")
 
 

@@ -45,20 +45,12 @@ def overrides(nx, ny, bending, every):
 def main():
     args, cases, plot, _ = fpmv.start(PROBLEM, __doc__, QUICK, FULL)
     rows, runs = [], []
-    for nx, ny, bending, every in cases:
-        mesh = "%dx%d right, %s" % (nx, ny, bending)
-        out = os.path.join(args.out, "%s_%dx%d" % (bending, nx, ny))
-        got = fpmv.run_or_failure_row(args, os.path.join(HERE, "model.yaml"), out,
-                                      overrides(nx, ny, bending, every), PROBLEM, mesh, rows)
-        if got is None:
-            continue
-        res, wall = got
-        h = res["history"]
+    for mesh, h, wall in fpmv.strip_load_path_runs(
+            args, PROBLEM, os.path.join(HERE, "model.yaml"), plot, rows, cases, overrides):
         runs.append((mesh, h))
         # Both kernels carry the 1 % criterion (README).
         tol = TOL
         bciz_note = ""
-        rows.append(fpmv.load_levels_row(PROBLEM, h, mesh, wall, plot))
         for i, t in enumerate(h["time"]):
             if i == 0:
                 continue
@@ -82,8 +74,7 @@ def main():
 
 
 def draw(path, runs):
-    plt = fpmv.pyplot()
-    fig, (ax, ax2) = plt.subplots(1, 2, figsize=(11, 5))
+    fig, (ax, ax2) = fpmv.figure(1, 2, figsize=(11, 5))
     ts = [i / 200.0 for i in range(201)]
     ex = [exact(t) for t in ts]
     ax.plot([-e[0] for e in ex], ts, "k-", lw=0.8, label="exact -u_tip")
@@ -104,14 +95,8 @@ def draw(path, runs):
     ax.grid(True, alpha=0.3)
     ax.legend(fontsize=7, loc="lower right")
     ax2.set_aspect("equal")
-    ax2.set_xlabel("tip x")
-    ax2.set_ylabel("tip z")
-    ax2.set_title("tip path (root at x = 0)")
-    ax2.grid(True, alpha=0.3)
-    ax2.legend(fontsize=7)
-    fig.tight_layout()
-    fig.savefig(path, dpi=120)
-    plt.close(fig)
+    fpmv.label_axes(ax2, "tip x", "tip z", 7, grid=True, title="tip path (root at x = 0)")
+    fpmv.save_figure(fig, path, None, dpi=120)
 
 
 if __name__ == "__main__":

@@ -151,8 +151,7 @@ def main():
 
 
 def draw(path, meshes, curves):
-    plt = fpmv.pyplot()
-    fig, ax = plt.subplots(figsize=(7, 4.5))
+    fig, ax = fpmv.figure(figsize=(7, 4.5))
     colours = ["tab:blue", "tab:orange", "tab:green"]
     for c, m in zip(colours, meshes):
         for kind, style in (("regularized", "-"), ("raw", ":")):
@@ -162,9 +161,7 @@ def draw(path, meshes, curves):
             u, f = u[:end + 1], f[:end + 1]
             ax.plot([1e3 * x for x in u], [1e-3 * x for x in f], style, color=c,
                     label="%s, %.3g mm elements" % (kind, 1e3 * L / m[0]))
-    ax.set_xlabel("stretch [mm]")
-    ax.set_ylabel("force [kN]")
-    ax.legend(fontsize=8)
+    fpmv.label_axes(ax, "stretch [mm]", "force [kN]")
     ax.grid(alpha=0.3)
     fpmv.save_figure(fig, path, "Notched strip to fracture: regularized (calibrated on a "
                      "smooth strip) and not")

@@ -77,8 +77,7 @@ def main():
 
 
 def draw(path, points, curves):
-    plt = fpmv.pyplot()
-    fig, (a, b) = plt.subplots(1, 2, figsize=(12, 5))
+    fig, (a, b) = fpmv.figure(1, 2, figsize=(12, 5))
     phis = [0, 30]
     a.plot(phis, [fit(p) for p in phis], "k-", lw=1, label="Nurick & Martin 1989 fit")
     a.fill_between(phis, [fit(p) - TOL_SCATTER for p in phis],
@@ -87,14 +86,10 @@ def draw(path, points, curves):
     for label in sorted({p[2] for p in points}):
         sel = [p for p in points if p[2] == label]
         a.plot([p[0] for p in sel], [p[1] for p in sel], "o", label="fpmshell, " + label)
-    a.set_xlabel("phi = I / (pi R t^2 sqrt(rho sigma_0))")
-    a.set_ylabel("permanent mid-point deflection / thickness")
-    a.legend(fontsize=8)
+    fpmv.label_axes(a, "phi = I / (pi R t^2 sqrt(rho sigma_0))", "permanent mid-point deflection / thickness")
     for (rings, phi), (t, w) in sorted(curves.items()):
         b.plot([x * 1e3 for x in t], w, lw=1, label="phi %g, %d rings" % (phi, rings))
-    b.set_xlabel("time [ms]")
-    b.set_ylabel("mid-point deflection / thickness")
-    b.legend(fontsize=7)
+    fpmv.label_axes(b, "time [ms]", "mid-point deflection / thickness", 7)
     fpmv.save_figure(fig, path, "Clamped circular plates under a uniform impulse")
 
 

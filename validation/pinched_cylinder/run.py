@@ -53,10 +53,8 @@ def main():
     model = os.path.join(HERE, "model.yaml")
 
     def solve(kernel, n):
-        out = os.path.join(args.out, "%s-%d" % (kernel, n))
-        res, wall = fpmv.run(args.fpmshell, model, out,
-                             ["mesh.divisions_arc=%d" % n, "mesh.divisions_length=%d" % n,
-                              "control.bending=" + kernel], threads=1)
+        res, wall = fpmv.run_kernel(args, model, kernel, n,
+                                    ["mesh.divisions_arc=%d" % n, "mesh.divisions_length=%d" % n])
         h = res["history"]
         return (-h["w_load"][-1], wall, "1/8 %dx%d" % (n, n),
                 "Belytschko et al. 1985: 1.8248e-5", bool(h["converged"][-1]))
@@ -73,16 +71,13 @@ def main():
 
 
 def draw(path, meshes, results):
-    plt = fpmv.pyplot()
-    fig, ax = plt.subplots(figsize=(6, 4))
+    fig, ax = fpmv.figure(figsize=(6, 4))
     for kernel, mark in zip(KERNELS, ["o-", "s--"]):
         ax.plot(meshes, [results[(kernel, n)] / W_REF for n in meshes], mark,
                 label="fpmshell " + kernel)
     ax.axhline(1.0, color="k", lw=1, label="reference 1.8248e-5")
     ax.axhspan(1 - TOL_FINE, 1 + TOL_FINE, color="0.85", label="$\\pm$2 %")
-    ax.set_xlabel("divisions per side of the 1/8 model")
-    ax.set_ylabel("w under the load / reference")
-    ax.legend(fontsize=8)
+    fpmv.label_axes(ax, "divisions per side of the 1/8 model", "w under the load / reference")
     fpmv.save_figure(fig, path, "Pinched cylinder with rigid diaphragms (1/8 model)")
 
 

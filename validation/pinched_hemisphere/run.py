@@ -54,15 +54,9 @@ def write_inp(path, n):
                 f.write("%d, %.15g, %.15g, %.15g\n" % (
                     node(i, j), R * math.sin(th) * math.cos(ph), R * math.sin(th) * math.sin(ph),
                     R * math.cos(th)))
-        f.write("*ELEMENT, TYPE=S3\n")
-        e = 0
-        for j in range(n):
-            for i in range(n):
-                a, b, c, d = node(i, j), node(i + 1, j), node(i + 1, j + 1), node(i, j + 1)
-                tris = [(a, b, c), (a, c, d)] if 2 * i < n else [(a, b, d), (b, c, d)]
-                for t in tris:
-                    e += 1
-                    f.write("%d, %d, %d, %d\n" % ((e,) + t))
+        fpmv.write_grid_triangles(
+            f, n, n, node, lambda i, a, b, c, d:
+            [(a, b, c), (a, c, d)] if 2 * i < n else [(a, b, d), (b, c, d)])
 
 
 def main():
@@ -72,11 +66,9 @@ def main():
     rows, results = [], {}
     for kernel in KERNELS:
         def solve(n):
-            out = os.path.join(args.out, "%s-%d" % (kernel, n))
             mesh = os.path.abspath(os.path.join(args.out, "mesh_%dx%d.inp" % (n, n)))
             write_inp(mesh, n)
-            res, wall = fpmv.run(args.fpmshell, model, out,
-                                 ["mesh.file=" + mesh, "control.bending=" + kernel], threads=1)
+            res, wall = fpmv.run_kernel(args, model, kernel, n, ["mesh.file=" + mesh])
             h = res["history"]
             scale = P / h["fx"][-1]                    # linear: scale to the full load
             u_a, u_b = h["u_a"][-1] * scale, -h["u_b"][-1] * scale
@@ -106,8 +98,7 @@ def main():
 
 
 def draw(path, meshes, results):
-    plt = fpmv.pyplot()
-    fig, ax = plt.subplots(figsize=(6, 4))
+    fig, ax = fpmv.figure(figsize=(6, 4))
     for kernel, mark in zip(KERNELS, ["o-", "s--"]):
         ax.plot(meshes, [results[(kernel, n)] for n in meshes], mark, label="fpmshell " + kernel)
     ax.axhline(U_REF, color="k", lw=1, label="reference 0.093")

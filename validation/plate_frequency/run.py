@@ -40,10 +40,7 @@ def main():
     for kernel in KERNELS:
         def solve(n):
             ny = n * 6 // 10
-            out = os.path.join(args.out, "%s-%d" % (kernel, n))
-            res, wall = fpmv.run(args.fpmshell, model, out,
-                                 ["mesh.nx=%d" % n, "mesh.ny=%d" % ny, "control.bending=" + kernel],
-                                 threads=1)
+            res, wall = fpmv.run_kernel(args, model, kernel, n, ["mesh.nx=%d" % n, "mesh.ny=%d" % ny])
             t, w = res["history"]["time"], res["history"]["w_centre"]
             period = fpmv.fit_period(t, w, T_REF)
             curves[(kernel, n)] = (t, w)
@@ -62,8 +59,7 @@ def main():
 
 
 def draw(path, meshes, curves, periods):
-    plt = fpmv.pyplot()
-    fig, ax = plt.subplots(figsize=(8, 5.5))
+    fig, ax = fpmv.figure(figsize=(8, 5.5))
     for (kernel, n), (t, w) in sorted(curves.items()):
         ax.plot([x * 1e3 for x in t], [x * 1e6 for x in w], "-" if kernel == "bciz" else "--",
                 lw=1, label="fpmshell %s quarter %dx%d: T = %.4f ms" % (kernel, n, n * 6 // 10,
@@ -71,9 +67,7 @@ def draw(path, meshes, curves, periods):
     for k in range(1, 6):
         ax.axvline(k * T_REF * 1e3, color="k", lw=0.6, ls=":",
                    label="reference period %.4f ms" % (T_REF * 1e3) if k == 1 else None)
-    ax.set_xlabel("time [ms]")
-    ax.set_ylabel("centre deflection [$\\mu$m]")
-    ax.legend(fontsize=7, loc="upper center", bbox_to_anchor=(0.5, -0.14), ncol=2)
+    fpmv.label_axes(ax, "time [ms]", "centre deflection [$\\mu$m]", 7, below=True)
     fpmv.save_figure(fig, path,
                      "Simply supported 1 x 0.6 m plate, step pressure: first-mode period")
 

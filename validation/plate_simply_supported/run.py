@@ -43,38 +43,12 @@ TOL_FINE = 0.02
 TOL_QUICK = 0.02
 
 
-def centre_w(res):
-    h = res["history"]
-    return -h["w_centre"][-1], bool(h["converged"][-1])
-
-
 def main():
-    args, meshes, plot, plot_name = fpmv.start(PROBLEM, __doc__, MESHES_QUICK, MESHES_FULL)
-    model = os.path.join(HERE, "model.yaml")
-
-    def solve(kernel, n):
-        out = os.path.join(args.out, "%s-%d" % (kernel, n))
-        res, wall = fpmv.run(args.fpmshell, model, out,
-                             ["mesh.nx=%d" % n, "mesh.ny=%d" % n, "control.bending=" + kernel],
-                             threads=1)
-        w, conv = centre_w(res)
-        return (w, wall, "quarter %dx%d (h=a/%d)" % (n, n, 2 * n),
-                "%.8f q a^4/D (Navier)" % COEF, conv)
-
-    rows, results = fpmv.kernel_studies(
-        PROBLEM, "w_centre", W_REF, KERNELS, meshes, solve, TOL_QUICK if args.quick else TOL_FINE,
-        plot_name, "log2((w1-w2)/(w2-w3)); report only (expected 2)", unit="m")
-    draw(plot, meshes, results)
-    return fpmv.finish(args.out, rows)
-
-
-def draw(path, meshes, results):
-    fpmv.draw_plate_deflection_study(
-        path, [A / (2 * n) for n in meshes],
-        [("fpmshell " + k, mark, [results[(k, n)] for n in meshes])
-         for k, mark in zip(KERNELS, ["o-", "s--"])],
-        W_REF, "Navier %.6f qa$^4$/D" % COEF, TOL_FINE,
-        "Simply supported square plate, uniform pressure (quarter model)")
+    return fpmv.square_plate_study(
+        PROBLEM, __doc__, os.path.join(HERE, "model.yaml"), W_REF,
+        "%.8f q a^4/D (Navier)" % COEF, "Navier %.6f qa$^4$/D" % COEF,
+        "Simply supported square plate, uniform pressure (quarter model)", KERNELS,
+        (MESHES_QUICK, MESHES_FULL), (TOL_QUICK, TOL_FINE), A)
 
 
 if __name__ == "__main__":

@@ -47,9 +47,7 @@ def main():
     model = os.path.join(HERE, "model.yaml")
 
     def solve(kernel, n):
-        out = os.path.join(args.out, "%s-%d" % (kernel, n))
-        res, wall = fpmv.run(args.fpmshell, model, out,
-                             force_overrides(n) + ["control.bending=" + kernel], threads=1)
+        res, wall = fpmv.run_kernel(args, model, kernel, n, force_overrides(n))
         h = res["history"]
         applied = -h["fz"][-1]
         w = -h["w_a"][-1] * TOTAL / applied        # linear: scale to the full self-weight
@@ -65,8 +63,7 @@ def main():
 
 
 def draw(path, meshes, results):
-    plt = fpmv.pyplot()
-    fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(10, 4))
+    fig, (ax1, ax2) = fpmv.figure(1, 2, figsize=(10, 4))
     for kernel, mark in zip(KERNELS, ["o-", "s--"]):
         ws = [results[(kernel, n)] for n in meshes]
         ax1.plot(meshes, ws, mark, label="fpmshell " + kernel)
@@ -75,15 +72,11 @@ def draw(path, meshes, results):
     ax1.axhline(W_KIRCHHOFF, color="k", lw=1, ls=":", label="Kirchhoff-Love 0.3006")
     ax1.axhspan(W_REF * (1 - TOL_FINE), W_REF * (1 + TOL_FINE), color="0.85", label="$\\pm$2 %")
     ax1.set_xscale("log", base=2)
-    ax1.set_xlabel("divisions per side of the quarter")
-    ax1.set_ylabel("mid-span free-edge deflection")
-    ax1.legend(fontsize=8)
+    fpmv.label_axes(ax1, "divisions per side of the quarter", "mid-span free-edge deflection")
     if len(meshes) > 1:
         e0 = abs(results[("bciz", meshes[0])] - W_REF) / W_REF
         ax2.loglog(meshes, [e0 * (meshes[0] / n)**2 for n in meshes], "k:", label="slope 2")
-    ax2.set_xlabel("divisions per side of the quarter")
-    ax2.set_ylabel("relative error")
-    ax2.legend(fontsize=8)
+    fpmv.label_axes(ax2, "divisions per side of the quarter", "relative error")
     fpmv.save_figure(fig, path, "Scordelis-Lo roof (quarter model), linear response")
 
 

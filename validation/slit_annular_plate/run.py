@@ -38,34 +38,25 @@ def overrides(nr, na, bending, membrane, every):
     per_node = Q_MAX * WIDTH / nr  # q x tributary length; the corners get half
     return ["mesh.divisions_radial=%d" % nr, "mesh.divisions_angle=%d" % na,
             "control.bending=%s" % bending, "control.membrane=%s" % membrane,
-            "output.every=%g" % every,
-            "loads.0.value=[0, 0, %.17g]" % per_node,
-            "loads.1.value=[0, 0, %.17g]" % (-0.5 * per_node),
-            "loads.2.value=[0, 0, %.17g]" % (-0.5 * per_node)]
+            "output.every=%g" % every] + fpmv.end_load_overrides(per_node)
 
 
 def main():
     args, cases, plot, _ = fpmv.start(PROBLEM, __doc__, QUICK, FULL)
     ref = fpmv.read_reference_csv(os.path.join(HERE, "reference.csv"))
     rows, runs = [], []
+    tolerances = {}  # per mesh label: the case's tolerance and its reason
+    runs_asked = []
     for nr, na, bending, membrane, every, tol, why in cases:
         mesh = "%dx%d right, %s, %s membrane" % (nr, na, bending, membrane)
-        out = os.path.join(args.out, "%s_%s_%dx%d" % (bending, membrane, nr, na))
-        got = fpmv.run_or_failure_row(args, os.path.join(HERE, "model.yaml"), out,
-                                      overrides(nr, na, bending, membrane, every), PROBLEM, mesh, rows)
-        if got is None:
-            continue
-        res, wall = got
-        h = res["history"]
+        tolerances[mesh] = (tol, why)
+        runs_asked.append((mesh, "%s_%s_%dx%d" % (bending, membrane, nr, na),
+                           overrides(nr, na, bending, membrane, every)))
+    for mesh, h, wall in fpmv.load_path_runs(args, PROBLEM, os.path.join(HERE, "model.yaml"),
+                                             plot, rows, runs_asked):
+        tol, why = tolerances[mesh]
         runs.append((mesh, h))
-        rows.append(fpmv.load_levels_row(PROBLEM, h, mesh, wall, plot))
-        for t, wa, wb in ref:
-            if t == 0:
-                continue
-            level = fpmv.load_level(h, t)
-            if level is None:
-                continue
-            i, flag = level
+        for i, flag, t, (wa, wb) in fpmv.reference_levels(h, ref):
             for name, val, r in (("w_A (r = 6)", h["w_a"][i], wa), ("w_B (r = 10)", h["w_b"][i], wb)):
                 rows.append(fpmv.row(PROBLEM, "%s at q/qmax = %.2f" % (name, t), r, val, tol,
                                      mesh=mesh, wall=wall, plot=plot, note=why + flag))
@@ -74,8 +65,7 @@ def main():
 
 
 def draw(path, ref, runs):
-    plt = fpmv.pyplot()
-    fig, ax = plt.subplots(figsize=(7, 5))
+    fig, ax = fpmv.figure(figsize=(7, 5))
     t = [r[0] * Q_MAX for r in ref]
     ax.plot([r[1] for r in ref], t, "ko", mfc="none", label="Sze et al. 2004 (S4R 10x80): w_A")
     ax.plot([r[2] for r in ref], t, "ks", mfc="none", label="Sze et al. 2004 (S4R 10x80): w_B")
@@ -84,10 +74,8 @@ def draw(path, ref, runs):
         # equilibrium points only at the computed levels: thin lines just link them
         ax.plot(h["w_a"], q, "-", color=c, lw=0.7, marker="o", ms=5, label="fpmshell %s" % mesh)
         ax.plot(h["w_b"], q, "--", color=c, lw=0.7, marker="s", ms=5)
-    ax.set_xlabel("lift of the loaded edge: w_A at r = 6 (solid), w_B at r = 10 (dashed)")
-    ax.set_ylabel("line force q")
-    ax.grid(True, alpha=0.3)
-    ax.legend(fontsize=8, loc="lower right")
+    fpmv.label_axes(ax, "lift of the loaded edge: w_A at r = 6 (solid), w_B at r = 10 (dashed)",
+                    "line force q", loc="lower right", grid=True)
     fpmv.save_figure(fig, path, "Slit annular plate under a lifting line force", dpi=120)
 
 

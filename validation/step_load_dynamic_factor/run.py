@@ -89,16 +89,13 @@ def main():
 
 
 def draw(path, curves):
-    plt = fpmv.pyplot()
-    fig, ax = plt.subplots(figsize=(8, 5.5))
+    fig, ax = fpmv.figure(figsize=(8, 5.5))
     for tag, (t, d, ws) in sorted(curves.items()):
         ax.plot([x * 1e3 for x in t], [x / ws for x in d], lw=1, label="fpmshell " + tag)
     ax.axhline(2.0, color="k", lw=1, label="2 x static (reference)")
     ax.axhline(1.0, color="k", lw=0.6, ls=":", label="static (relaxation run)")
     ax.axhspan(2 * 0.9707, 2.0, color="0.85", label="first-peak range by modal superposition")
-    ax.set_xlabel("time [ms]")
-    ax.set_ylabel("tip deflection / static tip deflection")
-    ax.legend(fontsize=7, loc="upper center", bbox_to_anchor=(0.5, -0.14), ncol=2)
+    fpmv.label_axes(ax, "time [ms]", "tip deflection / static tip deflection", 7, below=True)
     fpmv.save_figure(fig, path, "Cantilever strip, step tip force: dynamic load factor")
 
 

@@ -56,15 +56,9 @@ def write_inp(path, nw, nl):
                 s = WIDTH * (i / nw - 0.5)
                 f.write("%d, %.15g, %.15g, %.15g\n" % (node(i, j), x, s * math.cos(b),
                                                        s * math.sin(b)))
-        f.write("*ELEMENT, TYPE=S3\n")
-        e = 0
-        for j in range(nl):
-            for i in range(nw):
-                a, b, c, d = node(i, j), node(i + 1, j), node(i + 1, j + 1), node(i, j + 1)
-                tris = [(a, c, b), (a, d, c)] if 2 * i < nw else [(a, d, b), (b, d, c)]
-                for t in tris:
-                    e += 1
-                    f.write("%d, %d, %d, %d\n" % ((e,) + t))
+        fpmv.write_grid_triangles(
+            f, nw, nl, node, lambda i, a, b, c, d:
+            [(a, c, b), (a, d, c)] if 2 * i < nw else [(a, d, b), (b, d, c)])
 
 
 def load_overrides(direction, nw):
@@ -109,8 +103,7 @@ def main():
 
 
 def draw(path, meshes, results):
-    plt = fpmv.pyplot()
-    fig, ax = plt.subplots(figsize=(6, 4))
+    fig, ax = fpmv.figure(figsize=(6, 4))
     ns = [nw for nw, nl in meshes]
     for case, color in zip(CASES, ["C0", "C1"]):
         ref = CASES[case][3]
