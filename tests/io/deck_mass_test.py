@@ -117,4 +117,28 @@ check("a mesh file's mass node without `masses`: exit 2 naming mesh and the part
       r.returncode == 2 and "key 'mesh'" in r.stderr and "no entry of `masses`" in r.stderr,
       r.stderr)
 
+# A mass on the rigid block of block_drop.k (2 x 2 x 2 hexahedra): on a node of its surface it
+# joins the body (check counts it); on its centre node, inside (on none of the outer faces that
+# carry the body), it is refused naming the card.
+BLOCK_DIR = os.path.join(os.path.dirname(DROP), "block_drop")
+block = read(os.path.join(BLOCK_DIR, "block_drop.k"))
+BLOCK_AT = "*INITIAL_VELOCITY_NODE"
+assert BLOCK_AT in block
+plain_block = fpmshell("check", os.path.join(BLOCK_DIR, "block_drop.k"))
+plain_total = [ln for ln in plain_block.stdout.splitlines() if ln.startswith("total mass")]
+for name, node, ok in (("a mass on the block's surface", 201, True),
+                       ("a mass inside the block", 214, False)):
+    path = write(os.path.join(WORK, name.replace(" ", "_").replace("'", "")), "model.k",
+                 block.replace(BLOCK_AT, "*ELEMENT_MASS\n" + mass_card(900001, node, 0.5) +
+                               BLOCK_AT, 1), mesh=os.path.join(BLOCK_DIR, "block_drop_mesh.k"))
+    r = fpmshell("check", path)
+    if ok:
+        check(f"{name}: the body gains it (check: 0.5 more in all)",
+              r.returncode == 0 and plain_total and "point masses 0.5 on 1 particles" in r.stdout,
+              r.stdout + r.stderr)
+    else:
+        check(f"{name}: exit 2 with one sentence naming the card's line", r.returncode == 2 and
+              r.stderr.count("error:") == 1 and "node 214 carries a point mass inside a rigid "
+              "part of solids" in r.stderr and "model.k:" in r.stderr, r.stderr)
+
 sys.exit(finish())

@@ -6,6 +6,9 @@
 #include <map>
 #include <set>
 #include <string_view>
+#include <unordered_set>
+#include <utility>
+#include <vector>
 
 #include "fpmshell/core/errors.hpp"
 #include "fpmshell/core/text.hpp"
@@ -88,13 +91,7 @@ public:
                     members.insert(members.end(), it->second.begin(), it->second.end());
             }
         }
-        // the nodes of *ELEMENT_MASS_NODE_SET's sets carry their masses, shells or not
-        for (const long long sid : mass_sets_) {
-            const auto name = node_set_names_.find(sid);
-            if (name == node_set_names_.end()) continue;  // the translator names the missing set
-            const auto& ids = raw_.node_sets[name->second];
-            raw_.mass_nodes.insert(raw_.mass_nodes.end(), ids.begin(), ids.end());
-        }
+        keep_mass_nodes();
         MeshData mesh = finish_raw_mesh(raw_);
         for (const SolidElement& e : solids_)
             for (const long long n : e.nodes)
@@ -249,7 +246,8 @@ private:
                 long long n = 0;
                 if (f.size() < 2 || !parse_whole(f[1], n) || n <= 0)
                     return;  // the translator says why
-                (block_ == Block::Mass ? raw_.mass_nodes : mass_sets_).push_back(n);
+                (block_ == Block::Mass ? mass_nodes_ : mass_sets_)
+                    .push_back({n, raw_.path, number});
                 return;
             }
             case Block::NodeSet:
@@ -358,6 +356,33 @@ private:
 
     /// The outer faces of each part of solids, as its shells (numbered after every shell and
     /// solid of the file, in the solids' order).
+    /// The nodes that carry a point mass (*ELEMENT_MASS, the sets of _NODE_SET) are particles,
+    /// shells or not; one inside a rigid part of solids (on none of its outer faces, which carry
+    /// the part's body) would be a particle apart from the body: refused.
+    void keep_mass_nodes() {
+        std::vector<MassCard> nodes = mass_nodes_;
+        for (const MassCard& set : mass_sets_) {
+            const auto name = node_set_names_.find(set.id);
+            if (name == node_set_names_.end()) continue;  // the translator names the missing set
+            for (const long long n : raw_.node_sets[name->second])
+                nodes.push_back({n, set.file, set.line});
+        }
+        if (nodes.empty()) return;
+        std::unordered_set<long long> on_shells, in_solids;
+        for (const auto& e : raw_.shells) on_shells.insert(e.nodes.begin(), e.nodes.end());
+        for (const SolidElement& e : solids_) in_solids.insert(e.nodes.begin(), e.nodes.end());
+        for (const MassCard& m : nodes) {
+            if (in_solids.count(m.id) != 0 && on_shells.count(m.id) == 0) {
+                raw_.path = m.file;
+                raw_.fail(m.line, "node " + std::to_string(m.id) +
+                                      " carries a point mass inside a rigid part of solids (on "
+                                      "none of its outer faces, which carry the part's body): put "
+                                      "the mass on a node of the part's surface");
+            }
+            raw_.mass_nodes.push_back(m.id);
+        }
+    }
+
     void add_solid_faces() {
         if (solids_.empty()) return;
         std::unordered_map<long long, Vec3> at;
@@ -399,7 +424,12 @@ private:
     std::string main_path_;
     std::map<std::string, std::vector<long long>> part_sets_;  // name -> part ids
     std::map<long long, std::string> node_set_names_;          // SID -> the node set's name
-    std::vector<long long> mass_sets_;                         // the SIDs of point masses
+    struct MassCard {  ///< a point mass's node (*ELEMENT_MASS) or set (_NODE_SET), its card
+        long long id = 0;
+        std::string file;
+        int line = 0;
+    };
+    std::vector<MassCard> mass_nodes_, mass_sets_;
 };
 
 }  // namespace
