@@ -106,12 +106,8 @@ check("a hung mass: the run closes its energy balance (|error| < 1e-4)", abs(err
 mesh_with_mass = read(os.path.join(DROP, "plate_drop_mesh.k")).replace(
     "*END", "*NODE\n   90001            0.05            0.05            0.08\n*ELEMENT_MASS\n" +
     mass_card(900010, 90001, 1.5) + "*END")
-folder = os.path.join(WORK, "massless")
-os.makedirs(folder, exist_ok=True)
-with open(os.path.join(folder, "plate_drop_mesh.k"), "w") as f:
-    f.write(mesh_with_mass)
-with open(os.path.join(folder, "model.yaml"), "w") as f:
-    f.write(twin)
+folder = deck_variant.write_files(os.path.join(WORK, "massless"),
+                                  {"plate_drop_mesh.k": mesh_with_mass, "model.yaml": twin})
 r = fpmshell("check", os.path.join(folder, "model.yaml"))
 check("a mesh file's mass node without `masses`: exit 2 naming mesh and the particle",
       r.returncode == 2 and "key 'mesh'" in r.stderr and "no entry of `masses`" in r.stderr,

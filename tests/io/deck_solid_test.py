@@ -65,12 +65,8 @@ for line in body.splitlines():
         cards.append(line)
         nodes_next = not nodes_next and bool(line.strip())
 two_card = head + "*ELEMENT_SOLID\n" + "\n".join(cards) + "\n*SET_NODE_LIST" + tail
-folder = os.path.join(WORK, "two_card")
-os.makedirs(folder, exist_ok=True)
-with open(os.path.join(folder, "block_drop_mesh.k"), "w") as f:
-    f.write(two_card)
-with open(os.path.join(folder, "model.k"), "w") as f:
-    f.write(deck)
+folder = deck_variant.write_files(os.path.join(WORK, "two_card"),
+                                  {"block_drop_mesh.k": two_card, "model.k": deck})
 r_two, h_two = run(os.path.join(folder, "model.k"))
 check("the two-card form of every solid: the same history.csv",
       r_two.returncode == 0 and r_as_is.returncode == 0 and read(h_two) == read(h_as_is),

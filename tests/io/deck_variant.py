@@ -49,6 +49,15 @@ def write(folder, name, text, mesh):
     return path
 
 
+def write_files(folder, files):
+    """Writes {name: text} into folder (made if missing); returns the folder."""
+    os.makedirs(folder, exist_ok=True)
+    for name, text in files.items():
+        with open(os.path.join(folder, name), "w") as f:
+            f.write(text)
+    return folder
+
+
 def run(model):
     """Runs `model` on one thread into out_<extension> beside it: (result, history.csv path)."""
     out = os.path.join(os.path.dirname(model), "out_" + os.path.basename(model).split(".")[1])
