@@ -24,16 +24,14 @@ std::string model_summary(const Model& model) {
     out += fmt::format("total mass {:.6g}\n", std::accumulate(m.begin(), m.end(), 0.0));
     if (!model.point_masses.empty()) {  // `masses`: in the total
         Real points = 0;
-        std::size_t carriers = 0;
         std::vector<std::uint8_t> carries(model.nodes.size(), 0);
         for (const PointMass& pm : model.point_masses)
             for (std::size_t k = 0; k < pm.nodes.size(); ++k) {
                 points += pm.masses[k];
                 carries[static_cast<std::size_t>(pm.nodes[k])] = 1;
             }
-        carriers = static_cast<std::size_t>(std::count(carries.begin(), carries.end(), 1));
-        out +=
-            fmt::format("point masses {:.6g} on {} particles (in the total)\n", points, carriers);
+        out += fmt::format("point masses {:.6g} on {} particles (in the total)\n", points,
+                           std::count(carries.begin(), carries.end(), 1));
     }
     if (model.control.mass_scaling.time_step > 0)
         out += fmt::format("added mass {:.6g} (mass scaling to time step {:.6g}; in the total)\n",

@@ -130,6 +130,8 @@ ExplicitSolver::ExplicitSolver(const Model& model)
         std::vector<Index> constrained = tied_ ? tied_->particles() : std::vector<Index>{};
         for (const std::vector<Index>& body : nodal_rigid_bodies_.bodies())
             constrained.insert(constrained.end(), body.begin(), body.end());
+        std::sort(constrained.begin(), constrained.end());  // a tied body particle once
+        constrained.erase(std::unique(constrained.begin(), constrained.end()), constrained.end());
         ranks_.set_whole_particles(RankExchange::Whole::constraints, constrained);
     }
     energy_.kinetic = energy_.external_work;
