@@ -7,6 +7,7 @@
 #   make sanitize  build with AddressSanitizer + UBSan, run the unit and io tests and the examples
 #   make tsan      build with ThreadSanitizer (clang), run the unit tests and the examples on 2 threads
 #   make format    lay out every C++ file as .clang-format says (make test checks it)
+#   make picture   run the square tube (coarse, mass-scaled, ~5 min) and draw the README's picture
 #   make clean     remove the build folder
 
 BUILD   ?= build
@@ -19,7 +20,7 @@ RESULTS ?= results/spherical_cap_elastic
 
 # Prerequisites run in the order written (dependencies, then configure, then build).
 .NOTPARALLEL:
-.PHONY: run test validate bench fuzz sanitize tsan format clean deps configure build
+.PHONY: run test validate bench fuzz sanitize tsan format picture clean deps configure build
 
 run: deps build
 	./$(BUILD)/fpmshell run $(EXAMPLE)/model.yaml -o $(RESULTS) --overwrite
@@ -51,6 +52,18 @@ sanitize: deps
 
 tsan: deps
 	JOBS=$(JOBS) scripts/tsan.sh
+
+# The README's picture and plot (docs/images/): the square tube of examples/square_tube on its
+# coarse mesh with the example's commented mass scaling on, its last frame and its block force.
+PICTURE_RUN ?= results/square_tube_picture
+picture: deps build
+	mkdir -p $(PICTURE_RUN) docs/images
+	sed 's|^  # mass_scaling:|  mass_scaling:|' examples/square_tube/model.yaml > $(PICTURE_RUN)/model.yaml
+	./$(BUILD)/fpmshell run $(PICTURE_RUN)/model.yaml -o $(PICTURE_RUN)/results --overwrite --quiet \
+	    --set mesh.divisions_width=15 --set mesh.divisions_length=64
+	$(PYTHON) tools/render_picture.py $(PICTURE_RUN)/results docs/images/square_tube.png --mirror xy \
+	    --plot docs/images/square_tube_force.png --x striker_uz --y striker_force \
+	    --x-scale -1000 --y-scale 0.004 --x-label "crush (mm)" --y-label "block force (kN)"
 
 format: deps
 	git ls-files '*.cpp' '*.hpp' | grep -E '^(src|app|tests|bench|fuzz)/' | xargs clang-format -i

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# make fuzz (README "Reliability"): builds the fuzz targets of fuzz/ with clang, libFuzzer,
+# make fuzz (docs/reliability.md): builds the fuzz targets of fuzz/ with clang, libFuzzer,
 # AddressSanitizer and UndefinedBehaviorSanitizer in $FUZZ_BUILD (build-fuzz), writes their seed
 # corpora, and runs every target for FUZZ_SECONDS seconds (default 60), FUZZ_JOBS at a time
 # (default: the number of cores). A crash, a sanitizer report, a leak, an exception other than

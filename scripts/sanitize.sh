@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# make sanitize (README "Reliability"): builds fpmshell and its tests with AddressSanitizer and
+# make sanitize (docs/reliability.md): builds fpmshell and its tests with AddressSanitizer and
 # UndefinedBehaviorSanitizer in $SANITIZE_BUILD (build-sanitize), runs the unit, io and fuzz
 # replay tests there, then a short run of every example (a few dozen steps, 2 threads). Any
 # sanitizer report fails the test or the run it occurs in, and the script exits 1.

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# make tsan (README "Reliability"): builds fpmshell and its tests with clang and ThreadSanitizer
+# make tsan (docs/reliability.md): builds fpmshell and its tests with clang and ThreadSanitizer
 # in $TSAN_BUILD (build-tsan), then runs the unit tests (those of the parallel loops run on 1, 2
 # and all threads) and a short 2-thread run of every example. OpenMP is clang's libomp, whose
 # barriers and tasks ThreadSanitizer learns of through libarcher (OMP_TOOL_LIBRARIES). A data

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Runs the public LS-DYNA decks of tools/deck_corpus.json as they are and writes docs/decks.md.
+"""Runs the public LS-DYNA decks of tools/deck_corpus.json as they are and writes docs/deck-corpus.md.
 
 Each deck is laid out from a local mirror of its repository (nothing of it is committed here):
 MIRRORS/<owner>+<name>/repo, a git repository holding the deck's commit (the search tool's
@@ -16,7 +16,7 @@ given as --mirrors). For each deck the script
   and card.
 
 usage: tools/deck_corpus.py [--fpmshell build/fpmshell] [--mirrors /work/.mirror]
-                            [--work build/deck_corpus] [--output docs/decks.md]
+                            [--work build/deck_corpus] [--output docs/deck-corpus.md]
                             [--end-time T] [--timeout S] [--only NAME ...]
                             [--ranks N [--mpiexec mpirun]]
 With --ranks, every deck that ran runs again on N ranks (`mpirun -np N`, one thread each), whose
@@ -141,7 +141,7 @@ def main():
     ap.add_argument("--fpmshell", default=os.path.join(ROOT, "build", "fpmshell"))
     ap.add_argument("--mirrors", default="/work/.mirror")
     ap.add_argument("--work", default=os.path.join(ROOT, "build", "deck_corpus"))
-    ap.add_argument("--output", default=os.path.join(ROOT, "docs", "decks.md"))
+    ap.add_argument("--output", default=os.path.join(ROOT, "docs", "deck-corpus.md"))
     ap.add_argument("--manifest", default=os.path.join(ROOT, "tools", "deck_corpus.json"))
     ap.add_argument("--end-time", type=float, default=None,
                     help="run each deck to this time instead of its own end time")

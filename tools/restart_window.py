@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 """Cost of a window of a run, continued from a restart file, with two builds alternating
-(docs/performance.md, "The tube's folding phase"; the machine's speed drifts: only runs of one
+(docs/performance.md, "The paper's tube to the block's stop"; the machine's speed drifts: only runs of one
 spell compare).
 
 usage: tools/restart_window.py OLD_FPMSHELL NEW_FPMSHELL MODEL RESTART_DIR END_TIME

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""A 10^6-triangle model in contact over ranks (docs/performance.md, "A large crash model over
+"""A 10^6-triangle model in contact over ranks (docs/performance.md, "Distributed runs": a large model in contact over
 ranks").
 
 pressed_layers.yaml: two layers of 500 x 500 quadrilaterals (10^6 triangles) pressed together,

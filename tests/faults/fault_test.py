@@ -1,4 +1,4 @@
-"""Fault tests (README "Reliability"): what fpmshell does when the world around it fails.
+"""Fault tests (docs/reliability.md): what fpmshell does when the world around it fails.
 
 - a full disk (full_disk_preload.cpp) at several points of a run: exit 1 with one sentence
   naming the file and "No space left on device", no temporary file left, and every result file

@@ -1,4 +1,4 @@
-"""The air blast of decks (README, "LS-DYNA decks"; theory.md §6.13), each a variant of
+"""The air blast of decks (docs/decks.md; theory.md §6.13), each a variant of
 examples/decks/blast_panel (10 g of TNT over a clamped panel, *LOAD_BLAST_ENHANCED on a
 *SET_SEGMENT) against the panel as it is or against a YAML twin, the same history.csv bytes:
 

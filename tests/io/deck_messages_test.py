@@ -1,4 +1,4 @@
-"""LS-DYNA keyword decks' refusals, notes and messages (README, "LS-DYNA decks"), on small decks:
+"""LS-DYNA keyword decks' refusals, notes and messages (docs/decks.md), on small decks:
 a card fpmshell cannot honour fails with exit 2 and one sentence naming file, line and card; a
 card that cannot change the physics gives a note; errors in a card name its line and field, also
 inside an *INCLUDE and for values the model reader refuses; other tools' fixed-column habits,

@@ -1,4 +1,4 @@
-"""Card order is free (README, "LS-DYNA decks"): LS-DYNA reads a deck as a whole, so a card may
+"""Card order is free (docs/decks.md): LS-DYNA reads a deck as a whole, so a card may
 refer to a part, set, curve, material or section defined anywhere, before or after it, in any
 included file. Every test deck of examples/decks is written again
 

@@ -1,4 +1,4 @@
-"""The rigid-body cards of decks (README, "LS-DYNA decks"; theory.md eq. 6.11-7), each a variant of
+"""The rigid-body cards of decks (docs/decks.md; theory.md eq. 6.11-7), each a variant of
 plate_hammer.k (a rigid hammer, part 3, on a welded plate) against its YAML twin, the same
 history.csv bytes:
 

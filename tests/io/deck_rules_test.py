@@ -1,4 +1,4 @@
-"""The rules through the thickness of decks (README, "LS-DYNA decks"; theory.md §4.5):
+"""The rules through the thickness of decks (docs/decks.md; theory.md §4.5):
 
 - *SECTION_SHELL NIP 1-10 is read as LS-DYNA's Gauss rule, *CONTROL_SHELL INTGRD 1 as Lobatto
   (3-10 points), QR < 0 as the *INTEGRATION_SHELL rule |QR| (points given, or ESOP 1: equal

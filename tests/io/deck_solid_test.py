@@ -1,4 +1,4 @@
-"""Rigid parts of solids and given inertias in decks (README, "LS-DYNA decks"; theory.md §6.11),
+"""Rigid parts of solids and given inertias in decks (docs/decks.md; theory.md §6.11),
 variants of examples/decks/block_drop against YAML twins, the same history.csv bytes:
 
 - *PART_INERTIA for the block of solids: its TM, XC..ZC, IXX..IZZ as the section's `inertia`

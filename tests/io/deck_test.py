@@ -1,4 +1,4 @@
-"""LS-DYNA keyword decks run as they are (README, "LS-DYNA decks"):
+"""LS-DYNA keyword decks run as they are (docs/decks.md):
 
 - every test deck of examples/decks gives the same history.csv as its YAML twin (written by
   hand), byte for byte: the same model through two readers;

@@ -67,3 +67,10 @@ add_test(NAME io.deck_rigid_solids
          COMMAND ${FPMSHELL_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/io/deck_solid_test.py
                  $<TARGET_FILE:fpmshell> ${CMAKE_BINARY_DIR}/deck_solid_test_work)
 set_tests_properties(io.deck_rigid_solids PROPERTIES LABELS io TIMEOUT ${_timeout_300s})
+
+# The README is true: every command it shows runs and prints what it says, its model is the
+# example's file, its links and pictures exist (tests/io/readme_test.py).
+add_test(NAME io.readme
+         COMMAND ${FPMSHELL_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/io/readme_test.py
+                 $<TARGET_FILE:fpmshell> ${CMAKE_BINARY_DIR}/readme_test_work)
+set_tests_properties(io.readme PROPERTIES LABELS io TIMEOUT ${_timeout_300s})

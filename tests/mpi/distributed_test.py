@@ -215,6 +215,35 @@ friction_tube = os.path.join(WORK, "tube_friction.yaml")
 with open(friction_tube, "w") as f:
     f.write(rubbing)
 check("tube_friction", friction_tube, quick + ["control.end_time=1.5e-3"])
+# The self-contact's collection dealt to the ranks by chunks of 256 slaves: two layers of
+# 24 x 24 quadrilaterals pressed together (bench/whole_run/pressed_layers.yaml, small; 1 250
+# slaves in 5 chunks, in contact everywhere from the second step), with Lagrange multipliers
+# and with the penalty method, on 3 ranks.
+layers_mesh = os.path.join(WORK, "pressed_layers_mesh.k")
+with open(layers_mesh, "w") as f:
+    cells, width, gap = 24, 0.5, 1.0001e-3
+    f.write("*KEYWORD\n*NODE\n")
+    for layer in (0, 1):
+        for j in range(cells + 1):
+            for i in range(cells + 1):
+                f.write("%8d%16.9g%16.9g%16.9g\n" % (layer * (cells + 1) ** 2 + j * (cells + 1) + i + 1,
+                                                    i * width / cells, j * width / cells, layer * gap))
+    f.write("*ELEMENT_SHELL\n")
+    for layer in (0, 1):
+        for j in range(cells):
+            for i in range(cells):
+                n = layer * (cells + 1) ** 2 + j * (cells + 1) + i + 1
+                f.write("%8d%8d%8d%8d%8d%8d\n" % (layer * cells ** 2 + j * cells + i + 1, 1, n, n + 1,
+                                                  n + cells + 2, n + cells + 1))
+    f.write("*END\n")
+with open(os.path.join(ROOT, "bench/whole_run/pressed_layers.yaml")) as f:
+    layers_text = f.read()
+for method in ("lagrange", "penalty"):
+    layers = os.path.join(WORK, "pressed_layers_%s.yaml" % method)
+    with open(layers, "w") as f:
+        f.write(layers_text.replace("exclusion_radius: 1.0e-4}",
+                                    "exclusion_radius: 1.0e-4, method: %s}" % method, 1))
+    check("pressed_layers_" + method, layers, ["control.end_time=4e-5"], ranks=3)
 
 # Erosion (theory.md §7.6): a plate torn along a weak band, its elements eroding over 12 steps;
 # the last frame carries the cell field `eroded` from the ranks' pieces; its histories reduce

@@ -1,5 +1,5 @@
 // An LS-DYNA keyword deck translated into the YAML model of model-format.md: the cards fpmshell
-// can honour become model keys (README, "LS-DYNA decks"), the cards whose absence cannot change
+// can honour become model keys (docs/decks.md), the cards whose absence cannot change
 // the physics (output requests, titles) are ignored with a note, and any other card is refused
 // with its file, line and keyword. The mesh (nodes, shells, sets) stays in the deck: the model's
 // `mesh.file` names it (mesh/lsdyna_reader.hpp).

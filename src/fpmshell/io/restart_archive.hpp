@@ -1,6 +1,6 @@
-// Binary restart file of a dynamic run (README "Long runs: restart files"; LS-DYNA's d3dump,
-// OpenRadioss' RST file): the complete state of the solver and of the result writers, byte for
-// byte, so that a resumed run continues exactly (bitwise) as if it had never stopped.
+// Binary restart file of a dynamic run (docs/running.md "Long runs: restart files"; LS-DYNA's
+// d3dump, OpenRadioss' RST file): the complete state of the solver and of the result writers, byte
+// for byte, so that a resumed run continues exactly (bitwise) as if it had never stopped.
 //
 // The layout is the host's (little-endian doubles on every machine we build for): a magic word
 // and a format version, then named sections of raw values. A restart file is meant to be read
