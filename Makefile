@@ -23,7 +23,7 @@ RESULTS ?= results/spherical_cap_elastic
 .PHONY: run test validate bench fuzz sanitize tsan format picture clean deps configure build
 
 run: deps build
-	./$(BUILD)/fpmshell run $(EXAMPLE)/model.yaml -o $(RESULTS) --overwrite
+	$(BUILD)/fpmshell run $(EXAMPLE)/model.yaml -o $(RESULTS) --overwrite
 	$(PYTHON) tools/plot_history.py $(RESULTS)
 	@echo
 	@echo "Results are in $(RESULTS)/:"
@@ -42,7 +42,7 @@ validate: build
 bench: deps
 	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release -DFPMSHELL_BENCHMARKS=ON
 	cmake --build $(BUILD) -j$(JOBS)
-	./$(BUILD)/bench/fpmshell_bench
+	$(BUILD)/bench/fpmshell_bench
 
 fuzz: deps
 	FUZZ_SECONDS=$(or $(FUZZ_SECONDS),60) FUZZ_JOBS=$(JOBS) scripts/fuzz.sh
@@ -59,7 +59,7 @@ PICTURE_RUN ?= results/square_tube_picture
 picture: deps build
 	mkdir -p $(PICTURE_RUN) docs/images
 	sed 's|^  # mass_scaling:|  mass_scaling:|' examples/square_tube/model.yaml > $(PICTURE_RUN)/model.yaml
-	./$(BUILD)/fpmshell run $(PICTURE_RUN)/model.yaml -o $(PICTURE_RUN)/results --overwrite --quiet \
+	$(BUILD)/fpmshell run $(PICTURE_RUN)/model.yaml -o $(PICTURE_RUN)/results --overwrite --quiet \
 	    --set mesh.divisions_width=15 --set mesh.divisions_length=64
 	$(PYTHON) tools/render_picture.py $(PICTURE_RUN)/results docs/images/square_tube.png --mirror xy \
 	    --plot docs/images/square_tube_force.png --x striker_uz --y striker_force \

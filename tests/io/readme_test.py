@@ -12,7 +12,8 @@
   lines (comment lines aside) must hold the block as it is.
 - Every relative link of the README names a file or folder of the repository, and every image it
   shows exists (`make picture` draws them).
-`make test` itself is not run (it is what runs this), nor any other `make` line.
+`make run` runs on the build under test (its results under WORK_DIR); `make test` itself is not
+run (it is what runs this).
 """
 import os
 import re
@@ -63,7 +64,12 @@ def main():
                 if not line or line.startswith("#"):
                     continue
                 words = line.split()
-                if words[0] == "build/fpmshell":
+                if words[:2] == ["make", "test"]:
+                    continue  # what runs this test
+                if words[:2] == ["make", "run"]:  # on the build under test, results in WORK_DIR
+                    words += ["BUILD=" + os.path.dirname(fpmshell), "PYTHON=" + sys.executable,
+                              "RESULTS=" + os.path.join(results, "spherical_cap_elastic")]
+                elif words[0] == "build/fpmshell":
                     words[0] = fpmshell
                 elif words[0] == "python3":
                     words[0] = sys.executable
