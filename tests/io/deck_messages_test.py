@@ -317,6 +317,17 @@ check("a plastic section with NIP blank: two Gauss points, noted", r.returncode 
       "2 Gauss x 3 points" in r.stdout and "two Gauss points, as LS-DYNA integrates it" in r.stdout,
       r.stdout + r.stderr)
 
+# a node set, in an included file, that lists a node of no shell and no mass: left out of the
+# set with a note naming the included file and the set's line (the run goes on)
+sets = ("*KEYWORD\n*NODE\n       9             5.0             5.0             0.0\n"
+        "*SET_NODE_LIST\n         7\n         1         9\n*END\n")
+path, r = deck_case("massless set node", "*INCLUDE\nsets.k\n", files={"sets.k": sets})
+included = os.path.join(os.path.dirname(path), "sets.k")
+check("a set's node of no shell and no mass: left out, noted at the set's file and line",
+      r.returncode == 0 and f"note: {included}:{line_of(included, '         7')}: the node set "
+      "'node_set_7' lists 1 node (9) on no shell and without a point mass" in r.stdout,
+      r.stdout + r.stderr)
+
 path, r = deck_case("no termination", "", base=BASE.replace("*CONTROL_TERMINATION\n     0.001\n", ""))
 check("a deck without *CONTROL_TERMINATION is refused", r.returncode == 2 and
       "CONTROL_TERMINATION" in r.stderr, r.stderr)

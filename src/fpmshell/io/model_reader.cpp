@@ -124,6 +124,7 @@ Model read_model_tree(YamlContext& ctx, YAML::Node root, const std::string& path
             "the mesh defines a set named 'all', which is reserved for the set of every "
             "node and element; rename it in the mesh file");
     if (const auto s = top.find("sets")) add_user_sets(*s, mesh);
+    model.notes.insert(model.notes.end(), mesh.notes.begin(), mesh.notes.end());
     model.nodes = std::move(mesh.nodes);
     model.triangles = std::move(mesh.triangles);
     model.node_sets = std::move(mesh.node_sets);

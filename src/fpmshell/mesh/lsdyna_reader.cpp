@@ -233,6 +233,7 @@ private:
                 const std::string part = "part_" + std::to_string(pid);
                 raw_.element_sets[part].push_back(e);
                 raw_.set_lines.try_emplace(part, number);
+                raw_.set_files.try_emplace(part, raw_.path);
                 return;
             }
             case Block::Solid:
@@ -274,6 +275,7 @@ private:
                     (void)sets[set_];
                     if (nodes) node_set_names_[sid] = set_;
                     raw_.set_lines.try_emplace(set_, number);
+                    raw_.set_files.try_emplace(set_, raw_.path);
                     return;
                 }
                 auto& members = block_ == Block::NodeSet    ? raw_.node_sets[set_]

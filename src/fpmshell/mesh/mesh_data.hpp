@@ -29,6 +29,9 @@ struct MeshData {
     /// outer face, no shell), increasing. A set that names one means the rigid body of its solids,
     /// which its outer faces' particles carry: the member is left out.
     std::vector<std::int64_t> inner_node_tag;
+    /// For mesh files: what the reader left out, one sentence each ("FILE:LINE: ..."), which the
+    /// model reader passes on to Model::notes.
+    std::vector<std::string> notes;
 };
 
 }  // namespace fpmshell

@@ -106,6 +106,13 @@ void RawMesh::fail(int line, const std::string& message) const {
     throw InputError(input_error_text(path, line, "", message));
 }
 
+std::pair<std::string, int> RawMesh::set_place(const std::string& name) const {
+    const auto file = set_files.find(name);
+    const auto line = set_lines.find(name);
+    return {file == set_files.end() ? path : file->second,
+            line == set_lines.end() ? 0 : line->second};
+}
+
 void RawMesh::add_generated(long long count, int line) {
     if (count > static_cast<long long>(file_bytes) - generated)
         fail(line, "the GENERATE ranges list more ids (" + std::to_string(generated + count) +
@@ -188,20 +195,41 @@ MeshData finish_raw_mesh(const RawMesh& raw) {
     }
     first_triangle.push_back(static_cast<Index>(mesh.triangles.size()));
 
-    auto add_nodes = [&](const std::string& name, const std::vector<long long>& ids) {
+    // A set's node that no shell uses and no point mass is on is not a particle: it is left out
+    // of the set (noted: LS-DYNA keeps it as a node of no mass, which moves nothing here).
+    auto add_nodes = [&](const std::string& name, const std::vector<long long>& ids,
+                         std::vector<long long>* left_out) {
         auto& set = mesh.node_sets[name];
         for (const long long id : ids) {
             const auto it = index_of.find(id);
-            if (it != index_of.end()) set.push_back(it->second);
+            if (it != index_of.end())
+                set.push_back(it->second);
+            else if (left_out)
+                left_out->push_back(id);
         }
     };
     for (const auto& [name, ids] : raw.node_sets) {
+        const auto [file, line] = raw.set_place(name);
         for (const long long id : ids)
             if (raw.nodes.count(id) == 0)
-                raw.fail(raw.set_lines.count(name) ? raw.set_lines.at(name) : 0,
-                         "the node set '" + name + "' lists node " + std::to_string(id) +
-                             ", which the file does not define");
-        add_nodes(name, ids);
+                throw InputError(input_error_text(file, line, "",
+                                                  "the node set '" + name + "' lists node " +
+                                                      std::to_string(id) +
+                                                      ", which the file does not define"));
+        std::vector<long long> left_out;
+        add_nodes(name, ids, &left_out);
+        std::sort(left_out.begin(), left_out.end());
+        left_out.erase(std::unique(left_out.begin(), left_out.end()), left_out.end());
+        if (left_out.empty()) continue;
+        std::string listed;
+        for (std::size_t k = 0; k < left_out.size() && k < 5; ++k)
+            listed += (k ? ", " : "") + std::to_string(left_out[k]);
+        if (left_out.size() > 5) listed += ", ...";
+        mesh.notes.push_back(file + ":" + std::to_string(line) + ": the node set '" + name +
+                             "' lists " + std::to_string(left_out.size()) + " node" +
+                             (left_out.size() > 1 ? "s" : "") + " (" + listed +
+                             ") on no shell and without a point mass: left out of the set (a "
+                             "node of no mass moves nothing; give it *ELEMENT_MASS to keep it)");
     }
     for (const auto& [name, ids] : raw.element_sets) {
         auto& elements = mesh.element_sets[name];
@@ -216,12 +244,14 @@ MeshData finish_raw_mesh(const RawMesh& raw) {
                        other != raw.other_elements.end()) {
                 nodes.insert(nodes.end(), other->second.begin(), other->second.end());
             } else {
-                raw.fail(raw.set_lines.count(name) ? raw.set_lines.at(name) : 0,
-                         "the element set '" + name + "' lists element " + std::to_string(id) +
-                             ", which the file does not define");
+                const auto [file, line] = raw.set_place(name);
+                throw InputError(input_error_text(file, line, "",
+                                                  "the element set '" + name + "' lists element " +
+                                                      std::to_string(id) +
+                                                      ", which the file does not define"));
             }
         }
-        add_nodes(name, nodes);
+        add_nodes(name, nodes, nullptr);
     }
     for (auto* sets : {&mesh.node_sets, &mesh.element_sets}) {
         for (auto it = sets->begin(); it != sets->end();) {

@@ -6,6 +6,7 @@
 #include <map>
 #include <string>
 #include <unordered_map>
+#include <utility>
 #include <vector>
 
 #include "fpmshell/core/types.hpp"
@@ -33,6 +34,8 @@ struct RawMesh {
     std::map<std::string, std::vector<long long>> node_sets;               ///< name -> node ids
     std::map<std::string, std::vector<long long>> element_sets;            ///< name -> element ids
     std::map<std::string, int> set_lines;                                  ///< name -> first line
+    /// name -> the file of that line, where a set may stand in an included file (else `path`)
+    std::map<std::string, std::string> set_files;
     /// nodes that carry a point mass (LS-DYNA's *ELEMENT_MASS): particles whether or not a
     /// shell uses them
     std::vector<long long> mass_nodes;
@@ -50,6 +53,8 @@ struct RawMesh {
     void add_generated(long long count, int line);
     /// Throws InputError "PATH:LINE: message".
     [[noreturn]] void fail(int line, const std::string& message) const;
+    /// The file and first line of set `name`, for messages.
+    [[nodiscard]] std::pair<std::string, int> set_place(const std::string& name) const;
 };
 
 /// Compacts the raw mesh: nodes used by shells, renumbered 0..n-1 in increasing id order;
