@@ -22,34 +22,14 @@ import os
 import re
 import shutil
 import subprocess
+import sys
 import tempfile
 
 HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, HERE)
+from layers_mesh import write_layers_mesh  # noqa: E402
 ROOT = os.path.dirname(os.path.dirname(HERE))
 CELLS, WIDTH, GAP = 500, 0.5, 1.0001e-3  # per layer and side; the layers' mid-surfaces apart
-
-
-def write_mesh(path):
-    """Two layers of CELLS x CELLS quadrilaterals (*NODE, *ELEMENT_SHELL), the top one GAP
-    above the bottom one."""
-    h = WIDTH / CELLS
-    with open(path, "w") as f:
-        f.write("*KEYWORD\n*NODE\n")
-        nid = 0
-        for layer in (0, 1):
-            for j in range(CELLS + 1):
-                for i in range(CELLS + 1):
-                    nid += 1
-                    f.write("%8d%16.9g%16.9g%16.9g\n" % (nid, i * h, j * h, layer * GAP))
-        f.write("*ELEMENT_SHELL\n")
-        eid, per = 0, (CELLS + 1) ** 2
-        for layer in (0, 1):
-            for j in range(CELLS):
-                for i in range(CELLS):
-                    eid += 1
-                    n = layer * per + j * (CELLS + 1) + i + 1
-                    f.write("%8d%8d%8d%8d%8d%8d\n" % (eid, 1, n, n + 1, n + CELLS + 2, n + CELLS + 1))
-        f.write("*END\n")
 
 
 ap = argparse.ArgumentParser()
@@ -63,7 +43,7 @@ env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIR
 work = tempfile.mkdtemp(prefix="fpmshell-crash-scaling-")
 model = os.path.join(work, "pressed_layers.yaml")
 shutil.copy(os.path.join(HERE, "pressed_layers.yaml"), model)
-write_mesh(os.path.join(work, "pressed_layers_mesh.k"))
+write_layers_mesh(os.path.join(work, "pressed_layers_mesh.k"), CELLS, WIDTH, GAP)
 
 
 def run(ranks, end):

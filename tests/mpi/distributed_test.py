@@ -219,23 +219,9 @@ check("tube_friction", friction_tube, quick + ["control.end_time=1.5e-3"])
 # 24 x 24 quadrilaterals pressed together (bench/whole_run/pressed_layers.yaml, small; 1 250
 # slaves in 5 chunks, in contact everywhere from the second step), with Lagrange multipliers
 # and with the penalty method, on 3 ranks.
-layers_mesh = os.path.join(WORK, "pressed_layers_mesh.k")
-with open(layers_mesh, "w") as f:
-    cells, width, gap = 24, 0.5, 1.0001e-3
-    f.write("*KEYWORD\n*NODE\n")
-    for layer in (0, 1):
-        for j in range(cells + 1):
-            for i in range(cells + 1):
-                f.write("%8d%16.9g%16.9g%16.9g\n" % (layer * (cells + 1) ** 2 + j * (cells + 1) + i + 1,
-                                                    i * width / cells, j * width / cells, layer * gap))
-    f.write("*ELEMENT_SHELL\n")
-    for layer in (0, 1):
-        for j in range(cells):
-            for i in range(cells):
-                n = layer * (cells + 1) ** 2 + j * (cells + 1) + i + 1
-                f.write("%8d%8d%8d%8d%8d%8d\n" % (layer * cells ** 2 + j * cells + i + 1, 1, n, n + 1,
-                                                  n + cells + 2, n + cells + 1))
-    f.write("*END\n")
+sys.path.insert(0, os.path.join(ROOT, "bench", "whole_run"))
+from layers_mesh import write_layers_mesh  # noqa: E402
+write_layers_mesh(os.path.join(WORK, "pressed_layers_mesh.k"), 24, 0.5, 1.0001e-3)
 with open(os.path.join(ROOT, "bench/whole_run/pressed_layers.yaml")) as f:
     layers_text = f.read()
 for method in ("lagrange", "penalty"):

@@ -113,6 +113,11 @@ std::pair<std::string, int> RawMesh::set_place(const std::string& name) const {
             line == set_lines.end() ? 0 : line->second};
 }
 
+void RawMesh::fail_in_set(const std::string& name, const std::string& message) const {
+    const auto [file, line] = set_place(name);
+    throw InputError(input_error_text(file, line, "", message));
+}
+
 void RawMesh::add_generated(long long count, int line) {
     if (count > static_cast<long long>(file_bytes) - generated)
         fail(line, "the GENERATE ranges list more ids (" + std::to_string(generated + count) +
@@ -209,18 +214,16 @@ MeshData finish_raw_mesh(const RawMesh& raw) {
         }
     };
     for (const auto& [name, ids] : raw.node_sets) {
-        const auto [file, line] = raw.set_place(name);
         for (const long long id : ids)
             if (raw.nodes.count(id) == 0)
-                throw InputError(input_error_text(file, line, "",
-                                                  "the node set '" + name + "' lists node " +
-                                                      std::to_string(id) +
-                                                      ", which the file does not define"));
+                raw.fail_in_set(name, "the node set '" + name + "' lists node " +
+                                          std::to_string(id) + ", which the file does not define");
         std::vector<long long> left_out;
         add_nodes(name, ids, &left_out);
         std::sort(left_out.begin(), left_out.end());
         left_out.erase(std::unique(left_out.begin(), left_out.end()), left_out.end());
         if (left_out.empty()) continue;
+        const auto [file, line] = raw.set_place(name);
         std::string listed;
         for (std::size_t k = 0; k < left_out.size() && k < 5; ++k)
             listed += (k ? ", " : "") + std::to_string(left_out[k]);
@@ -244,11 +247,8 @@ MeshData finish_raw_mesh(const RawMesh& raw) {
                        other != raw.other_elements.end()) {
                 nodes.insert(nodes.end(), other->second.begin(), other->second.end());
             } else {
-                const auto [file, line] = raw.set_place(name);
-                throw InputError(input_error_text(file, line, "",
-                                                  "the element set '" + name + "' lists element " +
-                                                      std::to_string(id) +
-                                                      ", which the file does not define"));
+                raw.fail_in_set(name, "the element set '" + name + "' lists element " +
+                                          std::to_string(id) + ", which the file does not define");
             }
         }
         add_nodes(name, nodes, nullptr);

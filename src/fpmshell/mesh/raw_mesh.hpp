@@ -55,6 +55,8 @@ struct RawMesh {
     [[noreturn]] void fail(int line, const std::string& message) const;
     /// The file and first line of set `name`, for messages.
     [[nodiscard]] std::pair<std::string, int> set_place(const std::string& name) const;
+    /// fail() at the place of set `name`.
+    [[noreturn]] void fail_in_set(const std::string& name, const std::string& message) const;
 };
 
 /// Compacts the raw mesh: nodes used by shells, renumbered 0..n-1 in increasing id order;
