@@ -1,6 +1,7 @@
 #include "fpmshell/solver/element_group.hpp"
 
 #include <cmath>
+#include <limits>
 
 #include "fpmshell/materials/material_law.hpp"
 
@@ -41,18 +42,37 @@ ElementGroup::ElementGroup(const Model& model, std::size_t section, const Mat3& 
     block_constants_.bending = rule_.bending;
 }
 
-void ElementGroup::allocate(std::size_t n_blocks, std::size_t n_alone) {
+namespace {
+
+/// Where each of n places is kept: the i-th of `here` at i; empty where every place is (here
+/// null).
+std::vector<std::size_t> stores(std::size_t n, const std::vector<std::size_t>* here) {
+    if (!here) return {};
+    // a place not kept: past every kept one (its state is never read)
+    std::vector<std::size_t> at(n, std::numeric_limits<std::size_t>::max());
+    for (std::size_t i = 0; i < here->size(); ++i) at[(*here)[i]] = i;
+    return at;
+}
+
+}  // namespace
+
+void ElementGroup::allocate(std::size_t n_blocks, std::size_t n_alone,
+                            const std::vector<std::size_t>* blocks_here,
+                            const std::vector<std::size_t>* alone_here) {
     const std::size_t n = n_points();
-    n_blocks_ = n_blocks;
-    block_state_.assign(n_blocks * block_size(), RealPack(0.0));
-    alone_state_.assign(n_alone * n * point_fields_, 0.0);
+    block_store_ = stores(n_blocks, blocks_here);
+    alone_store_ = stores(n_alone, alone_here);
+    const std::size_t kept_blocks = blocks_here ? blocks_here->size() : n_blocks;
+    const std::size_t kept_alone = alone_here ? alone_here->size() : n_alone;
+    block_state_.assign(kept_blocks * block_size(), RealPack(0.0));
+    alone_state_.assign(kept_alone * n * point_fields_, 0.0);
     for (std::size_t k = 0; k < point_fields_; ++k) {
         const Real v = initial_field(k);
         if (v == 0) continue;
-        for (std::size_t b = 0; b < n_blocks; ++b)
+        for (std::size_t b = 0; b < kept_blocks; ++b)
             for (std::size_t p = 0; p < n; ++p)
                 block_state_[b * block_size() + k * n + p] = RealPack(v);
-        for (std::size_t e = 0; e < n_alone; ++e)
+        for (std::size_t e = 0; e < kept_alone; ++e)
             for (std::size_t p = 0; p < n; ++p) alone_state_[(e * n + p) * point_fields_ + k] = v;
     }
 }

@@ -68,8 +68,17 @@ public:
     [[nodiscard]] virtual bool stress_only() const = 0;
 
     /// Makes the state of n_blocks blocks and n_alone elements computed alone, at its
-    /// initial values.
-    void allocate(std::size_t n_blocks, std::size_t n_alone);
+    /// initial values; with `blocks_here`, `alone_here` (ascending, of the group's) that of
+    /// those alone (a rank of a distributed run keeps the state of the units it computes:
+    /// the others' places must not be read).
+    void allocate(std::size_t n_blocks, std::size_t n_alone,
+                  const std::vector<std::size_t>* blocks_here = nullptr,
+                  const std::vector<std::size_t>* alone_here = nullptr);
+
+    /// The numbers of state kept (of the points of the blocks and elements allocated).
+    [[nodiscard]] std::size_t kept_numbers() const {
+        return block_state_.size() * static_cast<std::size_t>(k_lanes) + alone_state_.size();
+    }
 
     /// The loads of the k_lanes elements of the group's block b (lanes outside the block
     /// kernel's bounds are reported in `valid`, their state left as it was); fading: of the
@@ -113,30 +122,31 @@ protected:
     /// Field k of point p of the element at `place`.
     [[nodiscard]] Real field(GroupPlace place, std::size_t p, std::size_t k) const {
         const std::size_t n = n_points();
-        if (!place.in_block) return alone_state_[(place.index * n + p) * point_fields_ + k];
+        if (!place.in_block)
+            return alone_state_[(stored_alone(place.index) * n + p) * point_fields_ + k];
         const auto w = static_cast<std::size_t>(k_lanes);
-        return lane(block_state_[place.index / w * block_size() + k * n + p],
+        return lane(block_state_const(place.index / w)[k * n + p],
                     static_cast<int>(place.index % w));
     }
     void set_field(GroupPlace place, std::size_t p, std::size_t k, Real v) {
         const std::size_t n = n_points();
         if (!place.in_block) {
-            alone_state_[(place.index * n + p) * point_fields_ + k] = v;
+            alone_state_[(stored_alone(place.index) * n + p) * point_fields_ + k] = v;
             return;
         }
         const auto w = static_cast<std::size_t>(k_lanes);
-        set_lane(block_state_[place.index / w * block_size() + k * n + p],
-                 static_cast<int>(place.index % w), v);
+        set_lane(block_state(place.index / w)[k * n + p], static_cast<int>(place.index % w), v);
     }
-    /// The state of the group's block b and of the next one (nullptr: b is the last).
+    /// The state of the group's block b and of the next one kept (nullptr: b is the last).
     [[nodiscard]] RealPack* block_state(std::size_t b) {
-        return block_state_.data() + b * block_size();
+        return block_state_.data() + stored_block(b) * block_size();
     }
     [[nodiscard]] const RealPack* block_state_const(std::size_t b) const {
-        return block_state_.data() + b * block_size();
+        return block_state_.data() + stored_block(b) * block_size();
     }
     [[nodiscard]] const RealPack* next_block_state(std::size_t b) const {
-        return b + 1 < n_blocks_ ? block_state_.data() + (b + 1) * block_size() : nullptr;
+        const std::size_t next = (stored_block(b) + 1) * block_size();
+        return next < block_state_.size() ? block_state_.data() + next : nullptr;
     }
 
     ShellRule rule_;
@@ -147,13 +157,22 @@ protected:
 
 private:
     [[nodiscard]] std::size_t block_size() const { return point_fields_ * n_points(); }
+    /// Where the state of the group's block b, and of its element computed alone a, is kept.
+    [[nodiscard]] std::size_t stored_block(std::size_t b) const {
+        return block_store_.empty() ? b : block_store_[b];
+    }
+    [[nodiscard]] std::size_t stored_alone(std::size_t a) const {
+        return alone_store_.empty() ? a : alone_store_[a];
+    }
 
     Real wave_speed_ = 0;
     Mat3 bending_rigidity_ = Mat3::Zero();
     ElasticSectionConstants block_constants_;
-    std::size_t n_blocks_ = 0;
-    std::vector<RealPack> block_state_;  ///< [block][field][point]
-    std::vector<Real> alone_state_;      ///< [element alone][point][field]
+    std::vector<RealPack> block_state_;  ///< [block kept][field][point]
+    std::vector<Real> alone_state_;      ///< [element alone kept][point][field]
+    /// per block, and per element alone, of the group: where its state is kept (empty: all
+    /// kept, in order); the largest size_t where this rank does not compute it
+    std::vector<std::size_t> block_store_, alone_store_;
 };
 
 /// Whether Material has a block path.

@@ -24,7 +24,7 @@ constexpr Index k_parallel_min_particles = 2000;
 ExplicitSolver::ExplicitSolver(const Model& model)
     : model_(model),
       topology_(model),
-      elements_(model, topology_),
+      elements_(model, topology_, make_element_group, false),  // each rank's state alone
       ranks_(model, topology_, elements_),
       nodal_rigid_bodies_(model) {
     const std::size_t np = model.nodes.size();

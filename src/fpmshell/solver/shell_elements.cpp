@@ -67,7 +67,7 @@ ElementBlocks element_units(const Model& model, const ElementGroupFactory& make_
 }
 
 ShellElements::ShellElements(const Model& model, const MeshTopology& topology,
-                             const ElementGroupFactory& make_group)
+                             const ElementGroupFactory& make_group, bool state_now)
     : tri_(model.triangles),
       section_(model.element_section),
       topology_(&topology),
@@ -87,24 +87,10 @@ ShellElements::ShellElements(const Model& model, const MeshTopology& topology,
         cst_strain_.assign(ne, Voigt3::Zero());
     }
     const ElementBlocks& blocks = assembly_.blocks();
-    for (std::size_t g = 0; g < groups_.size(); ++g)
-        groups_[g]->allocate(
-            static_cast<std::size_t>(blocks.group_first_block[g + 1] - blocks.group_first_block[g]),
-            static_cast<std::size_t>(blocks.group_first_alone[g + 1] -
-                                     blocks.group_first_alone[g]));
-    membrane_force_.assign(ne, Voigt3::Zero());
-    bending_moment_.assign(ne, Voigt3::Zero());
-    block_totals_.assign(static_cast<std::size_t>(blocks.n_blocks()), ElementTotals{});
+    if (state_now) allocate_state();
+    membrane_force_.assign(static_cast<std::size_t>(blocks.n_alone()), Voigt3::Zero());
+    bending_moment_.assign(static_cast<std::size_t>(blocks.n_alone()), Voigt3::Zero());
     alone_totals_.assign(static_cast<std::size_t>(blocks.n_alone()), ElementTotals{});
-    block_resultants_.assign(6 * block_totals_.size(), RealPack(0.0));
-    // eq. 6.4-2: the blocks' initial volumes as whole packs (a pack filled lane by lane through
-    // memory every step stalled the block: 6 % of the elastic kernel)
-    block_initial_volume_.reserve(block_totals_.size());
-    for (Index b = 0; b < blocks.n_blocks(); ++b)
-        block_initial_volume_.emplace_back([&](auto l) {
-            return time_steps_.initial_volume(static_cast<std::size_t>(
-                blocks.block_elements[static_cast<std::size_t>(b * k_lanes + Index{l})]));
-        });
     assembly_.plan(gather_ranges());
 }
 
@@ -353,25 +339,29 @@ void ShellElements::ElementTotals::add(const ElementTotals& o) {
 
 Voigt3 ShellElements::resultant(std::size_t e, std::size_t first) const {
     const Index at = assembly_.blocks().block_lane[e];
-    if (at < 0) return first == 0 ? membrane_force_[e] : bending_moment_[e];
+    if (at < 0) {
+        const auto a = static_cast<std::size_t>(assembly_.blocks().alone_position[e]);
+        return first == 0 ? membrane_force_[a] : bending_moment_[a];
+    }
     const auto b = static_cast<std::size_t>(at) / static_cast<std::size_t>(k_lanes);
     const int l =
         static_cast<int>(static_cast<std::size_t>(at) % static_cast<std::size_t>(k_lanes));
-    const RealPack* r = block_resultants_.data() + 6 * b + first;
+    const RealPack* r = block_resultants_.data() + 6 * kept_block(b) + first;
     return Voigt3(lane(r[0], l), lane(r[1], l), lane(r[2], l));
 }
 
 void ShellElements::set_resultants(std::size_t e, const Voigt3& n, const Voigt3& m) {
     const Index at = assembly_.blocks().block_lane[e];
     if (at < 0) {
-        membrane_force_[e] = n;
-        bending_moment_[e] = m;
+        const auto a = static_cast<std::size_t>(assembly_.blocks().alone_position[e]);
+        membrane_force_[a] = n;
+        bending_moment_[a] = m;
         return;
     }
     const auto b = static_cast<std::size_t>(at) / static_cast<std::size_t>(k_lanes);
     const int l =
         static_cast<int>(static_cast<std::size_t>(at) % static_cast<std::size_t>(k_lanes));
-    RealPack* r = block_resultants_.data() + 6 * b;
+    RealPack* r = block_resultants_.data() + 6 * kept_block(b);
     for (Eigen::Index c = 0; c < 3; ++c) {
         set_lane(r[c], l, n(c));
         set_lane(r[3 + c], l, m(c));
@@ -432,7 +422,7 @@ void ShellElements::compute_block(Index b, ParticleState& s, Real viscous_rate, 
     if (!ring_slots || assembly_.plan().keep[static_cast<std::size_t>(b)]) store(full_slots);
     if (ring_slots) store(ring_slots);
     // N and M, whole packs (an invalid lane's are rewritten below by the general code)
-    RealPack* resultants = block_resultants_.data() + 6 * static_cast<std::size_t>(b);
+    RealPack* resultants = block_resultants_.data() + 6 * kept_block(static_cast<std::size_t>(b));
     for (std::size_t r = 0; r < 3; ++r) {
         resultants[r] = loads.membrane_force[r];
         resultants[3 + r] = loads.bending_moment[r];
@@ -440,7 +430,7 @@ void ShellElements::compute_block(Index b, ParticleState& s, Real viscous_rate, 
     // eq. 6.4-2 for the whole block at once, with the thickness of the step's start (as
     // compute_element): a division and a square root only where a lane's volume has grown
     const RealPack volume = loads.current_area * thickness;
-    const RealPack& initial_volume = block_initial_volume_[static_cast<std::size_t>(b)];
+    const RealPack& initial_volume = block_initial_volume_[kept_block(static_cast<std::size_t>(b))];
     const RealPack volume_factor = any_lane(volume > initial_volume)
                                        ? ElementTimeSteps::volume_factor(initial_volume, volume)
                                        : RealPack(1.0);
@@ -497,7 +487,7 @@ void ShellElements::compute_block(Index b, ParticleState& s, Real viscous_rate, 
         }
         totals.add(t);
     }
-    block_totals_[static_cast<std::size_t>(b)] = totals;
+    block_totals_[kept_block(static_cast<std::size_t>(b))] = totals;
 }
 
 ShellElements::StepTotals ShellElements::compute(ParticleState& s, Real viscous_rate, Real dt) {
@@ -590,62 +580,6 @@ ShellElements::StepTotals ShellElements::compute(ParticleState& s, Real viscous_
     return step_totals();
 }
 
-void ShellElements::set_decomposition(const DomainDecomposition* d) {
-    decomposition_ = d;
-    if (!d || !d->distributed()) return;
-    // The ring loop computes the interior blocks: not another rank's, nor those computed first
-    // (at the shared particles). A particle of those sums after the loop from the full array
-    // (a shared one also receives its other ranks' slots there), one this rank does not hold
-    // not at all.
-    const ElementBlocks& blocks = assembly_.blocks();
-    not_in_ring_loop_.assign(static_cast<std::size_t>(blocks.n_blocks()), 0);
-    for (Index b = 0; b < blocks.n_blocks(); ++b)
-        not_in_ring_loop_[static_cast<std::size_t>(b)] = !d->own_unit[static_cast<std::size_t>(b)];
-    std::vector<GatherMode> mode(d->held.size(), GatherMode::Any);
-    for (const Index b : d->boundary_blocks) {
-        not_in_ring_loop_[static_cast<std::size_t>(b)] = 1;
-        for (Index l = 0; l < k_lanes; ++l)
-            for (const Index p : tri_[static_cast<std::size_t>(
-                     blocks.block_elements[static_cast<std::size_t>(b * k_lanes + l)])])
-                mode[static_cast<std::size_t>(p)] = GatherMode::After;
-    }
-    for (std::size_t p = 0; p < mode.size(); ++p) {
-        if (!d->held[p]) mode[p] = GatherMode::Skip;
-        if (d->shared[p]) mode[p] = GatherMode::After;
-    }
-    assembly_.set_gather_modes(std::move(mode));
-}
-
-Communicator::Pending ShellElements::start_slot_exchange() {
-    const DomainDecomposition& d = *decomposition_;
-    constexpr auto w = static_cast<std::size_t>(k_lanes);
-    constexpr std::size_t nc = CornerAssembly::k_components;
-    const std::size_t n_peers = d.slot_peers.size();
-    slot_send_.resize(n_peers);
-    slot_recv_.resize(n_peers);
-    const Real* slots = assembly_.slots();
-    for (std::size_t k = 0; k < n_peers; ++k) {
-        std::vector<Real>& out = slot_send_[k];
-        out.resize(nc * d.slot_send[k].size());
-        for (std::size_t i = 0; i < d.slot_send[k].size(); ++i)
-            for (std::size_t c = 0; c < nc; ++c) out[nc * i + c] = slots[d.slot_send[k][i] + c * w];
-        slot_recv_[k].resize(nc * d.slot_recv[k].size());
-    }
-    return Communicator::world().start_exchange(d.slot_peers, slot_send_, slot_recv_);
-}
-
-void ShellElements::finish_slot_exchange(Communicator::Pending& pending) {
-    const DomainDecomposition& d = *decomposition_;
-    constexpr auto w = static_cast<std::size_t>(k_lanes);
-    constexpr std::size_t nc = CornerAssembly::k_components;
-    Real* slots = assembly_.slots();
-    Communicator::world().wait(pending);
-    for (std::size_t k = 0; k < d.slot_peers.size(); ++k)
-        for (std::size_t i = 0; i < d.slot_recv[k].size(); ++i)
-            for (std::size_t c = 0; c < nc; ++c)
-                slots[d.slot_recv[k][i] + c * w] = slot_recv_[k][nc * i + c];
-}
-
 // Totals atom by atom (DomainDecomposition: k_atom_units consecutive units, summed in unit
 // order), the atoms' works added exactly, then over the ranks: the same bits for any number
 // of threads and ranks.
@@ -662,7 +596,7 @@ ShellElements::StepTotals ShellElements::step_totals() {
         if (a * k_atom_units >= n_units) continue;  // the atom of the particles of no element
         ElementTotals t;
         for (Index u = a * k_atom_units; u < std::min(n_units, (a + 1) * k_atom_units); ++u)
-            t.add(u < n_blocks ? block_totals_[static_cast<std::size_t>(u)]
+            t.add(u < n_blocks ? block_totals_[kept_block(static_cast<std::size_t>(u))]
                                : alone_totals_[static_cast<std::size_t>(u - n_blocks)]);
         works[0].add(t.strain_work);
         works[1].add(t.damping_work);

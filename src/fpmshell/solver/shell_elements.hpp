@@ -35,8 +35,11 @@ class ShellElements {
 public:
     /// topology: the model's (side neighbours, element masses); it must outlive this.
     /// make_group: the group of each section (make_element_group: the model's materials).
+    /// state_now: the state of every element's points made now; without it set_decomposition
+    /// makes that of the elements this rank computes (a distributed run's memory).
     ShellElements(const Model& model, const MeshTopology& topology,
-                  const ElementGroupFactory& make_group = make_element_group);
+                  const ElementGroupFactory& make_group = make_element_group,
+                  bool state_now = true);
 
     struct StepTotals {
         Real strain_work = 0;   ///< sum of element strain work over the step
@@ -113,8 +116,14 @@ public:
     void load(RestartReader& in);
 
     /// A distributed run: compute only the units of `d` (null: all), receive the other ranks'
-    /// slots at the shared particles, sum only the held particles. d must outlive this.
+    /// slots at the shared particles, sum only the held particles; keep the state of those
+    /// units alone where it was not made at construction. d must outlive this.
     void set_decomposition(const DomainDecomposition* d);
+    /// Whether this rank computes element e (every element on one rank).
+    [[nodiscard]] bool computes(Index e) const;
+    /// The numbers this rank keeps of the state of the points and of the failure criteria
+    /// (its memory's largest per-element part on plastic models).
+    [[nodiscard]] std::size_t kept_state_numbers() const;
     /// The elements this rank computes (its units of the element loop, blocks then those
     /// alone; every element on one rank).
     [[nodiscard]] std::vector<Index> computed_elements() const;
@@ -168,6 +177,19 @@ private:
                              const Voigt3& n);
     /// §7.6: the erosion rule of each section, and the per-element state where one can fail.
     void init_erosion(const Model& model);
+    /// The state of the points and of the failure criteria (§7.6) of the units this rank
+    /// computes (all without a decomposition), at its initial values.
+    void allocate_state();
+    void allocate_failure_state();
+    /// Where the arrays per block (totals, resultants, initial volumes, element sizes) keep
+    /// block b: the blocks this rank computes, in order.
+    [[nodiscard]] std::size_t kept_block(std::size_t b) const {
+        return block_store_.empty() ? b : block_store_[b];
+    }
+    /// Whether this rank computes unit u (blocks, then the elements computed alone).
+    [[nodiscard]] bool computes_unit(std::size_t u) const {
+        return !decomposition_ || !decomposition_->distributed() || decomposition_->own_unit[u];
+    }
     /// §7.6 after element e's step (of duration dt) of strain work `work`: adds the work to
     /// the element's, brings its failure criteria up to the step, and erodes it where its
     /// section's rule says so (booked in t), keeping its corner loads (per corner: force x y z,
@@ -198,7 +220,7 @@ private:
     /// e, and how many it has (0 where none is kept).
     [[nodiscard]] Real& failure_number(std::size_t e, std::size_t i);
     [[nodiscard]] std::size_t failure_numbers(std::size_t e) const {
-        if (failure_state_.empty()) return 0;
+        if (!keeps_failure_state_) return 0;
         const ElementErosion& rule = erosion_[static_cast<std::size_t>(section_[e])];
         return rule.fields() * rule.n_points();
     }
@@ -246,23 +268,29 @@ private:
     /// failure_state_at_[e] of its elements on, an element computed alone's from its own;
     /// empty where no criterion keeps any
     std::vector<RealPack> failure_state_;
+    bool keeps_failure_state_ = false;           ///< some criterion keeps a state per point
+    bool state_made_ = false;                    ///< allocate_state has run
     Real time_ = 0;                              ///< t_n of the step computed (set_time)
     std::vector<std::size_t> failure_state_at_;  ///< per element
     std::vector<Real> element_size_;  ///< per element, sqrt(2 A_0) (where some material can fail)
-    std::vector<RealPack> block_element_size_;  ///< the same per block, a lane per element
+    std::vector<RealPack> block_element_size_;  ///< the same per block kept, a lane per element
     bool thickness_update_ = false;
     bool smoothed_membrane_ = false;          ///< control.membrane: smoothed
     std::vector<ReversedTriangle> reversed_;  ///< smoothed: per element, this step's path element
     std::vector<Voigt3> cst_strain_;  ///< smoothed: per element, this step's CST strain increment
-    std::vector<ElementTotals> block_totals_;  ///< per block
+    /// per block: where its arrays below keep it (empty: every block, in order; the largest
+    /// size_t: a block another rank computes)
+    std::vector<std::size_t> block_store_;
+    std::vector<ElementTotals> block_totals_;  ///< per block kept (kept_block)
     std::vector<ElementTotals>
         alone_totals_;  ///< per element computed alone (alone_elements order)
     /// N and M of the elements of the blocks, 6 packs per block (N then M, component by
     /// component); those of the elements computed alone in membrane_force_, bending_moment_.
     std::vector<RealPack> block_resultants_;
-    std::vector<RealPack> block_initial_volume_;  ///< per block, A_0 h_0 of its lanes (eq. 6.4-2)
+    std::vector<RealPack>
+        block_initial_volume_;  ///< per block kept, A_0 h_0 of its lanes (eq. 6.4-2)
     std::vector<Voigt3> membrane_force_,
-        bending_moment_;  ///< per element computed alone (others: zero)
+        bending_moment_;  ///< per element computed alone (ElementBlocks::alone_elements order)
     const DomainDecomposition* decomposition_ = nullptr;
     std::vector<std::uint8_t> not_in_ring_loop_;  ///< distributed: per block, skipped there
     std::vector<std::vector<Real>> slot_send_, slot_recv_;  ///< exchange_slots buffers

@@ -1,6 +1,7 @@
 // Erosion in the element loop (theory.md §7.6): which elements have eroded, the booking of
 // their work, and the check after each element's step.
 #include <cmath>
+#include <limits>
 
 #include "fpmshell/solver/shell_elements.hpp"
 
@@ -32,30 +33,29 @@ void ShellElements::init_erosion(const Model& model) {
                            .cross(model.nodes[static_cast<std::size_t>(t[2])] - a);
         element_size_[e] = std::sqrt(n.norm());
     }
-    const ElementBlocks& block_list = assembly_.blocks();
-    block_element_size_.assign(block_list.block_group.size(), RealPack(0.0));
-    for (std::size_t b = 0; b < block_element_size_.size(); ++b)
-        for (int l = 0; l < k_lanes; ++l)
-            set_lane(block_element_size_[b], l,
-                     element_size_[static_cast<std::size_t>(
-                         block_list.block_elements[b * static_cast<std::size_t>(k_lanes) +
-                                                   static_cast<std::size_t>(l)])]);
-    if (!has_state) return;
-    // the blocks' state first, block by block, then the elements computed alone
+    keeps_failure_state_ = has_state;
+}
+
+void ShellElements::allocate_failure_state() {
+    if (!keeps_failure_state_) return;
+    // the blocks' state first, block by block, then the elements computed alone: of the units
+    // this rank computes (the others' elements are never judged here)
     const ElementBlocks& blocks = assembly_.blocks();
-    failure_state_at_.assign(ne, 0);
+    failure_state_at_.assign(tri_.size(), std::numeric_limits<std::size_t>::max());
     std::size_t packs = 0;
     for (std::size_t b = 0; b < blocks.block_group.size(); ++b) {
+        if (!computes_unit(b)) continue;
         for (int l = 0; l < k_lanes; ++l)
             failure_state_at_[static_cast<std::size_t>(
                 blocks.block_elements[b * static_cast<std::size_t>(k_lanes) +
                                       static_cast<std::size_t>(l)])] = packs;
         packs += erosion_[static_cast<std::size_t>(blocks.block_group[b])].block_state_packs();
     }
-    for (const Index e : blocks.alone_elements) {
-        failure_state_at_[static_cast<std::size_t>(e)] = packs;
-        packs += erosion_[static_cast<std::size_t>(section_[static_cast<std::size_t>(e)])]
-                     .alone_state_packs();
+    for (std::size_t a = 0; a < blocks.alone_elements.size(); ++a) {
+        if (!computes_unit(blocks.block_group.size() + a)) continue;
+        const auto e = static_cast<std::size_t>(blocks.alone_elements[a]);
+        failure_state_at_[e] = packs;
+        packs += erosion_[static_cast<std::size_t>(section_[e])].alone_state_packs();
     }
     failure_state_.assign(packs, RealPack(0.0));
 }
@@ -87,18 +87,18 @@ bool ShellElements::judge_block(Index b, Real dt, std::array<bool, k_lanes>& ero
     FailurePacks in =
         groups_[g]->block_failure_packs(static_cast<std::size_t>(b - blocks.group_first_block[g]));
     if (in.m == 0) return false;
-    in.element_size = block_element_size_[static_cast<std::size_t>(b)];
+    in.element_size = block_element_size_[kept_block(static_cast<std::size_t>(b))];
     in.time = time_;
     const std::size_t first =
         blocks.block_elements[static_cast<std::size_t>(b) * static_cast<std::size_t>(k_lanes)];
     RealPack* state =
-        failure_state_.empty() ? nullptr : failure_state_.data() + failure_state_at_[first];
+        !keeps_failure_state_ ? nullptr : failure_state_.data() + failure_state_at_[first];
     rule.judge_block(in, dt, state, erodes);
     return true;
 }
 
 const StressFading<RealPack>* ShellElements::block_fading(Index b, StressFading<RealPack>& out) {
-    if (failure_state_.empty()) return nullptr;
+    if (!keeps_failure_state_) return nullptr;
     const ElementBlocks& blocks = assembly_.blocks();
     const ElementErosion& rule =
         erosion_[static_cast<std::size_t>(blocks.block_group[static_cast<std::size_t>(b)])];
@@ -114,7 +114,7 @@ const StressFading<RealPack>* ShellElements::block_fading(Index b, StressFading<
 }
 
 const StressFading<Real>* ShellElements::element_fading(std::size_t e, ElementFading& f) {
-    if (failure_state_.empty()) return nullptr;
+    if (!keeps_failure_state_) return nullptr;
     const ElementErosion& rule = erosion_[static_cast<std::size_t>(section_[e])];
     const std::size_t field = rule.fading_field(), n = rule.n_points();
     if (field == PointFailure::k_no_field) return nullptr;
@@ -189,7 +189,7 @@ bool ShellElements::erodes_alone(std::size_t e, Real dt) {
         group.failure_points(place, rule.reads_point(), points);
     };
     const Real size = element_size_[e];
-    if (failure_state_.empty()) return rule.erodes(fill, dt, nullptr, size, time_);
+    if (!keeps_failure_state_) return rule.erodes(fill, dt, nullptr, size, time_);
     if (!place.in_block)
         return rule.erodes(fill, dt, failure_state_.data() + failure_state_at_[e], size, time_);
     const std::size_t n = rule.n_points(), w = static_cast<std::size_t>(k_lanes);

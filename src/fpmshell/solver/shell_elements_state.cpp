@@ -1,7 +1,8 @@
-// The state ShellElements carries from step to step: in a restart file, whole or as the bytes of
-// a distributed run's pieces.
+// The state ShellElements carries from step to step: made for the units this rank computes, and
+// in a restart file, whole or as the bytes of a distributed run's pieces.
 #include <fmt/format.h>
 
+#include <limits>
 #include <stdexcept>
 #include <utility>
 
@@ -81,11 +82,14 @@ void ShellElements::unpack_state(const std::vector<char>& bytes, std::vector<std
             throw std::invalid_argument(fmt::format("a state of element {} of {}", e, tri_.size()));
         const auto ue = static_cast<std::size_t>(e);
         ++seen[ue];
+        // the state of the points, the criteria and the resultants is kept only where this
+        // rank computes e
+        const bool here = computes(e);
         thickness_[ue] = take<Real>(bytes, at);
         Voigt3 n, m;
         for (int c = 0; c < 3; ++c) n[c] = take<Real>(bytes, at);
         for (int c = 0; c < 3; ++c) m[c] = take<Real>(bytes, at);
-        set_resultants(ue, n, m);
+        if (here) set_resultants(ue, n, m);
         time_steps_.ratio()[ue] = take<Real>(bytes, at);
         time_steps_.ratio_length()[ue] = take<Real>(bytes, at);
         time_steps_.set_mass_state(ue, take<std::array<Real, 3>>(bytes, at));
@@ -93,15 +97,17 @@ void ShellElements::unpack_state(const std::vector<char>& bytes, std::vector<std
             eroded_[ue] = take<std::uint8_t>(bytes, at);
             element_work_[ue] = take<Real>(bytes, at);
             last_loads_[ue] = take<std::array<Real, 18>>(bytes, at);
-            for (std::size_t i = 0; i < failure_numbers(ue); ++i)
-                failure_number(ue, i) = take<Real>(bytes, at);
+            for (std::size_t i = 0; i < failure_numbers(ue); ++i) {
+                const Real v = take<Real>(bytes, at);
+                if (here) failure_number(ue, i) = v;
+            }
         }
         ElementGroup& group = *groups_[static_cast<std::size_t>(section_[ue])];
         const GroupPlace place = place_of(ue);
         std::vector<Real> fields(group.point_fields());
         for (std::size_t p = 0; p < group.n_points(); ++p) {
             for (Real& f : fields) f = take<Real>(bytes, at);
-            group.write_fields(place, p, fields.data());
+            if (here) group.write_fields(place, p, fields.data());
         }
     }
 }
@@ -109,6 +115,8 @@ void ShellElements::unpack_state(const std::vector<char>& bytes, std::vector<std
 // The restart file holds every point's state as its law's numbers (ElementGroup::point_fields),
 // in element order (format 10), whatever the layout in memory.
 void ShellElements::save(RestartWriter& out) const {
+    if (decomposition_ && decomposition_->distributed())  // a rank keeps its elements' alone
+        throw std::logic_error("a distributed run saves its elements in pieces (pack_state)");
     std::vector<Real> fields;
     for (std::size_t e = 0; e < tri_.size(); ++e) {
         const ElementGroup& group = group_of(e);
@@ -156,18 +164,99 @@ void ShellElements::load(RestartReader& in) {
     in(eroded_, element_work_, last_loads_, failure);
     if (stored_lengths(eroded_, element_work_, last_loads_, failure) != erosion_lengths)
         in.fail("restart file of a model with other failure criteria");
-    for (std::size_t e = 0, k = 0; e < n_elements; ++e)
-        for (std::size_t i = 0; i < failure_numbers(e); ++i) failure_number(e, i) = failure[k++];
-    for (std::size_t e = 0; e < n_elements; ++e) set_resultants(e, n[e], m[e]);
+    // the state of the points, the criteria and the resultants is kept only where this rank
+    // computes e
+    for (std::size_t e = 0, k = 0; e < n_elements; ++e) {
+        const bool here = computes(static_cast<Index>(e));
+        for (std::size_t i = 0; i < failure_numbers(e); ++i, ++k)
+            if (here) failure_number(e, i) = failure[k];
+    }
+    for (std::size_t e = 0; e < n_elements; ++e)
+        if (computes(static_cast<Index>(e))) set_resultants(e, n[e], m[e]);
     std::size_t i = 0;
     for (std::size_t e = 0; e < n_elements; ++e) {
         ElementGroup& group = *groups_[static_cast<std::size_t>(section_[e])];
         const GroupPlace place = place_of(e);
+        const bool here = computes(static_cast<Index>(e));
         for (std::size_t p = 0; p < group.n_points(); ++p) {
-            group.write_fields(place, p, fields.data() + i);
+            if (here) group.write_fields(place, p, fields.data() + i);
             i += group.point_fields();
         }
     }
+}
+
+// The state of the points and the failure criteria (§7.6) and the arrays per block: of the
+// units this rank computes alone (every unit on one rank), made once the decomposition is known.
+void ShellElements::allocate_state() {
+    const ElementBlocks& blocks = assembly_.blocks();
+    const auto n_blocks = static_cast<std::size_t>(blocks.n_blocks());
+    // the blocks' own arrays: of those this rank computes, in block order
+    std::vector<Index> kept;
+    block_store_.clear();
+    if (decomposition_ && decomposition_->distributed()) {
+        block_store_.assign(n_blocks, std::numeric_limits<std::size_t>::max());
+        for (std::size_t b = 0; b < n_blocks; ++b)
+            if (computes_unit(b)) {
+                block_store_[b] = kept.size();
+                kept.push_back(static_cast<Index>(b));
+            }
+    } else {
+        for (std::size_t b = 0; b < n_blocks; ++b) kept.push_back(static_cast<Index>(b));
+    }
+    block_totals_.assign(kept.size(), ElementTotals{});
+    block_resultants_.assign(6 * kept.size(), RealPack(0.0));
+    // eq. 6.4-2: the blocks' initial volumes as whole packs (a pack filled lane by lane through
+    // memory every step stalled the block: 6 % of the elastic kernel)
+    block_initial_volume_.clear();
+    block_initial_volume_.reserve(kept.size());
+    for (const Index b : kept)
+        block_initial_volume_.emplace_back([&](auto l) {
+            return time_steps_.initial_volume(static_cast<std::size_t>(
+                blocks.block_elements[static_cast<std::size_t>(b * k_lanes + Index{l})]));
+        });
+    if (can_erode()) {  // §7.6 the size of each element of a block, a lane each
+        block_element_size_.assign(kept.size(), RealPack(0.0));
+        for (std::size_t k = 0; k < kept.size(); ++k)
+            for (int l = 0; l < k_lanes; ++l)
+                set_lane(
+                    block_element_size_[k], l,
+                    element_size_[static_cast<std::size_t>(
+                        blocks.block_elements[static_cast<std::size_t>(kept[k] * k_lanes + l)])]);
+    }
+    for (std::size_t g = 0; g < groups_.size(); ++g) {
+        const auto first_block = static_cast<std::size_t>(blocks.group_first_block[g]);
+        const auto first_alone = static_cast<std::size_t>(blocks.group_first_alone[g]);
+        const auto group_blocks =
+            static_cast<std::size_t>(blocks.group_first_block[g + 1]) - first_block;
+        const auto group_alone =
+            static_cast<std::size_t>(blocks.group_first_alone[g + 1]) - first_alone;
+        if (!decomposition_ || !decomposition_->distributed()) {
+            groups_[g]->allocate(group_blocks, group_alone);
+            continue;
+        }
+        std::vector<std::size_t> blocks_here, alone_here;  // of the group's, ascending
+        for (std::size_t b = 0; b < group_blocks; ++b)
+            if (computes_unit(first_block + b)) blocks_here.push_back(b);
+        for (std::size_t a = 0; a < group_alone; ++a)
+            if (computes_unit(n_blocks + first_alone + a)) alone_here.push_back(a);
+        groups_[g]->allocate(group_blocks, group_alone, &blocks_here, &alone_here);
+    }
+    allocate_failure_state();
+    state_made_ = true;
+}
+
+bool ShellElements::computes(Index e) const {
+    const ElementBlocks& blocks = assembly_.blocks();
+    const auto ue = static_cast<std::size_t>(e);
+    if (const Index at = blocks.block_lane[ue]; at >= 0)
+        return computes_unit(static_cast<std::size_t>(at / k_lanes));
+    return computes_unit(static_cast<std::size_t>(blocks.n_blocks() + blocks.alone_position[ue]));
+}
+
+std::size_t ShellElements::kept_state_numbers() const {
+    std::size_t n = failure_state_.size() * static_cast<std::size_t>(k_lanes);
+    for (const auto& g : groups_) n += g->kept_numbers();
+    return n;
 }
 
 }  // namespace fpmshell
