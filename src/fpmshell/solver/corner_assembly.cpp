@@ -66,10 +66,10 @@ CornerAssembly::CornerAssembly(ElementBlocks blocks,
         for (std::size_t k = 0; k < slots_per_alone_; ++k)
             if (const Index p = slot_particle(e, k); p >= 0)
                 csr_slot_[static_cast<std::size_t>(fill[static_cast<std::size_t>(p)]++)] =
-                    slot_offset(e, k);
+                    full_offset(e, k);
 }
 
-std::size_t CornerAssembly::slot_offset(std::size_t e, std::size_t k) const {
+std::size_t CornerAssembly::full_offset(std::size_t e, std::size_t k) const {
     constexpr auto w = static_cast<std::size_t>(k_lanes);
     const Index at = blocks_.block_lane[e];
     const std::size_t slot =
@@ -81,14 +81,17 @@ std::size_t CornerAssembly::slot_offset(std::size_t e, std::size_t k) const {
 }
 
 const SlotGatherPlan& CornerAssembly::plan(int ranges) {
-    if (plan_.ranges() != ranges)
+    if (plan_.ranges() != ranges) {
         plan_ =
             make_slot_gather_plan(blocks_.n_blocks(), ranges, csr_begin_, csr_slot_, gather_mode_);
+        store_plan_offsets();
+    }
     return plan_;
 }
 
 void CornerAssembly::set_ranges(const std::vector<Index>& range_begin) {
     plan_ = make_slot_gather_plan(range_begin, csr_begin_, csr_slot_, gather_mode_);
+    store_plan_offsets();
 }
 
 void CornerAssembly::set_gather_modes(std::vector<GatherMode> mode) {
@@ -96,6 +99,30 @@ void CornerAssembly::set_gather_modes(std::vector<GatherMode> mode) {
     plan_ = make_slot_gather_plan(
         plan_.range_begin.empty() ? equal_block_ranges(blocks_.n_blocks(), 1) : plan_.range_begin,
         csr_begin_, csr_slot_, gather_mode_);
+    store_plan_offsets();
+}
+
+void CornerAssembly::keep_blocks(const std::vector<std::uint8_t>& kept) {
+    constexpr std::size_t group_reals = k_components * static_cast<std::size_t>(k_lanes);
+    const std::size_t n_blocks = kept.size();
+    const std::size_t alone_reals = slot_loads_.size() - 3 * n_blocks * group_reals;
+    block_page_.assign(n_blocks, 0);
+    kept_blocks_ = 0;
+    for (std::size_t b = 0; b < n_blocks; ++b)
+        // a block not kept shares the first kept one's place (never written nor read)
+        if (kept[b]) block_page_[b] = kept_blocks_++;
+    slot_loads_.assign(3 * kept_blocks_ * group_reals + alone_reals, 0.0);
+    slot_loads_.shrink_to_fit();
+    store_plan_offsets();
+}
+
+void CornerAssembly::store_plan_offsets() {
+    if (block_page_.empty()) return;
+    for (const Index p : plan_.after)
+        for (Index k = csr_begin_[static_cast<std::size_t>(p)];
+             k < csr_begin_[static_cast<std::size_t>(p) + 1]; ++k)
+            plan_.offset[static_cast<std::size_t>(k)] =
+                stored(csr_slot_[static_cast<std::size_t>(k)]);
 }
 
 }  // namespace fpmshell

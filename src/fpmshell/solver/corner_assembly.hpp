@@ -5,6 +5,7 @@
 // (slot_gather_plan.hpp).
 #pragma once
 
+#include <cstdint>
 #include <span>
 #include <vector>
 
@@ -51,13 +52,32 @@ public:
     /// Slots per element computed alone (3, or 6 with the particles across the sides).
     [[nodiscard]] std::size_t slots_per_alone() const { return slots_per_alone_; }
     /// Offset in slots() of component 0 of slot k of element e (component c: + c k_lanes).
-    [[nodiscard]] std::size_t slot_offset(std::size_t e, std::size_t k) const;
-    /// The full slot array (slot k >= 3 of an element alone: the particle across side k - 3).
+    [[nodiscard]] std::size_t slot_offset(std::size_t e, std::size_t k) const {
+        return stored(full_offset(e, k));
+    }
+    /// The same in the layout of every element's slots (particle_slots, a distributed run's
+    /// exchange lists), which keep_blocks does not change.
+    [[nodiscard]] std::size_t full_offset(std::size_t e, std::size_t k) const;
+    /// The slot array (slot k >= 3 of an element alone: the particle across side k - 3), and
+    /// its length in numbers.
     [[nodiscard]] Real* slots() { return slot_loads_.data(); }
+    [[nodiscard]] std::size_t slot_numbers() const { return slot_loads_.size(); }
     /// The 3 corner slots of block b: 6 whole packs per corner.
     [[nodiscard]] Real* block_slots(Index b) {
-        return slot_loads_.data() +
-               3 * static_cast<std::size_t>(b) * k_components * static_cast<std::size_t>(k_lanes);
+        return slot_loads_.data() + 3 * stored_block(static_cast<std::size_t>(b)) * k_components *
+                                        static_cast<std::size_t>(k_lanes);
+    }
+    /// A rank of a distributed run keeps the slots of the blocks with `kept` (per block) and
+    /// those of the elements alone: the others' are never written nor read there.
+    void keep_blocks(const std::vector<std::uint8_t>& kept);
+    /// Where the slot at `full` (full_offset) lies in slots().
+    [[nodiscard]] std::size_t stored(std::size_t full) const {
+        if (block_page_.empty()) return full;
+        constexpr std::size_t group_reals = k_components * static_cast<std::size_t>(k_lanes);
+        const std::size_t group = full / group_reals;
+        const std::size_t block_groups = 3 * block_page_.size();
+        if (group >= block_groups) return full - (block_groups - 3 * kept_blocks_) * group_reals;
+        return (3 * block_page_[group / 3] + group % 3) * group_reals + full % group_reals;
     }
 
     /// The gather plan for `ranges` ranges of blocks (remade, in equal ranges, when the count
@@ -85,7 +105,7 @@ public:
         s.m_int[p] = m;
     }
 
-    /// The full-array offsets (slot_offset, component 0) of particle p's slots, in element
+    /// The full-array offsets (full_offset, component 0) of particle p's slots, in element
     /// order (an element alone with slots across its sides: after its corners).
     [[nodiscard]] std::span<const std::size_t> particle_slots(std::size_t p) const {
         return {csr_slot_.data() + csr_begin_[p], csr_slot_.data() + csr_begin_[p + 1]};
@@ -101,6 +121,15 @@ private:
     // block b is slot (3 b + i) k_lanes + lane, and the elements alone follow the blocks,
     // slots_per_alone_ slots each.
     std::vector<Real, Eigen::aligned_allocator<Real>> slot_loads_;
+    /// per block: its place among the kept blocks' slots (empty: every block kept, in order;
+    /// keep_blocks), and how many are kept
+    std::vector<std::size_t> block_page_;
+    std::size_t kept_blocks_ = 0;
+    [[nodiscard]] std::size_t stored_block(std::size_t b) const {
+        return block_page_.empty() ? b : block_page_[b];
+    }
+    /// The plan's offsets of the particles summed from slots() (not from a ring) where they lie.
+    void store_plan_offsets();
     std::vector<Index> csr_begin_;  ///< particle -> its slots (csr_slot_[csr_begin_[p]...])
     std::vector<std::size_t>
         csr_slot_;  ///< slot_offset of each slot, by particle, in element order

@@ -54,7 +54,7 @@ struct DomainDecomposition {
     std::vector<Index> held_particles;  ///< the particles updated here (ascending)
     std::vector<Index> near_elements;   ///< the triangles with a held particle (ascending)
     std::vector<int> particle_owner;    ///< per particle: its owner rank
-    /// The exchange of slots: per peer rank, the full-array offsets (slot_offset, component
+    /// The exchange of slots: per peer rank, the full-array offsets (full_offset, component
     /// 0) of the slots this rank sends and of those it receives, by particle then element.
     std::vector<int> slot_peers;
     std::vector<std::vector<std::size_t>> slot_send, slot_recv;

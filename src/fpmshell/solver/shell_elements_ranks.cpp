@@ -1,6 +1,6 @@
 // ShellElements on one rank of a distributed run (solver/domain_decomposition.hpp): which units
-// it computes, the order its particles sum their slots in, and the exchange of the slots of the
-// shared particles with the other ranks.
+// it computes, the order its particles sum their slots in, the slots it keeps, and the exchange
+// of the slots of the shared particles with the other ranks.
 #include "fpmshell/core/communicator.hpp"
 #include "fpmshell/solver/shell_elements.hpp"
 
@@ -31,6 +31,17 @@ void ShellElements::set_decomposition(const DomainDecomposition* d) {
         if (d->shared[p]) mode[p] = GatherMode::After;
     }
     assembly_.set_gather_modes(std::move(mode));
+    // The slot array keeps this rank's blocks and those whose slots it receives: the blocks
+    // of the other ranks at its shared particles.
+    constexpr std::size_t group_reals = CornerAssembly::k_components * k_lanes;
+    std::vector<std::uint8_t> kept(static_cast<std::size_t>(blocks.n_blocks()), 0);
+    for (Index b = 0; b < blocks.n_blocks(); ++b)
+        kept[static_cast<std::size_t>(b)] = d->own_unit[static_cast<std::size_t>(b)];
+    for (const std::vector<std::size_t>& offsets : d->slot_recv)
+        for (const std::size_t at : offsets)
+            if (const std::size_t block = at / group_reals / 3; block < kept.size())
+                kept[block] = 1;
+    assembly_.keep_blocks(kept);
 }
 
 Communicator::Pending ShellElements::start_slot_exchange() {
@@ -45,7 +56,8 @@ Communicator::Pending ShellElements::start_slot_exchange() {
         std::vector<Real>& out = slot_send_[k];
         out.resize(nc * d.slot_send[k].size());
         for (std::size_t i = 0; i < d.slot_send[k].size(); ++i)
-            for (std::size_t c = 0; c < nc; ++c) out[nc * i + c] = slots[d.slot_send[k][i] + c * w];
+            for (std::size_t c = 0, at = assembly_.stored(d.slot_send[k][i]); c < nc; ++c)
+                out[nc * i + c] = slots[at + c * w];
         slot_recv_[k].resize(nc * d.slot_recv[k].size());
     }
     return Communicator::world().start_exchange(d.slot_peers, slot_send_, slot_recv_);
@@ -59,8 +71,8 @@ void ShellElements::finish_slot_exchange(Communicator::Pending& pending) {
     Communicator::world().wait(pending);
     for (std::size_t k = 0; k < d.slot_peers.size(); ++k)
         for (std::size_t i = 0; i < d.slot_recv[k].size(); ++i)
-            for (std::size_t c = 0; c < nc; ++c)
-                slots[d.slot_recv[k][i] + c * w] = slot_recv_[k][nc * i + c];
+            for (std::size_t c = 0, at = assembly_.stored(d.slot_recv[k][i]); c < nc; ++c)
+                slots[at + c * w] = slot_recv_[k][nc * i + c];
 }
 
 }  // namespace fpmshell

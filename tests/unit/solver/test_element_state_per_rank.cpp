@@ -1,9 +1,12 @@
 // ShellElements on one rank of a distributed run keeps the state of the points (and of the
 // failure criteria) of the elements it computes alone: the ranks' states add up to one
 // process's, and a rank reading a whole state (a restart file's pieces) keeps its own
-// elements' part of it bit for bit. Every rank's decomposition is made here in one process;
+// elements' part of it bit for bit. Its slot array keeps its own blocks' and those it receives,
+// each in a place of its own. Every rank's decomposition is made here in one process;
 // tests/mpi/distributed_test.py runs and resumes such ranks for real.
 #include <gtest/gtest.h>
+
+#include <set>
 
 #include "../eroding_band.hpp"
 #include "fpmshell/model/mesh_topology.hpp"
@@ -110,4 +113,40 @@ TEST(ElementStatePerRank, RanksPiecesMakeTheWholeStateAgain) {
     // and the state is not the initial one (the check above compares something)
     const ShellElements fresh(plate.m, plate.topology);
     EXPECT_NE(fresh.pack_state(), all);
+}
+
+TEST(ElementStatePerRank, RanksKeepTheSlotsTheyWriteAndReceiveEachInAPlaceOfItsOwn) {
+    if (!partitioning_available()) GTEST_SKIP() << "this build has no METIS";
+    const StrainedPlate plate;
+    const std::size_t whole_slots = plate.whole.assembly().slot_numbers();
+    const ElementBlocks& blocks = plate.whole.assembly().blocks();
+    constexpr auto w = static_cast<std::size_t>(k_lanes);
+    for (const int ranks : {2, 3}) {
+        SCOPED_TRACE(::testing::Message() << ranks << " ranks");
+        for (const DomainDecomposition& dr : decompose_all(plate, ranks)) {
+            ShellElements part(plate.m, plate.topology, make_element_group, false);
+            part.set_decomposition(&dr);
+            const CornerAssembly& a = part.assembly();
+            EXPECT_LT(a.slot_numbers(), whole_slots);
+            // every slot this rank writes (its elements' corners) or receives, by its place:
+            // distinct places, inside the array; a block's corners where block_slots says
+            std::set<std::size_t> full, places;
+            for (const Index e : part.computed_elements())
+                for (std::size_t k = 0; k < 3; ++k)
+                    full.insert(a.full_offset(static_cast<std::size_t>(e), k));
+            for (const auto& offsets : dr.slot_recv) full.insert(offsets.begin(), offsets.end());
+            for (const std::size_t f : full) {
+                const std::size_t at = a.stored(f);
+                EXPECT_TRUE(places.insert(at).second) << "two slots at " << at;
+                EXPECT_LT(at + (CornerAssembly::k_components - 1) * w, a.slot_numbers());
+            }
+            auto& mutable_assembly = const_cast<CornerAssembly&>(a);
+            for (const Index b : dr.own_blocks) {
+                const auto e = static_cast<std::size_t>(
+                    blocks.block_elements[static_cast<std::size_t>(b) * w + 2]);
+                EXPECT_EQ(mutable_assembly.block_slots(b) + 2 - mutable_assembly.slots(),
+                          static_cast<std::ptrdiff_t>(a.slot_offset(e, 0)));
+            }
+        }
+    }
 }
