@@ -132,7 +132,7 @@ private:
     void store_plan_offsets();
     std::vector<Index> csr_begin_;  ///< particle -> its slots (csr_slot_[csr_begin_[p]...])
     std::vector<std::size_t>
-        csr_slot_;  ///< slot_offset of each slot, by particle, in element order
+        csr_slot_;  ///< full_offset of each slot, by particle, in element order
     SlotGatherPlan plan_;
     std::vector<GatherMode> gather_mode_;  ///< per particle (empty: every one Any)
 };
