@@ -36,12 +36,13 @@ ElementBlocks assign_blocks(const std::vector<Index>& element_group,
 
 CornerAssembly::CornerAssembly(ElementBlocks blocks,
                                const std::vector<std::array<Index, 3>>& triangles,
-                               const MeshTopology& topology, bool across_sides)
+                               const MeshTopology& topology, bool across_sides, bool slots_now)
     : blocks_(std::move(blocks)), slots_per_alone_(across_sides ? 6 : 3) {
     const auto w = static_cast<std::size_t>(k_lanes);
     const std::size_t n_slots =
         3 * blocks_.block_elements.size() + slots_per_alone_ * blocks_.alone_elements.size();
-    slot_loads_.assign((n_slots + w - 1) / w * k_components * w, 0.0);
+    full_numbers_ = (n_slots + w - 1) / w * k_components * w;
+    if (slots_now) allocate_slots();
     // CSR particle -> slots, slots in increasing element order (fixed summation order).
     const std::size_t np = static_cast<std::size_t>(topology.n_particles()), ne = triangles.size();
     // slot k of element e -> its particle (-1: none); the 3 across the sides exist (and are
@@ -102,17 +103,21 @@ void CornerAssembly::set_gather_modes(std::vector<GatherMode> mode) {
     store_plan_offsets();
 }
 
+void CornerAssembly::allocate_slots() {
+    if (slot_loads_.empty()) slot_loads_.assign(full_numbers_, 0.0);
+}
+
 void CornerAssembly::keep_blocks(const std::vector<std::uint8_t>& kept) {
     constexpr std::size_t group_reals = k_components * static_cast<std::size_t>(k_lanes);
     const std::size_t n_blocks = kept.size();
-    const std::size_t alone_reals = slot_loads_.size() - 3 * n_blocks * group_reals;
+    const std::size_t alone_reals = full_numbers_ - 3 * n_blocks * group_reals;
     block_page_.assign(n_blocks, 0);
     kept_blocks_ = 0;
     for (std::size_t b = 0; b < n_blocks; ++b)
         // a block not kept shares the first kept one's place (never written nor read)
         if (kept[b]) block_page_[b] = kept_blocks_++;
     slot_loads_.assign(3 * kept_blocks_ * group_reals + alone_reals, 0.0);
-    slot_loads_.shrink_to_fit();
+    slot_loads_.shrink_to_fit();  // (where every element's were made before)
     store_plan_offsets();
 }
 

@@ -44,9 +44,10 @@ public:
         SlotGatherPlan::k_components;  // force x y z, moment x y z
 
     /// across_sides: the elements alone also load the particles across their sides (the
-    /// smoothed membrane), 6 slots each instead of 3.
+    /// smoothed membrane), 6 slots each instead of 3. slots_now: the slot array made now for
+    /// every element (else by allocate_slots or keep_blocks).
     CornerAssembly(ElementBlocks blocks, const std::vector<std::array<Index, 3>>& triangles,
-                   const MeshTopology& topology, bool across_sides);
+                   const MeshTopology& topology, bool across_sides, bool slots_now = true);
 
     [[nodiscard]] const ElementBlocks& blocks() const { return blocks_; }
     /// Slots per element computed alone (3, or 6 with the particles across the sides).
@@ -67,6 +68,8 @@ public:
         return slot_loads_.data() + 3 * stored_block(static_cast<std::size_t>(b)) * k_components *
                                         static_cast<std::size_t>(k_lanes);
     }
+    /// The slot array of every element (where not made yet).
+    void allocate_slots();
     /// A rank of a distributed run keeps the slots of the blocks with `kept` (per block) and
     /// those of the elements alone: the others' are never written nor read there.
     void keep_blocks(const std::vector<std::uint8_t>& kept);
@@ -125,6 +128,7 @@ private:
     /// keep_blocks), and how many are kept
     std::vector<std::size_t> block_page_;
     std::size_t kept_blocks_ = 0;
+    std::size_t full_numbers_ = 0;  ///< the slot array's length with every element's slots
     [[nodiscard]] std::size_t stored_block(std::size_t b) const {
         return block_page_.empty() ? b : block_page_[b];
     }

@@ -74,7 +74,7 @@ ShellElements::ShellElements(const Model& model, const MeshTopology& topology,
       groups_(make_groups(model, make_group)),
       time_steps_(make_time_steps(model, topology, groups_)),
       assembly_(make_blocks(model, groups_, model.control.membrane == MembraneKernel::Smoothed),
-                tri_, topology, model.control.membrane == MembraneKernel::Smoothed),
+                tri_, topology, model.control.membrane == MembraneKernel::Smoothed, state_now),
       thickness_update_(model.control.thickness_update),
       smoothed_membrane_(model.control.membrane == MembraneKernel::Smoothed) {
     const std::size_t ne = tri_.size();

@@ -35,8 +35,9 @@ class ShellElements {
 public:
     /// topology: the model's (side neighbours, element masses); it must outlive this.
     /// make_group: the group of each section (make_element_group: the model's materials).
-    /// state_now: the state of every element's points made now; without it set_decomposition
-    /// makes that of the elements this rank computes (a distributed run's memory).
+    /// state_now: the state of every element's points and its corner slots made now; without
+    /// it set_decomposition makes those of the elements this rank computes (a distributed
+    /// run's memory).
     ShellElements(const Model& model, const MeshTopology& topology,
                   const ElementGroupFactory& make_group = make_element_group,
                   bool state_now = true);

@@ -188,6 +188,8 @@ void ShellElements::load(RestartReader& in) {
 // The state of the points and the failure criteria (§7.6) and the arrays per block: of the
 // units this rank computes alone (every unit on one rank), made once the decomposition is known.
 void ShellElements::allocate_state() {
+    // the slots: every element's on one rank; on several, set_decomposition keeps the rank's
+    if (!decomposition_ || !decomposition_->distributed()) assembly_.allocate_slots();
     const ElementBlocks& blocks = assembly_.blocks();
     const auto n_blocks = static_cast<std::size_t>(blocks.n_blocks());
     // the blocks' own arrays: of those this rank computes, in block order
