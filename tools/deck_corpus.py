@@ -101,11 +101,14 @@ def same_on_ranks(fpm, mpiexec, ranks, deck_path, end_time, timeout):
     if end_time:
         args += ["--set", "control.end_time=%g" % end_time]
     try:
-        r = subprocess.run(args, capture_output=True, text=True, timeout=timeout)
+        # OpenMPI refuses to start as root (containers, CI) unless told it may
+        env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
+        r = subprocess.run(args, capture_output=True, text=True, timeout=timeout, env=env)
     except subprocess.TimeoutExpired:
         return False, "still running after %d s" % timeout
     if r.returncode != 0:
-        return False, "exit %d" % r.returncode
+        last = r.stderr.strip().splitlines()[-1:] or [""]
+        return False, "exit %d: %s" % (r.returncode, last[0][:200])
     for name in ("history.csv", "energy.csv"):
         with open(os.path.join(folder, "results", name), "rb") as a, \
                 open(os.path.join(out, name), "rb") as b:
