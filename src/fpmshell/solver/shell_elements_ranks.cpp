@@ -26,10 +26,12 @@ void ShellElements::set_decomposition(const DomainDecomposition* d) {
                      blocks.block_elements[static_cast<std::size_t>(b * k_lanes + l)])])
                 mode[static_cast<std::size_t>(p)] = GatherMode::After;
     }
-    for (std::size_t p = 0; p < mode.size(); ++p) {
-        if (!d->held[p]) mode[p] = GatherMode::Skip;
-        if (d->shared[p]) mode[p] = GatherMode::After;
-    }
+    // (a particle shared by other ranks alone is not summed here: its slots are not here)
+    for (std::size_t p = 0; p < mode.size(); ++p)
+        if (!d->held[p])
+            mode[p] = GatherMode::Skip;
+        else if (d->shared[p])
+            mode[p] = GatherMode::After;
     assembly_.set_gather_modes(std::move(mode));
     // The slot array keeps this rank's blocks and those whose slots it receives: the blocks
     // of the other ranks at its shared particles.

@@ -2,8 +2,8 @@
 // failure criteria) of the elements it computes alone: the ranks' states add up to one
 // process's, and a rank reading a whole state (a restart file's pieces) keeps its own
 // elements' part of it bit for bit. Its slot array keeps its own blocks' and those it receives,
-// each in a place of its own. Every rank's decomposition is made here in one process;
-// tests/mpi/distributed_test.py runs and resumes such ranks for real.
+// each in a place of its own, and it sums no other. Every rank's decomposition is made here in one
+// process; tests/mpi/distributed_test.py runs and resumes such ranks for real.
 #include <gtest/gtest.h>
 
 #include <set>
@@ -140,6 +140,11 @@ TEST(ElementStatePerRank, RanksKeepTheSlotsTheyWriteAndReceiveEachInAPlaceOfItsO
                 EXPECT_TRUE(places.insert(at).second) << "two slots at " << at;
                 EXPECT_LT(at + (CornerAssembly::k_components - 1) * w, a.slot_numbers());
             }
+            // every slot the rank sums from the array (after the loop) is one it writes or
+            // receives
+            for (const Index p : a.plan().after)
+                for (const std::size_t f : a.particle_slots(static_cast<std::size_t>(p)))
+                    EXPECT_TRUE(full.count(f)) << "particle " << p << " sums a slot not here";
             auto& mutable_assembly = const_cast<CornerAssembly&>(a);
             for (const Index b : dr.own_blocks) {
                 const auto e = static_cast<std::size_t>(
