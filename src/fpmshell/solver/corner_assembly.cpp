@@ -2,6 +2,8 @@
 
 #include <utility>
 
+#include "fpmshell/core/kept_places.hpp"
+
 namespace fpmshell {
 
 ElementBlocks assign_blocks(const std::vector<Index>& element_group,
@@ -111,11 +113,9 @@ void CornerAssembly::keep_blocks(const std::vector<std::uint8_t>& kept) {
     constexpr std::size_t group_reals = k_components * static_cast<std::size_t>(k_lanes);
     const std::size_t n_blocks = kept.size();
     const std::size_t alone_reals = full_numbers_ - 3 * n_blocks * group_reals;
-    block_page_.assign(n_blocks, 0);
-    kept_blocks_ = 0;
-    for (std::size_t b = 0; b < n_blocks; ++b)
-        // a block not kept shares the first kept one's place (never written nor read)
-        if (kept[b]) block_page_[b] = kept_blocks_++;
+    KeptPlaces places = kept_places(n_blocks, [&](std::size_t b) { return kept[b] != 0; });
+    block_page_ = std::move(places.place);
+    kept_blocks_ = places.count;
     slot_loads_.assign(3 * kept_blocks_ * group_reals + alone_reals, 0.0);
     slot_loads_.shrink_to_fit();  // (where every element's were made before)
     store_plan_offsets();

@@ -125,7 +125,7 @@ private:
     // slots_per_alone_ slots each.
     std::vector<Real, Eigen::aligned_allocator<Real>> slot_loads_;
     /// per block: its place among the kept blocks' slots (empty: every block kept, in order;
-    /// keep_blocks), and how many are kept
+    /// keep_blocks, KeptPlaces), and how many are kept
     std::vector<std::size_t> block_page_;
     std::size_t kept_blocks_ = 0;
     std::size_t full_numbers_ = 0;  ///< the slot array's length with every element's slots

@@ -1,7 +1,6 @@
 #include "fpmshell/solver/element_group.hpp"
 
 #include <cmath>
-#include <limits>
 
 #include "fpmshell/materials/material_law.hpp"
 
@@ -42,28 +41,13 @@ ElementGroup::ElementGroup(const Model& model, std::size_t section, const Mat3& 
     block_constants_.bending = rule_.bending;
 }
 
-namespace {
-
-/// Where each of n places is kept: the i-th of `here` at i; empty where every place is (here
-/// null).
-std::vector<std::size_t> stores(std::size_t n, const std::vector<std::size_t>* here) {
-    if (!here) return {};
-    // a place not kept: past every kept one (its state is never read)
-    std::vector<std::size_t> at(n, std::numeric_limits<std::size_t>::max());
-    for (std::size_t i = 0; i < here->size(); ++i) at[(*here)[i]] = i;
-    return at;
-}
-
-}  // namespace
-
-void ElementGroup::allocate(std::size_t n_blocks, std::size_t n_alone,
-                            const std::vector<std::size_t>* blocks_here,
-                            const std::vector<std::size_t>* alone_here) {
+void ElementGroup::allocate(std::size_t n_blocks, std::size_t n_alone, const KeptPlaces* blocks,
+                            const KeptPlaces* alone) {
     const std::size_t n = n_points();
-    block_store_ = stores(n_blocks, blocks_here);
-    alone_store_ = stores(n_alone, alone_here);
-    const std::size_t kept_blocks = blocks_here ? blocks_here->size() : n_blocks;
-    const std::size_t kept_alone = alone_here ? alone_here->size() : n_alone;
+    block_store_ = blocks ? blocks->place : std::vector<std::size_t>{};
+    alone_store_ = alone ? alone->place : std::vector<std::size_t>{};
+    const std::size_t kept_blocks = blocks ? blocks->count : n_blocks;
+    const std::size_t kept_alone = alone ? alone->count : n_alone;
     block_state_.assign(kept_blocks * block_size(), RealPack(0.0));
     alone_state_.assign(kept_alone * n * point_fields_, 0.0);
     for (std::size_t k = 0; k < point_fields_; ++k) {

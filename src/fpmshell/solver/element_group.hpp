@@ -27,6 +27,7 @@
 #include <type_traits>
 #include <vector>
 
+#include "fpmshell/core/kept_places.hpp"
 #include "fpmshell/core/simd.hpp"
 #include "fpmshell/elements/elastic_triangle_block.hpp"
 #include "fpmshell/elements/shell_triangle.hpp"
@@ -68,12 +69,11 @@ public:
     [[nodiscard]] virtual bool stress_only() const = 0;
 
     /// Makes the state of n_blocks blocks and n_alone elements computed alone, at its
-    /// initial values; with `blocks_here`, `alone_here` (ascending, of the group's) that of
-    /// those alone (a rank of a distributed run keeps the state of the units it computes:
-    /// the others' places must not be read).
-    void allocate(std::size_t n_blocks, std::size_t n_alone,
-                  const std::vector<std::size_t>* blocks_here = nullptr,
-                  const std::vector<std::size_t>* alone_here = nullptr);
+    /// initial values; with `blocks`, `alone` (of the group's) that of those kept alone (a rank
+    /// of a distributed run keeps the state of the units it computes: the others' places must
+    /// not be read).
+    void allocate(std::size_t n_blocks, std::size_t n_alone, const KeptPlaces* blocks = nullptr,
+                  const KeptPlaces* alone = nullptr);
 
     /// The numbers of state kept (of the points of the blocks and elements allocated).
     [[nodiscard]] std::size_t kept_numbers() const {
@@ -171,7 +171,7 @@ private:
     std::vector<RealPack> block_state_;  ///< [block kept][field][point]
     std::vector<Real> alone_state_;      ///< [element alone kept][point][field]
     /// per block, and per element alone, of the group: where its state is kept (empty: all
-    /// kept, in order); the largest size_t where this rank does not compute it
+    /// kept, in order; KeptPlaces)
     std::vector<std::size_t> block_store_, alone_store_;
 };
 

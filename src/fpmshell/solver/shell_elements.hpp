@@ -279,8 +279,7 @@ private:
     bool smoothed_membrane_ = false;          ///< control.membrane: smoothed
     std::vector<ReversedTriangle> reversed_;  ///< smoothed: per element, this step's path element
     std::vector<Voigt3> cst_strain_;  ///< smoothed: per element, this step's CST strain increment
-    /// per block: where its arrays below keep it (empty: every block, in order; the largest
-    /// size_t: a block another rank computes)
+    /// per block: where its arrays below keep it (empty: every block, in order; KeptPlaces)
     std::vector<std::size_t> block_store_;
     std::vector<ElementTotals> block_totals_;  ///< per block kept (kept_block)
     std::vector<ElementTotals>

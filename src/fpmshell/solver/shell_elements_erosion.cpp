@@ -1,8 +1,8 @@
 // Erosion in the element loop (theory.md §7.6): which elements have eroded, the booking of
 // their work, and the check after each element's step.
 #include <cmath>
-#include <limits>
 
+#include "fpmshell/core/kept_places.hpp"
 #include "fpmshell/solver/shell_elements.hpp"
 
 namespace fpmshell {
@@ -41,7 +41,7 @@ void ShellElements::allocate_failure_state() {
     // the blocks' state first, block by block, then the elements computed alone: of the units
     // this rank computes (the others' elements are never judged here)
     const ElementBlocks& blocks = assembly_.blocks();
-    failure_state_at_.assign(tri_.size(), std::numeric_limits<std::size_t>::max());
+    failure_state_at_.assign(tri_.size(), k_not_kept);
     std::size_t packs = 0;
     for (std::size_t b = 0; b < blocks.block_group.size(); ++b) {
         if (!computes_unit(b)) continue;

@@ -2,11 +2,11 @@
 // in a restart file, whole or as the bytes of a distributed run's pieces.
 #include <fmt/format.h>
 
-#include <limits>
 #include <stdexcept>
 #include <utility>
 
 #include "fpmshell/core/byte_buffer.hpp"
+#include "fpmshell/core/kept_places.hpp"
 #include "fpmshell/io/restart_archive.hpp"
 #include "fpmshell/solver/shell_elements.hpp"
 
@@ -188,43 +188,35 @@ void ShellElements::load(RestartReader& in) {
 // The state of the points and the failure criteria (§7.6) and the arrays per block: of the
 // units this rank computes alone (every unit on one rank), made once the decomposition is known.
 void ShellElements::allocate_state() {
+    const bool distributed = decomposition_ && decomposition_->distributed();
     // the slots: every element's on one rank; on several, set_decomposition keeps the rank's
-    if (!decomposition_ || !decomposition_->distributed()) assembly_.allocate_slots();
+    if (!distributed) assembly_.allocate_slots();
     const ElementBlocks& blocks = assembly_.blocks();
     const auto n_blocks = static_cast<std::size_t>(blocks.n_blocks());
+    const auto computed = [&](std::size_t first) {
+        return [this, first](std::size_t u) { return computes_unit(first + u); };
+    };
     // the blocks' own arrays: of those this rank computes, in block order
-    std::vector<Index> kept;
-    block_store_.clear();
-    if (decomposition_ && decomposition_->distributed()) {
-        block_store_.assign(n_blocks, std::numeric_limits<std::size_t>::max());
-        for (std::size_t b = 0; b < n_blocks; ++b)
-            if (computes_unit(b)) {
-                block_store_[b] = kept.size();
-                kept.push_back(static_cast<Index>(b));
-            }
-    } else {
-        for (std::size_t b = 0; b < n_blocks; ++b) kept.push_back(static_cast<Index>(b));
+    const KeptPlaces kept = kept_places(n_blocks, computed(0));
+    block_store_ = distributed ? kept.place : std::vector<std::size_t>{};
+    block_totals_.assign(kept.count, ElementTotals{});
+    block_resultants_.assign(6 * kept.count, RealPack(0.0));
+    // eq. 6.4-2 the blocks' initial volumes as whole packs (a pack filled lane by lane through
+    // memory every step stalled the block: 6 % of the elastic kernel); §7.6 the element sizes
+    block_initial_volume_.assign(kept.count, RealPack(0.0));
+    if (can_erode()) block_element_size_.assign(kept.count, RealPack(0.0));
+    for (std::size_t b = 0; b < n_blocks; ++b) {
+        const std::size_t k = kept.place[b];
+        if (k == k_not_kept) continue;
+        for (int l = 0; l < k_lanes; ++l) {
+            const auto e = static_cast<std::size_t>(
+                blocks.block_elements[b * static_cast<std::size_t>(k_lanes) +
+                                      static_cast<std::size_t>(l)]);
+            set_lane(block_initial_volume_[k], l, time_steps_.initial_volume(e));
+            if (can_erode()) set_lane(block_element_size_[k], l, element_size_[e]);
+        }
     }
-    block_totals_.assign(kept.size(), ElementTotals{});
-    block_resultants_.assign(6 * kept.size(), RealPack(0.0));
-    // eq. 6.4-2: the blocks' initial volumes as whole packs (a pack filled lane by lane through
-    // memory every step stalled the block: 6 % of the elastic kernel)
-    block_initial_volume_.clear();
-    block_initial_volume_.reserve(kept.size());
-    for (const Index b : kept)
-        block_initial_volume_.emplace_back([&](auto l) {
-            return time_steps_.initial_volume(static_cast<std::size_t>(
-                blocks.block_elements[static_cast<std::size_t>(b * k_lanes + Index{l})]));
-        });
-    if (can_erode()) {  // §7.6 the size of each element of a block, a lane each
-        block_element_size_.assign(kept.size(), RealPack(0.0));
-        for (std::size_t k = 0; k < kept.size(); ++k)
-            for (int l = 0; l < k_lanes; ++l)
-                set_lane(
-                    block_element_size_[k], l,
-                    element_size_[static_cast<std::size_t>(
-                        blocks.block_elements[static_cast<std::size_t>(kept[k] * k_lanes + l)])]);
-    }
+    // the points' state, group by group
     for (std::size_t g = 0; g < groups_.size(); ++g) {
         const auto first_block = static_cast<std::size_t>(blocks.group_first_block[g]);
         const auto first_alone = static_cast<std::size_t>(blocks.group_first_alone[g]);
@@ -232,16 +224,10 @@ void ShellElements::allocate_state() {
             static_cast<std::size_t>(blocks.group_first_block[g + 1]) - first_block;
         const auto group_alone =
             static_cast<std::size_t>(blocks.group_first_alone[g + 1]) - first_alone;
-        if (!decomposition_ || !decomposition_->distributed()) {
-            groups_[g]->allocate(group_blocks, group_alone);
-            continue;
-        }
-        std::vector<std::size_t> blocks_here, alone_here;  // of the group's, ascending
-        for (std::size_t b = 0; b < group_blocks; ++b)
-            if (computes_unit(first_block + b)) blocks_here.push_back(b);
-        for (std::size_t a = 0; a < group_alone; ++a)
-            if (computes_unit(n_blocks + first_alone + a)) alone_here.push_back(a);
-        groups_[g]->allocate(group_blocks, group_alone, &blocks_here, &alone_here);
+        const KeptPlaces kept_blocks = kept_places(group_blocks, computed(first_block));
+        const KeptPlaces kept_alone = kept_places(group_alone, computed(n_blocks + first_alone));
+        groups_[g]->allocate(group_blocks, group_alone, distributed ? &kept_blocks : nullptr,
+                             distributed ? &kept_alone : nullptr);
     }
     allocate_failure_state();
     state_made_ = true;
