@@ -6,8 +6,9 @@ history.csv bytes:
   about x (DOF 5), pushed by an acceleration (VAD 1), lowered by a displacement (VAD 2) -> `boundary` entries of type rigid_body;
 - *CONSTRAINED_EXTRA_NODES_NODE / _SET and *CONSTRAINED_RIGID_BODIES -> `constraints` entries over
   a list of node sets; *CONTACT_TIED_SURFACE_TO_SURFACE_OFFSET -> a `constraints` entry of type
-  tied; *CONSTRAINED_GENERALIZED_WELD_SPOT over three nodes with SN, SS -> groups of three with
-  `failure` (theory.md eq. 6.11-14), which the hammer's blow lets go;
+  tied; *CONSTRAINED_GENERALIZED_WELD_SPOT over three nodes with SN, SS or EPSF -> groups of three
+  with `failure` (theory.md eqs. 6.11-14, 6.11-15), which the hammer's blow lets go;
+- *CONSTRAINED_SPOTWELD with SN, SS, TF or EP -> `failure` (eqs. 6.11-13, 6.11-15);
 - refusals with exit 2 and one sentence naming the place: VAD 1, DOF 4 with a vector, a
   rotation given as an angle, a part that is not rigid; the YAML keys' errors.
 
@@ -345,10 +346,11 @@ for name, entry, words in (
     check(f"{name}: exit 2 with one sentence", r.returncode == 2 and
           all(w in r.stderr for w in words) and len(r.stderr.strip().splitlines()) == 1, r.stderr)
 
-# *CONSTRAINED_SPOTWELD's failure (theory.md eq. 6.11-13): the doubler's four welds given SN, SS
-# (N, M) or TF, against the twin's `failure` keys: the same history.csv bytes. Forces the hammer's
-# blow reaches let the welds go (summary.json counts them); forces out of reach change no byte of
-# the welds that never fail; a failure time lets all four go at once.
+# *CONSTRAINED_SPOTWELD's failure (theory.md eqs. 6.11-13, 6.11-15): the doubler's four welds given
+# SN, SS (N, M), TF or EP, against the twin's `failure` keys: the same history.csv bytes. Forces
+# and plastic strains the hammer's blow reaches let the welds go (summary.json counts them);
+# forces out of reach change no byte of the welds that never fail; a failure time lets all four
+# go at once.
 weld_cards = deck[deck.index("*CONSTRAINED_SPOTWELD"):deck.index("*INITIAL_VELOCITY_GENERATION")]
 weld_lines = [ln for ln in weld_cards.splitlines()[1:] if not ln.startswith("$")]
 assert len(weld_lines) == 4
@@ -358,7 +360,12 @@ for name, fields, keys, fail in (
          "normal_force: 200, shear_force: 100, normal_exponent: 2, shear_exponent: 2", True),
         ("welds out of reach", "     1e+09     1e+09", "normal_force: 1e9, shear_force: 1e9", False),
         ("welds with a failure time", "       0.0       0.0       0.0       0.0    0.0005",
-         "time: 0.0005", True)):
+         "time: 0.0005", True),
+        # EP (eq. 6.11-15): the blow yields the plate around the welds to ~1e-3 and more
+        ("welds that tear out", "       0.0       0.0       0.0       0.0       0.0     0.001",
+         "plastic_strain: 0.001", True),
+        ("welds that never tear out", "       0.0       0.0       0.0       0.0       0.0     100.0",
+         "plastic_strain: 100", False)):
     folder = os.path.join(WORK, name.replace(" ", "_"))
     cards = "*CONSTRAINED_SPOTWELD\n" + "".join(f"{ln[:20]}{fields}\n" for ln in weld_lines)
     d = write(folder, "model.k", deck.replace(weld_cards, cards))
@@ -382,27 +389,32 @@ for name, fields, keys, fail in (
         check("welds out of reach: the history of welds without failure data, byte for byte",
               r_plain.returncode == 0 and history is not None and read(h_plain) == history, r_plain.stderr)
 # *CONSTRAINED_GENERALIZED_WELD_SPOT over three nodes each (the doubler's weld particle and its
-# neighbour, the plate's particle below; theory.md eq. 6.11-14) with SN, SS, against the twin's
-# groups of three with `failure`: the same history.csv bytes, and the hammer's blow lets them go.
+# neighbour, the plate's particle below; theory.md eq. 6.11-14) with SN, SS, and with EPSF alone
+# (eq. 6.11-15), against the twin's groups of three with `failure`: the same history.csv bytes,
+# and the hammer's blow lets them go.
 TRIPLES = {"a": (101, 102, 21), "b": (105, 104, 25), "c": (121, 122, 57), "d": (125, 124, 61)}
-general = "".join(
-    "*SET_NODE_LIST\n%10d\n%10d%10d%10d\n*CONSTRAINED_GENERALIZED_WELD_SPOT\n%10d\n"
-    "   1.0e+20       0.0     200.0     100.0       2.0       2.0\n" % ((900 + k,) + t + (900 + k,))
-    for k, t in enumerate(TRIPLES.values()))
-t_text = twin
-for w, t in TRIPLES.items():
-    t_text = t_text.replace("  weld_%s: {node_ids: [%d, %d]}\n" % (w, t[0], t[2]),
-                            "  weld_%s: {node_ids: [%d, %d, %d]}\n" % ((w,) + t))
-    t_text = t_text.replace("  - {type: rigid, nodes: weld_%s}\n" % w,
-                            "  - {type: rigid, nodes: weld_%s, failure: {normal_force: 200, "
-                            "shear_force: 100, normal_exponent: 2, shear_exponent: 2}}\n" % w)
-assert t_text.count("failure:") == 4 and "102, 21]" in t_text
-folder = os.path.join(WORK, "generalized_welds")
-history = twin_pair("generalized welds of three nodes", write(folder, "model.k", deck.replace(
-    weld_cards, general)), write(folder, "model.yaml", t_text))
-summary = read(os.path.join(folder, "out_k", "summary.json"))
-check("generalized welds of three nodes: the hammer's blow lets them go (summary.json)",
-      '"failed_welds": 4' in summary, summary[-600:])
+for name, fields, keys in (
+        ("generalized welds of three nodes", "   1.0e+20       0.0     200.0     100.0       2.0       2.0",
+         "normal_force: 200, shear_force: 100, normal_exponent: 2, shear_exponent: 2"),
+        ("generalized welds that tear out", "   1.0e+20     0.001", "plastic_strain: 0.001")):
+    general = "".join(
+        "*SET_NODE_LIST\n%10d\n%10d%10d%10d\n*CONSTRAINED_GENERALIZED_WELD_SPOT\n%10d\n"
+        "%s\n" % ((900 + k,) + t + (900 + k, fields)) for k, t in enumerate(TRIPLES.values()))
+    t_text = twin
+    for w, t in TRIPLES.items():
+        t_text = t_text.replace("  weld_%s: {node_ids: [%d, %d]}\n" % (w, t[0], t[2]),
+                                "  weld_%s: {node_ids: [%d, %d, %d]}\n" % ((w,) + t))
+        t_text = t_text.replace("  - {type: rigid, nodes: weld_%s}\n" % w,
+                                "  - {type: rigid, nodes: weld_%s, failure: {%s}}\n" % (w, keys))
+    assert t_text.count("failure:") == 4 and "102, 21]" in t_text
+    folder = os.path.join(WORK, name.replace(" ", "_"))
+    history = twin_pair(name, write(folder, "model.k", deck.replace(weld_cards, general)),
+                        write(folder, "model.yaml", t_text))
+    summary = read(os.path.join(folder, "out_k", "summary.json"))
+    check(f"{name}: the hammer's blow lets them go (summary.json)",
+          '"failed_welds": 4' in summary, summary[-600:])
+refused("weld with a negative EP", "*CONSTRAINED_SPOTWELD\n        41        42       0.0       0.0"
+        "       0.0       0.0       0.0      -1.0\n", "model.k:", "*CONSTRAINED_SPOTWELD", "EP must be >= 0")
 refused("weld with a temperature curve", "*CONSTRAINED_SPOTWELD\n        41        42     -12.0\n",
         "model.k:", "*CONSTRAINED_SPOTWELD", "SN or SS < 0")
 

@@ -286,8 +286,9 @@ with open(os.path.join(WORK, "damaging_band-2x1", "summary.json")) as f:
 # every rank on their particles' values brought from their owners: the hammer spun by a
 # prescribed rigid motion on a plate held by a rigid edge and welded to its doubler; the block of
 # a given inertia (its enclosed solid) dropped on a plate; the hammer's welds letting go
-# (summary.json counts them); the doubler tied instead, its ties breaking; and the failing welds
-# stopped on 2 ranks and resumed on 1 (the failed welds in the restart file).
+# (summary.json counts them), by their forces and by the sheets' plastic strain; the doubler tied
+# instead, its ties breaking; and the failing welds stopped on 2 ranks and resumed on 1 (the
+# failed welds in the restart file).
 decks = os.path.join(ROOT, "examples", "decks")
 
 
@@ -310,12 +311,18 @@ spin = deck_twin("hammer_spin", "hammer_spin")
 check("hammer_spin", spin, ["control.end_time=1e-3"])
 check("hammer_spin", spin, ["control.end_time=6e-4"], ranks=3, threads=2)
 check("block_drop", deck_twin("block_drop", "block_drop"), ["control.end_time=1e-3"])
-failing = deck_twin("failing_welds", "plate_hammer", lambda t: t.replace(WELDS, WELDS.replace(
-    "}\n", ", failure: {normal_force: 200, shear_force: 100}}\n")))
-check("failing_welds", failing, [], ranks=3)
-with open(os.path.join(WORK, "failing_welds-3x1", "summary.json")) as f:
-    if not json.load(f).get("failed_welds"):
-        failures.append("failing_welds: no weld failed (the check compares nothing)")
+# welds that fail by their forces, and welds torn out of the sheet (eq. 6.11-15: the plastic
+# strain around them joined over the ranks)
+for label, keys in (("failing_welds", "normal_force: 200, shear_force: 100"),
+                    ("torn_welds", "plastic_strain: 0.001")):
+    model = deck_twin(label, "plate_hammer", lambda t: t.replace(WELDS, WELDS.replace(
+        "}\n", ", failure: {%s}}\n" % keys)))
+    if label == "failing_welds":
+        failing = model
+    check(label, model, [], ranks=3)
+    with open(os.path.join(WORK, label + "-3x1", "summary.json")) as f:
+        if not json.load(f).get("failed_welds"):
+            failures.append("%s: no weld failed (the check compares nothing)" % label)
 check("tiebreak", deck_twin("tiebreak", "plate_hammer", lambda t: t.replace(
     WELDS, "  - {type: tied, nodes: part_2, elements: part_1, tolerance: 0.006, "
            "failure: {normal_force: 2, shear_force: 1}}\n")), [])

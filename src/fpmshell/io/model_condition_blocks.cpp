@@ -284,18 +284,19 @@ void read_tied_surface(const YamlValue& item, Model& model) {
 /// A spot weld's `failure` (theory.md eqs. 6.11-13, 6.11-14): the forces at which it lets go,
 /// their exponents, a time.
 void read_weld_failure(const YamlValue& f, NodalRigidBody& body) {
-    const YamlMap fm =
-        f.map({"normal_force", "shear_force", "normal_exponent", "shear_exponent", "time"});
+    const YamlMap fm = f.map({"normal_force", "shear_force", "normal_exponent", "shear_exponent",
+                              "time", "plastic_strain"});
     NodalRigidBody::Failure& w = body.failure;
     w.normal_force = fm.non_negative_or("normal_force", 0.0);
     w.shear_force = fm.non_negative_or("shear_force", 0.0);
     w.normal_exponent = fm.positive_or("normal_exponent", 2.0);
     w.shear_exponent = fm.positive_or("shear_exponent", 2.0);
     if (fm.count({"time"}) > 0) w.time = fm.non_negative_or("time", 0.0);
+    if (fm.count({"plastic_strain"}) > 0) w.plastic_strain = fm.positive_or("plastic_strain", 1.0);
     if (!body.can_fail())
         f.fail(
             "a spot weld's failure needs normal_force or shear_force > 0 (the force at which it "
-            "lets go) or a time");
+            "lets go), a time or a plastic_strain");
 }
 
 }  // namespace

@@ -244,17 +244,22 @@ struct NodalRigidBody {
     /// A spot weld's failure (LS-DYNA's *CONSTRAINED_SPOTWELD SN, SS, N, M, TF; theory.md eq.
     /// 6.11-13): a group of two particles lets go for good once (f_n / normal_force)^
     /// normal_exponent + (f_s / shear_force)^shear_exponent >= 1, f_n the tension and f_s the
-    /// shear its constraint carries, or once the time reaches `time`. 0 forces leave their
-    /// term out; without any the group never lets go.
+    /// shear its constraint carries, or once the time reaches `time`, or once the plastic
+    /// strain of the sheets at one of its particles reaches `plastic_strain` (LS-DYNA's EP,
+    /// EPSF; eq. 6.11-15). 0 forces leave their term out; without any the group never lets go.
     struct Failure {
         Real normal_force = 0, shear_force = 0;
         Real normal_exponent = 2, shear_exponent = 2;
         Real time = std::numeric_limits<Real>::infinity();
+        Real plastic_strain = std::numeric_limits<Real>::infinity();
     };
     Failure failure;
     [[nodiscard]] bool can_fail() const {
         return failure.normal_force > 0 || failure.shear_force > 0 ||
-               failure.time < std::numeric_limits<Real>::infinity();
+               failure.time < std::numeric_limits<Real>::infinity() || fails_by_plastic_strain();
+    }
+    [[nodiscard]] bool fails_by_plastic_strain() const {
+        return failure.plastic_strain < std::numeric_limits<Real>::infinity();
     }
 };
 

@@ -26,7 +26,8 @@ ExplicitSolver::ExplicitSolver(const Model& model)
       topology_(model),
       elements_(model, topology_, make_element_group, false),  // each rank's state alone
       ranks_(model, topology_, elements_),
-      nodal_rigid_bodies_(model) {
+      nodal_rigid_bodies_(model),
+      weld_sheet_strain_(model) {
     const std::size_t np = model.nodes.size();
     elements_.set_decomposition(&ranks_.decomposition());
     s_.resize(np);
@@ -191,9 +192,12 @@ void ExplicitSolver::cycle(const CyclePolicy& policy, Real load_time, Real dt_ca
             nodal_rigid_bodies_.make_rigid(s_, at, model_.curves, true);
             if (tied_) tied_->impose(s_, *bc_, dt.c1 * dt.dt_n, false);
         }
-        if (nodal_rigid_bodies_.has_failing_welds() &&  // eq. 6.11-13
-            nodal_rigid_bodies_.judge_welds(s_, dt.c1 * dt.dt_n, at.t_next) > 0)
-            release_failed_welds();
+        if (nodal_rigid_bodies_.has_failing_welds()) {  // eqs. 6.11-13 to 6.11-15
+            if (!weld_sheet_strain_.empty()) weld_sheet_strain_.update(elements_, ranks_);
+            if (nodal_rigid_bodies_.judge_welds(s_, dt.c1 * dt.dt_n, at.t_next,
+                                                weld_sheet_strain_) > 0)
+                release_failed_welds();
+        }
         advance_particles(dt, particles);  // 8-9
     }
     book_energies(dt, particles);  // 8 §6.8

@@ -69,6 +69,8 @@ public:
     [[nodiscard]] Real first_erosion_time() const { return first_erosion_time_; }
     /// The rigid bodies (§6.11), and through them the spot welds that failed (eq. 6.11-13).
     [[nodiscard]] const NodalRigidBodies& nodal_rigid_bodies() const { return nodal_rigid_bodies_; }
+    /// The sheets' plastic strain at the ductile welds' particles, at the last step (eq. 6.11-15).
+    [[nodiscard]] const WeldSheetStrain& weld_sheet_strain() const { return weld_sheet_strain_; }
     [[nodiscard]] const Model& model() const { return model_; }
     [[nodiscard]] const MeshTopology& topology() const { return topology_; }
     /// The mass added by control.mass_scaling per section (§6.10; zero without it).
@@ -235,6 +237,7 @@ private:
     std::vector<RigidBodyState> bodies_;
     std::unique_ptr<ContactSolver> contact_;  ///< null without contact definitions
     NodalRigidBodies nodal_rigid_bodies_;     ///< `constraints` and rigid materials (§6.11)
+    WeldSheetStrain weld_sheet_strain_;       ///< at the ductile welds (eq. 6.11-15)
     std::unique_ptr<TiedSurfaces> tied_;      ///< `constraints` of type tied (§6.12)
     /// per particle, the mass the contact gives it (its body's, eq. 6.11-5); empty without
     /// contact or nodal rigid bodies

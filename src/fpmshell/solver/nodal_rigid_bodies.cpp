@@ -159,7 +159,8 @@ NodalRigidBodies::WeldLoad NodalRigidBodies::generalized_weld_load(const SpotWel
     return worst;
 }
 
-std::size_t NodalRigidBodies::judge_welds(const ParticleState& s, Real impulse_time, Real time) {
+std::size_t NodalRigidBodies::judge_welds(const ParticleState& s, Real impulse_time, Real time,
+                                          const WeldSheetStrain& sheets) {
     std::size_t failed = 0;
     std::fill(weld_force_.begin(), weld_force_.end(), Vec3::Zero());
     std::fill(weld_tension_.begin(), weld_tension_.end(), Real(0));
@@ -173,7 +174,11 @@ std::size_t NodalRigidBodies::judge_welds(const ParticleState& s, Real impulse_t
         weld_force_[w.entry] = load.force;
         weld_tension_[w.entry] = load.tension;
         weld_shear_[w.entry] = load.shear;
-        if (load.criterion >= 1 || time >= group.failure.time) {
+        const bool torn_out =  // eq. 6.11-15
+            group.fails_by_plastic_strain() &&
+            std::any_of(group.nodes.begin(), group.nodes.end(),
+                        [&](Index p) { return sheets.at(p) >= group.failure.plastic_strain; });
+        if (load.criterion >= 1 || time >= group.failure.time || torn_out) {
             let_go_[w.entry] = 1;
             ++failed;
         }

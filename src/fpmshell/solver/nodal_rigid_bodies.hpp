@@ -15,6 +15,7 @@
 #include "fpmshell/model/rigid_body_partition.hpp"
 #include "fpmshell/model/spot_weld_sides.hpp"
 #include "fpmshell/solver/boundary_conditions.hpp"
+#include "fpmshell/solver/weld_sheet_strain.hpp"
 
 namespace fpmshell {
 
@@ -69,9 +70,11 @@ public:
 
     /// Eq. 6.11-13, after the step's last make_rigid: each spot weld that can fail and has not
     /// judges the force it carried, its side's impulses over `impulse_time` (c1 dt_n), against
-    /// its limits, and `time` (t_{n+1}) against its failure time. The welds that fail let go
-    /// for good: the bodies are formed again without them. Returns how many failed now.
-    std::size_t judge_welds(const ParticleState& s, Real impulse_time, Real time);
+    /// its limits, `time` (t_{n+1}) against its failure time, and the plastic strain of the
+    /// sheets at its particles (`sheets`, eq. 6.11-15) against its own. The welds that fail
+    /// let go for good: the bodies are formed again without them. Returns how many failed now.
+    std::size_t judge_welds(const ParticleState& s, Real impulse_time, Real time,
+                            const WeldSheetStrain& sheets);
     /// The spot welds that have failed, and the time the first did (-1 before).
     [[nodiscard]] std::size_t failed_welds() const;
     [[nodiscard]] Real first_weld_failure_time() const { return first_weld_failure_time_; }

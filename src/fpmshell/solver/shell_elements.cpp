@@ -141,6 +141,20 @@ Real ShellElements::plastic_strain(Index e, int k) const {
     return n > 0 ? sum / static_cast<Real>(n) : 0.0;
 }
 
+Real ShellElements::mean_plastic_strain(Index e) const {
+    const std::size_t ue = static_cast<std::size_t>(e);
+    const ElementGroup& group = group_of(ue);
+    if (group.stress_only()) return 0.0;  // elastic
+    const ShellRule& rule = group.rule();
+    const GroupPlace place = place_of(ue);
+    Real sum = 0;  // in-plane weights sum to 1, through-thickness ones to 2
+    std::size_t p = 0;
+    for (const TrianglePoint& g : rule.inplane)
+        for (const ThicknessPoint& k : rule.through)
+            sum += 0.5 * g.weight * k.weight * group.plastic_strain(place, p++);
+    return sum;
+}
+
 Real ShellElements::min_critical_dt(const std::vector<Vec3>& x, Index* where) const {
     Real best = std::numeric_limits<Real>::infinity();
     Index arg = -1;

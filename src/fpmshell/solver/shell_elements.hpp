@@ -90,6 +90,9 @@ public:
     /// Equivalent plastic strain of element e averaged over its in-plane points, at the
     /// thickness point of index k (0 = bottom, n-1 = top).
     [[nodiscard]] Real plastic_strain(Index e, int k) const;
+    /// Equivalent plastic strain of element e averaged over all its points by the rule's
+    /// weights (in the plane and through the thickness): its mean over the element's volume.
+    [[nodiscard]] Real mean_plastic_strain(Index e) const;
     /// The state of point p of element e (the points of its section's rule, in-plane major).
     [[nodiscard]] MaterialPoint point_state(Index e, std::size_t p) const {
         const auto ue = static_cast<std::size_t>(e);

@@ -277,14 +277,16 @@ public:
     void require_rigid_part(const Card& f, long long pid, const char* what);
     // ---- spot welds (deck_welds.cpp)
     /// *CONSTRAINED_SPOTWELD (_ID): each weld's two nodes move as one rigid body until the
-    /// weld fails by SN, SS (N, M) or TF (theory.md eq. 6.11-13); EP noted.
+    /// weld fails by SN, SS (N, M), TF (theory.md eq. 6.11-13) or EP (eq. 6.11-15).
     void spot_weld(const DeckBlock& b);
     /// *CONSTRAINED_GENERALIZED_WELD_SPOT (_ID): the nodes of NSID move as one rigid body; a
-    /// weld of two nodes fails as a spot weld does (TFAIL, SN, SS, N, M); EPSF noted.
+    /// weld of two nodes fails as a spot weld does (TFAIL, SN, SS, N, M, EPSF).
     void generalized_spot_weld(const DeckBlock& b);
-    /// The `failure` keys of a weld card: SN at field `sn` (SS, N, M after it), TF at `tf`;
-    /// `defaulted` set where a blank exponent is taken as 2.
-    std::string weld_failure(const Card& f, std::size_t sn, std::size_t tf, bool& defaulted);
+    /// The `failure` keys of a weld card: SN at field `sn` (SS, N, M after it), TF at `tf`,
+    /// the plastic strain at `ep` (named `ep_name`); `defaulted` set where a blank exponent is
+    /// taken as 2.
+    std::string weld_failure(const Card& f, std::size_t sn, std::size_t tf, std::size_t ep,
+                             const char* ep_name, bool& defaulted);
     void rigid_wall(const DeckBlock& b);
     void add_wall(const WallDef& w, const Card& f);
     static std::array<Real, 3> unit(const std::array<Real, 3>& v);
