@@ -12,9 +12,12 @@ bool JohnsonCookDamage::judge(const FailurePacks& in, Real dt, RealPack* state,
                               MaskOf<RealPack>* failed) const {
     return accumulate_damage(
         in, state, failed, [&](std::size_t j, const RealPack& d_alpha, const MaskOf<RealPack>&) {
-            const RealPack rate = dt > 0 ? d_alpha * (1.0 / dt) : RealPack(0.0);
+            // the rate and the temperature only where their terms are (failure_strain reads
+            // them there alone)
+            const RealPack rate = p_.d4 != 0 && dt > 0 ? d_alpha * (1.0 / dt) : RealPack(0.0);
             const RealPack t_star =
-                min(max(heating_ * in.plastic_work[j], RealPack(0.0)), RealPack(1.0));
+                p_.d5 != 0 ? min(max(heating_ * in.plastic_work[j], RealPack(0.0)), RealPack(1.0))
+                           : RealPack(0.0);
             return failure_strain(
                 stress_triaxiality(in.stress[0][j], in.stress[1][j], in.stress[2][j]), rate,
                 t_star);

@@ -38,7 +38,8 @@ public:
     /// eps_f at triaxiality eta, plastic strain rate `rate` and homologous temperature t_star,
     /// on every lane of T.
     template <class T>
-    [[nodiscard]] T failure_strain(const T& eta, const T& rate, const T& t_star) const {
+    [[nodiscard]] FPMSHELL_INLINE T failure_strain(const T& eta, const T& rate,
+                                                   const T& t_star) const {
         T eps = p_.d1 + p_.d2 * vector_exp(p_.d3 * eta);
         if (p_.d4 != 0)  // 1 + D4 ln max(rate / rate_0, 1)
             eps *= 1.0 + p_.d4 * vector_log(max(rate * (1.0 / p_.reference_strain_rate), T(1.0)));
