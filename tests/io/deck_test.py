@@ -412,6 +412,35 @@ r = subprocess.run([FPM, "check", os.path.join(WORK, "jc_damage", "model.k")], c
 check("Johnson-Cook damage: check notes EROD read as 0",
       r.returncode == 0 and "EROD != 0 read as 0" in r.stdout + r.stderr, r.stdout + r.stderr)
 
+# ---- *MAT_SIMPLIFIED_JOHNSON_COOK (098): tube_crush.k's steel written as the simplified card
+# (EPSO blank: 1, its default), the same history.csv bytes as the *MAT_JOHNSON_COOK deck
+# (isothermal: its CP is 0); with PSFAIL against the twin with failure: {plastic_strain}, the
+# folds erode; caps on the flow stress (SIGMAX, SIGSAT) and PSFAIL < 0 refused.
+JC_CARDS = tube_deck[tube_deck.index("*MAT_JOHNSON_COOK"):tube_deck.index("*EOS_LINEAR_POLYNOMIAL")]
+SIMPLIFIED = ("*MAT_SIMPLIFIED_JOHNSON_COOK\n$#     mid        ro         e        pr        vp\n"
+              "         1    7850.0   2.1e+11       0.3\n"
+              "$#       a         b         n         c    psfail    sigmax    sigsat      epso\n"
+              "   2.5e+08   4.0e+08      0.45     0.015%s\n")
+h_simple = deck_against_twin(
+    "simplified Johnson-Cook", os.path.join(WORK, "simplified_jc"), os.path.join(TUBE, "tube_crush_mesh.k"),
+    tube_deck.replace(JC_CARDS, SIMPLIFIED % ""), tube_twin)
+check("simplified Johnson-Cook: the history of the *MAT_JOHNSON_COOK deck, byte for byte",
+      h_simple is not None and h_cold is not None and read(h_simple) == read(h_cold), "the files differ")
+h_psfail = deck_against_twin(
+    "simplified Johnson-Cook PSFAIL", os.path.join(WORK, "simplified_jc_fail"),
+    os.path.join(TUBE, "tube_crush_mesh.k"), tube_deck.replace(JC_CARDS, SIMPLIFIED % "      0.15"),
+    tube_twin.replace(JC_TWIN, JC_TWIN + "    failure: {plastic_strain: 0.15}\n"))
+check_erodes("simplified Johnson-Cook PSFAIL: the tube's folds erode", h_psfail)
+for name, fields, message in (("SIGMAX", "       0.0     5e+08", "SIGMAX (a cap on the flow stress)"),
+                              ("SIGSAT", "       0.0      1e28     6e+08", "SIGSAT (a cap on the flow stress)"),
+                              ("PSFAIL < 0", "      -1.0", "PSFAIL must be >= 0")):
+    folder = write_case("simplified_jc_bad", tube_deck.replace(JC_CARDS, SIMPLIFIED % fields),
+                        os.path.join(TUBE, "tube_crush_mesh.k"))
+    r = subprocess.run([FPM, "check", os.path.join(folder, "model.k")], capture_output=True, text=True)
+    check(f"simplified Johnson-Cook: {name} refused with exit 2 and one sentence naming the card",
+          r.returncode == 2 and r.stderr.count("error:") == 1 and message in r.stderr and
+          "*MAT_SIMPLIFIED_JOHNSON_COOK" in r.stderr and "model.k:" in r.stderr, r.stderr)
+
 # ---- *MAT_024 FAIL: strip_pull.k's steel fails at a plastic strain of 1 % (theory.md §7.6),
 # against the twin with failure: {plastic_strain}; elements erode (summary.json)
 STRIP_MAT = "$#     mid        ro         e        pr      sigy\n         1    7850.0   2.1e+11       0.3   3.0e+08\n"

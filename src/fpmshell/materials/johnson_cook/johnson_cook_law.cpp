@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <string>
+#include <utility>
 
 #include "fpmshell/io/lsdyna/deck_material_card.hpp"
 #include "fpmshell/io/yaml_access.hpp"
@@ -135,6 +136,37 @@ void mat_johnson_cook(deck::MaterialCard& card) {
     card.note(f, "its *EOS is irrelevant: a shell is in plane stress");
 }
 
+/// *MAT_SIMPLIFIED_JOHNSON_COOK (098): MID, RO, E, PR, VP; A, B, N, C, PSFAIL, SIGMAX, SIGSAT,
+/// EPSO. The Johnson-Cook flow stress without temperature, its rate term at EPSO, and failure at
+/// the plastic strain PSFAIL (0 or its default 1e17: none).
+void mat_simplified_johnson_cook(deck::MaterialCard& card) {
+    const deck::Card f = card.required(0, "MID, RO, E, PR, VP");
+    const deck::Card g = card.required(1, "A, B, N, C, PSFAIL, SIGMAX, SIGSAT, EPSO");
+    card.id(f);
+    card.plastic();
+    card.key("type: johnson_cook");
+    card.elastic(f, f.real(2, "E"), f.real(3, "PR"));
+    if (f.real(4, "VP") != 0) card.note(f, "VP = 1 read as the scaled yield stress (VP = 0)");
+    card.key("A: " + deck::num(g.real(0, "A")));
+    card.key("B: " + deck::num(g.real(1, "B")));
+    card.key("n: " + deck::num(g.real(2, "N")));
+    const Real c = g.real(3, "C"), eps0 = g.real(7, "EPSO", 1.0);
+    if (c != 0) {
+        if (!(eps0 > 0)) g.fail("EPSO must be > 0 with a rate term C");
+        card.key("C: " + deck::num(c));
+        card.key("reference_strain_rate: " + deck::num(eps0));
+    }
+    // LS-DYNA's defaults of the caps (1e28) leave the flow stress uncapped
+    for (const auto& [k, name] :
+         {std::pair{std::size_t{5}, "SIGMAX"}, std::pair{std::size_t{6}, "SIGSAT"}})
+        if (g.real(k, name, 1e28) < 1e27)
+            g.fail(std::string(name) +
+                   " (a cap on the flow stress) is not supported: leave it blank (no cap)");
+    const Real psfail = g.real(4, "PSFAIL", 1e17);
+    if (psfail < 0) g.fail("PSFAIL must be >= 0 (the plastic strain at failure; 0: none)");
+    if (psfail > 0 && psfail < 1e16) card.failure("plastic_strain: " + deck::num(psfail));
+}
+
 }  // namespace
 
 ThermalSoftening adiabatic_softening(Real m, Real melt_temperature, Real room_temperature,
@@ -164,7 +196,8 @@ MaterialLaw johnson_cook_law() {
              "normal_anisotropy"},
             read_johnson_cook,
             make_j2_group,
-            {{{"MAT_JOHNSON_COOK", "MAT_015"}, mat_johnson_cook}}};
+            {{{"MAT_JOHNSON_COOK", "MAT_015"}, mat_johnson_cook},
+             {{"MAT_SIMPLIFIED_JOHNSON_COOK", "MAT_098"}, mat_simplified_johnson_cook}}};
 }
 
 }  // namespace fpmshell
