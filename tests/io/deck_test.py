@@ -431,9 +431,16 @@ h_psfail = deck_against_twin(
     os.path.join(TUBE, "tube_crush_mesh.k"), tube_deck.replace(JC_CARDS, SIMPLIFIED % "      0.15"),
     tube_twin.replace(JC_TWIN, JC_TWIN + "    failure: {plastic_strain: 0.15}\n"))
 check_erodes("simplified Johnson-Cook PSFAIL: the tube's folds erode", h_psfail)
+h_default = deck_against_twin(
+    "simplified Johnson-Cook PSFAIL at its default", os.path.join(WORK, "simplified_jc_default"),
+    os.path.join(TUBE, "tube_crush_mesh.k"), tube_deck.replace(JC_CARDS, SIMPLIFIED % "     1e+17"),
+    tube_twin)
+check("simplified Johnson-Cook: PSFAIL 1e17 written out (LS-DYNA's default) is no criterion",
+      h_default is not None and h_simple is not None and read(h_default) == read(h_simple),
+      "the files differ")
 for name, fields, message in (("SIGMAX", "       0.0     5e+08", "SIGMAX (a cap on the flow stress)"),
                               ("SIGSAT", "       0.0      1e28     6e+08", "SIGSAT (a cap on the flow stress)"),
-                              ("PSFAIL < 0", "      -1.0", "PSFAIL must be >= 0")):
+                              ("PSFAIL < 0", "      -1.0", "PSFAIL < 0")):
     folder = write_case("simplified_jc_bad", tube_deck.replace(JC_CARDS, SIMPLIFIED % fields),
                         os.path.join(TUBE, "tube_crush_mesh.k"))
     r = subprocess.run([FPM, "check", os.path.join(folder, "model.k")], capture_output=True, text=True)
@@ -457,6 +464,16 @@ if h_fail:
         header = f.readline()
     check("failure strain: energy.csv has the column eroded_internal", "eroded_internal" in header,
           header)
+# FAIL 1e21, LS-DYNA's default written out (as pydyna's decks do): no criterion, the twin without
+h_never = deck_against_twin(
+    "failure strain 1e21", os.path.join(WORK, "failure_never"), os.path.join(STRIP, "strip_pull_mesh.k"),
+    strip_deck.replace(STRIP_MAT, STRIP_MAT.replace("sigy\n", "sigy      etan      fail\n").replace(
+        "3.0e+08\n", "3.0e+08       0.0   1.0e+21\n")), strip_twin)
+if h_never:
+    with open(os.path.join(os.path.dirname(h_never), "energy.csv")) as f:
+        header = f.readline()
+    check("failure strain 1e21: no criterion (energy.csv without eroded_internal)",
+          "eroded_internal" not in header, header)
 
 # ---- *MAT_ADD_DAMAGE_GISSMO: strip_pull.k's steel with GISSMO's failure strain against
 # triaxiality (LCSDG), its regularization by element size (LCREGD), DMGEXP and NUMFIP, and its

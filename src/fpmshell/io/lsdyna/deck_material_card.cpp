@@ -39,7 +39,9 @@ void MaterialCard::failure_strain(const Card& c, std::size_t k, const char* name
         c.fail(std::string(name) +
                " < 0 (a user failure routine or a failure time) is not supported; give the "
                "plastic strain at failure (> 0) or 0 for none");
-    if (strain > 0) failure("plastic_strain: " + num(strain));
+    // 1e16 and above is never reached: LS-DYNA's own defaults (*MAT_024's 1e21, *MAT_098's
+    // 1e17), written out by deck generators, are no criterion
+    if (strain > 0 && strain < 1e16) failure("plastic_strain: " + num(strain));
 }
 
 void MaterialCard::failure(const std::string& criterion) { material_.failure.push_back(criterion); }

@@ -35,7 +35,8 @@ public:
     /// A plastic law's card (its parts take 5 points through the thickness unless NIP says).
     void plastic();
     /// The plastic strain at failure in field k of card c (*MAT_003 FS, *MAT_018 EPSF, *MAT_024
-    /// FAIL; theory.md §7.6): > 0 erodes the elements whose points reach it, 0 none, < 0 refused.
+    /// FAIL, *MAT_098 PSFAIL; theory.md §7.6): > 0 erodes the elements whose points reach it,
+    /// 0 or 1e16 and above none (LS-DYNA's defaults 1e21, 1e17 written out), < 0 refused.
     void failure_strain(const Card& c, std::size_t k, const char* name);
     /// A failure criterion, "name: value" (the material's `failure` key joins them), and the
     /// failed points that erode an element (> 0).

@@ -138,7 +138,7 @@ void mat_johnson_cook(deck::MaterialCard& card) {
 
 /// *MAT_SIMPLIFIED_JOHNSON_COOK (098): MID, RO, E, PR, VP; A, B, N, C, PSFAIL, SIGMAX, SIGSAT,
 /// EPSO. The Johnson-Cook flow stress without temperature, its rate term at EPSO, and failure at
-/// the plastic strain PSFAIL (0 or its default 1e17: none).
+/// the plastic strain PSFAIL (0, blank or its default 1e17: none).
 void mat_simplified_johnson_cook(deck::MaterialCard& card) {
     const deck::Card f = card.required(0, "MID, RO, E, PR, VP");
     const deck::Card g = card.required(1, "A, B, N, C, PSFAIL, SIGMAX, SIGSAT, EPSO");
@@ -162,9 +162,7 @@ void mat_simplified_johnson_cook(deck::MaterialCard& card) {
         if (g.real(k, name, 1e28) < 1e27)
             g.fail(std::string(name) +
                    " (a cap on the flow stress) is not supported: leave it blank (no cap)");
-    const Real psfail = g.real(4, "PSFAIL", 1e17);
-    if (psfail < 0) g.fail("PSFAIL must be >= 0 (the plastic strain at failure; 0: none)");
-    if (psfail > 0 && psfail < 1e16) card.failure("plastic_strain: " + deck::num(psfail));
+    card.failure_strain(g, 4, "PSFAIL");
 }
 
 }  // namespace
