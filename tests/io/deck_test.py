@@ -475,6 +475,32 @@ if h_never:
     check("failure strain 1e21: no criterion (energy.csv without eroded_internal)",
           "eroded_internal" not in header, header)
 
+# ---- *MAT_MODIFIED_PIECEWISE_LINEAR_PLASTICITY (123): strip_pull.k's steel as the modified card,
+# the twin's bytes; EPSMAJ and NUMINT against the twin with failure: {thresholds:
+# {max_principal_strain}, points}, elements erode; EPSTHIN and a filtered EPSMAJ refused
+STRIP_024 = "*MAT_PIECEWISE_LINEAR_PLASTICITY\n" + STRIP_MAT + "$#       c         p      lcss\n       0.0       0.0         5\n"
+assert STRIP_024 in strip_deck
+def modified_card(extra):
+    return strip_deck.replace(STRIP_024, STRIP_024.replace(
+        "*MAT_PIECEWISE_LINEAR_PLASTICITY", "*MAT_MODIFIED_PIECEWISE_LINEAR_PLASTICITY").replace(
+        "         5\n", "         5         0       0.0" + extra + "\n"))
+deck_against_twin("modified piecewise linear", os.path.join(WORK, "mat123"),
+                  os.path.join(STRIP, "strip_pull_mesh.k"), modified_card(""), strip_twin)
+h_major = deck_against_twin(
+    "modified piecewise linear EPSMAJ", os.path.join(WORK, "mat123_major"),
+    os.path.join(STRIP, "strip_pull_mesh.k"), modified_card("       0.0      0.05         1"),
+    strip_twin.replace("    poisson_ratio: 0.3\n    flow_curves:",
+                       "    poisson_ratio: 0.3\n    failure: {thresholds: {max_principal_strain: 0.05}, "
+                       "points: 1}\n    flow_curves:"))
+check_erodes("modified piecewise linear EPSMAJ: the strip's elements erode", h_major)
+for name, extra, message in (("EPSTHIN", "      0.03", "EPSTHIN (failure by thinning)"),
+                             ("filtered EPSMAJ", "       0.0     -0.05", "EPSMAJ < 0")):
+    folder = write_case("mat123_bad", modified_card(extra), os.path.join(STRIP, "strip_pull_mesh.k"))
+    r = subprocess.run([FPM, "check", os.path.join(folder, "model.k")], capture_output=True, text=True)
+    check(f"modified piecewise linear: {name} refused with exit 2 and one sentence naming the card",
+          r.returncode == 2 and r.stderr.count("error:") == 1 and message in r.stderr and
+          "*MAT_MODIFIED_PIECEWISE_LINEAR_PLASTICITY" in r.stderr, r.stderr)
+
 # ---- *MAT_ADD_DAMAGE_GISSMO: strip_pull.k's steel with GISSMO's failure strain against
 # triaxiality (LCSDG), its regularization by element size (LCREGD), DMGEXP and NUMFIP, and its
 # fading from the start (ECRIT and DCRIT 0, FADEXP 1), against the twin with failure: {tabulated}

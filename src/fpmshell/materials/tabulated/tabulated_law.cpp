@@ -172,6 +172,25 @@ void mat_piecewise_linear(deck::MaterialCard& card) {
         card.key("cowper_symonds: {D: " + deck::num(c) + ", q: " + deck::num(p) + "}");
 }
 
+/// *MAT_MODIFIED_PIECEWISE_LINEAR_PLASTICITY: *MAT_024's cards with EPSTHIN, EPSMAJ, NUMINT
+/// after VP on the second. EPSMAJ > 0 as `thresholds: {max_principal_strain}` (theory.md eq.
+/// 7.6-5: the largest principal total strain, the thickness direction's included, which is the
+/// in-plane major one wherever that is positive and the sheet thins), NUMINT > 0 as `points`;
+/// EPSTHIN (thinning) and EPSMAJ < 0 (filtered) refused.
+void mat_modified_piecewise_linear(deck::MaterialCard& card) {
+    mat_piecewise_linear(card);
+    const deck::Card g = card.optional(1);
+    if (g.real(5, "EPSTHIN") != 0)
+        g.fail("EPSTHIN (failure by thinning) is not supported: leave it blank or 0");
+    const Real major = g.real(6, "EPSMAJ");
+    if (major < 0)
+        g.fail("EPSMAJ < 0 (a filtered major strain) is not supported: give the strain (> 0)");
+    if (major > 0) card.failure("thresholds: {max_principal_strain: " + deck::num(major) + "}");
+    const long long numint = g.id(7, "NUMINT");
+    if (numint < 0) g.fail("NUMINT < 0 is not supported (give the number of points, or 0)");
+    if (numint > 0) card.failure_points(numint);
+}
+
 /// *MAT_TRANSVERSELY_ANISOTROPIC_ELASTIC_PLASTIC: MID, RO, E, PR, SIGY, ETAN, R, HLCID;
 /// IDSCALE, EA, COE, ICFLD, STRAINLT. Hill's normal anisotropy R (theory.md eq. 7.1-3) on a
 /// bilinear curve (SIGY, ETAN) or the flow curve HLCID.
@@ -229,14 +248,16 @@ J2Parameters& make_tabulated(Material& m, const std::vector<FlowCurvePoints>& cu
 }
 
 MaterialLaw tabulated_law() {
-    return {"tabulated",
-            true,
-            {"flow_curve", "flow_curves", "hardening_mix", "cowper_symonds", "normal_anisotropy"},
-            read_tabulated,
-            make_j2_group,
-            {{{"MAT_PIECEWISE_LINEAR_PLASTICITY", "MAT_024"}, mat_piecewise_linear},
-             {{"MAT_TRANSVERSELY_ANISOTROPIC_ELASTIC_PLASTIC", "MAT_037"},
-              mat_transversely_anisotropic}}};
+    return {
+        "tabulated",
+        true,
+        {"flow_curve", "flow_curves", "hardening_mix", "cowper_symonds", "normal_anisotropy"},
+        read_tabulated,
+        make_j2_group,
+        {{{"MAT_PIECEWISE_LINEAR_PLASTICITY", "MAT_024"}, mat_piecewise_linear},
+         {{"MAT_MODIFIED_PIECEWISE_LINEAR_PLASTICITY", "MAT_123"}, mat_modified_piecewise_linear},
+         {{"MAT_TRANSVERSELY_ANISOTROPIC_ELASTIC_PLASTIC", "MAT_037"},
+          mat_transversely_anisotropic}}};
 }
 
 }  // namespace fpmshell
