@@ -501,6 +501,40 @@ for name, extra, message in (("EPSTHIN", "      0.03", "EPSTHIN (failure by thin
           r.returncode == 2 and r.stderr.count("error:") == 1 and message in r.stderr and
           "*MAT_MODIFIED_PIECEWISE_LINEAR_PLASTICITY" in r.stderr, r.stderr)
 
+# ---- *MAT_024 LCSR (theory.md eq. 7.4-3): strip_pull.k's steel on its slowest curve (LCSS 11)
+# with a curve of the yield stress's factor against the strain rate, against the twin with
+# flow_curve and rate_scaling; with the table LCSS 5, LCSR is ignored (noted): the table's bytes;
+# LCSR beside C, P refused
+TWIN_TABLE = ("    flow_curves:\n      - {strain_rate: 0.001, points: [[0, 300.0e6], [0.1, 400.0e6], [0.5, 500.0e6]]}\n"
+              "      - {strain_rate: 100, points: [[0, 360.0e6], [0.1, 480.0e6], [0.5, 600.0e6]]}\n")
+SLOWEST = "    flow_curve: [[0, 300.0e6], [0.1, 400.0e6], [0.5, 500.0e6]]\n"
+assert TWIN_TABLE in strip_twin
+RATE_CURVE = "*DEFINE_CURVE\n        99\n                 0.0                 1.0\n" \
+             "               100.0                 1.3\n"
+def lcsr_deck(fields):
+    return strip_deck.replace(STRIP_024, STRIP_024.replace(
+        "       0.0       0.0         5\n", fields + "\n")).replace("*END\n", RATE_CURVE + "*END\n")
+h_lcsr, h_slow = (deck_against_twin(
+    name, os.path.join(WORK, folder), os.path.join(STRIP, "strip_pull_mesh.k"), lcsr_deck(fields),
+    strip_twin.replace(TWIN_TABLE, SLOWEST + extra)) for name, folder, fields, extra in (
+        ("rate scaling curve", "lcsr", "       0.0       0.0        11        99",
+         "    rate_scaling: [[0, 1], [100, 1.3]]\n"),
+        ("the slowest curve alone", "lcsr_none", "       0.0       0.0        11", "")))
+check("rate scaling curve: it changes the pull (the history differs from the curve alone)",
+      h_lcsr is not None and h_slow is not None and read(h_lcsr) != read(h_slow), "")
+h_table = deck_against_twin("rate scaling curve beside a table", os.path.join(WORK, "lcsr_table"),
+                            os.path.join(STRIP, "strip_pull_mesh.k"),
+                            lcsr_deck("       0.0       0.0         5        99"), strip_twin)
+r = subprocess.run([FPM, "check", os.path.join(WORK, "lcsr_table", "model.k")], capture_output=True,
+                   text=True)
+check("rate scaling curve beside a table: noted as ignored",
+      r.returncode == 0 and "LCSR ignored" in r.stdout + r.stderr, r.stdout + r.stderr)
+folder = write_case("lcsr_bad", lcsr_deck("      40.0       5.0        11        99"),
+                    os.path.join(STRIP, "strip_pull_mesh.k"))
+r = subprocess.run([FPM, "check", os.path.join(folder, "model.k")], capture_output=True, text=True)
+check("rate scaling curve beside C, P: refused with exit 2 and one sentence",
+      r.returncode == 2 and r.stderr.count("error:") == 1 and "not both" in r.stderr, r.stderr)
+
 # ---- *MAT_ADD_DAMAGE_GISSMO: strip_pull.k's steel with GISSMO's failure strain against
 # triaxiality (LCSDG), its regularization by element size (LCREGD), DMGEXP and NUMFIP, and its
 # fading from the start (ECRIT and DCRIT 0, FADEXP 1), against the twin with failure: {tabulated}
@@ -636,6 +670,16 @@ h_081 = deck_against_twin(
         "    poisson_ratio: 0.3\n    damage: {start: 0.01, rupture: 0.03}\n"
         "    failure: {plastic_strain: 0.03, points: 1}\n    flow_curves:"))
 check_erodes("*MAT_081: the strip ruptures and erodes", h_081)
+# its LCSR as *MAT_024's (on the slowest curve LCSS 11): the twin with rate_scaling
+deck_against_twin(
+    "*MAT_081 LCSR", os.path.join(WORK, "mat081_lcsr"), os.path.join(STRIP, "strip_pull_mesh.k"),
+    strip_deck.replace(MAT_024, MAT_081.replace("         5         0      0.03",
+                                                "        11        99      0.03")).replace(
+        "*END\n", RATE_CURVE + "*END\n"),
+    strip_twin.replace("    type: tabulated\n", "    type: plastic_damage\n").replace(
+        TWIN_TABLE,
+        "    damage: {start: 0.01, rupture: 0.03}\n    failure: {plastic_strain: 0.03, points: 1}\n" +
+        SLOWEST + "    rate_scaling: [[0, 1], [100, 1.3]]\n"))
 
 # ---- friction in a *CONTACT_ card: plate_hammer.k's self-contact (the hammer on the doubler and
 # the plate) with FS 0.2, FD 0.1, DC 5 (LS-DYNA's decay, theory.md eq. 8.4-5), against the twin

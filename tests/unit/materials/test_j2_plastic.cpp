@@ -475,6 +475,30 @@ TEST(J2Plastic, RateFactorsFollowTheirFormulas) {
     EXPECT_DOUBLE_EQ(cs.value(0.0), 1.0);
 }
 
+// A curve of the factor against the rate (LS-DYNA's *MAT_024 LCSR, eq. 7.4-3): piecewise linear
+// through its points, its end segments going on past them; every lane of a pack its scalar; and
+// the stress of a perfectly plastic equibiaxial path at a constant rate, sigma_y R(rate).
+TEST(J2Plastic, RateScalingCurveGivesTheFactorOfTheRate) {
+    RateFactor curve;
+    curve.kind = RateFactor::Kind::Curve;
+    curve.scaling = PiecewiseLinearCurve({0.0, 50.0, 200.0}, {1.0, 1.2, 1.5});
+    EXPECT_DOUBLE_EQ(curve.value(0.0), 1.0);
+    EXPECT_DOUBLE_EQ(curve.value(50.0), 1.2);
+    EXPECT_NEAR(curve.value(100.0), 1.3, 1e-15);
+    EXPECT_NEAR(curve.value(300.0), 1.7, 1e-15);  // the last segment goes on
+    RealPack rates(0.0);
+    for (int l = 0; l < k_lanes; ++l) set_lane(rates, l, 37.0 * l);
+    const RealPack factors = curve.value(rates);
+    for (int l = 0; l < k_lanes; ++l) EXPECT_EQ(lane(factors, l), curve.value(37.0 * l));
+    const Real eps_dot = 50.0, dt = 1e-6, rate = 2.0 * eps_dot;
+    const J2Plastic m = bilinear(0.0, 1.0, curve);
+    const int n = 400;  // 0.02 total strain; the filter (memory 10 steps) has settled
+    const MaterialPoint p =
+        apply(m, MaterialPoint{}, Voigt3(eps_dot * dt * n, eps_dot * dt * n, 0), n, dt);
+    EXPECT_NEAR(p.strain_rate, rate, 1e-9 * rate);
+    EXPECT_NEAR(p.stress(0), k_sy * 1.3, 1e-7 * k_sy);
+}
+
 TEST(J2Plastic, ElasticRangeIsLinearElastic) {
     const J2Plastic m = bilinear(1000.0, 1.0);
     const Voigt3 d(2e-4, -1e-4, 3e-4);

@@ -52,6 +52,8 @@ void MaterialCard::failure_points(long long points) {
 
 void MaterialCard::flow_curve_id(long long lcss) { material_.lcss = lcss; }
 
+void MaterialCard::rate_curve_id(long long lcsr) { material_.lcsr = lcsr; }
+
 std::vector<Point2> MaterialCard::curve_of(const Card& eps, const Card& es) {
     std::vector<Point2> points;
     for (std::size_t k = 0; k < 8; ++k) {

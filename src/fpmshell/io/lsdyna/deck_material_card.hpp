@@ -45,6 +45,9 @@ public:
     /// The curve or table of the flow stress (*MAT_024 LCSS): written with the material once the
     /// deck's curves are known.
     void flow_curve_id(long long lcss);
+    /// The curve of the yield stress's factor against the strain rate (*MAT_024 LCSR), written
+    /// as `rate_scaling` once the deck's curves are known.
+    void rate_curve_id(long long lcsr);
     /// The points (EPS_k, ES_k) of the cards eps (EPS1..EPS8) and es (ES1..ES8) of *MAT_024 and
     /// *MAT_081: the first, and every other not both 0.
     [[nodiscard]] static std::vector<Point2> curve_of(const Card& eps, const Card& es);

@@ -208,6 +208,10 @@ void DeckTranslator::write_materials(std::vector<Line>& out) {
         std::string keys;
         for (const std::string& k : m.keys) keys += (keys.empty() ? "" : ", ") + k;
         if (m.lcss != 0) keys += ", " + flow_curves(m);
+        if (m.lcsr != 0) {
+            const std::string scaling = rate_scaling(m);
+            if (!scaling.empty()) keys += ", " + scaling;
+        }
         if (!m.failure.empty()) {  // every criterion of its card and of *MAT_ADD_... cards
             std::string f;
             for (const std::string& c : m.failure) f += (f.empty() ? "" : ", ") + c;
@@ -241,6 +245,20 @@ std::string DeckTranslator::flow_curves(const MaterialDef& m) {
         s += std::string(k ? ", " : "") + "{strain_rate: " + num(t->second.values[k]) +
              ", points: " + points_text(curves_.at(t->second.curves[k]).points) + "}";
     return s + "]";
+}
+
+/// The rate factor of a *MAT_024's LCSR (theory.md eq. 7.4-3), "" where its LCSS is a table
+/// (which gives the rates itself: LCSR ignored, noted).
+std::string DeckTranslator::rate_scaling(const MaterialDef& m) {
+    const DeckBlock& b = *m.at.block;
+    if (tables_.count(m.lcss)) {
+        note(b, m.at.line, "LCSR ignored: LCSS is a table of curves per strain rate");
+        return "";
+    }
+    const auto c = curves_.find(m.lcsr);
+    if (c == curves_.end())
+        deck_fail(b, m.at.line, "LCSR " + std::to_string(m.lcsr) + ": no *DEFINE_CURVE defines it");
+    return "rate_scaling: " + points_text(c->second.points);
 }
 
 void DeckTranslator::write_curves(std::vector<Line>& out) {

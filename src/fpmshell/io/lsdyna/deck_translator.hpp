@@ -52,6 +52,7 @@ struct MaterialDef {
     std::string keyword;
     std::vector<std::string> keys;  ///< "type: elastic", "density: 7850", ... (flow curves later)
     long long lcss = 0;             ///< *MAT_024: the curve or table of the flow stress
+    long long lcsr = 0;             ///< *MAT_024: the curve of the yield stress's rate factor
     bool plastic = false;
     /// its failure criteria ("plastic_strain: 0.2", ...) and the failed points that erode an
     /// element ("" for the default), written as one `failure` key
@@ -230,6 +231,7 @@ public:
     void define_table(const DeckBlock& b);
     void write_materials(std::vector<Line>& out);
     /// The flow curve (or the curves per rate) of a *MAT_024's LCSS.
+    std::string rate_scaling(const MaterialDef& m);
     std::string flow_curves(const MaterialDef& m);
     void write_sections(std::vector<Line>& out);
     std::string thickness_rule_keys(const SectionDef& s, const MaterialDef& m, long long pid);

@@ -64,13 +64,13 @@ J2Parameters& make_bilinear(Material& m, Real yield_stress, Real tangent_modulus
 }
 
 MaterialLaw bilinear_law() {
-    return {
-        "j2_plastic",
-        true,
-        {"yield_stress", "tangent_modulus", "hardening_mix", "cowper_symonds", "normal_anisotropy"},
-        read_bilinear,
-        make_j2_group,
-        {{{"MAT_PLASTIC_KINEMATIC", "MAT_003"}, mat_plastic_kinematic}}};
+    return {"j2_plastic",
+            true,
+            {"yield_stress", "tangent_modulus", "hardening_mix", "cowper_symonds", "rate_scaling",
+             "normal_anisotropy"},
+            read_bilinear,
+            make_j2_group,
+            {{{"MAT_PLASTIC_KINEMATIC", "MAT_003"}, mat_plastic_kinematic}}};
 }
 
 }  // namespace fpmshell

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -80,15 +81,20 @@ struct FlowStress {
     }
 };
 
-/// The rate dependence of a plastic material: a factor R(rate) >= 1 on the yield radius
-/// (Cowper-Symonds, Johnson-Cook), or, for a table of flow curves (Kind::Table), the position
-/// of the rate among the table's rates, which selects the curve (FlowTable::position).
+/// The rate dependence of a plastic material: a factor R(rate) on the yield radius
+/// (Cowper-Symonds, Johnson-Cook, a curve of the factor against the rate), or, for a table of
+/// flow curves (Kind::Table), the position of the rate among the table's rates, which selects
+/// the curve (FlowTable::position).
 struct RateFactor {
-    enum class Kind { None, CowperSymonds, JohnsonCook, Table };
+    enum class Kind { None, CowperSymonds, JohnsonCook, Table, Curve };
     Kind kind = Kind::None;
     Real d = 0, q = 1;               ///< Cowper-Symonds: 1 + (rate / D)^(1/q)
     Real c = 0, reference_rate = 1;  ///< Johnson-Cook: 1 + C ln(max(rate / rate_0, 1))
     std::vector<Real> table_rates;   ///< Table: the rates of its curves (FlowTable::rates())
+    /// Curve (LS-DYNA's *MAT_024 LCSR; theory.md eq. 7.4-3): the factor piecewise linear in
+    /// the rate through its points, its end segments going on past them (as LS-DYNA extends a
+    /// curve); the points' rates increasing, the factors > 0 and not decreasing
+    PiecewiseLinearCurve scaling{{}, {}};
 
     [[nodiscard]] bool active() const { return kind != Kind::None; }
     [[nodiscard]] bool selects_curve() const { return kind == Kind::Table; }
@@ -109,6 +115,16 @@ struct RateFactor {
                 const MaskOf<T> fast = rate > reference_rate;
                 const T ratio = select(fast, rate * (1.0 / reference_rate), T(1.0));
                 return select(fast, 1.0 + c * vector_log(ratio), T(1.0));
+            }
+            case Kind::Curve: {  // lane by lane: a lane equals its scalar
+                if constexpr (std::is_same_v<T, Real>) {
+                    return scaling.at(rate).value;
+                } else {
+                    T factor(1.0);
+                    for (int l = 0; l < lanes_of<T>; ++l)
+                        set_lane(factor, l, scaling.at(lane(rate, l)).value);
+                    return factor;
+                }
             }
             default:
                 return T(1.0);

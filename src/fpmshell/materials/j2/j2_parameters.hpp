@@ -16,6 +16,7 @@ namespace fpmshell {
 
 class ElementGroup;
 class YamlMap;
+class YamlValue;
 
 struct J2Parameters {
     FlowStress flow;
@@ -34,8 +35,11 @@ J2Parameters& set_j2_parameters(Material& m, const std::string& law, const J2Par
 
 /// The keys every J2 law reads: hardening_mix and normal_anisotropy.
 void read_j2_common(const YamlMap& keys, J2Parameters& p);
-/// `cowper_symonds: {D, q}` (the laws without a rate term of their own).
+/// `cowper_symonds: {D, q}` or `rate_scaling: [[rate, factor], ...]` (the laws without a rate
+/// term of their own; not both).
 void read_cowper_symonds(const YamlMap& keys, J2Parameters& p);
+/// `rate_scaling`: the factor on the yield stress against the strain rate (eq. 7.4-3).
+void read_rate_scaling(const YamlValue& v, J2Parameters& p);
 
 /// The J2 material of a material of a J2 law (its scalar update and its block path).
 [[nodiscard]] J2Plastic make_j2_plastic(const Material& m);

@@ -51,7 +51,6 @@ void mat_plasticity_with_damage(deck::MaterialCard& card) {
     if (start < 0) f.fail("EPPF must be >= 0");
     if (!(rupture > start)) g.fail("EPPFR must be above EPPF");
     const long long lcss = g.id(2, "LCSS");
-    if (g.id(3, "LCSR") != 0) g.fail("LCSR (a strain-rate scaling curve) is not supported");
     if (g.id(6, "LCDM") != 0) g.fail("LCDM (a nonlinear damage curve) is not supported");
     if (g.real(5, "VP") != 0) card.note(g, "VP = 1 read as the scaled yield stress (VP = 0)");
     if (f.real(7, "TDEL") != 0) card.note(f, "TDEL ignored: elements erode at rupture");
@@ -71,6 +70,10 @@ void mat_plasticity_with_damage(deck::MaterialCard& card) {
     const Real c = g.real(0, "C"), p = g.real(1, "P");
     if (c > 0 || p > 0)
         card.key("cowper_symonds: {D: " + deck::num(c) + ", q: " + deck::num(p) + "}");
+    if (const long long lcsr = g.id(3, "LCSR"); lcsr != 0) {  // as *MAT_024's
+        if (c > 0 || p > 0) g.fail("give C, P (Cowper-Symonds) or LCSR (a rate curve), not both");
+        card.rate_curve_id(lcsr);
+    }
     card.key("damage: {start: " + deck::num(start) + ", rupture: " + deck::num(rupture) + "}");
     if (rupture < 1e13) {  // the default EPPFR: no rupture
         card.failure("plastic_strain: " + deck::num(rupture));
@@ -91,8 +94,8 @@ void mat_plasticity_with_damage_ortho(deck::MaterialCard& card) {
 MaterialLaw plastic_damage_law() {
     return {"plastic_damage",
             true,
-            {"flow_curve", "flow_curves", "hardening_mix", "cowper_symonds", "normal_anisotropy",
-             "damage"},
+            {"flow_curve", "flow_curves", "hardening_mix", "cowper_symonds", "rate_scaling",
+             "normal_anisotropy", "damage"},
             read_plastic_damage,
             make_plastic_damage_group,
             {{{"MAT_PLASTICITY_WITH_DAMAGE", "MAT_081"}, mat_plasticity_with_damage},

@@ -63,7 +63,8 @@ void mat_power_law(deck::MaterialCard& card) {
 MaterialLaw power_law_law() {
     return {"power_law",
             true,
-            {"k", "n", "yield_stress", "hardening_mix", "cowper_symonds", "normal_anisotropy"},
+            {"k", "n", "yield_stress", "hardening_mix", "cowper_symonds", "rate_scaling",
+             "normal_anisotropy"},
             read_power_law,
             make_j2_group,
             {{{"MAT_POWER_LAW_PLASTICITY", "MAT_018"}, mat_power_law}}};

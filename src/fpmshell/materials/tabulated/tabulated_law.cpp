@@ -121,10 +121,11 @@ J2Parameters tabulated_parameters(const YamlMap& keys) {
     if (table) {
         read_flow_curves(*table, curves);
         if (curves.size() > 1) {
-            if (const auto cs = keys.find("cowper_symonds"))
-                cs->fail(
-                    "cannot be combined with flow_curves: the curves at their strain rates give "
-                    "the rate dependence");
+            for (const char* key : {"cowper_symonds", "rate_scaling"})
+                if (const auto cs = keys.find(key))
+                    cs->fail(
+                        "cannot be combined with flow_curves: the curves at their strain rates "
+                        "give the rate dependence");
             if (const auto mix = keys.find("hardening_mix"); mix && p.hardening_mix != 1.0)
                 mix->fail(
                     "must be 1 (isotropic) with flow_curves at several strain rates, as in "
@@ -145,7 +146,8 @@ J2Parameters tabulated_parameters(const YamlMap& keys) {
 namespace {
 
 /// *MAT_PIECEWISE_LINEAR_PLASTICITY: MID, RO, E, PR, SIGY, ETAN, FAIL, TDEL; C, P, LCSS, LCSR,
-/// VP; EPS1..EPS8; ES1..ES8.
+/// VP; EPS1..EPS8; ES1..ES8. LCSR: a curve of the yield stress's factor against the strain rate
+/// (`rate_scaling`).
 void mat_piecewise_linear(deck::MaterialCard& card) {
     const deck::Card f = card.required(0, "MID, RO, E, PR, SIGY, ETAN, FAIL, TDEL");
     const deck::Card g = card.optional(1);
@@ -155,7 +157,10 @@ void mat_piecewise_linear(deck::MaterialCard& card) {
     const Real c = g.real(0, "C"), p = g.real(1, "P");
     const long long lcss = g.id(2, "LCSS");
     card.flow_curve_id(lcss);
-    if (g.id(3, "LCSR") != 0) g.fail("LCSR (a strain-rate scaling curve) is not supported");
+    if (const long long lcsr = g.id(3, "LCSR"); lcsr != 0) {
+        if (c > 0 || p > 0) g.fail("give C, P (Cowper-Symonds) or LCSR (a rate curve), not both");
+        card.rate_curve_id(lcsr);
+    }
     if (g.real(4, "VP") != 0) card.note(g, "VP = 1 read as the scaled yield stress (VP = 0)");
     card.failure_strain(f, 6, "FAIL");
     std::vector<deck::Point2> points = deck::MaterialCard::curve_of(eps, es);
@@ -251,7 +256,8 @@ MaterialLaw tabulated_law() {
     return {
         "tabulated",
         true,
-        {"flow_curve", "flow_curves", "hardening_mix", "cowper_symonds", "normal_anisotropy"},
+        {"flow_curve", "flow_curves", "hardening_mix", "cowper_symonds", "rate_scaling",
+         "normal_anisotropy"},
         read_tabulated,
         make_j2_group,
         {{{"MAT_PIECEWISE_LINEAR_PLASTICITY", "MAT_024"}, mat_piecewise_linear},
