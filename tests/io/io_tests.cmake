@@ -60,6 +60,12 @@ add_test(NAME io.deck_point_masses
          COMMAND ${FPMSHELL_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/io/deck_mass_test.py
                  $<TARGET_FILE:fpmshell> ${CMAKE_BINARY_DIR}/deck_mass_test_work)
 set_tests_properties(io.deck_point_masses PROPERTIES LABELS io TIMEOUT ${_timeout_300s})
+# Gravity of decks: *LOAD_BODY_X, _Y, _Z and *LOAD_BODY_PARTS against the YAML twin
+# (tests/io/deck_gravity_test.py).
+add_test(NAME io.deck_gravity
+         COMMAND ${FPMSHELL_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/io/deck_gravity_test.py
+                 $<TARGET_FILE:fpmshell> ${CMAKE_BINARY_DIR}/deck_gravity_test_work)
+set_tests_properties(io.deck_gravity PROPERTIES LABELS io TIMEOUT ${_timeout_300s})
 
 # Rigid parts of solids and *PART_INERTIA in decks against YAML twins, the two-card form of
 # *ELEMENT_SOLID, and their refusals (tests/io/deck_solid_test.py).

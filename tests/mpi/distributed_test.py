@@ -311,6 +311,10 @@ spin = deck_twin("hammer_spin", "hammer_spin")
 check("hammer_spin", spin, ["control.end_time=1e-3"])
 check("hammer_spin", spin, ["control.end_time=6e-4"], ranks=3, threads=2)
 check("block_drop", deck_twin("block_drop", "block_drop"), ["control.end_time=1e-3"])
+# gravity (theory.md eq. 6.7-4) on every particle of the dropped plate
+check("gravity_drop", deck_twin("gravity_drop", "plate_drop", lambda t: t.replace(
+    "\ninitial_conditions:", "\nloads:\n  - {type: gravity, value: [0, 0, -9.81]}\n"
+                             "\ninitial_conditions:")), ["control.end_time=1e-3"])
 # welds that fail by their forces, and welds torn out of the sheet (eq. 6.11-15: the plastic
 # strain around them joined over the ranks)
 for label, keys in (("failing_welds", "normal_force: 200, shear_force: 100"),

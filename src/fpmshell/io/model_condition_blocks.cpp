@@ -2,6 +2,7 @@
 // model_blocks.hpp).
 #include <algorithm>
 #include <cstdint>
+#include <numeric>
 #include <string>
 #include <vector>
 
@@ -156,17 +157,35 @@ void read_boundary(const YamlValue& v, Model& model) {
 
 void read_loads(const YamlValue& v, Model& model) {
     for (const YamlValue& item : v.list("loads")) {
-        if (item.is_map() &&
-            item.open_map("a load").at("type", "pressure, force, moment or blast").text() ==
-                "blast") {  // §6.13, its own keys (loads/blast/)
+        if (item.is_map() && item.open_map("a load")
+                                     .at("type", "pressure, force, moment, gravity or blast")
+                                     .text() == "blast") {  // §6.13, its own keys (loads/blast/)
             model.blast_loads.push_back(read_blast_load(item, model));
             continue;
         }
         const YamlMap m = item.map({"type", "nodes", "elements", "value", "curve"});
-        const std::string type = m.at("type", "pressure, force, moment or blast")
-                                     .choice({"pressure", "force", "moment", "blast"});
+        const std::string type = m.at("type", "pressure, force, moment, gravity or blast")
+                                     .choice({"pressure", "force", "moment", "gravity", "blast"});
         Load load;
-        if (type == "pressure") {
+        if (type == "gravity") {  // theory.md eq. 6.7-4
+            load.type = LoadType::Gravity;
+            if (const auto n = m.find("nodes"))
+                n->fail(
+                    "gravity acts on the particles of elements: use `elements: SET`, or nothing "
+                    "for every particle");
+            if (const auto e = m.find("elements")) {
+                for (const Index el : named_element_set(model, *e))
+                    for (const Index p : model.triangles[static_cast<std::size_t>(el)])
+                        load.nodes.push_back(p);
+                std::sort(load.nodes.begin(), load.nodes.end());
+                load.nodes.erase(std::unique(load.nodes.begin(), load.nodes.end()),
+                                 load.nodes.end());
+            } else {
+                load.nodes.resize(model.nodes.size());
+                std::iota(load.nodes.begin(), load.nodes.end(), Index{0});
+            }
+            load.vector = m.at("value", "the acceleration [x, y, z]").vec3();
+        } else if (type == "pressure") {
             load.type = LoadType::Pressure;
             if (const auto n = m.find("nodes"))
                 n->fail("a pressure acts on elements: use `elements: SET` instead of `nodes`");

@@ -131,16 +131,17 @@ struct BoundaryCondition {
     std::vector<Index> rigid_elements{};
 };
 
-enum class LoadType { Pressure, Force, Moment };
+enum class LoadType { Pressure, Force, Moment, Gravity };
 
 /// One entry of `loads`. Pressure acts on elements (follower, positive pushes against the
-/// element normal); force and moment act on each node of the set (global components).
+/// element normal); force and moment act on each node of the set (global components); gravity
+/// gives each of its particles its mass times an acceleration (theory.md eq. 6.7-4).
 struct Load {
     LoadType type = LoadType::Force;
-    std::vector<Index> nodes;     ///< force, moment
+    std::vector<Index> nodes;     ///< force, moment, gravity (its particles, ascending)
     std::vector<Index> elements;  ///< pressure
     Real pressure = 0;            ///< pressure value
-    Vec3 vector = Vec3::Zero();   ///< force or moment value per node
+    Vec3 vector = Vec3::Zero();   ///< force or moment value per node; gravity's acceleration
     Index curve = -1;             ///< -1 = factor 1 at all times
 };
 

@@ -158,6 +158,14 @@ void ExternalLoads::update_normals_and_loads(ParticleState& s, const BoundaryCon
                 for (Index p : load.nodes)
                     s.m_ext[static_cast<std::size_t>(p)] += factor * load.vector;
                 break;
+            case LoadType::Gravity: {  // eq. 6.7-4: the particle's mass (mass scaling's too)
+                const Vec3 g = factor * load.vector;
+                for (Index p : load.nodes) {
+                    const auto up = static_cast<std::size_t>(p);
+                    s.f_ext[up] += s.mass[up] * g;
+                }
+                break;
+            }
         }
     }
 }

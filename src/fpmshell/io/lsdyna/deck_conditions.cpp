@@ -338,6 +338,48 @@ void DeckTranslator::segment_load(const DeckBlock& b) {
     }
 }
 
+/// *LOAD_BODY_X, _Y, _Z: LCID, SF, LCIDDR, XC, YC, ZC, CID. A base acceleration along the axis
+/// (theory.md eq. 6.7-4): the inertial load pulls the other way, so the curve's value a gives
+/// `gravity` -a SF along it. *LOAD_BODY_PARTS: PSID, the parts every body load acts on.
+void DeckTranslator::body_load(const DeckBlock& b) {
+    const std::string& k = b.keyword;
+    const bool parts = k == "LOAD_BODY_PARTS";
+    const int axis = k == "LOAD_BODY_X" ? 0 : k == "LOAD_BODY_Y" ? 1 : k == "LOAD_BODY_Z" ? 2 : -1;
+    if (!parts && axis < 0) refuse(b, unsupported_reason(k));
+    for (const DeckCard& dc : b.cards) {
+        if (dc.blank()) continue;
+        const Card f(deck_, b, dc, k_ten);
+        if (parts) {
+            if (body_parts_)
+                f.fail(
+                    "a second *LOAD_BODY_PARTS (the deck names the parts of its body loads once)");
+            body_parts_ = {yaml_name(set_name(f, "part", f.id(0, "PSID"))), {&b, f.line()}};
+            continue;
+        }
+        if (f.id(6, "CID") != 0) f.fail("CID: only global directions (0) are supported");
+        if (f.id(2, "LCIDDR") != 0)
+            note(b, f.line(),
+                 "LCIDDR ignored: the body load acts by LCID throughout (a dynamic relaxation "
+                 "runs with it too)");
+        const Real sf = f.real(1, "SF", 1.0);
+        std::array<Real, 3> g{0.0, 0.0, 0.0};
+        g[static_cast<std::size_t>(axis)] = -sf;
+        body_loads_.push_back(
+            {loads_.size(), "  - {type: gravity, value: " + vec(g[0], g[1], g[2]) +
+                                ", curve: " + curve_ref(b, f, f.id(0, "LCID"))});
+        loads_.push_back({"", {&b, f.line()}});
+    }
+}
+
+void DeckTranslator::write_body_loads() {
+    for (const auto& [slot, text] : body_loads_)
+        loads_[slot].text =
+            text + (body_parts_ ? ", elements: " + body_parts_->first : std::string()) + "}";
+    if (body_parts_ && body_loads_.empty())
+        note(*body_parts_->second.block, body_parts_->second.line,
+             "*LOAD_BODY_PARTS without a *LOAD_BODY_X, _Y or _Z: nothing to load");
+}
+
 /// *PART_MOVE: PID XMOV YMOV ZMOV CID IFSET (I8, 3 x E16, I8, I8), one part per card.
 void DeckTranslator::part_move(const DeckBlock& b) {
     for (const DeckCard& dc : b.cards) {

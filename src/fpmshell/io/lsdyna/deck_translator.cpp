@@ -52,6 +52,7 @@ const std::vector<CardReader>& card_readers() {
         {"LOAD_BLAST_ENHANCED", false, P::Definitions, &T::blast_source},
         {"LOAD_BLAST_SEGMENT", true, P::References, &T::blast_segment_load},
         {"LOAD_NODE_", true, P::References, &T::load},
+        {"LOAD_BODY_", true, P::References, &T::body_load},
         {"LOAD_SHELL_SET", true, P::References, &T::load},
         {"RIGIDWALL_PLANAR", true, P::References, &T::rigid_wall},
         {"RIGIDWALL_GEOMETRIC", true, P::References, &T::geometric_wall},
@@ -262,7 +263,7 @@ std::string DeckTranslator::unsupported_reason(const std::string& k) {
                "*INITIAL_VELOCITY_GENERATION and *INITIAL_VELOCITY_RIGID_BODY";
     if (starts_with(k, "LOAD_"))
         return "fpmshell reads *LOAD_NODE_POINT, *LOAD_NODE_SET, *LOAD_SHELL_SET, "
-               "*LOAD_SEGMENT and *LOAD_SEGMENT_SET";
+               "*LOAD_SEGMENT, *LOAD_SEGMENT_SET, *LOAD_BODY_X, _Y, _Z and *LOAD_BODY_PARTS";
     return "this card is not supported by fpmshell, and ignoring it could change the model";
 }
 
@@ -272,6 +273,7 @@ void DeckTranslator::add(std::vector<Line>& out, const std::string& text, const 
 
 DeckTranslation DeckTranslator::write() {
     write_segment_loads();
+    write_body_loads();
     std::vector<Line> out;
     const Origin top{deck_.blocks.empty() ? nullptr : &deck_.blocks.front(), 0};
     const std::string title =

@@ -267,6 +267,10 @@ public:
     /// *LOAD_SEGMENT_SET (SSID, LCID, SF, AT) and *LOAD_SEGMENT (LCID, SF, AT, N1 ... N4): a
     /// pressure along each segment's normal (by its node order), on the shell it covers.
     void segment_load(const DeckBlock& b);
+    /// *LOAD_BODY_X, _Y, _Z (gravity: a base acceleration, its pull the other way) and
+    /// *LOAD_BODY_PARTS (the parts they load); written once the deck is read.
+    void body_load(const DeckBlock& b);
+    void write_body_loads();
     /// *LOAD_BLAST_ENHANCED and *LOAD_BLAST_SEGMENT(_SET) (deck_blast.cpp).
     void blast_source(const DeckBlock& b);
     void blast_segment_load(const DeckBlock& b);
@@ -355,6 +359,10 @@ private:
     std::vector<Shell> shells_;  // every shell's number and nodes (for segments)
     std::map<std::string, std::vector<Segment>> segment_sets_;
     std::vector<SegmentLoad> segment_loads_;
+    /// *LOAD_BODY_X, _Y, _Z: its place among the loads (filled by write_body_loads) and text
+    /// without the parts; *LOAD_BODY_PARTS: the part set's name and card
+    std::vector<std::pair<std::size_t, std::string>> body_loads_;
+    std::optional<std::pair<std::string, Origin>> body_parts_;
     std::map<long long, std::pair<std::string, Origin>> blast_sources_;  ///< BID: its keys
     /// the model line of a load or prescribed motion on single nodes -> the set of its nodes
     std::map<std::string, std::string> node_group_of_text_;
