@@ -477,7 +477,8 @@ if h_never:
 
 # ---- *MAT_MODIFIED_PIECEWISE_LINEAR_PLASTICITY (123): strip_pull.k's steel as the modified card,
 # the twin's bytes; EPSMAJ and NUMINT against the twin with failure: {thresholds:
-# {max_principal_strain}, points}, elements erode; EPSTHIN and a filtered EPSMAJ refused
+# {max_principal_strain}, points}, and EPSTHIN against thinning_strain, elements erode; a plastic
+# EPSTHIN and a filtered EPSMAJ refused
 STRIP_024 = "*MAT_PIECEWISE_LINEAR_PLASTICITY\n" + STRIP_MAT + "$#       c         p      lcss\n       0.0       0.0         5\n"
 assert STRIP_024 in strip_deck
 def modified_card(extra):
@@ -486,14 +487,16 @@ def modified_card(extra):
         "         5\n", "         5         0       0.0" + extra + "\n"))
 deck_against_twin("modified piecewise linear", os.path.join(WORK, "mat123"),
                   os.path.join(STRIP, "strip_pull_mesh.k"), modified_card(""), strip_twin)
-h_major = deck_against_twin(
-    "modified piecewise linear EPSMAJ", os.path.join(WORK, "mat123_major"),
-    os.path.join(STRIP, "strip_pull_mesh.k"), modified_card("       0.0      0.05         1"),
-    strip_twin.replace("    poisson_ratio: 0.3\n    flow_curves:",
-                       "    poisson_ratio: 0.3\n    failure: {thresholds: {max_principal_strain: 0.05}, "
-                       "points: 1}\n    flow_curves:"))
-check_erodes("modified piecewise linear EPSMAJ: the strip's elements erode", h_major)
-for name, extra, message in (("EPSTHIN", "      0.03", "EPSTHIN (failure by thinning)"),
+for name, folder, extra, failure in (
+        ("EPSMAJ", "mat123_major", "       0.0      0.05         1",
+         "{thresholds: {max_principal_strain: 0.05}, points: 1}"),
+        ("EPSTHIN", "mat123_thin", "      0.02", "{thresholds: {thinning_strain: 0.02}}")):
+    check_erodes(f"modified piecewise linear {name}: the strip's elements erode", deck_against_twin(
+        f"modified piecewise linear {name}", os.path.join(WORK, folder),
+        os.path.join(STRIP, "strip_pull_mesh.k"), modified_card(extra),
+        strip_twin.replace("    poisson_ratio: 0.3\n    flow_curves:",
+                           f"    poisson_ratio: 0.3\n    failure: {failure}\n    flow_curves:")))
+for name, extra, message in (("plastic EPSTHIN", "     -0.03", "EPSTHIN < 0"),
                              ("filtered EPSMAJ", "       0.0     -0.05", "EPSMAJ < 0")):
     folder = write_case("mat123_bad", modified_card(extra), os.path.join(STRIP, "strip_pull_mesh.k"))
     r = subprocess.run([FPM, "check", os.path.join(folder, "model.k")], capture_output=True, text=True)

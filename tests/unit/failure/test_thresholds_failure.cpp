@@ -1,9 +1,9 @@
 // Thresholds on a point's stress and strain (failure/thresholds/, theory.md eq. 7.6-5, LS-DYNA's
 // *MAT_ADD_EROSION): on homogeneous paths whose in-plane strain the motion prescribes (log
 // strain ln(1 + t) of the stretch 1 + t), the plate erodes when the threshold is passed:
-// - each strain threshold (effective, major and minor principal, volumetric, shear) at the
-//   total strain of the path, its through-thickness part from the point's stress (elastic) and
-//   plastic incompressibility, within 1 %;
+// - each strain threshold (effective, major and minor principal, volumetric, shear, thinning)
+//   at the total strain of the path, its through-thickness part from the point's stress
+//   (elastic) and plastic incompressibility, within 1 %;
 // - the stress thresholds at the point's stress; NCS = 2 waits for the later of two; a failure
 //   time erodes at that time whatever the state.
 #include <gtest/gtest.h>
@@ -39,6 +39,7 @@ Real major(const std::array<Real, 3>& e) { return std::max({e[0], e[1], e[2]}); 
 Real minor(const std::array<Real, 3>& e) { return std::min({e[0], e[1], e[2]}); }
 Real shear(const std::array<Real, 3>& e) { return 0.5 * (major(e) - minor(e)); }
 Real volume(const std::array<Real, 3>& e) { return e[0] + e[1] + e[2]; }
+Real thinning(const std::array<Real, 3>& e) { return -e[2]; }
 
 /// Runs the path until every element has eroded; returns the measure `of` the path's strain,
 /// and the point's stress, at the step before the first erosion and at the last one, and the
@@ -83,6 +84,7 @@ TEST(ThresholdsFailure, StrainThresholdsErodeAtThePathsTotalStrain) {
         {"major", &ThresholdsFailureParameters::max_principal_strain, 0.1, major},
         {"minor", &ThresholdsFailureParameters::min_principal_strain, -0.15, minor},
         {"shear", &ThresholdsFailureParameters::max_shear_strain, 0.1, shear},
+        {"thinning", &ThresholdsFailureParameters::thinning_strain, 0.08, thinning},
         // elastic only: (1 - 2 nu) (sxx + syy) / E, 2.5e-4 near the yield stress (equibiaxial)
         {"volumetric", &ThresholdsFailureParameters::volumetric_strain, 5e-4, volume}};
     for (const bool biaxial : {true, false}) {

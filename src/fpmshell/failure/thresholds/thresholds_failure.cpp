@@ -73,6 +73,7 @@ bool ThresholdsFailure::judge(const FailurePacks& in, Real /*dt*/, RealPack* sta
                       *p_.max_effective_strain);
             }
             if (p_.max_shear_strain) count(0.5 * (e1 - e3) >= *p_.max_shear_strain);
+            if (p_.thinning_strain) count(-ezz >= *p_.thinning_strain);
         }
         MaskOf<RealPack> now = passed >= static_cast<Real>(p_.conditions);
         if (timed_out) now = MaskOf<RealPack>(true);
@@ -89,12 +90,12 @@ namespace {
 
 /// `thresholds: {max_pressure, min_pressure, max_principal_stress, max_von_mises_stress,
 /// max_principal_strain, min_principal_strain, max_effective_strain, volumetric_strain,
-/// max_shear_strain, time, conditions}`.
+/// max_shear_strain, thinning_strain, time, conditions}`.
 std::any read_thresholds(const YamlValue& v, const Material& /*material*/) {
     const YamlMap m =
         v.map({"max_pressure", "min_pressure", "max_principal_stress", "max_von_mises_stress",
                "max_principal_strain", "min_principal_strain", "max_effective_strain",
-               "volumetric_strain", "max_shear_strain", "time", "conditions"});
+               "volumetric_strain", "max_shear_strain", "thinning_strain", "time", "conditions"});
     ThresholdsFailureParameters p;
     const auto real = [&](const char* key, std::optional<Real>& out) {
         if (const auto x = m.find(key)) out = x->real();
@@ -115,12 +116,13 @@ std::any read_thresholds(const YamlValue& v, const Material& /*material*/) {
             x->fail("must not be 0 (> 0: a limit in tension, < 0: in compression)");
     }
     positive("max_shear_strain", p.max_shear_strain);
+    positive("thinning_strain", p.thinning_strain);
     positive("time", p.time);
     const int given = static_cast<int>(p.max_pressure.has_value()) + p.min_pressure.has_value() +
                       p.max_principal_stress.has_value() + p.max_von_mises_stress.has_value() +
                       p.max_principal_strain.has_value() + p.min_principal_strain.has_value() +
                       p.max_effective_strain.has_value() + p.volumetric_strain.has_value() +
-                      p.max_shear_strain.has_value();
+                      p.max_shear_strain.has_value() + p.thinning_strain.has_value();
     if (given == 0 && !p.time) v.fail("give at least one threshold or a time");
     if (const auto c = m.find("conditions")) {
         if (given == 0) c->fail("needs thresholds to count (a time alone takes none)");

@@ -22,12 +22,13 @@ struct ThresholdsFailureParameters {
     std::optional<Real> max_effective_strain;                        ///< EFFEPS
     std::optional<Real> volumetric_strain;  ///< VOLEPS: > 0 in tension, < 0 in compression
     std::optional<Real> max_shear_strain;   ///< EPSSH, tensorial: (eps_1 - eps_3) / 2
+    std::optional<Real> thinning_strain;    ///< *MAT_123 EPSTHIN: -eps_zz at failure (> 0)
     std::optional<Real> time;               ///< FAILTM
     int conditions = 1;                     ///< NCS: thresholds passed at once to fail
 
     [[nodiscard]] bool reads_strain() const {
         return max_principal_strain || min_principal_strain || max_effective_strain ||
-               volumetric_strain || max_shear_strain;
+               volumetric_strain || max_shear_strain || thinning_strain;
     }
 };
 

@@ -180,17 +180,23 @@ void mat_piecewise_linear(deck::MaterialCard& card) {
 /// *MAT_MODIFIED_PIECEWISE_LINEAR_PLASTICITY: *MAT_024's cards with EPSTHIN, EPSMAJ, NUMINT
 /// after VP on the second. EPSMAJ > 0 as `thresholds: {max_principal_strain}` (theory.md eq.
 /// 7.6-5: the largest principal total strain, the thickness direction's included, which is the
-/// in-plane major one wherever that is positive and the sheet thins), NUMINT > 0 as `points`;
-/// EPSTHIN (thinning) and EPSMAJ < 0 (filtered) refused.
+/// in-plane major one wherever that is positive and the sheet thins), EPSTHIN > 0 as its
+/// `thinning_strain` (-eps_zz, total), NUMINT > 0 as `points`; EPSTHIN < 0 (plastic thinning)
+/// and EPSMAJ < 0 (filtered) refused.
 void mat_modified_piecewise_linear(deck::MaterialCard& card) {
     mat_piecewise_linear(card);
     const deck::Card g = card.optional(1);
-    if (g.real(5, "EPSTHIN") != 0)
-        g.fail("EPSTHIN (failure by thinning) is not supported: leave it blank or 0");
-    const Real major = g.real(6, "EPSMAJ");
+    const Real thin = g.real(5, "EPSTHIN"), major = g.real(6, "EPSMAJ");
+    if (thin < 0)
+        g.fail(
+            "EPSTHIN < 0 (a plastic thinning strain) is not supported: give the total thinning "
+            "strain (> 0)");
     if (major < 0)
         g.fail("EPSMAJ < 0 (a filtered major strain) is not supported: give the strain (> 0)");
-    if (major > 0) card.failure("thresholds: {max_principal_strain: " + deck::num(major) + "}");
+    std::string thresholds;  // either fails a point (one condition)
+    if (major > 0) thresholds += ", max_principal_strain: " + deck::num(major);
+    if (thin > 0) thresholds += ", thinning_strain: " + deck::num(thin);
+    if (!thresholds.empty()) card.failure("thresholds: {" + thresholds.substr(2) + "}");
     const long long numint = g.id(7, "NUMINT");
     if (numint < 0) g.fail("NUMINT < 0 is not supported (give the number of points, or 0)");
     if (numint > 0) card.failure_points(numint);
