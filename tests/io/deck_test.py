@@ -9,54 +9,22 @@ Refusals, notes and messages of small decks are in deck_messages_test.py.
 
 usage: deck_test.py FPMSHELL WORKDIR
 """
-import json
 import os
 import shutil
 import subprocess
 import sys
 
-FPM, WORK = sys.argv[1], sys.argv[2]
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 DECKS = os.path.join(ROOT, "examples", "decks")
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from check_tally import check, finish  # noqa: E402
+import deck_twins  # noqa: E402
+from deck_twins import (check_erodes, deck_against_twin, fpmshell, read, run,  # noqa: E402
+                        write_case)
+
+FPM, WORK = deck_twins.start(sys.argv)
 
 
-def fpmshell(*args):
-    return subprocess.run([FPM, *args], capture_output=True, text=True, timeout=600)
-
-
-def run(model, out):
-    r = fpmshell("run", model, "-o", out, "--quiet", "--threads", "1", "--overwrite")
-    return r, os.path.join(out, "history.csv")
-
-
-def read(path):
-    with open(path) as f:
-        return f.read()
-
-
-def check_erodes(name, history):
-    """The run whose history.csv is `history` (None: it failed) eroded some element."""
-    if history is None:
-        return
-    with open(os.path.join(os.path.dirname(history), "summary.json")) as f:
-        eroded = json.load(f).get("eroded_elements", 0)
-    check(name, eroded > 0, eroded)
-
-
-def write_case(name, text, mesh):
-    """Writes `text` as WORK/name/model.k beside a copy of the mesh file; returns the folder."""
-    folder = os.path.join(WORK, name)
-    os.makedirs(folder, exist_ok=True)
-    shutil.copy(mesh, folder)
-    with open(os.path.join(folder, "model.k"), "w") as f:
-        f.write(text)
-    return folder
-
-
-shutil.rmtree(WORK, ignore_errors=True)
-os.makedirs(WORK)
 
 # ---- the test decks against their twins, and through convert
 for name in sorted(d for d in os.listdir(DECKS) if os.path.isdir(os.path.join(DECKS, d))):
@@ -150,26 +118,6 @@ for name, (cards, exact) in VARIANTS.items():
                     for g, w in zip(got, want) for a, b in zip(g, w))
         check(f"{name}: the history of the shell-set pressure to rounding", worst < 1e-9,
               f"largest difference {worst:.3g} of a column's largest value")
-
-def deck_against_twin(name, folder, mesh, deck_text, twin_text):
-    """Writes a variant of a test deck and of its twin into `folder` beside their mesh, runs
-    both and checks that they give the same history.csv; returns the deck's history file, or
-    None when a run failed."""
-    os.makedirs(folder, exist_ok=True)
-    shutil.copy(mesh, folder)
-    with open(os.path.join(folder, "model.k"), "w") as f:
-        f.write(deck_text)
-    with open(os.path.join(folder, "model.yaml"), "w") as f:
-        f.write(twin_text)
-    r_deck, h_deck = run(os.path.join(folder, "model.k"), os.path.join(folder, "deck"))
-    r_twin, h_twin = run(os.path.join(folder, "model.yaml"), os.path.join(folder, "twin"))
-    check(f"{name}: deck and twin run", r_deck.returncode == 0 and r_twin.returncode == 0,
-          r_deck.stderr + r_twin.stderr)
-    if r_deck.returncode or r_twin.returncode:
-        return None
-    check(f"{name}: the same history.csv", read(h_deck) == read(h_twin), "the files differ")
-    return h_deck
-
 
 # ---- *MAT_POWER_LAW_PLASTICITY: the strip of strip_pull.k in a power-law steel, against the
 # twin with the same material written in YAML
@@ -412,42 +360,6 @@ r = subprocess.run([FPM, "check", os.path.join(WORK, "jc_damage", "model.k")], c
 check("Johnson-Cook damage: check notes EROD read as 0",
       r.returncode == 0 and "EROD != 0 read as 0" in r.stdout + r.stderr, r.stdout + r.stderr)
 
-# ---- *MAT_SIMPLIFIED_JOHNSON_COOK (098): tube_crush.k's steel written as the simplified card
-# (EPSO blank: 1, its default), the same history.csv bytes as the *MAT_JOHNSON_COOK deck
-# (isothermal: its CP is 0); with PSFAIL against the twin with failure: {plastic_strain}, the
-# folds erode; caps on the flow stress (SIGMAX, SIGSAT) and PSFAIL < 0 refused.
-JC_CARDS = tube_deck[tube_deck.index("*MAT_JOHNSON_COOK"):tube_deck.index("*EOS_LINEAR_POLYNOMIAL")]
-SIMPLIFIED = ("*MAT_SIMPLIFIED_JOHNSON_COOK\n$#     mid        ro         e        pr        vp\n"
-              "         1    7850.0   2.1e+11       0.3\n"
-              "$#       a         b         n         c    psfail    sigmax    sigsat      epso\n"
-              "   2.5e+08   4.0e+08      0.45     0.015%s\n")
-h_simple = deck_against_twin(
-    "simplified Johnson-Cook", os.path.join(WORK, "simplified_jc"), os.path.join(TUBE, "tube_crush_mesh.k"),
-    tube_deck.replace(JC_CARDS, SIMPLIFIED % ""), tube_twin)
-check("simplified Johnson-Cook: the history of the *MAT_JOHNSON_COOK deck, byte for byte",
-      h_simple is not None and h_cold is not None and read(h_simple) == read(h_cold), "the files differ")
-h_psfail = deck_against_twin(
-    "simplified Johnson-Cook PSFAIL", os.path.join(WORK, "simplified_jc_fail"),
-    os.path.join(TUBE, "tube_crush_mesh.k"), tube_deck.replace(JC_CARDS, SIMPLIFIED % "      0.15"),
-    tube_twin.replace(JC_TWIN, JC_TWIN + "    failure: {plastic_strain: 0.15}\n"))
-check_erodes("simplified Johnson-Cook PSFAIL: the tube's folds erode", h_psfail)
-h_default = deck_against_twin(
-    "simplified Johnson-Cook PSFAIL at its default", os.path.join(WORK, "simplified_jc_default"),
-    os.path.join(TUBE, "tube_crush_mesh.k"), tube_deck.replace(JC_CARDS, SIMPLIFIED % "     1e+17"),
-    tube_twin)
-check("simplified Johnson-Cook: PSFAIL 1e17 written out (LS-DYNA's default) is no criterion",
-      h_default is not None and h_simple is not None and read(h_default) == read(h_simple),
-      "the files differ")
-for name, fields, message in (("SIGMAX", "       0.0     5e+08", "SIGMAX (a cap on the flow stress)"),
-                              ("SIGSAT", "       0.0      1e28     6e+08", "SIGSAT (a cap on the flow stress)"),
-                              ("PSFAIL < 0", "      -1.0", "PSFAIL < 0")):
-    folder = write_case("simplified_jc_bad", tube_deck.replace(JC_CARDS, SIMPLIFIED % fields),
-                        os.path.join(TUBE, "tube_crush_mesh.k"))
-    r = subprocess.run([FPM, "check", os.path.join(folder, "model.k")], capture_output=True, text=True)
-    check(f"simplified Johnson-Cook: {name} refused with exit 2 and one sentence naming the card",
-          r.returncode == 2 and r.stderr.count("error:") == 1 and message in r.stderr and
-          "*MAT_SIMPLIFIED_JOHNSON_COOK" in r.stderr and "model.k:" in r.stderr, r.stderr)
-
 # ---- *MAT_024 FAIL: strip_pull.k's steel fails at a plastic strain of 1 % (theory.md §7.6),
 # against the twin with failure: {plastic_strain}; elements erode (summary.json)
 STRIP_MAT = "$#     mid        ro         e        pr      sigy\n         1    7850.0   2.1e+11       0.3   3.0e+08\n"
@@ -474,69 +386,6 @@ if h_never:
         header = f.readline()
     check("failure strain 1e21: no criterion (energy.csv without eroded_internal)",
           "eroded_internal" not in header, header)
-
-# ---- *MAT_MODIFIED_PIECEWISE_LINEAR_PLASTICITY (123): strip_pull.k's steel as the modified card,
-# the twin's bytes; EPSMAJ and NUMINT against the twin with failure: {thresholds:
-# {max_principal_strain}, points}, and EPSTHIN against thinning_strain, elements erode; a plastic
-# EPSTHIN and a filtered EPSMAJ refused
-STRIP_024 = "*MAT_PIECEWISE_LINEAR_PLASTICITY\n" + STRIP_MAT + "$#       c         p      lcss\n       0.0       0.0         5\n"
-assert STRIP_024 in strip_deck
-def modified_card(extra):
-    return strip_deck.replace(STRIP_024, STRIP_024.replace(
-        "*MAT_PIECEWISE_LINEAR_PLASTICITY", "*MAT_MODIFIED_PIECEWISE_LINEAR_PLASTICITY").replace(
-        "         5\n", "         5         0       0.0" + extra + "\n"))
-deck_against_twin("modified piecewise linear", os.path.join(WORK, "mat123"),
-                  os.path.join(STRIP, "strip_pull_mesh.k"), modified_card(""), strip_twin)
-for name, folder, extra, failure in (
-        ("EPSMAJ", "mat123_major", "       0.0      0.05         1",
-         "{thresholds: {max_principal_strain: 0.05}, points: 1}"),
-        ("EPSTHIN", "mat123_thin", "      0.02", "{thresholds: {thinning_strain: 0.02}}")):
-    check_erodes(f"modified piecewise linear {name}: the strip's elements erode", deck_against_twin(
-        f"modified piecewise linear {name}", os.path.join(WORK, folder),
-        os.path.join(STRIP, "strip_pull_mesh.k"), modified_card(extra),
-        strip_twin.replace("    poisson_ratio: 0.3\n    flow_curves:",
-                           f"    poisson_ratio: 0.3\n    failure: {failure}\n    flow_curves:")))
-for name, extra, message in (("plastic EPSTHIN", "     -0.03", "EPSTHIN < 0"),
-                             ("filtered EPSMAJ", "       0.0     -0.05", "EPSMAJ < 0")):
-    folder = write_case("mat123_bad", modified_card(extra), os.path.join(STRIP, "strip_pull_mesh.k"))
-    r = subprocess.run([FPM, "check", os.path.join(folder, "model.k")], capture_output=True, text=True)
-    check(f"modified piecewise linear: {name} refused with exit 2 and one sentence naming the card",
-          r.returncode == 2 and r.stderr.count("error:") == 1 and message in r.stderr and
-          "*MAT_MODIFIED_PIECEWISE_LINEAR_PLASTICITY" in r.stderr, r.stderr)
-
-# ---- *MAT_024 LCSR (theory.md eq. 7.4-3): strip_pull.k's steel on its slowest curve (LCSS 11)
-# with a curve of the yield stress's factor against the strain rate, against the twin with
-# flow_curve and rate_scaling; with the table LCSS 5, LCSR is ignored (noted): the table's bytes;
-# LCSR beside C, P refused
-TWIN_TABLE = ("    flow_curves:\n      - {strain_rate: 0.001, points: [[0, 300.0e6], [0.1, 400.0e6], [0.5, 500.0e6]]}\n"
-              "      - {strain_rate: 100, points: [[0, 360.0e6], [0.1, 480.0e6], [0.5, 600.0e6]]}\n")
-SLOWEST = "    flow_curve: [[0, 300.0e6], [0.1, 400.0e6], [0.5, 500.0e6]]\n"
-assert TWIN_TABLE in strip_twin
-RATE_CURVE = "*DEFINE_CURVE\n        99\n                 0.0                 1.0\n" \
-             "               100.0                 1.3\n"
-def lcsr_deck(fields):
-    return strip_deck.replace(STRIP_024, STRIP_024.replace(
-        "       0.0       0.0         5\n", fields + "\n")).replace("*END\n", RATE_CURVE + "*END\n")
-h_lcsr, h_slow = (deck_against_twin(
-    name, os.path.join(WORK, folder), os.path.join(STRIP, "strip_pull_mesh.k"), lcsr_deck(fields),
-    strip_twin.replace(TWIN_TABLE, SLOWEST + extra)) for name, folder, fields, extra in (
-        ("rate scaling curve", "lcsr", "       0.0       0.0        11        99",
-         "    rate_scaling: [[0, 1], [100, 1.3]]\n"),
-        ("the slowest curve alone", "lcsr_none", "       0.0       0.0        11", "")))
-check("rate scaling curve: it changes the pull (the history differs from the curve alone)",
-      h_lcsr is not None and h_slow is not None and read(h_lcsr) != read(h_slow), "")
-h_table = deck_against_twin("rate scaling curve beside a table", os.path.join(WORK, "lcsr_table"),
-                            os.path.join(STRIP, "strip_pull_mesh.k"),
-                            lcsr_deck("       0.0       0.0         5        99"), strip_twin)
-r = subprocess.run([FPM, "check", os.path.join(WORK, "lcsr_table", "model.k")], capture_output=True,
-                   text=True)
-check("rate scaling curve beside a table: noted as ignored",
-      r.returncode == 0 and "LCSR ignored" in r.stdout + r.stderr, r.stdout + r.stderr)
-folder = write_case("lcsr_bad", lcsr_deck("      40.0       5.0        11        99"),
-                    os.path.join(STRIP, "strip_pull_mesh.k"))
-r = subprocess.run([FPM, "check", os.path.join(folder, "model.k")], capture_output=True, text=True)
-check("rate scaling curve beside C, P: refused with exit 2 and one sentence",
-      r.returncode == 2 and r.stderr.count("error:") == 1 and "not both" in r.stderr, r.stderr)
 
 # ---- *MAT_ADD_DAMAGE_GISSMO: strip_pull.k's steel with GISSMO's failure strain against
 # triaxiality (LCSDG), its regularization by element size (LCREGD), DMGEXP and NUMFIP, and its
@@ -673,17 +522,6 @@ h_081 = deck_against_twin(
         "    poisson_ratio: 0.3\n    damage: {start: 0.01, rupture: 0.03}\n"
         "    failure: {plastic_strain: 0.03, points: 1}\n    flow_curves:"))
 check_erodes("*MAT_081: the strip ruptures and erodes", h_081)
-# its LCSR as *MAT_024's (on the slowest curve LCSS 11): the twin with rate_scaling
-deck_against_twin(
-    "*MAT_081 LCSR", os.path.join(WORK, "mat081_lcsr"), os.path.join(STRIP, "strip_pull_mesh.k"),
-    strip_deck.replace(MAT_024, MAT_081.replace("         5         0      0.03",
-                                                "        11        99      0.03")).replace(
-        "*END\n", RATE_CURVE + "*END\n"),
-    strip_twin.replace("    type: tabulated\n", "    type: plastic_damage\n").replace(
-        TWIN_TABLE,
-        "    damage: {start: 0.01, rupture: 0.03}\n    failure: {plastic_strain: 0.03, points: 1}\n" +
-        SLOWEST + "    rate_scaling: [[0, 1], [100, 1.3]]\n"))
-
 # ---- friction in a *CONTACT_ card: plate_hammer.k's self-contact (the hammer on the doubler and
 # the plate) with FS 0.2, FD 0.1, DC 5 (LS-DYNA's decay, theory.md eq. 8.4-5), against the twin
 # with the same keys; FS < 0 refused, VC noted

@@ -60,6 +60,13 @@ add_test(NAME io.deck_point_masses
          COMMAND ${FPMSHELL_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/io/deck_mass_test.py
                  $<TARGET_FILE:fpmshell> ${CMAKE_BINARY_DIR}/deck_mass_test_work)
 set_tests_properties(io.deck_point_masses PROPERTIES LABELS io TIMEOUT ${_timeout_300s})
+# Material cards of decks (*MAT_098, *MAT_123, LCSR) against the YAML twins
+# (tests/io/deck_material_test.py).
+add_test(NAME io.deck_material_cards
+         COMMAND ${FPMSHELL_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/io/deck_material_test.py
+                 $<TARGET_FILE:fpmshell> ${CMAKE_BINARY_DIR}/deck_material_test_work)
+set_tests_properties(io.deck_material_cards PROPERTIES LABELS io TIMEOUT ${_timeout_300s})
+
 # Gravity of decks: *LOAD_BODY_X, _Y, _Z and *LOAD_BODY_PARTS against the YAML twin
 # (tests/io/deck_gravity_test.py).
 add_test(NAME io.deck_gravity
