@@ -27,7 +27,7 @@ ExplicitSolver::ExplicitSolver(const Model& model)
       elements_(model, topology_, make_element_group, false),  // each rank's state alone
       ranks_(model, topology_, elements_),
       nodal_rigid_bodies_(model),
-      weld_sheet_strain_(model) {
+      weld_sheet_strain_(model, topology_) {
     const std::size_t np = model.nodes.size();
     elements_.set_decomposition(&ranks_.decomposition());
     s_.resize(np);

@@ -2,34 +2,30 @@
 #include "fpmshell/solver/weld_sheet_strain.hpp"
 
 #include <algorithm>
+#include <span>
 
+#include "fpmshell/model/mesh_topology.hpp"
 #include "fpmshell/solver/rank_exchange.hpp"
 #include "fpmshell/solver/shell_elements.hpp"
 
 namespace fpmshell {
 
-WeldSheetStrain::WeldSheetStrain(const Model& model) {
+WeldSheetStrain::WeldSheetStrain(const Model& model, const MeshTopology& topology) {
     for (const NodalRigidBody& g : model.nodal_rigid_bodies)
         if (g.fails_by_plastic_strain())
             particles_.insert(particles_.end(), g.nodes.begin(), g.nodes.end());
     std::sort(particles_.begin(), particles_.end());
     particles_.erase(std::unique(particles_.begin(), particles_.end()), particles_.end());
     if (particles_.empty()) return;
-    // per particle followed, its elements in ascending order (the triangles are read in order)
-    std::vector<std::vector<Index>> around(particles_.size());
-    for (std::size_t e = 0; e < model.triangles.size(); ++e)
-        for (const Index p : model.triangles[e]) {
-            const auto it = std::lower_bound(particles_.begin(), particles_.end(), p);
-            if (it != particles_.end() && *it == p)
-                around[static_cast<std::size_t>(it - particles_.begin())].push_back(
-                    static_cast<Index>(e));
-        }
-    for (const std::vector<Index>& list : around)
+    // per particle followed, its elements (the topology's, ascending)
+    std::vector<std::span<const Index>> around;
+    for (const Index p : particles_) around.push_back(topology.elements_of(p));
+    for (const std::span<const Index> list : around)
         elements_.insert(elements_.end(), list.begin(), list.end());
     std::sort(elements_.begin(), elements_.end());
     elements_.erase(std::unique(elements_.begin(), elements_.end()), elements_.end());
     first_.push_back(0);
-    for (const std::vector<Index>& list : around) {
+    for (const std::span<const Index> list : around) {
         for (const Index e : list)
             element_place_.push_back(static_cast<std::size_t>(
                 std::lower_bound(elements_.begin(), elements_.end(), e) - elements_.begin()));

@@ -13,6 +13,7 @@
 
 namespace fpmshell {
 
+struct MeshTopology;
 class RankExchange;
 class ShellElements;
 
@@ -20,8 +21,8 @@ class WeldSheetStrain {
 public:
     WeldSheetStrain() = default;
     /// The particles of the model's welds with a `plastic_strain` failure, and the elements
-    /// around each of them.
-    explicit WeldSheetStrain(const Model& model);
+    /// around each of them (the topology's).
+    WeldSheetStrain(const Model& model, const MeshTopology& topology);
 
     [[nodiscard]] bool empty() const { return particles_.empty(); }
     /// The particles followed, ascending.
