@@ -37,7 +37,7 @@ ContactSolver::ContactSolver(const Model& model, const MeshTopology& topology,
     const std::size_t np = model.nodes.size();
     node_thickness_ = mean_node_thickness(model.triangles, element_thickness, np);
     rigid_body_of_ = rigid_body_partition(model).body_of_particle;
-    mesh_piece_ = mesh_pieces(np, model.triangles);
+    mesh_piece_ = mesh_pieces(np, model.triangles, model.separated_from);
 
     for (const ContactDefinition& def : model.contacts) {
         Definition d;

@@ -152,6 +152,18 @@ std::vector<int> Communicator::allgather(int mine) const {
     return all;
 }
 
+std::vector<char> Communicator::allgather(const std::vector<char>& mine) const {
+    if (size_ == 1) return mine;
+    const std::vector<int> counts = allgather(static_cast<int>(mine.size()));
+    std::vector<int> displacements(counts.size(), 0);
+    for (std::size_t r = 1; r < counts.size(); ++r)
+        displacements[r] = displacements[r - 1] + counts[r - 1];
+    std::vector<char> all(static_cast<std::size_t>(displacements.back() + counts.back()));
+    MPI_Allgatherv(mine.data(), static_cast<int>(mine.size()), MPI_CHAR, all.data(), counts.data(),
+                   displacements.data(), MPI_CHAR, MPI_COMM_WORLD);
+    return all;
+}
+
 std::vector<std::vector<char>> Communicator::gather(const std::vector<char>& mine) const {
     if (size_ == 1) return {mine};
     const long n = static_cast<long>(mine.size());
@@ -225,6 +237,7 @@ void Communicator::allgather(const std::vector<Real>& mine, const std::vector<in
     all = mine;
 }
 std::vector<int> Communicator::allgather(int mine) const { return {mine}; }
+std::vector<char> Communicator::allgather(const std::vector<char>& mine) const { return mine; }
 void Communicator::abort(int exit_code) const { std::exit(exit_code); }
 MpiSession::MpiSession(int&, char**&) {}
 MpiSession::~MpiSession() = default;

@@ -67,6 +67,8 @@ public:
                    std::vector<Real>& all) const;
     /// Every rank's `mine` on every rank, in rank order.
     [[nodiscard]] std::vector<int> allgather(int mine) const;
+    /// Every rank's bytes on every rank, joined in rank order.
+    [[nodiscard]] std::vector<char> allgather(const std::vector<char>& mine) const;
     /// Every rank's bytes on rank 0 (rank order, its own first); the others get nothing.
     [[nodiscard]] std::vector<std::vector<char>> gather(const std::vector<char>& mine) const;
     /// Stops every rank (an error that only some ranks met: the others would wait forever).

@@ -41,11 +41,16 @@ std::string FieldSeries::write_pieces(const ExplicitSolver& solver, Real time,
                                       const std::vector<Vec3>& positions, std::size_t number,
                                       const VtuFormat& format) {
     const Communicator& comm = Communicator::world();
-    if (!piece_) piece_ = frame_piece(model_, solver.elements().computed_elements(), comm.root());
+    // the solver's mesh: after a particle separation (theory.md §7.7) the separated one, cut
+    // anew over the ranks (its particles, more after every separation, tell it apart)
+    if (!piece_ || piece_particles_ != solver.model().n_particles()) {
+        piece_ = frame_piece(solver.model(), solver.elements().computed_elements(), comm.root());
+        piece_particles_ = solver.model().n_particles();
+    }
     const std::string stem = fmt::format("frame_{:05d}", number);
     std::string error;
     try {
-        field_frame(fields_, {model_, solver, positions}, time, *piece_, frame_);
+        field_frame(fields_, {solver.model(), solver, positions}, time, *piece_, frame_);
         write_vtu(dir_ / k_fields_folder / fmt::format("{}_rank{}.vtu", stem, comm.rank()), frame_,
                   format);
     } catch (const std::exception& e) {
@@ -78,7 +83,7 @@ void FieldSeries::frame(const ExplicitSolver& solver, Real time,
         file = write_pieces(solver, time, positions, frame_count_, format);
     } else {
         file = fmt::format("{}/frame_{:05d}.vtu", k_fields_folder, frame_count_);
-        field_frame(fields_, {model_, solver, positions}, time, frame_);
+        field_frame(fields_, {solver.model(), solver, positions}, time, frame_);
         write_vtu(dir_ / file, frame_, format);
     }
     ++frame_count_;

@@ -58,6 +58,7 @@ private:
     std::size_t frame_count_ = 0;
     bool resumed_ = false;
     std::optional<PvdSeries> pvd_;  ///< created at start, so that a refused resume writes nothing
+    Index piece_particles_ = 0;     ///< the particles of the mesh piece_ was cut from
     std::optional<FramePiece> piece_;  ///< on several ranks: this rank's, made at the first frame
     FieldFrame frame_;                 ///< the last frame, its memory reused by the next
 };

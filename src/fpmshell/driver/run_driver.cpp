@@ -8,6 +8,7 @@
 #include <chrono>
 #include <cmath>
 #include <exception>
+#include <memory>
 #include <string_view>
 
 #ifdef _OPENMP
@@ -29,6 +30,7 @@
 #include "fpmshell/io/restart_archive.hpp"
 #include "fpmshell/io/run_directory.hpp"
 #include "fpmshell/solver/explicit_solver.hpp"
+#include "fpmshell/solver/separating_step.hpp"
 
 namespace fpmshell {
 namespace {
@@ -51,7 +53,9 @@ private:
 struct Run {
     const Model& model;
     const RunOptions& options;
-    ExplicitSolver& solver;
+    /// the solver, replaced by its successor's at a particle separation (theory.md §7.7)
+    std::unique_ptr<ExplicitSolver>& solver;
+    std::unique_ptr<Model>& separated;  ///< the model of the last separation (null: none)
     OutputSchedule& schedule;
     OutputObserver& out;
     LogFile& log;
@@ -98,14 +102,14 @@ Real step_limit(const ExplicitSolver& solver, Real end) {
 /// A dynamic run from the solver's time to control.end_time, or until the watched rigid body
 /// stops, a signal arrives (SIGINT, SIGTERM) or --stop-at-step is reached.
 RunEnd advance_in_time(Run& run) {
-    ExplicitSolver& solver = run.solver;
     const Real end = run.model.control.end_time;
     const long stop_at_step = run.options.stop_at_step;
     const std::string restart = (run.options.output_dir / k_restart_file).string();
     const InterruptGuard interrupts;
     const Communicator& comm = Communicator::world();
-    while (solver.time() < end * (1 - 1e-12)) {
-        solver.step(step_limit(solver, end));
+    while (run.solver->time() < end * (1 - 1e-12)) {
+        separating_step(run.solver, run.separated, step_limit(*run.solver, end));  // §7.7
+        ExplicitSolver& solver = *run.solver;
         const Real t = solver.time();
         const bool body_stopped = body_has_stopped(run.model, solver);
         const bool at_end = t >= end * (1 - 1e-12) || body_stopped;
@@ -165,7 +169,7 @@ RunEnd advance_in_time(Run& run) {
 /// A relaxation run: static equilibrium at every load level up to control.end_time.
 /// `last_good`: the positions before the level being relaxed.
 RunEnd relax_load_levels(Run& run, std::vector<Vec3>& last_good) {
-    ExplicitSolver& solver = run.solver;
+    ExplicitSolver& solver = *run.solver;
     const Real end = run.model.control.end_time;
     const Real step = run.model.output.every > 0 ? run.model.output.every : end;
     const long levels = static_cast<long>(std::ceil(end / step - 1e-9));
@@ -290,8 +294,9 @@ int run_model(const Model& model, const RunOptions& opt) {
         log.print("distributed over {} ranks, {} thread(s) each", comm.size(), threads);
     for (const std::string& note : model.notes) log.print("note: {}", note);
 
-    ExplicitSolver solver(model);
-    report_mass_scaling(model, solver.added_mass(), "at set-up", log);
+    std::unique_ptr<ExplicitSolver> solver_now = std::make_unique<ExplicitSolver>(model);
+    std::unique_ptr<Model> separated;  // §7.7
+    report_mass_scaling(model, solver_now->added_mass(), "at set-up", log);
     OutputSchedule schedule(model);
     const std::filesystem::path restart_path = opt.output_dir / k_restart_file;
     ObserverList out;
@@ -309,7 +314,8 @@ int run_model(const Model& model, const RunOptions& opt) {
     }
     const RestartFiles* restart = result_files.restart;
 
-    double wall_before = 0;  // wall seconds of the earlier segments of a resumed run
+    double wall_before = 0;                // wall seconds of the earlier segments of a resumed run
+    ExplicitSolver& solver = *solver_now;  // until the time loop (which may replace it, §7.7)
     if (opt.resume) {
         wall_before = comm.root() ? RestartFiles::resume(restart_path, solver, schedule, out)
                                   : RestartFiles::resume_solver(restart_path, solver, schedule);
@@ -323,31 +329,33 @@ int run_model(const Model& model, const RunOptions& opt) {
         out.frame(solver, 0.0, solver.state().x);
     }
 
-    Run run{model, opt, solver, schedule, out, log, WallClock(wall_before), restart};
+    Run run{model, opt, solver_now, separated, schedule, out, log, WallClock(wall_before), restart};
     std::vector<Vec3> last_good;  // relaxation: the positions before the failed load level
     RunEnd end;
     try {
         end = relaxation ? relax_load_levels(run, last_good) : advance_in_time(run);
     } catch (const RunFailure& failure) {
+        const ExplicitSolver& failed = *solver_now;
         end = run_end(1, std::string("failed: ") + failure.what());
         // The positions of a failed state that are no longer finite give way to those before
         // the failed step, which the solver keeps as x_prev, or before the load level (one
         // choice for every rank: each writes its piece of the last frame).
-        const std::vector<Vec3>& x = solver.state().x;
+        const std::vector<Vec3>& x = failed.state().x;
         const bool finite = comm.max(all_finite(x) ? 0L : 1L) == 0;
-        out.failure(solver, failure.what(),
+        out.failure(failed, failure.what(),
                     finite       ? x
                     : relaxation ? last_good
-                                 : solver.state().x_prev);
+                                 : failed.state().x_prev);
     }
-    if (!relaxation) report_mass_scaling(model, solver.added_mass(), "by the end of the run", log);
+    const ExplicitSolver& last = *solver_now;
+    if (!relaxation) report_mass_scaling(model, last.added_mass(), "by the end of the run", log);
     end.wall_seconds = run.clock.seconds();
     end.threads = threads;
     end.ranks = comm.size();
-    const PlasticStrainPeaks plastic_strain = plastic_strain_peaks(solver);  // collective
+    const PlasticStrainPeaks plastic_strain = plastic_strain_peaks(last);  // collective
     if (result_files.summary != nullptr)
         result_files.summary->set_plastic_strain_peaks(plastic_strain);
-    out.finish(solver, end);
+    out.finish(last, end);
     return end.exit_code;
 }
 

@@ -129,6 +129,11 @@ void SummaryFile::finish(const ExplicitSolver& solver, const RunEnd& end) {
         if (solver.eroded_elements() > 0) j.set("first_erosion_time", solver.first_erosion_time());
         j.set("eroded_internal", solver.energy().eroded_internal);
     }
+    if (solver.elements().separates()) {  // theory.md §7.7
+        j.set("open_sides", static_cast<Index>(solver.open_sides()));
+        j.set("split_particles", solver.split_particles());
+        j.set("particles_at_end", solver.model().n_particles());
+    }
     if (const NodalRigidBodies& welds = solver.nodal_rigid_bodies(); welds.has_failing_welds()) {
         j.set("failed_welds", welds.failed_welds());  // theory.md eq. 6.11-13
         if (welds.failed_welds() > 0)

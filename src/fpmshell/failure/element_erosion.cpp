@@ -5,7 +5,10 @@
 namespace fpmshell {
 
 ElementErosion::ElementErosion(const Material& material, int n_inplane, int n_through)
-    : points_(material.failure.points), n_inplane_(n_inplane), n_through_(n_through) {
+    : separates_(material.failure.separates),
+      points_(material.failure.points),
+      n_inplane_(n_inplane),
+      n_through_(n_through) {
     for (const FailureCriterionSpec& spec : material.failure.criteria) {
         const FailureCriterion* c = find_failure_criterion(spec.name);
         if (!c) throw std::logic_error("failure criterion '" + spec.name + "' of no kind");

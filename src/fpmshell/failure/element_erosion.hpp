@@ -37,6 +37,8 @@ public:
     ElementErosion(const Material& material, int n_inplane, int n_through);
 
     [[nodiscard]] bool active() const { return !criteria_.empty(); }
+    /// Whether a failed element opens an edge instead of eroding (`fracture: separate`, §7.7).
+    [[nodiscard]] bool separates() const { return separates_; }
     /// Whether some criterion reads more of a point than its plastic strain.
     [[nodiscard]] bool reads_point() const { return reads_point_; }
     /// State numbers per point, all criteria's.
@@ -116,6 +118,7 @@ private:
     std::size_t fields_ = 0;            ///< state numbers per point
     std::size_t fading_field_ = PointFailure::k_no_field;
     bool reads_point_ = false;
+    bool separates_ = false;
     int points_ = 0;  ///< failed points that erode it; 0: one in-plane point's every point
     int n_inplane_ = 0, n_through_ = 0;
 };

@@ -29,6 +29,7 @@ void read_failure(const YamlValue& v, Material& mat) {
         names += (names.empty() ? "" : " or ") + c.name;
     }
     keys.push_back("points");
+    keys.push_back("fracture");
     const YamlMap f = v.map(keys);
     for (const auto& [key, value] : f.entries())
         if (const FailureCriterion* c = find_failure_criterion(key))
@@ -37,6 +38,14 @@ void read_failure(const YamlValue& v, Material& mat) {
         v.fail("names no failure criterion; give " + names + ", e.g. {plastic_strain: 0.3}");
     if (const auto n = f.find("points"))
         mat.failure.points = static_cast<int>(n->integer(1, 7 * k_max_thickness_points));
+    if (const auto kind = f.find("fracture")) {  // theory.md §7.7
+        const std::string k = kind->name();
+        if (k != "erode" && k != "separate")
+            kind->fail("is '" + k +
+                       "'; give erode (the failed elements erode) or separate (the "
+                       "particles separate along the failed elements' edges)");
+        mat.failure.separates = k == "separate";
+    }
 }
 
 /// Where a key that `law` does not take belongs: the laws that take it, or "" if none does.

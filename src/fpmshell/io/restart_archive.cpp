@@ -22,7 +22,7 @@ constexpr char k_magic[8] = {'F', 'P', 'M', 'S', 'H', 'R', 'S', 'T'};
 // internal energy; format 10: every material point as its law's numbers, the failure criteria's
 // state; format 11: the solver's section "welds", the spot welds that have failed; format 12:
 // the section "layout" first, the number of pieces of a distributed run's file and its step).
-constexpr std::uint32_t k_format_version = 12;
+constexpr std::uint32_t k_format_version = 13;
 
 /// Bytes of the checksum at the end of the file: the CRC-32 (zlib's, little-endian) of every
 /// byte before it. It turns a file damaged after it was written (cut short, a flipped bit, an

@@ -46,6 +46,10 @@ struct MaterialFailure {
     /// failed points that erode an element; 0: every point through the thickness at one of
     /// its in-plane points
     int points = 0;
+    /// What a failed element does: erodes (stops acting, §7.6), or, with `fracture:
+    /// separate`, keeps acting and opens one of its edges, the particles separating along the
+    /// open edges (§7.7)
+    bool separates = false;
 
     [[nodiscard]] bool active() const { return !criteria.empty(); }
 };
@@ -388,8 +392,12 @@ struct Model {
     /// (io/lsdyna_deck.hpp); printed by `check` and at the start of a run
     std::vector<std::string> notes;
 
-    std::vector<Vec3> nodes;                                 ///< initial particle positions
-    std::vector<std::array<Index, 3>> triangles;             ///< counter-clockwise about the normal
+    std::vector<Vec3> nodes;                      ///< initial particle positions
+    std::vector<std::array<Index, 3>> triangles;  ///< counter-clockwise about the normal
+    /// After particle separations (theory.md §7.7, model/separated_model.hpp): per particle,
+    /// the particle of the model as read that it was split from (itself where it was read);
+    /// empty before any
+    std::vector<Index> separated_from;
     std::map<std::string, std::vector<Index>> node_sets;     ///< sorted, unique; has "all"
     std::map<std::string, std::vector<Index>> element_sets;  ///< sorted, unique; has "all"
 

@@ -139,6 +139,16 @@ ExplicitSolver::ExplicitSolver(const Model& model)
     // Without prescribed motions and Lagrange contact, which change v^{n+1/2} between the two,
     // the velocity update and the energy pass are one sweep over the particle arrays instead
     // of two (the same sums in the same order).
+    if (elements_.separates()) {  // §7.7: the particles whose constraints hold one particle
+        opening_ = EdgeOpening(model.n_elements());
+        pinned_.assign(np, 0);
+        for (const std::vector<Index>& body : nodal_rigid_bodies_.bodies())
+            for (const Index p : body) pinned_[static_cast<std::size_t>(p)] = 1;
+        for (const NodalRigidBody& weld : model.nodal_rigid_bodies)  // failed welds too
+            for (const Index p : weld.nodes) pinned_[static_cast<std::size_t>(p)] = 1;
+        for (const TiedSurface& tie : model.tied_surfaces)
+            for (const Index p : tie.nodes) pinned_[static_cast<std::size_t>(p)] = 1;
+    }
     fused_particle_pass_ = !bc_->has_prescribed_motions() &&
                            !(contact_ && contact_->has_lagrange()) && nodal_rigid_bodies_.empty() &&
                            !tied_;
@@ -161,6 +171,7 @@ Vec3 ExplicitSolver::acceleration(Index p) const {
 }
 
 void ExplicitSolver::step(Real max_dt) {
+    separation_due_.reset();
     cycle(CyclePolicy::dynamic(model_), time_, max_dt);
     time_ += dt_half_;
     check_energy_balance();
@@ -170,6 +181,7 @@ void ExplicitSolver::step(Real max_dt) {
 void ExplicitSolver::cycle(const CyclePolicy& policy, Real load_time, Real dt_cap) {
     const ShellElements::StepTotals elements = compute_internal_loads(policy);  // 1 §2-§5
     ranks_.finish_positions(s_.x);  // distributed: the positions step 2 reads around the held ones
+    if (elements_.separates() && !policy.relaxation) open_failed_sides();        // §7.7
     loads_->update_normals_and_loads(s_, *bc_, load_time, parallel_particles_);  // 2 §1.3, §6.7
     const StepLengths dt = next_step_lengths(policy, elements, dt_cap);          // 3 §6.4
     penalty_contact(dt);                                                         // 4 §8.2

@@ -15,9 +15,11 @@
 #include "fpmshell/core/types.hpp"
 #include "fpmshell/model/mesh_topology.hpp"
 #include "fpmshell/model/model.hpp"
+#include "fpmshell/model/particle_separation.hpp"
 #include "fpmshell/solver/boundary_conditions.hpp"
 #include "fpmshell/solver/cycle_policy.hpp"
 #include "fpmshell/solver/domain_decomposition.hpp"
+#include "fpmshell/solver/edge_opening.hpp"
 #include "fpmshell/solver/energy_balance.hpp"
 #include "fpmshell/solver/external_loads.hpp"
 #include "fpmshell/solver/mass_scaling.hpp"
@@ -37,6 +39,11 @@ public:
     /// Sets up masses (§6.1), rotary inertia (§6.2 option B), kink particles (§1.3), boundary
     /// masks and initial velocities. The model must outlive the solver.
     explicit ExplicitSolver(const Model& model);
+    /// §7.7 the solver of `separated` (model/separated_model.hpp: `before`'s model separated by
+    /// `separation`) taking over `before`'s state after its step: each new particle its
+    /// parent's motion and its group's share of the parent's mass and rotary inertia, every
+    /// element its state. Collective on a distributed run (the ranks are cut anew).
+    ExplicitSolver(const Model& separated, ExplicitSolver& before, const Separation& separation);
     ~ExplicitSolver();
     ExplicitSolver(const ExplicitSolver&) = delete;
     ExplicitSolver& operator=(const ExplicitSolver&) = delete;
@@ -67,6 +74,17 @@ public:
     /// Elements eroded so far (theory.md §7.6), and the time of the first erosion (-1: none).
     [[nodiscard]] Index eroded_elements() const { return eroded_elements_; }
     [[nodiscard]] Real first_erosion_time() const { return first_erosion_time_; }
+    /// §7.7 the particle separation that the edges opened so far call for after the last step
+    /// (nullptr: none): the run then goes on with the solver of the separated model.
+    [[nodiscard]] const Separation* separation_due() const {
+        return separation_due_ ? &*separation_due_ : nullptr;
+    }
+    /// §7.7 the sides opened so far, and the particles the separations have added.
+    [[nodiscard]] std::size_t open_sides() const { return opening_.open().size(); }
+    [[nodiscard]] const std::vector<ElementPair>& open_side_pairs() const {
+        return opening_.open();
+    }
+    [[nodiscard]] Index split_particles() const { return split_particles_; }
     /// The rigid bodies (§6.11), and through them the spot welds that failed (eq. 6.11-13).
     [[nodiscard]] const NodalRigidBodies& nodal_rigid_bodies() const { return nodal_rigid_bodies_; }
     /// The sheets' plastic strain at the ductile welds' particles, at the last step (eq. 6.11-15).
@@ -155,6 +173,11 @@ private:
     /// The contact's inverse masses of the nodal rigid bodies' particles: their bodies'
     /// (eq. 6.11-5), after the masses changed.
     void refresh_contact_masses();
+    /// §7.7 (eq. 7.7-1): the failed elements open their sides, judged on this step's membrane
+    /// forces at x^n (every rank learns every rank's); then whether a separation is due.
+    void open_failed_sides();
+    /// §7.7 the state of `before` (the same mesh up to the separation) taken over.
+    void take_state(ExplicitSolver& before, const Separation& separation);
     /// After spot welds failed (eq. 6.11-13): the contact's masses and rigid bodies anew.
     void release_failed_welds();
     /// 3 dt_{n+1/2} = scale min dt_e, growth capped at 1.2 dt_{n-1/2} (§6.4), and dt_n.
@@ -242,6 +265,11 @@ private:
     /// per particle, the mass the contact gives it (its body's, eq. 6.11-5); empty without
     /// contact or nodal rigid bodies
     std::vector<Real> contact_mass_;
+    /// §7.7: the sides opened, the particles that never split, the separation due
+    EdgeOpening opening_;
+    std::vector<std::uint8_t> pinned_;
+    std::optional<Separation> separation_due_;
+    Index split_particles_ = 0;
     /// Steps 5 and 8-9 in one sweep (update_velocities_and_advance_particles).
     bool fused_particle_pass_ = false;
     bool parallel_particles_ = false;  ///< particle loops in parallel (large models)

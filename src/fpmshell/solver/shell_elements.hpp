@@ -111,6 +111,16 @@ public:
     /// so far, in element order.
     [[nodiscard]] std::vector<Index> eroded_in_last_step() const;
     [[nodiscard]] std::vector<Index> eroded_so_far() const;
+    /// §7.7 whether some section's material separates (`fracture: separate`): its failed
+    /// elements keep acting and open an edge each.
+    [[nodiscard]] bool separates() const { return !cracked_.empty(); }
+    /// §7.7 the failed elements that have not opened their edge (of those this rank computes),
+    /// in element order; whether element e has failed; e has opened its edge (every rank).
+    [[nodiscard]] std::vector<Index> failed_unopened() const;
+    [[nodiscard]] bool cracked(Index e) const {
+        return !cracked_.empty() && cracked_[static_cast<std::size_t>(e)] != 0;
+    }
+    void mark_opened(Index e) { cracked_[static_cast<std::size_t>(e)] = k_opened; }
     /// Current thickness of element e (the section's, or updated by §3.4).
     [[nodiscard]] Real thickness(Index e) const { return thickness_[static_cast<std::size_t>(e)]; }
 
@@ -232,6 +242,7 @@ private:
     /// they acted in, into t's strain and eroded work.
     void book_last_half_step(std::size_t e, const ParticleState& s, ElementTotals& t);
     static constexpr std::uint8_t k_eroded = 1, k_eroded_pending = 2;  ///< eroded_ values
+    static constexpr std::uint8_t k_failed = 1, k_opened = 2;          ///< cracked_ values
     /// One element by the general (scalar) code; its totals: see ElementTotals.
     [[nodiscard]] ElementTotals compute_element(Index e, ParticleState& s, Real viscous_rate,
                                                 Real dt);
@@ -268,6 +279,9 @@ private:
     std::vector<std::uint8_t> eroded_;
     std::vector<Real> element_work_;
     std::vector<std::array<Real, 18>> last_loads_;  ///< corner loads of the eroding step
+    /// §7.7, empty where no material separates: per element 0 intact, k_failed once failed
+    /// (on the rank that computes it), k_opened once it has opened its edge (on every rank)
+    std::vector<std::uint8_t> cracked_;
     /// the failure criteria's state (failure/element_erosion.hpp): a block's from the pack
     /// failure_state_at_[e] of its elements on, an element computed alone's from its own;
     /// empty where no criterion keeps any

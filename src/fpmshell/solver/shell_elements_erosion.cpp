@@ -9,7 +9,7 @@ namespace fpmshell {
 
 void ShellElements::init_erosion(const Model& model) {
     const std::size_t ne = tri_.size();
-    bool can_fail = false, has_state = false;
+    bool can_fail = false, has_state = false, separates = false;
     for (std::size_t g = 0; g < groups_.size(); ++g) {
         const Material& mat = model.materials[static_cast<std::size_t>(model.sections[g].material)];
         const ShellRule& rule = groups_[g]->rule();
@@ -17,12 +17,14 @@ void ShellElements::init_erosion(const Model& model) {
                               static_cast<int>(rule.through.size()));
         can_fail = can_fail || erosion_.back().active();
         has_state = has_state || erosion_.back().fields() > 0;
+        separates = separates || erosion_.back().separates();
     }
     if (!can_fail) {
         erosion_.clear();
         return;
     }
     eroded_.assign(ne, 0);
+    if (separates) cracked_.assign(ne, 0);
     element_work_.assign(ne, 0.0);
     last_loads_.assign(ne, std::array<Real, 18>{});
     element_size_.resize(ne);
@@ -141,6 +143,13 @@ std::vector<Index> ShellElements::eroded_in_last_step() const {
     return out;
 }
 
+std::vector<Index> ShellElements::failed_unopened() const {
+    std::vector<Index> out;
+    for (std::size_t e = 0; e < cracked_.size(); ++e)
+        if (cracked_[e] == k_failed) out.push_back(static_cast<Index>(e));
+    return out;
+}
+
 std::vector<Index> ShellElements::eroded_so_far() const {
     std::vector<Index> out;
     for (std::size_t e = 0; e < eroded_.size(); ++e)
@@ -172,7 +181,12 @@ void ShellElements::check_erosion(std::size_t e, Real work, Real dt, ElementTota
     const ElementErosion& rule = erosion_[static_cast<std::size_t>(section_[e])];
     if (!rule.active()) return;
     element_work_[e] += work;
+    if (rule.separates() && cracked_[e] != 0) return;  // §7.7: failed before
     if (verdict ? !*verdict : !erodes_alone(e, dt)) return;
+    if (rule.separates()) {  // §7.7: it keeps acting, and opens an edge
+        cracked_[e] = k_failed;
+        return;
+    }
     eroded_[e] = k_eroded_pending;  // from the next step on (this step's loads stand)
     last_loads_[e] = loads;
     ++t.eroded;

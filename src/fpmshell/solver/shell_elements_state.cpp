@@ -58,6 +58,7 @@ std::vector<char> ShellElements::pack_state() const {
         append_bytes(bytes, time_steps_.mass_state(ue));
         if (can_erode()) {  // §7.6
             append_bytes(bytes, eroded_[ue]);
+            if (separates()) append_bytes(bytes, cracked_[ue]);
             append_bytes(bytes, element_work_[ue]);
             append_bytes(bytes, last_loads_[ue]);
             for (std::size_t i = 0; i < failure_numbers(ue); ++i)
@@ -95,6 +96,7 @@ void ShellElements::unpack_state(const std::vector<char>& bytes, std::vector<std
         time_steps_.set_mass_state(ue, take<std::array<Real, 3>>(bytes, at));
         if (can_erode()) {
             eroded_[ue] = take<std::uint8_t>(bytes, at);
+            if (separates()) cracked_[ue] = take<std::uint8_t>(bytes, at);
             element_work_[ue] = take<Real>(bytes, at);
             last_loads_[ue] = take<std::array<Real, 18>>(bytes, at);
             for (std::size_t i = 0; i < failure_numbers(ue); ++i) {
@@ -139,7 +141,7 @@ void ShellElements::save(RestartWriter& out) const {
     for (std::size_t e = 0; e < tri_.size(); ++e)
         for (std::size_t i = 0; i < failure_numbers(e); ++i)
             failure.push_back(self.failure_number(e, i));
-    out(self.eroded_, self.element_work_, self.last_loads_, failure);
+    out(self.eroded_, self.element_work_, self.last_loads_, failure, self.cracked_);
 }
 
 void ShellElements::load(RestartReader& in) {
@@ -160,9 +162,9 @@ void ShellElements::load(RestartReader& in) {
     for (std::size_t e = 0; e < n_elements; ++e)
         failure.resize(failure.size() + failure_numbers(e));
     const std::vector<std::size_t> erosion_lengths =
-        stored_lengths(eroded_, element_work_, last_loads_, failure);
-    in(eroded_, element_work_, last_loads_, failure);
-    if (stored_lengths(eroded_, element_work_, last_loads_, failure) != erosion_lengths)
+        stored_lengths(eroded_, element_work_, last_loads_, failure, cracked_);
+    in(eroded_, element_work_, last_loads_, failure, cracked_);
+    if (stored_lengths(eroded_, element_work_, last_loads_, failure, cracked_) != erosion_lengths)
         in.fail("restart file of a model with other failure criteria");
     // the state of the points, the criteria and the resultants is kept only where this rank
     // computes e
