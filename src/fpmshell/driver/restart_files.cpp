@@ -123,4 +123,29 @@ double RestartFiles::resume_solver(const std::filesystem::path& path, ExplicitSo
     return load_solver_and_schedule(r, solver, schedule);
 }
 
+SeparationHistory RestartFiles::separation_history(const std::filesystem::path& path,
+                                                   Index n_elements) {
+    RestartReader r(path);
+    r.section("layout");
+    int pieces = 0;
+    long step = 0;
+    r(pieces, step);
+    r.section("separation");
+    SeparationHistory h;
+    r(h.opened);
+    r(h.splits);
+    std::uint64_t before = 0;
+    for (const std::uint64_t n : h.splits) {
+        if (n < before || n > h.opened.size())
+            r.fail("restart file is damaged: its separations do not fit its open sides");
+        before = n;
+    }
+    for (const auto& [e, f] : h.opened)
+        if (e < 0 || f <= e || f >= n_elements)
+            r.fail(
+                "restart file of another model or damaged: its open sides are not between "
+                "two elements of this mesh");
+    return h;
+}
+
 }  // namespace fpmshell

@@ -21,6 +21,7 @@
 
 #include "fpmshell/driver/output_observer.hpp"
 #include "fpmshell/driver/output_schedule.hpp"
+#include "fpmshell/model/particle_separation.hpp"
 
 namespace fpmshell {
 
@@ -43,6 +44,11 @@ public:
     /// which write no results but their pieces of the frames and restart files).
     static double resume_solver(const std::filesystem::path& path, ExplicitSolver& solver,
                                 OutputSchedule& schedule);
+    /// The separations of the run (theory.md §7.7) in the restart file at `path`, whose model
+    /// has n_elements elements: the resumed solver is built from replay_separations of the
+    /// model with them. Throws InputError when the file is damaged.
+    static SeparationHistory separation_history(const std::filesystem::path& path,
+                                                Index n_elements);
     /// Whether step_done would write the restart file for this report, by the wall clock or
     /// at the end (not counting a pause); a distributed run asks rank 0's and tells every
     /// rank's step_done the agreed answer (StepReport::restart_agreed): writing is collective.

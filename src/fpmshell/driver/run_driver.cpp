@@ -294,11 +294,18 @@ int run_model(const Model& model, const RunOptions& opt) {
         log.print("distributed over {} ranks, {} thread(s) each", comm.size(), threads);
     for (const std::string& note : model.notes) log.print("note: {}", note);
 
-    std::unique_ptr<ExplicitSolver> solver_now = std::make_unique<ExplicitSolver>(model);
-    std::unique_ptr<Model> separated;  // §7.7
+    const std::filesystem::path restart_path = opt.output_dir / k_restart_file;
+    // §7.7 a run resumed after its particles separated goes on from the mesh they made
+    std::unique_ptr<Model> separated;
+    if (opt.resume)
+        if (const SeparationHistory history =
+                RestartFiles::separation_history(restart_path, model.n_elements());
+            !history.splits.empty())
+            separated = std::make_unique<Model>(replay_separations(model, history));
+    std::unique_ptr<ExplicitSolver> solver_now =
+        std::make_unique<ExplicitSolver>(separated ? *separated : model);
     report_mass_scaling(model, solver_now->added_mass(), "at set-up", log);
     OutputSchedule schedule(model);
-    const std::filesystem::path restart_path = opt.output_dir / k_restart_file;
     ObserverList out;
     // Rank 0 writes every result file; every other rank takes its part in the history rows and
     // writes its pieces of the frames and of the restart files.

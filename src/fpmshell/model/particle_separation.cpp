@@ -108,4 +108,19 @@ std::vector<Real> split_exactly(Real whole, std::span<const Real> shares) {
     return parts;
 }
 
+std::vector<MeshEdge> unsplit_edges(const std::vector<std::array<Index, 3>>& triangles,
+                                    std::span<const ElementPair> sides) {
+    std::vector<MeshEdge> edges;
+    for (const auto& [e, f] : sides) {
+        const auto& te = triangles[static_cast<std::size_t>(e)];
+        const auto& tf = triangles[static_cast<std::size_t>(f)];
+        std::array<Index, 2> shared{};
+        std::size_t n = 0;
+        for (const Index p : te)
+            if (n < 2 && std::find(tf.begin(), tf.end(), p) != tf.end()) shared[n++] = p;
+        if (n == 2) edges.push_back(mesh_edge(shared[0], shared[1]));
+    }
+    return edges;
+}
+
 }  // namespace fpmshell

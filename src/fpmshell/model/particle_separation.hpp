@@ -9,7 +9,9 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
 #include <span>
+#include <utility>
 #include <vector>
 
 #include "fpmshell/core/types.hpp"
@@ -25,6 +27,23 @@ struct MeshEdge {
 [[nodiscard]] inline MeshEdge mesh_edge(Index p, Index q) {
     return p < q ? MeshEdge{p, q} : MeshEdge{q, p};
 }
+
+/// An open side, as the two elements that shared it (first < second): the same pair whatever
+/// the particles' numbering after splits.
+using ElementPair = std::pair<Index, Index>;
+
+/// The sides of `sides` whose two elements still share two particles of `triangles`, as
+/// MeshEdges (those already apart drop out).
+[[nodiscard]] std::vector<MeshEdge> unsplit_edges(
+    const std::vector<std::array<Index, 3>>& triangles, std::span<const ElementPair> sides);
+
+/// What a run's separations were: the sides in the order they opened, and for each
+/// separation the number of sides opened before it (a restart file's record, from which
+/// replay_separations makes the run's mesh again).
+struct SeparationHistory {
+    std::vector<ElementPair> opened;
+    std::vector<std::uint64_t> splits;
+};
 
 /// One particle split: `parent` keeps the elements of its first group, and new particle
 /// `children[k]` takes group k + 1 (each group's elements ascending, the groups in the order

@@ -40,4 +40,15 @@ Model separated_model(const Model& model, const Separation& separation) {
     return m;
 }
 
+Model replay_separations(const Model& model, const SeparationHistory& history) {
+    Model m = model;
+    for (const std::uint64_t opened : history.splits) {
+        const std::span<const ElementPair> sides(history.opened.data(),
+                                                 static_cast<std::size_t>(opened));
+        m = separated_model(m, separate_along_edges(m.triangles, m.nodes.size(),
+                                                    unsplit_edges(m.triangles, sides)));
+    }
+    return m;
+}
+
 }  // namespace fpmshell

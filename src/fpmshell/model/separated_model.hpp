@@ -16,4 +16,9 @@ namespace fpmshell {
 
 [[nodiscard]] Model separated_model(const Model& model, const Separation& separation);
 
+/// The model of a run after the separations of `history` (a restart file's), made again from
+/// the model as read: each the separation of the model before it along the sides opened before
+/// it (the same particles, in the same numbering, as the run's).
+[[nodiscard]] Model replay_separations(const Model& model, const SeparationHistory& history);
+
 }  // namespace fpmshell

@@ -95,19 +95,4 @@ EdgeOpening::Choice EdgeOpening::side_to_open(const Mesh& mesh, Index e, const V
     return best;
 }
 
-std::vector<MeshEdge> EdgeOpening::unsplit_edges(
-    const std::vector<std::array<Index, 3>>& triangles) const {
-    std::vector<MeshEdge> edges;
-    for (const auto& [e, f] : open_) {
-        const auto& te = triangles[static_cast<std::size_t>(e)];
-        const auto& tf = triangles[static_cast<std::size_t>(f)];
-        std::array<Index, 2> shared{};
-        int n = 0;
-        for (const Index p : te)
-            if (std::find(tf.begin(), tf.end(), p) != tf.end() && n < 2) shared[n++] = p;
-        if (n == 2) edges.push_back(mesh_edge(shared[0], shared[1]));
-    }
-    return edges;
-}
-
 }  // namespace fpmshell

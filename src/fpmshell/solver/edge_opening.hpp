@@ -23,10 +23,6 @@
 
 namespace fpmshell {
 
-/// An open side, as the two elements that shared it (first < second): the same pair whatever
-/// the particles' numbering after splits.
-using ElementPair = std::pair<Index, Index>;
-
 class EdgeOpening {
 public:
     EdgeOpening() = default;
@@ -65,9 +61,6 @@ public:
     [[nodiscard]] bool is_open(Index e, Index f) const;
     /// Adds sides (any order; repeats allowed).
     void add(const std::vector<ElementPair>& sides);
-    /// The open sides whose two elements still share two particles, as MeshEdges of `triangles`.
-    [[nodiscard]] std::vector<MeshEdge> unsplit_edges(
-        const std::vector<std::array<Index, 3>>& triangles) const;
 
 private:
     /// Whether particle p has a free side: one of its elements' sides at p on the boundary or

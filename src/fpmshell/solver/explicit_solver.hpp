@@ -85,6 +85,9 @@ public:
         return opening_.open();
     }
     [[nodiscard]] Index split_particles() const { return split_particles_; }
+    /// §7.7 the sides opened and the separations so far (in restart files: a resumed run's
+    /// model is the one read, replay_separations of it).
+    [[nodiscard]] const SeparationHistory& separation_history() const { return history_; }
     /// The rigid bodies (§6.11), and through them the spot welds that failed (eq. 6.11-13).
     [[nodiscard]] const NodalRigidBodies& nodal_rigid_bodies() const { return nodal_rigid_bodies_; }
     /// The sheets' plastic strain at the ductile welds' particles, at the last step (eq. 6.11-15).
@@ -269,6 +272,7 @@ private:
     EdgeOpening opening_;
     std::vector<std::uint8_t> pinned_;
     std::optional<Separation> separation_due_;
+    SeparationHistory history_;
     Index split_particles_ = 0;
     /// Steps 5 and 8-9 in one sweep (update_velocities_and_advance_particles).
     bool fused_particle_pass_ = false;

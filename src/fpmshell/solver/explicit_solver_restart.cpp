@@ -21,6 +21,8 @@ void ExplicitSolver::transfer_state(Archive& ar, bool particles) {
 
 void ExplicitSolver::save(RestartWriter& out, bool in_pieces) const {
     auto& self = const_cast<ExplicitSolver&>(*this);  // the archive's interface is shared with load
+    out.section("separation");  // first: the run's model is made from it before the load (§7.7)
+    out(self.history_.opened, self.history_.splits, self.split_particles_);
     out.section("solver");
     self.transfer_state(out, !in_pieces);
     out.section("elements");
@@ -90,6 +92,24 @@ void ExplicitSolver::load(RestartReader& in, int pieces, const RestartPieces& op
     // model: a file whose lists have other lengths is of another model (or damaged), and is
     // refused before any of them is used as the model's.
     const bool whole = pieces == 0;
+    // §7.7 the separations of the run, which the model this solver was built from must have
+    // made already (replay_separations)
+    in.section("separation");
+    SeparationHistory history;
+    Index split_particles = 0;
+    in(history.opened, history.splits, split_particles);
+    if (history.splits.size() != history_.splits.size() &&
+        (model_.separated_from.empty() || !history_.splits.empty()))
+        in.fail(
+            fmt::format("restart file of a run whose particles separated {} times "
+                        "(theory.md §7.7), loaded into the mesh as read",
+                        history.splits.size()));
+    history_ = std::move(history);
+    split_particles_ = split_particles;
+    if (elements_.separates()) {
+        opening_ = EdgeOpening(model_.n_elements());
+        opening_.add(history_.opened);
+    }
     LengthRecorder model_lengths;
     transfer_state(model_lengths, whole);
     in.section("solver");

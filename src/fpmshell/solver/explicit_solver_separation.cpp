@@ -32,8 +32,9 @@ void ExplicitSolver::open_failed_sides() {
     if (opened.empty()) return;
     // the separation the open sides call for (the same on every rank: it depends on the mesh
     // and the set of open sides alone)
+    history_.opened.insert(history_.opened.end(), opened.begin(), opened.end());
     Separation separation = separate_along_edges(model_.triangles, model_.nodes.size(),
-                                                 opening_.unsplit_edges(model_.triangles));
+                                                 unsplit_edges(model_.triangles, opening_.open()));
     if (!separation.splits.empty()) separation_due_ = std::move(separation);
 }
 
@@ -136,6 +137,8 @@ void ExplicitSolver::take_state(ExplicitSolver& before, const Separation& separa
     bodies_ = before.bodies_;
     added_mass_ = before.added_mass_;
     opening_ = before.opening_;
+    history_ = before.history_;
+    history_.splits.push_back(history_.opened.size());
     split_particles_ =
         before.split_particles_ + static_cast<Index>(separation.parent_of_new.size());
     // the welds and ties as they were (their particles never split)

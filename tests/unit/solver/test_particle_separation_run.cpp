@@ -6,6 +6,8 @@
 //   and the elements' strain energy stay);
 // - a split conserves momentum and mass: each part moves with its parent, the parts' masses
 //   add up to the parent's exactly;
+// - a restart after two separations resumes bitwise from the mesh made again from its history
+//   (and the mesh as read refuses the file);
 // - 1 and 2 threads give the same bits.
 #include <gtest/gtest.h>
 
@@ -13,15 +15,21 @@
 #include <omp.h>
 #endif
 
+#include <unistd.h>
+
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <functional>
 #include <map>
 #include <memory>
+#include <string>
 
 #include "../one_section_model.hpp"
+#include "fpmshell/core/errors.hpp"
 #include "fpmshell/core/exact_sum.hpp"
 #include "fpmshell/failure/plastic_strain/plastic_strain_failure.hpp"
+#include "fpmshell/io/restart_archive.hpp"
 #include "fpmshell/materials/bilinear/bilinear_law.hpp"
 #include "fpmshell/mesh/generators.hpp"
 #include "fpmshell/solver/separating_step.hpp"
@@ -164,6 +172,47 @@ TEST(ParticleSeparationRun, ASplitKeepsMassAndMomentum) {
         return;
     }
     FAIL() << "no separation";
+}
+
+TEST(ParticleSeparationRun, ARestartAfterSplitsResumesBitwise) {
+    Model m = slit_plate(24);
+    m.control.end_time = 7e-3;
+    auto solver = std::make_unique<ExplicitSolver>(m);
+    std::unique_ptr<Model> separated;
+    while (solver->separation_history().splits.size() < 2 && solver->time() < m.control.end_time)
+        separating_step(solver, separated, 1e30);
+    ASSERT_EQ(solver->separation_history().splits.size(), 2u);
+    const std::filesystem::path file =
+        std::filesystem::temp_directory_path() /
+        ("fpmshell_separation_restart_" + std::to_string(::getpid()) + ".bin");
+    RestartWriter out;
+    solver->save(out);
+    out.save(file);
+    // the resumed run: its mesh made again from the model as read and the file's history
+    RestartReader in(file);
+    const Model replayed = replay_separations(m, solver->separation_history());
+    EXPECT_EQ(replayed.triangles, solver->model().triangles);
+    EXPECT_EQ(replayed.nodes, solver->model().nodes);
+    auto resumed = std::make_unique<ExplicitSolver>(replayed);
+    resumed->load(in);
+    std::filesystem::remove(file);
+    std::unique_ptr<Model> separated_resumed;
+    while (solver->time() < m.control.end_time) {
+        separating_step(solver, separated, 1e30);
+        separating_step(resumed, separated_resumed, 1e30);
+    }
+    EXPECT_GT(solver->separation_history().splits.size(), 2u) << "splits after the restart";
+    EXPECT_EQ(resumed->split_particles(), solver->split_particles());
+    EXPECT_EQ(resumed->state().x, solver->state().x);  // bitwise
+    EXPECT_EQ(resumed->energy().error(), solver->energy().error());
+    // the mesh as read cannot take the file
+    RestartWriter again;
+    solver->save(again);
+    again.save(file);
+    RestartReader wrong(file);
+    ExplicitSolver as_read(m);
+    EXPECT_THROW(as_read.load(wrong), InputError);
+    std::filesystem::remove(file);
 }
 
 TEST(ParticleSeparationRun, OneAndTwoThreadsGiveTheSameBits) {
