@@ -105,7 +105,7 @@ void ContactSolver::search(Definition& d, const std::vector<Vec3>& x) {
     d.candidate_start.assign(n_slaves + 1, 0);
     // the first search (at the initial geometry) counts the particles that start closer to a
     // face than their thickness offsets (initial penetrations, reported as LS-DYNA does)
-    const bool first = !d.searched;
+    const bool first = !d.searched && !initial_counted_;
     long overlapping = 0;  // a count: the same for any thread count
     [[maybe_unused]] const bool parallel = n_slaves >= parallel_min_slaves_;
 #pragma omp parallel for schedule(dynamic) reduction(+ : overlapping) if (parallel)

@@ -99,6 +99,13 @@ public:
                  std::vector<Vec3>& f_contact);
 
     [[nodiscard]] const ContactStatistics& statistics() const { return stats_; }
+    /// After a particle separation (theory.md §7.7): this contact of the separated mesh goes on
+    /// with the statistics of `before` (the contact of the mesh before it), and counts no
+    /// initial penetrations (its crack faces start together and leave each other out).
+    void continue_from(const ContactSolver& before) {
+        stats_ = before.stats_;
+        initial_counted_ = true;
+    }
     /// The contact force at t_n on the slaves of definition k: for a self-contact the push on
     /// the particles of its pairs' slave side (LS-DYNA's RCFORC slave side), for a rigid contact
     /// the force on its particles (minus the body's share of it).
@@ -305,6 +312,7 @@ private:
     std::vector<CollectBuffers> collect_chunks_;         ///< scratch, per chunk
     std::vector<std::vector<Index>> search_chunks_;      ///< scratch: candidates per chunk
     ContactStatistics stats_;
+    bool initial_counted_ = false;  ///< the initial penetrations counted (continue_from)
     /// Below, a parallel region costs more than it shares out: 2 000 slaves like the particle
     /// passes (solver/explicit_solver.cpp); 512 constraints, since a parallel sweep costs a
     /// barrier per sweep, more than a few hundred constraint updates.

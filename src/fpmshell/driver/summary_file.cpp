@@ -132,6 +132,7 @@ void SummaryFile::finish(const ExplicitSolver& solver, const RunEnd& end) {
     if (solver.elements().separates()) {  // theory.md §7.7
         j.set("open_sides", static_cast<Index>(solver.open_sides()));
         j.set("split_particles", solver.split_particles());
+        j.set("separations", static_cast<Index>(solver.separation_history().splits.size()));
         j.set("particles_at_end", solver.model().n_particles());
     }
     if (const NodalRigidBodies& welds = solver.nodal_rigid_bodies(); welds.has_failing_welds()) {

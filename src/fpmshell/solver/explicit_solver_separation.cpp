@@ -158,6 +158,7 @@ void ExplicitSolver::take_state(ExplicitSolver& before, const Separation& separa
     }
     // the contact searches the new mesh afresh, with the masses reached
     if (contact_) {
+        contact_->continue_from(*before.contact_);
         for (std::size_t p = 0; p < s_.size(); ++p)
             contact_->set_inverse_mass(static_cast<Index>(p),
                                        bc_->free_inverse_mass(p, s_.mass[p]));
