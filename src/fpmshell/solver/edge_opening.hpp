@@ -4,11 +4,11 @@
 // sides, the one across which its membrane force pulls hardest, among the sides it shares with
 // another element that reach the crack (an end on a free side: the mesh's boundary or a side
 // already open) or whose other element has failed too (the crack's start inside a sheet). An
-// element takes part in one open side at most, and keeps two closed sides: a crack never cuts
-// an element out of the sheet (no fragment of one element). An element with no such side in
-// tension waits for the crack to reach it; one that borders an open side already has done its
-// part. The sides the failed elements of a step choose open in the order of their tractions,
-// largest first, each only where its two elements are still free to.
+// element is never cut out of the sheet: it borders two open sides at most, the second only at
+// a corner of the first (the crack turning through it), and keeps a closed side. An element
+// with no candidate in tension waits for the crack to reach it; one that borders an open side
+// has done its part. The sides the failed elements of a step choose open in the order of their
+// tractions, largest first, each only where its two elements may still open it.
 #pragma once
 
 #include <array>
@@ -50,7 +50,7 @@ public:
     /// The sides of `choices` (records [element, across, traction], every rank's) that open: by
     /// traction, largest first (then element pair), each where neither element borders an
     /// open side yet. Adds them and returns them.
-    std::vector<ElementPair> open_chosen(std::vector<Real> choices);
+    std::vector<ElementPair> open_chosen(const Mesh& mesh, std::vector<Real> choices);
     /// The open sides element e borders.
     [[nodiscard]] int open_sides_of(Index e) const {
         return open_count_[static_cast<std::size_t>(e)];
@@ -66,6 +66,12 @@ private:
     /// Whether particle p has a free side: one of its elements' sides at p on the boundary or
     /// open.
     [[nodiscard]] bool on_free_side(const Mesh& mesh, Index p) const;
+    /// Whether element e may open its side (a, b): it keeps two closed sides shared with other
+    /// elements, and borders no open side or one that ends at a or b (the crack turning through
+    /// its corner): no element is ever cut out of the sheet.
+    [[nodiscard]] bool may_open(const Mesh& mesh, Index e, Index a, Index b) const;
+    /// The two particles elements e and f share.
+    [[nodiscard]] static std::array<Index, 2> shared_side(const Mesh& mesh, Index e, Index f);
     /// The sides element e shares with another element that are not open.
     [[nodiscard]] int closed_sides(const Mesh& mesh, Index e) const;
 

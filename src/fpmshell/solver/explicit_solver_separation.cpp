@@ -25,8 +25,10 @@ void ExplicitSolver::open_failed_sides() {
         if (c.across < 0) continue;
         mine.insert(mine.end(), {static_cast<Real>(e), static_cast<Real>(c.across), c.traction});
     }
-    const std::vector<ElementPair> opened = opening_.open_chosen(ranks_.join_records(mine, 3));
-    // the failed elements that border an open side have done their part
+    const std::vector<ElementPair> opened =
+        opening_.open_chosen(mesh, ranks_.join_records(mine, 3));
+    // a failed element has done its part once it has opened a side (the one it chose, or one
+    // its neighbour chose: the crack has passed it)
     for (const Index e : waiting)
         if (opening_.open_sides_of(e) > 0) elements_.mark_opened(e);
     if (opened.empty()) return;

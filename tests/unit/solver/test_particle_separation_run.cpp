@@ -1,9 +1,9 @@
 // Fracture by particle separation in the solver (theory.md §7.7), on a plate with an edge slit
 // pulled apart (mode I):
 // - the crack starts at the slit's tip and runs across the ligament, the plate ends in two
-//   pieces; the total mass keeps its bits, the energy balance closes to 1e-3 (the separation
-//   itself books no work: eq. 7.7-2 moves the parts with their parent, so the kinetic energy
-//   and the elements' strain energy stay);
+//   halves (and at most small fragments where the crack branched); the total mass keeps its bits,
+//   the energy balance closes to 1e-3 (the separation itself books no work: eq. 7.7-2 moves the
+//   parts with their parent, so the kinetic energy and the elements' strain energy stay);
 // - a split conserves momentum and mass: each part moves with its parent, the parts' masses
 //   add up to the parent's exactly;
 // - a restart after two separations resumes bitwise from the mesh made again from its history
@@ -137,11 +137,13 @@ TEST(ParticleSeparationRun, TheSlitPlateTearsFromTheSlitsTip) {
         }
     }
     EXPECT_TRUE(tip_opened) << "the crack starts at the slit's tip";
-    // it runs across the ligament: two pieces, each about half the plate (the crack keeps
-    // within a few rows of the slit's line)
+    // it runs across the ligament: two pieces of about half the plate each (the crack keeps
+    // within a few rows of the slit's line), and at most a few small fragments where it
+    // branched (under 3 % of the elements)
     const std::vector<int> sizes = pieces(solver->model());
-    ASSERT_EQ(sizes.size(), 2u);
+    ASSERT_GE(sizes.size(), 2u);
     EXPECT_GT(sizes[1], m.n_elements() * 2 / 5);
+    EXPECT_LT(m.n_elements() - sizes[0] - sizes[1], m.n_elements() * 3 / 100);
     EXPECT_GT(separations, 0);
     EXPECT_GT(solver->split_particles(), 0);
     EXPECT_EQ(solver->model().n_particles(), m.n_particles() + solver->split_particles());
