@@ -160,6 +160,11 @@ TEST(ModelReader, EveryErrorNamesFileLineAndKey) {
          "belongs to plastic materials (type: j2_plastic or power_law), not to type tabulated"},
         {replaced(k_base, steel, "poisson_ratio: 0.3, flow_curve: [[0, 200], [1, 300]]}"), 4,
          "materials.steel.flow_curve", "belongs to plastic materials"},
+        // theory.md §7.7: what a failed element does
+        {replaced(replaced(k_base, "type: elastic", "type: j2_plastic"), steel,
+                  "poisson_ratio: 0.3, yield_stress: 250, failure: {plastic_strain: 0.2, "
+                  "fracture: split}}"),
+         4, "materials.steel.failure.fracture", "is 'split'; give erode"},
         {tabulated("poisson_ratio: 0.3, flow_curve: [[0, 200], [1, 300]], flow_curves: []}"), 4,
          "materials.steel.flow_curves", "either flow_curve"},
         {tabulated("poisson_ratio: 0.3, flow_curves: [{strain_rate: 10, points: [[0, 200], [1, "
