@@ -131,6 +131,9 @@ check("separating_plate", os.path.join(WORK, "separating_plate.yaml"), ["control
 with open(os.path.join(WORK, "separating_plate-2x1", "summary.json")) as f:
     if not json.load(f).get("split_particles"):
         failures.append("separating_plate: no particle split (the check compares nothing)")
+# a ball through a plate that separates: the contact (whole on every rank) rebuilt at each split
+check("separating_perforation", os.path.join(ROOT, "examples/plate_perforation_separating/model.yaml"),
+      ["control.end_time=4e-4"])
 # stopped after its particles separated, on 1 rank and on 2, and resumed on 1 and on 3: the mesh
 # made again from the restart file's separations, the results the same bytes
 for first_ranks, second_ranks in ((1, 1), (2, 3)):
