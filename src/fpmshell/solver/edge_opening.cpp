@@ -9,16 +9,6 @@ ElementPair ordered(Index e, Index f) { return e < f ? ElementPair{e, f} : Eleme
 
 }  // namespace
 
-std::array<Index, 2> EdgeOpening::shared_side(const Mesh& mesh, Index e, Index f) {
-    const auto& te = mesh.triangles[static_cast<std::size_t>(e)];
-    const auto& tf = mesh.triangles[static_cast<std::size_t>(f)];
-    std::array<Index, 2> ends{-1, -1};
-    std::size_t n = 0;
-    for (const Index p : te)
-        if (n < 2 && std::find(tf.begin(), tf.end(), p) != tf.end()) ends[n++] = p;
-    return ends;
-}
-
 bool EdgeOpening::is_open(Index e, Index f) const {
     return std::binary_search(open_.begin(), open_.end(), ordered(e, f));
 }
@@ -48,32 +38,17 @@ std::vector<ElementPair> EdgeOpening::open_chosen(const Mesh& mesh, std::vector<
     std::vector<ElementPair> opened;
     for (const Chosen& c : order) {
         if (is_open(c.side.first, c.side.second)) continue;
-        const std::array<Index, 2> ends = shared_side(mesh, c.side.first, c.side.second);
-        if (!may_open(mesh, c.side.first, ends[0], ends[1]) ||
-            !may_open(mesh, c.side.second, ends[0], ends[1]))
-            continue;
+        if (!may_open(mesh, c.side.first) || !may_open(mesh, c.side.second)) continue;
         add({c.side});
         opened.push_back(c.side);
     }
     return opened;
 }
 
-bool EdgeOpening::may_open(const Mesh& mesh, Index e, Index a, Index b) const {
-    const auto& t = mesh.triangles[static_cast<std::size_t>(e)];
-    int open = 0, closed = 0;
-    bool turns = false;  // an open side of e shares a or b: the crack turns through e's corner
-    for (std::size_t i = 0; i < 3; ++i) {
-        const Index across = mesh.topology.side_neighbour[3 * static_cast<std::size_t>(e) + i];
-        if (across < 0) continue;
-        if (!is_open(e, across)) {
-            ++closed;
-            continue;
-        }
-        ++open;
-        const Index p = t[(i + 1) % 3], q = t[(i + 2) % 3];
-        turns = turns || p == a || p == b || q == a || q == b;
-    }
-    return closed >= 2 && (open == 0 || (open == 1 && turns));
+bool EdgeOpening::may_open(const Mesh& mesh, Index e) const {
+    // two open sides at most (a triangle's two sides always meet at a corner: the crack turns
+    // through it), and a closed one kept
+    return open_sides_of(e) < 2 && closed_sides(mesh, e) >= 2;
 }
 
 int EdgeOpening::closed_sides(const Mesh& mesh, Index e) const {
@@ -113,7 +88,7 @@ EdgeOpening::Choice EdgeOpening::side_to_open(const Mesh& mesh, Index e, const V
         const Index across = mesh.topology.side_neighbour[3 * ue + i];
         if (across < 0 || is_open(e, across)) continue;
         const Index a = t[(i + 1) % 3], b = t[(i + 2) % 3];
-        if (!may_open(mesh, e, a, b) || !may_open(mesh, across, a, b)) continue;
+        if (!may_open(mesh, e) || !may_open(mesh, across)) continue;
         if (mesh.pinned[static_cast<std::size_t>(a)] || mesh.pinned[static_cast<std::size_t>(b)])
             continue;
         if (!mesh.failed(across) && !on_free_side(mesh, a) && !on_free_side(mesh, b)) continue;

@@ -4,8 +4,8 @@
 // sides, the one across which its membrane force pulls hardest, among the sides it shares with
 // another element that reach the crack (an end on a free side: the mesh's boundary or a side
 // already open) or whose other element has failed too (the crack's start inside a sheet). An
-// element is never cut out of the sheet: it borders two open sides at most, the second only at
-// a corner of the first (the crack turning through it), and keeps a closed side. An element
+// element is never cut out of the sheet: it borders two open sides at most (the crack turning
+// through its corner) and keeps a closed side. An element
 // with no candidate in tension waits for the crack to reach it; one that borders an open side
 // has done its part. The sides the failed elements of a step choose open in the order of their
 // tractions, largest first, each only where its two elements may still open it.
@@ -66,12 +66,10 @@ private:
     /// Whether particle p has a free side: one of its elements' sides at p on the boundary or
     /// open.
     [[nodiscard]] bool on_free_side(const Mesh& mesh, Index p) const;
-    /// Whether element e may open its side (a, b): it keeps two closed sides shared with other
-    /// elements, and borders no open side or one that ends at a or b (the crack turning through
-    /// its corner): no element is ever cut out of the sheet.
-    [[nodiscard]] bool may_open(const Mesh& mesh, Index e, Index a, Index b) const;
-    /// The two particles elements e and f share.
-    [[nodiscard]] static std::array<Index, 2> shared_side(const Mesh& mesh, Index e, Index f);
+    /// Whether element e may open one more side: it borders one open side at most (a second
+    /// meets the first at a corner: the crack turning through e) and keeps a closed side
+    /// shared with another element after it: no element is ever cut out of the sheet.
+    [[nodiscard]] bool may_open(const Mesh& mesh, Index e) const;
     /// The sides element e shares with another element that are not open.
     [[nodiscard]] int closed_sides(const Mesh& mesh, Index e) const;
 
