@@ -98,8 +98,7 @@ void ExplicitSolver::load(RestartReader& in, int pieces, const RestartPieces& op
     SeparationHistory history;
     Index split_particles = 0;
     in(history.opened, history.splits, split_particles);
-    if (history.splits.size() != history_.splits.size() &&
-        (model_.separated_from.empty() || !history_.splits.empty()))
+    if (!history.splits.empty() && model_.separated_from.empty())
         in.fail(
             fmt::format("restart file of a run whose particles separated {} times "
                         "(theory.md §7.7), loaded into the mesh as read",

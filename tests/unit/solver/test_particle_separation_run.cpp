@@ -20,7 +20,6 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-#include <functional>
 #include <map>
 #include <memory>
 #include <string>
@@ -33,6 +32,7 @@
 #include "fpmshell/io/restart_archive.hpp"
 #include "fpmshell/materials/bilinear/bilinear_law.hpp"
 #include "fpmshell/mesh/generators.hpp"
+#include "fpmshell/model/mesh_pieces.hpp"
 #include "fpmshell/solver/separating_step.hpp"
 
 namespace fpmshell {
@@ -86,16 +86,9 @@ Model slit_plate(Index nx) {
 /// The element counts of the pieces of a mesh (its triangles joined through shared particles),
 /// largest first.
 std::vector<int> pieces(const Model& m) {
-    std::vector<Index> root(m.nodes.size());
-    for (std::size_t p = 0; p < root.size(); ++p) root[p] = static_cast<Index>(p);
-    const std::function<Index(Index)> find = [&](Index p) {
-        while (root[static_cast<std::size_t>(p)] != p) p = root[static_cast<std::size_t>(p)];
-        return p;
-    };
-    for (const auto& t : m.triangles)
-        for (std::size_t i = 1; i < 3; ++i) root[static_cast<std::size_t>(find(t[i]))] = find(t[0]);
+    const std::vector<Index> piece = mesh_pieces(m.nodes.size(), m.triangles);
     std::map<Index, int> count;
-    for (const auto& t : m.triangles) ++count[find(t[0])];
+    for (const auto& t : m.triangles) ++count[piece[static_cast<std::size_t>(t[0])]];
     std::vector<int> sizes;
     for (const auto& [root_particle, n] : count) sizes.push_back(n);
     std::sort(sizes.rbegin(), sizes.rend());
