@@ -7,6 +7,7 @@
 #include <utility>
 
 #include "fpmshell/elements/bending_time_step.hpp"
+#include "fpmshell/elements/membrane_time_step.hpp"
 #include "fpmshell/elements/path_element.hpp"
 #include "fpmshell/elements/triangle_shape.hpp"
 
@@ -53,9 +54,11 @@ ElementTimeSteps::ElementTimeSteps(const Model& model, const MeshTopology& topol
       node_inertia_(topology.element_node_inertia),
       bending_kernel_(model.control.bending),
       stiffness_damping_(model.damping.stiffness) {
-    for (const Section& sec : model.sections)
-        rigid_section_.push_back(model.materials[static_cast<std::size_t>(sec.material)].rigid ? 1
-                                                                                               : 0);
+    for (const Section& sec : model.sections) {
+        const Material& mat = model.materials[static_cast<std::size_t>(sec.material)];
+        rigid_section_.push_back(mat.rigid ? 1 : 0);
+        exact_membrane_.push_back(mat.failure.active() && mat.failure.separates ? 1 : 0);
+    }
     initial_volume_.resize(model.triangles.size());
     for (std::size_t e = 0; e < model.triangles.size(); ++e) {
         const auto [p0, p1, p2] = corners_of(model.triangles[e], model.nodes);
@@ -65,7 +68,7 @@ ElementTimeSteps::ElementTimeSteps(const Model& model, const MeshTopology& topol
     share_initial_ratios(model);
 }
 
-// The bending step ratio needs a 9 x 9 eigenproblem per element where h / L_c is near 1
+// The step ratio needs a 9 x 9 eigenproblem per element where h / L_c is near 1
 // (nearly all the set-up's time on a fine mesh). It depends on the section and the local
 // shape only, and the elements of a structured mesh come in a few shapes: it is computed
 // once per section and shape class (local coordinates equal to 2^-32 relative, far below
@@ -73,8 +76,8 @@ ElementTimeSteps::ElementTimeSteps(const Model& model, const MeshTopology& topol
 // element of the class, and shared by the others.
 void ElementTimeSteps::share_initial_ratios(const Model& model) {
     const std::size_t ne = model.triangles.size();
-    bend_ratio_.assign(ne, 1.0);
-    bend_lc_.assign(ne, 0.0);
+    step_ratio_.assign(ne, 1.0);
+    ratio_lc_.assign(ne, 0.0);
     std::vector<std::array<std::int64_t, 4>> shape_key(ne);
     std::vector<Real> initial_lc(ne);
 #pragma omp parallel for schedule(static) if (static_cast <Index>(ne) >= k_parallel_min_elements)
@@ -105,17 +108,17 @@ void ElementTimeSteps::share_initial_ratios(const Model& model) {
         const auto first = class_begin[static_cast<std::size_t>(c)],
                    end = class_begin[static_cast<std::size_t>(c) + 1];
         const Index lead = by_shape[first];
-        const Real ratio = bending_ratio(
+        const Real ratio = step_ratio(
             lead, corners_of(model.triangles[static_cast<std::size_t>(lead)], model.nodes));
         for (std::size_t i = first; i < end; ++i) {
             const auto e = static_cast<std::size_t>(by_shape[i]);
-            bend_ratio_[e] = ratio;
-            bend_lc_[e] = initial_lc[e];
+            step_ratio_[e] = ratio;
+            ratio_lc_[e] = initial_lc[e];
         }
     }
 }
 
-Real ElementTimeSteps::bending_ratio(Index e, const std::array<Vec3, 3>& corners) const {
+Real ElementTimeSteps::step_ratio(Index e, const std::array<Vec3, 3>& corners) const {
     const std::size_t ue = static_cast<std::size_t>(e);
     const auto& [p0, p1, p2] = corners;
     const std::size_t sec = static_cast<std::size_t>(section_[ue]);
@@ -123,17 +126,22 @@ Real ElementTimeSteps::bending_ratio(Index e, const std::array<Vec3, 3>& corners
     if (!mass_scale_.empty()) membrane_dt *= mass_scale_[ue];  // §6.10, as node_mass_
     // only min(1, bending_dt / membrane_dt) is used (critical_dt): a bound suffices where the
     // bending modes are surely slower than the membrane
-    const Real bending_dt =
-        bending_critical_dt(bending_kernel_, local_shape(p0, p1, p2), bending_rigidity_[sec],
-                            node_mass_[ue], node_inertia_[ue], membrane_dt);
-    return membrane_dt > 0 ? bending_dt / membrane_dt : 1.0;
+    const TriangleShape shape = local_shape(p0, p1, p2);
+    const Real bending_dt = bending_critical_dt(bending_kernel_, shape, bending_rigidity_[sec],
+                                                node_mass_[ue], node_inertia_[ue], membrane_dt);
+    const Real ratio = membrane_dt > 0 ? bending_dt / membrane_dt : 1.0;
+    // eq. 6.4-3: the ratio of the exact membrane step does not depend on the mass scaling (the
+    // mass and L_c / c both scale by f_e)
+    if (exact_membrane_[sec])
+        return std::min(ratio, membrane_step_ratio(shape, bending_rigidity_[sec]));
+    return ratio;
 }
 
 void ElementTimeSteps::reevaluate(Index e, const std::array<Index, 3>& t,
                                   const std::vector<Vec3>& x, Real lc) {
     const std::size_t ue = static_cast<std::size_t>(e);
-    bend_ratio_[ue] = bending_ratio(e, corners_of(t, x));
-    bend_lc_[ue] = lc;
+    step_ratio_[ue] = step_ratio(e, corners_of(t, x));
+    ratio_lc_[ue] = lc;
 }
 
 // §6.10 eq. 6.10a: with the stiffness damping a_s of §6.4 the critical step is

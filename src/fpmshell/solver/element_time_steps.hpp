@@ -1,6 +1,8 @@
 // The critical time step of every element (theory.md §6.4): the smaller of the membrane step
 // L_c / c and the bending step of its own 9 x 9 eigenproblem (elements/bending_time_step.hpp),
-// reduced for stiffness damping. The bending step is kept as its ratio to L_c / c, which
+// reduced for stiffness damping; the elements of a material that separates (§7.7) take the
+// isolated triangle's exact membrane step instead of L_c / c (eq. 6.4-3,
+// elements/membrane_time_step.hpp). Both are kept as the step's ratio to L_c / c, which
 // depends on the element's shape and h / L_c only: it is computed at set-up once per section
 // and shape class and shared, and re-evaluated for an element whose L_c drifts.
 #pragma once
@@ -56,19 +58,18 @@ public:
         }
         return with_stiffness_damping(dt);
     }
-    /// Re-evaluates the bending ratio of element e (corners t, positions x, current length lc)
-    /// when lc has drifted by more than k_bending_ratio_drift from the length the ratio was
+    /// Re-evaluates the step ratio of element e (corners t, positions x, current length lc)
+    /// when lc has drifted by more than k_ratio_drift from the length the ratio was
     /// computed at.
     void refresh(Index e, const std::array<Index, 3>& t, const std::vector<Vec3>& x, Real lc) {
         const auto ue = static_cast<std::size_t>(e);
-        if (!(lc > 0) || std::abs(lc - bend_lc_[ue]) <= k_bending_ratio_drift * bend_lc_[ue])
-            return;
+        if (!(lc > 0) || std::abs(lc - ratio_lc_[ue]) <= k_ratio_drift * ratio_lc_[ue]) return;
         reevaluate(e, t, x, lc);
     }
-    /// The bending step ratio depends on the element shape and h / L_c only; it is
+    /// The step ratio depends on the element shape and h / L_c only; it is
     /// re-evaluated (a 9x9 eigenproblem) when L_c has changed by more than this fraction since
     /// the last evaluation, which bounds the ratio's staleness to a few per cent of the step.
-    static constexpr Real k_bending_ratio_drift = 0.05;
+    static constexpr Real k_ratio_drift = 0.05;
 
     /// §6.10 mass scaling: per element, the factor f_e >= 1 on its mass and inertia shares
     /// that raises its critical step at the corners x to at least `step` (eq. 6.10a; 1 where
@@ -77,7 +78,7 @@ public:
         Real step, const std::vector<std::array<Index, 3>>& triangles,
         const std::vector<Vec3>& x) const;
     /// Multiplies element e's mass and inertia shares by factor[e] (mass_scaling_factors): its
-    /// membrane and bending steps grow by sqrt(factor[e]), the bending ratio stays.
+    /// membrane and bending steps grow by sqrt(factor[e]), the step ratio stays.
     void scale_masses(const std::vector<Real>& factor);
     /// §6.10 during the run: from now on scaled_critical_dt keeps every element's critical step
     /// at or above `step` (the run's target / time_step_scale).
@@ -109,16 +110,18 @@ public:
         if (!mass_scale_.empty()) mass_scale_[e] = m[2];
     }
 
-    /// The state carried from step to step (restart files): per element, the bending ratio and
+    /// The state carried from step to step (restart files): per element, the step ratio and
     /// the L_c it was evaluated at.
-    std::vector<Real>& ratio() { return bend_ratio_; }
-    std::vector<Real>& ratio_length() { return bend_lc_; }
+    std::vector<Real>& ratio() { return step_ratio_; }
+    std::vector<Real>& ratio_length() { return ratio_lc_; }
 
 private:
-    /// Sets the bending ratio of element e from its current corners.
+    /// Sets the step ratio of element e from its current corners.
     void reevaluate(Index e, const std::array<Index, 3>& t, const std::vector<Vec3>& x, Real lc);
-    /// Bending critical step / (L_c / c) of element e at corners `corners`.
-    [[nodiscard]] Real bending_ratio(Index e, const std::array<Vec3, 3>& corners) const;
+    /// Element e's critical step / (L_c / c) at corners `corners`, where it is below 1 or
+    /// the element's section takes the exact membrane step: the bending step's, and for such a
+    /// section the smaller of it and the membrane step's (eq. 6.4-3).
+    [[nodiscard]] Real step_ratio(Index e, const std::array<Vec3, 3>& corners) const;
     /// Multiplies element e's mass and inertia shares by f (§6.10): its steps grow by sqrt(f).
     void scale_element(std::size_t e, Real f);
     /// Sets every element's ratio at the initial geometry, shared within shape classes.
@@ -131,11 +134,11 @@ private:
         if (rigid_section_[static_cast<std::size_t>(section_[ue])])
             return std::numeric_limits<Real>::infinity();
         // §6.4 membrane step L_c / c; the bending modes of thick elements (h / L_c > ~0.5) are
-        // slower to integrate, bend_ratio_ < 1 (bending_time_step.hpp). Eq. 6.4-2: the mass
-        // stays on the particles, so an element whose volume has grown past its initial one
-        // (stretched with its thickness kept) is as dense as rho V_0 / (A h).
+        // slower to integrate, and the separating elements' membrane (eq. 6.4-3): step_ratio_ < 1.
+        // Eq. 6.4-2: the mass stays on the particles, so an element whose volume has grown past its
+        // initial one (stretched with its thickness kept) is as dense as rho V_0 / (A h).
         Real dt = lc / wave_speed_[static_cast<std::size_t>(section_[ue])] *
-                  std::min(std::min(Real{1}, bend_ratio_[ue]), volume_factor);
+                  std::min(std::min(Real{1}, step_ratio_[ue]), volume_factor);
         if (!mass_scale_.empty()) dt *= mass_scale_[ue];  // §6.10: sqrt(f_e)
         return dt;
     }
@@ -159,8 +162,10 @@ private:
     std::vector<Real> initial_volume_;  ///< per element, A_0 h_0 (eq. 6.4-2)
     BendingKernel bending_kernel_ = BendingKernel::Dkt;
     Real stiffness_damping_ = 0;
-    std::vector<Real> bend_ratio_;  ///< per element, bending critical step / (L_c / c)
-    std::vector<Real> bend_lc_;     ///< per element, the L_c bend_ratio_ was evaluated at
+    /// per section: its elements take the exact membrane step (a material that separates)
+    std::vector<std::uint8_t> exact_membrane_;
+    std::vector<Real> step_ratio_;  ///< per element, critical step / (L_c / c) (step_ratio)
+    std::vector<Real> ratio_lc_;    ///< per element, the L_c step_ratio_ was evaluated at
     std::vector<Real> mass_scale_;  ///< per element, sqrt(f_e) of §6.10 (empty: no scaling)
     Real run_target_ = 0;           ///< §6.10 during the run: the undamped target step (0: off)
     std::vector<Real> pending_;     ///< per element, the factor scaled_critical_dt kept (0: none)
