@@ -59,6 +59,13 @@ ElementTimeSteps::ElementTimeSteps(const Model& model, const MeshTopology& topol
         rigid_section_.push_back(mat.rigid ? 1 : 0);
         exact_membrane_.push_back(mat.failure.active() && mat.failure.separates ? 1 : 0);
     }
+    // eq. 6.4-3: an element with no side neighbour is held by its corners alone (a lone
+    // triangle, two sharing a corner)
+    exact_element_.assign(model.triangles.size(), 0);
+    for (std::size_t e = 0; e < model.triangles.size(); ++e)
+        if (topology.side_neighbour[3 * e] < 0 && topology.side_neighbour[3 * e + 1] < 0 &&
+            topology.side_neighbour[3 * e + 2] < 0)
+            exact_element_[e] = 1;
     initial_volume_.resize(model.triangles.size());
     for (std::size_t e = 0; e < model.triangles.size(); ++e) {
         const auto [p0, p1, p2] = corners_of(model.triangles[e], model.nodes);
@@ -85,8 +92,8 @@ void ElementTimeSteps::share_initial_ratios(const Model& model) {
         const auto [p0, p1, p2] = corners_of(model.triangles[e], model.nodes);
         initial_lc[e] = characteristic_length(p0, p1, p2);
         const TriangleShape shape = local_shape(p0, p1, p2);
-        shape_key[e] = {section_[e], shape_class(shape.x[1]), shape_class(shape.x[2]),
-                        shape_class(shape.y[2])};
+        shape_key[e] = {2 * section_[e] + exact_element_[e], shape_class(shape.x[1]),
+                        shape_class(shape.x[2]), shape_class(shape.y[2])};
     }
     std::vector<Index> by_shape;  // the elements with a length, by key, each class in element order
     for (std::size_t e = 0; e < ne; ++e)
@@ -132,7 +139,7 @@ Real ElementTimeSteps::step_ratio(Index e, const std::array<Vec3, 3>& corners) c
     const Real ratio = membrane_dt > 0 ? bending_dt / membrane_dt : 1.0;
     // eq. 6.4-3: the ratio of the exact membrane step does not depend on the mass scaling (the
     // mass and L_c / c both scale by f_e)
-    if (exact_membrane_[sec])
+    if (exact_membrane(e))
         return std::min(ratio, membrane_step_ratio(shape, bending_rigidity_[sec]));
     return ratio;
 }
@@ -142,6 +149,13 @@ void ElementTimeSteps::reevaluate(Index e, const std::array<Index, 3>& t,
     const std::size_t ue = static_cast<std::size_t>(e);
     step_ratio_[ue] = step_ratio(e, corners_of(t, x));
     ratio_lc_[ue] = lc;
+}
+
+void ElementTimeSteps::take_exact_membrane(Index e, const std::array<Index, 3>& t,
+                                           const std::vector<Vec3>& x) {
+    mark_exact_membrane(e);
+    const auto [p0, p1, p2] = corners_of(t, x);
+    reevaluate(e, t, x, characteristic_length(p0, p1, p2));
 }
 
 // §6.10 eq. 6.10a: with the stiffness damping a_s of §6.4 the critical step is

@@ -1,10 +1,11 @@
 // The critical time step of every element (theory.md §6.4): the smaller of the membrane step
 // L_c / c and the bending step of its own 9 x 9 eigenproblem (elements/bending_time_step.hpp),
-// reduced for stiffness damping; the elements of a material that separates (§7.7) take the
-// isolated triangle's exact membrane step instead of L_c / c (eq. 6.4-3,
-// elements/membrane_time_step.hpp). Both are kept as the step's ratio to L_c / c, which
-// depends on the element's shape and h / L_c only: it is computed at set-up once per section
-// and shape class and shared, and re-evaluated for an element whose L_c drifts.
+// reduced for stiffness damping; the elements of a material that separates (§7.7), and those
+// held by their corners alone (no side neighbour, or every one eroded), take the isolated
+// triangle's exact membrane step instead of L_c / c (eq. 6.4-3, elements/membrane_time_step.hpp).
+// Both are kept as the step's ratio to L_c / c, which depends on the element's shape and h / L_c
+// only: it is computed at set-up once per section and shape class and shared, and re-evaluated for
+// an element whose L_c drifts.
 #pragma once
 
 #include <algorithm>
@@ -110,6 +111,17 @@ public:
         if (!mass_scale_.empty()) mass_scale_[e] = m[2];
     }
 
+    /// Eq. 6.4-3 for element e from now on (an element left held by its corners alone, its side
+    /// neighbours eroded): the flag, and its step ratio at its current corners t of x.
+    void take_exact_membrane(Index e, const std::array<Index, 3>& t, const std::vector<Vec3>& x);
+    /// The flag alone (a restart's or a separation's state brings the ratio).
+    void mark_exact_membrane(Index e) { exact_element_[static_cast<std::size_t>(e)] = 1; }
+    [[nodiscard]] bool exact_membrane(Index e) const {
+        return exact_element_[static_cast<std::size_t>(e)] != 0 ||
+               exact_membrane_[static_cast<std::size_t>(section_[static_cast<std::size_t>(e)])] !=
+                   0;
+    }
+
     /// The state carried from step to step (restart files): per element, the step ratio and
     /// the L_c it was evaluated at.
     std::vector<Real>& ratio() { return step_ratio_; }
@@ -164,6 +176,9 @@ private:
     Real stiffness_damping_ = 0;
     /// per section: its elements take the exact membrane step (a material that separates)
     std::vector<std::uint8_t> exact_membrane_;
+    /// per element: it takes the exact membrane step, held by its corners alone (no side
+    /// neighbour in the mesh, or every one eroded)
+    std::vector<std::uint8_t> exact_element_;
     std::vector<Real> step_ratio_;  ///< per element, critical step / (L_c / c) (step_ratio)
     std::vector<Real> ratio_lc_;    ///< per element, the L_c step_ratio_ was evaluated at
     std::vector<Real> mass_scale_;  ///< per element, sqrt(f_e) of §6.10 (empty: no scaling)

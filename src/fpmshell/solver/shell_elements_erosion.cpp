@@ -24,6 +24,7 @@ void ShellElements::init_erosion(const Model& model) {
         return;
     }
     eroded_.assign(ne, 0);
+    gone_.assign(ne, 0);
     if (separates) cracked_.assign(ne, 0);
     element_work_.assign(ne, 0.0);
     last_loads_.assign(ne, std::array<Real, 18>{});
@@ -155,6 +156,39 @@ std::vector<Index> ShellElements::eroded_so_far() const {
     for (std::size_t e = 0; e < eroded_.size(); ++e)
         if (eroded_[e] != 0) out.push_back(static_cast<Index>(e));
     return out;
+}
+
+void ShellElements::hold_by_corners(const std::vector<Index>& eroded, const std::vector<Vec3>& x) {
+    for (const Index e : eroded) gone_[static_cast<std::size_t>(e)] = 1;
+    const auto held_by_corners = [&](std::size_t f) {
+        if (gone_[f] != 0) return false;
+        for (std::size_t i = 0; i < 3; ++i) {
+            const Index n = topology_->side_neighbour[3 * f + i];
+            if (n >= 0 && gone_[static_cast<std::size_t>(n)] == 0) return false;
+        }
+        return true;
+    };
+    for (const Index e : eroded)  // eroded is sorted: the same order on every rank
+        for (std::size_t i = 0; i < 3; ++i) {
+            const Index f = topology_->side_neighbour[3 * static_cast<std::size_t>(e) + i];
+            if (f >= 0 && !time_steps_.exact_membrane(f) &&
+                held_by_corners(static_cast<std::size_t>(f)))
+                time_steps_.take_exact_membrane(f, tri_[static_cast<std::size_t>(f)], x);
+        }
+}
+
+void ShellElements::mark_held_by_corners(const std::vector<Index>& eroded) {
+    if (gone_.empty()) return;
+    for (const Index e : eroded) gone_[static_cast<std::size_t>(e)] = 1;
+    for (std::size_t f = 0; f < gone_.size(); ++f) {
+        if (gone_[f] != 0) continue;
+        bool by_corners = true;
+        for (std::size_t i = 0; i < 3 && by_corners; ++i) {
+            const Index n = topology_->side_neighbour[3 * f + i];
+            by_corners = n < 0 || gone_[static_cast<std::size_t>(n)] != 0;
+        }
+        if (by_corners) time_steps_.mark_exact_membrane(static_cast<Index>(f));
+    }
 }
 
 // The loads of the step an element erodes in stand (the particles take them over the next

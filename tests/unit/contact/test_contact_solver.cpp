@@ -155,11 +155,13 @@ TEST(Contact, TriangleOnFreePlaneIsAPerfectlyPlasticImpactWithLagrangeMultiplier
     const Real mt = total_mass(s), mb = m.rigid_bodies[0].mass;
     while (s.time() < 0.2) s.step(1e30);
     // Impact after 0.095 (gap 0.1 - h/2); afterwards both move together at m v0 / (m + M).
-    // Tolerance 1e-6 v0: Gauss-Seidel corrects the three corners one after the other and
-    // stops when the multipliers have settled to 1e-6, which leaves a tiny vibration.
+    // Tolerance 2e-6 v0: Gauss-Seidel corrects the three corners one after the other and
+    // stops when the multipliers have settled to 1e-6, which leaves a vibration of that order
+    // (measured 1.03e-6 v0 at a corner with the lone triangle's exact membrane step, theory.md
+    // eq. 6.4-3; 0.93e-6 with the step L_c / c it took before).
     const Real v_common = -mt * v0 / (mt + mb);
-    for (const Vec3& v : s.state().v) EXPECT_NEAR(v.z(), v_common, 1e-6 * v0);
-    EXPECT_NEAR(s.bodies()[0].v.z(), v_common, 1e-6 * v0);
+    for (const Vec3& v : s.state().v) EXPECT_NEAR(v.z(), v_common, 2e-6 * v0);
+    EXPECT_NEAR(s.bodies()[0].v.z(), v_common, 2e-6 * v0);
     // Momentum is conserved exactly (equal and opposite contact forces).
     Real p = mb * s.bodies()[0].v.z();
     for (std::size_t i = 0; i < 3; ++i) p += s.state().mass[i] * s.state().v[i].z();
