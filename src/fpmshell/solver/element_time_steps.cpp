@@ -59,12 +59,11 @@ ElementTimeSteps::ElementTimeSteps(const Model& model, const MeshTopology& topol
         rigid_section_.push_back(mat.rigid ? 1 : 0);
         exact_membrane_.push_back(mat.failure.active() && mat.failure.separates ? 1 : 0);
     }
-    // eq. 6.4-3: an element with no side neighbour is held by its corners alone (a lone
-    // triangle, two sharing a corner)
+    // eq. 6.4-3: the elements of a piece of one or two (joined by their sides)
     exact_element_.assign(model.triangles.size(), 0);
+    const auto live = [](Index) { return true; };
     for (std::size_t e = 0; e < model.triangles.size(); ++e)
-        if (topology.side_neighbour[3 * e] < 0 && topology.side_neighbour[3 * e + 1] < 0 &&
-            topology.side_neighbour[3 * e + 2] < 0)
+        if (in_small_piece(topology.side_neighbour, static_cast<Index>(e), live))
             exact_element_[e] = 1;
     initial_volume_.resize(model.triangles.size());
     for (std::size_t e = 0; e < model.triangles.size(); ++e) {

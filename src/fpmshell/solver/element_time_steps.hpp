@@ -1,8 +1,9 @@
 // The critical time step of every element (theory.md §6.4): the smaller of the membrane step
 // L_c / c and the bending step of its own 9 x 9 eigenproblem (elements/bending_time_step.hpp),
 // reduced for stiffness damping; the elements of a material that separates (§7.7), and those
-// held by their corners alone (no side neighbour, or every one eroded), take the isolated
-// triangle's exact membrane step instead of L_c / c (eq. 6.4-3, elements/membrane_time_step.hpp).
+// in a piece of one or two elements joined by their sides (in the mesh, or left so by erosion),
+// take the isolated triangle's exact membrane step instead of L_c / c (eq. 6.4-3,
+// elements/membrane_time_step.hpp).
 // Both are kept as the step's ratio to L_c / c, which depends on the element's shape and h / L_c
 // only: it is computed at set-up once per section and shape class and shared, and re-evaluated for
 // an element whose L_c drifts.
@@ -23,6 +24,30 @@ namespace fpmshell {
 
 /// L_c = 2A / l_max of the triangle (p0, p1, p2) (§6.4).
 [[nodiscard]] Real characteristic_length(const Vec3& p0, const Vec3& p1, const Vec3& p2);
+
+/// Eq. 6.4-3: whether element e (live) is in a piece of at most two elements joined by their
+/// sides, among the elements `live` says are (side_neighbour: MeshTopology's). Such a piece's
+/// highest membrane mode exceeds 2 / (0.9 L_c / c) (tools/theory_checks/test_dt_pieces.py: a
+/// lone equilateral triangle 2.18, two sharing a side 2.03, three in a row 1.96, a large patch
+/// 1.87, as omega x 0.9 L_c / c).
+template <class Live>
+[[nodiscard]] bool in_small_piece(const std::vector<Index>& side_neighbour, Index e,
+                                  const Live& live) {
+    const auto live_neighbours = [&](Index f, Index& one) {
+        int n = 0;
+        for (std::size_t i = 0; i < 3; ++i) {
+            const Index g = side_neighbour[3 * static_cast<std::size_t>(f) + i];
+            if (g >= 0 && live(g)) {
+                ++n;
+                one = g;
+            }
+        }
+        return n;
+    };
+    Index other = -1, back = -1;
+    const int n = live_neighbours(e, other);
+    return n == 0 || (n == 1 && live_neighbours(other, back) == 1);
+}
 
 class ElementTimeSteps {
 public:
@@ -111,8 +136,8 @@ public:
         if (!mass_scale_.empty()) mass_scale_[e] = m[2];
     }
 
-    /// Eq. 6.4-3 for element e from now on (an element left held by its corners alone, its side
-    /// neighbours eroded): the flag, and its step ratio at its current corners t of x.
+    /// Eq. 6.4-3 for element e from now on (an element left in a piece of one or two by the
+    /// erosion of its neighbours): the flag, and its step ratio at its current corners t of x.
     void take_exact_membrane(Index e, const std::array<Index, 3>& t, const std::vector<Vec3>& x);
     /// The flag alone (a restart's or a separation's state brings the ratio).
     void mark_exact_membrane(Index e) { exact_element_[static_cast<std::size_t>(e)] = 1; }
@@ -176,8 +201,8 @@ private:
     Real stiffness_damping_ = 0;
     /// per section: its elements take the exact membrane step (a material that separates)
     std::vector<std::uint8_t> exact_membrane_;
-    /// per element: it takes the exact membrane step, held by its corners alone (no side
-    /// neighbour in the mesh, or every one eroded)
+    /// per element: it takes the exact membrane step, in a piece of one or two elements joined
+    /// by their sides (in the mesh, or left so by erosion)
     std::vector<std::uint8_t> exact_element_;
     std::vector<Real> step_ratio_;  ///< per element, critical step / (L_c / c) (step_ratio)
     std::vector<Real> ratio_lc_;    ///< per element, the L_c step_ratio_ was evaluated at

@@ -254,10 +254,10 @@ ShellElements::StepTotals ExplicitSolver::compute_internal_loads(const CyclePoli
 // §7.6: the faces of the elements eroded this step leave the self-contacts before this step's
 // contact, the ties to them let go (ties run on one rank only) and the pressures and blasts on
 // them stop; a distributed run's contact is whole on every rank, so the ranks' lists are joined.
-// A neighbour they leave held by its corners alone takes its exact membrane step (eq. 6.4-3).
+// Neighbours they leave in a piece of one or two take their exact membrane step (eq. 6.4-3).
 void ExplicitSolver::drop_eroded_faces() {
     const std::vector<Index> eroded = ranks_.join_sorted(elements_.eroded_in_last_step());
-    elements_.hold_by_corners(eroded, s_.x);  // eq. 6.4-3
+    elements_.steady_small_pieces(eroded, s_.x);  // eq. 6.4-3
     if (contact_) contact_->drop_faces(eroded, true);
     if (tied_) tied_->release_eroded(eroded);
     loads_->unload(eroded);

@@ -157,7 +157,7 @@ void ExplicitSolver::load(RestartReader& in, int pieces, const RestartPieces& op
         contact_->drop_faces(elements_.eroded_so_far(), false);
     }
     loads_->unload(elements_.eroded_so_far());  // §7.6: their pressures and blasts stopped
-    elements_.mark_held_by_corners(elements_.eroded_so_far());  // eq. 6.4-3
+    elements_.mark_small_pieces(elements_.eroded_so_far());  // eq. 6.4-3
     in.section("ties");
     if (tied_) {
         tied_->transfer(in);

@@ -168,8 +168,8 @@ void ExplicitSolver::take_state(ExplicitSolver& before, const Separation& separa
     }
     refresh_contact_masses();
     loads_->unload(elements_.eroded_so_far());
-    elements_.mark_held_by_corners(elements_.eroded_so_far());  // eq. 6.4-3
-    ranks_.start_positions(s_.x);                               // as the step before ended
+    elements_.mark_small_pieces(elements_.eroded_so_far());  // eq. 6.4-3
+    ranks_.start_positions(s_.x);                            // as the step before ended
 }
 
 }  // namespace fpmshell

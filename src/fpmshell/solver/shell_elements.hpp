@@ -113,12 +113,12 @@ public:
     [[nodiscard]] std::vector<Index> eroded_in_last_step() const;
     [[nodiscard]] std::vector<Index> eroded_so_far() const;
     /// Eq. 6.4-3 after erosion: the elements `eroded` (this step's, of every rank, sorted)
-    /// leave their side neighbours; one left with no live side neighbour, held by its corners
-    /// alone, takes its exact membrane step from now on (its ratio at the corners x).
-    void hold_by_corners(const std::vector<Index>& eroded, const std::vector<Vec3>& x);
+    /// leave their side neighbours; those left in a piece of one or two elements joined by
+    /// their sides take their exact membrane step from now on (their ratios at the corners x).
+    void steady_small_pieces(const std::vector<Index>& eroded, const std::vector<Vec3>& x);
     /// The same flags from all the elements eroded so far (of every rank) without re-evaluating
     /// a ratio: a restart's or a separation's element state brings them.
-    void mark_held_by_corners(const std::vector<Index>& eroded);
+    void mark_small_pieces(const std::vector<Index>& eroded);
     /// §7.7 whether some section's material separates (`fracture: separate`): its failed
     /// elements keep acting and open an edge each.
     [[nodiscard]] bool separates() const { return !cracked_.empty(); }
@@ -275,7 +275,7 @@ private:
     std::vector<std::array<Index, 3>> tri_;
     std::vector<Index> section_;  ///< per element: its section, and group
     const MeshTopology* topology_;
-    /// per element: eroded on some rank (hold_by_corners' view; eroded_ holds this rank's)
+    /// per element: eroded on some rank (steady_small_pieces' view; eroded_ holds this rank's)
     std::vector<std::uint8_t> gone_;
     std::vector<std::unique_ptr<ElementGroup>> groups_;  ///< per section
     ElementTimeSteps time_steps_;

@@ -158,37 +158,33 @@ std::vector<Index> ShellElements::eroded_so_far() const {
     return out;
 }
 
-void ShellElements::hold_by_corners(const std::vector<Index>& eroded, const std::vector<Vec3>& x) {
+void ShellElements::steady_small_pieces(const std::vector<Index>& eroded,
+                                        const std::vector<Vec3>& x) {
     for (const Index e : eroded) gone_[static_cast<std::size_t>(e)] = 1;
-    const auto held_by_corners = [&](std::size_t f) {
-        if (gone_[f] != 0) return false;
-        for (std::size_t i = 0; i < 3; ++i) {
-            const Index n = topology_->side_neighbour[3 * f + i];
-            if (n >= 0 && gone_[static_cast<std::size_t>(n)] == 0) return false;
-        }
-        return true;
+    const auto live = [&](Index f) { return gone_[static_cast<std::size_t>(f)] == 0; };
+    const std::vector<Index>& sides = topology_->side_neighbour;
+    const auto take = [&](Index f) {
+        if (!time_steps_.exact_membrane(f))
+            time_steps_.take_exact_membrane(f, tri_[static_cast<std::size_t>(f)], x);
     };
     for (const Index e : eroded)  // eroded is sorted: the same order on every rank
         for (std::size_t i = 0; i < 3; ++i) {
-            const Index f = topology_->side_neighbour[3 * static_cast<std::size_t>(e) + i];
-            if (f >= 0 && !time_steps_.exact_membrane(f) &&
-                held_by_corners(static_cast<std::size_t>(f)))
-                time_steps_.take_exact_membrane(f, tri_[static_cast<std::size_t>(f)], x);
+            const Index f = sides[3 * static_cast<std::size_t>(e) + i];
+            if (f < 0 || !live(f) || !in_small_piece(sides, f, live)) continue;
+            take(f);
+            for (std::size_t k = 0; k < 3; ++k)  // its partner in a piece of two
+                if (const Index g = sides[3 * static_cast<std::size_t>(f) + k]; g >= 0 && live(g))
+                    take(g);
         }
 }
 
-void ShellElements::mark_held_by_corners(const std::vector<Index>& eroded) {
+void ShellElements::mark_small_pieces(const std::vector<Index>& eroded) {
     if (gone_.empty()) return;
     for (const Index e : eroded) gone_[static_cast<std::size_t>(e)] = 1;
-    for (std::size_t f = 0; f < gone_.size(); ++f) {
-        if (gone_[f] != 0) continue;
-        bool by_corners = true;
-        for (std::size_t i = 0; i < 3 && by_corners; ++i) {
-            const Index n = topology_->side_neighbour[3 * f + i];
-            by_corners = n < 0 || gone_[static_cast<std::size_t>(n)] != 0;
-        }
-        if (by_corners) time_steps_.mark_exact_membrane(static_cast<Index>(f));
-    }
+    const auto live = [&](Index f) { return gone_[static_cast<std::size_t>(f)] == 0; };
+    for (std::size_t f = 0; f < gone_.size(); ++f)
+        if (gone_[f] == 0 && in_small_piece(topology_->side_neighbour, static_cast<Index>(f), live))
+            time_steps_.mark_exact_membrane(static_cast<Index>(f));
 }
 
 // The loads of the step an element erodes in stand (the particles take them over the next
