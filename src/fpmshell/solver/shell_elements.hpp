@@ -277,6 +277,7 @@ private:
     const MeshTopology* topology_;
     /// per element: eroded on some rank (steady_small_pieces' view; eroded_ holds this rank's)
     std::vector<std::uint8_t> gone_;
+    [[nodiscard]] bool gone(Index e) const { return gone_[static_cast<std::size_t>(e)] != 0; }
     std::vector<std::unique_ptr<ElementGroup>> groups_;  ///< per section
     ElementTimeSteps time_steps_;
     CornerAssembly assembly_;

@@ -161,7 +161,7 @@ std::vector<Index> ShellElements::eroded_so_far() const {
 void ShellElements::steady_small_pieces(const std::vector<Index>& eroded,
                                         const std::vector<Vec3>& x) {
     for (const Index e : eroded) gone_[static_cast<std::size_t>(e)] = 1;
-    const auto live = [&](Index f) { return gone_[static_cast<std::size_t>(f)] == 0; };
+    const auto live = [&](Index f) { return !gone(f); };
     const std::vector<Index>& sides = topology_->side_neighbour;
     const auto take = [&](Index f) {
         if (!time_steps_.exact_membrane(f))
@@ -181,7 +181,7 @@ void ShellElements::steady_small_pieces(const std::vector<Index>& eroded,
 void ShellElements::mark_small_pieces(const std::vector<Index>& eroded) {
     if (gone_.empty()) return;
     for (const Index e : eroded) gone_[static_cast<std::size_t>(e)] = 1;
-    const auto live = [&](Index f) { return gone_[static_cast<std::size_t>(f)] == 0; };
+    const auto live = [&](Index f) { return !gone(f); };
     for (std::size_t f = 0; f < gone_.size(); ++f)
         if (gone_[f] == 0 && in_small_piece(topology_->side_neighbour, static_cast<Index>(f), live))
             time_steps_.mark_exact_membrane(static_cast<Index>(f));
