@@ -332,4 +332,24 @@ path, r = deck_case("no termination", "", base=BASE.replace("*CONTROL_TERMINATIO
 check("a deck without *CONTROL_TERMINATION is refused", r.returncode == 2 and
       "CONTROL_TERMINATION" in r.stderr, r.stderr)
 
+# *CONTROL_TERMINATION DTMIN with *CONTROL_TIMESTEP ERODE: a floor of DTMIN times the first
+# step; shells erode below it with ERODE 10, 11, 110, 111, the run stops there with the others
+for erode, words in (("11", "{factor: 0.01, erode: true}"), ("1", "{factor: 0.01}"),
+                     ("0", "{factor: 0.01}")):
+    path, r = deck_case(f"dtmin erode {erode}", "*CONTROL_TIMESTEP\n       0.0       0.9"
+                        "         0       0.0       0.0         0" + erode.rjust(10) + "\n",
+                        base=BASE.replace("     0.001\n", "     0.001         0      0.01\n"))
+    converted = os.path.join(os.path.dirname(path), "dtmin.yaml")
+    c = fpmshell("convert", path, "-o", converted)
+    lines = [l.strip() for l in read(converted).splitlines()] if c.returncode == 0 else []
+    check(f"DTMIN 0.01 with ERODE {erode}: control.minimum_time_step: {words}",
+          r.returncode == 0 and f"minimum_time_step: {words}" in lines, c.stderr + str(lines))
+path, r = deck_case("dtmin one", "", base=BASE.replace("     0.001\n", "     0.001         0       1.0\n"))
+check("DTMIN 1: refused, naming the card and the field", r.returncode == 2 and
+      "*CONTROL_TERMINATION" in r.stderr and "DTMIN must be in [0, 1)" in r.stderr, r.stderr)
+path, r = deck_case("erode five", "*CONTROL_TIMESTEP\n       0.0       0.9         0       0.0"
+                    "       0.0         0         5\n")
+check("ERODE 5: refused, naming the card and the field", r.returncode == 2 and
+      "*CONTROL_TIMESTEP" in r.stderr and "ERODE must be" in r.stderr, r.stderr)
+
 sys.exit(finish())

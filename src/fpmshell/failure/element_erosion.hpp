@@ -123,9 +123,12 @@ private:
     int n_inplane_ = 0, n_through_ = 0;
 };
 
-/// Whether some section of the model is of a material that can fail (its results then carry
-/// the erosion's columns and fields).
+/// Whether some section of the model is of a material that can fail, or its elements erode
+/// below a minimum step (control.minimum_time_step; its results then carry the erosion's
+/// columns and fields).
 [[nodiscard]] inline bool model_can_erode(const Model& model) {
+    if (model.control.minimum_time_step.active() && model.control.minimum_time_step.erode)
+        return true;
     for (const Section& sec : model.sections)
         if (model.materials[static_cast<std::size_t>(sec.material)].failure.active()) return true;
     return false;

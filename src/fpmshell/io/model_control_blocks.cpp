@@ -78,12 +78,34 @@ void read_mass_scaling(const YamlValue& v, Control& c) {
             "scale");
 }
 
+/// `minimum_time_step: {factor | time_step, erode}` (LS-DYNA's DTMIN and ERODE).
+void read_minimum_time_step(const YamlValue& v, Control& c) {
+    const YamlMap m = v.map({"factor", "time_step", "erode"});
+    MinimumTimeStep& floor = c.minimum_time_step;
+    const auto factor = m.find("factor");
+    const auto step = m.find("time_step");
+    if (factor.has_value() == step.has_value())
+        v.fail("needs one of factor (a fraction of the run's first step) and time_step");
+    if (factor) {
+        floor.factor = factor->positive();
+        if (floor.factor >= 1)
+            factor->fail("must be below 1 (a fraction of the run's first step), got " +
+                         factor->describe());
+    } else {
+        floor.time_step = step->positive();
+    }
+    floor.erode = m.choice_or("erode", {"true", "false"}, "false") == "true";
+    if (c.mode == SolutionMode::Relaxation)
+        v.fail("is for dynamic runs; relaxation (control.mode) has no time step to watch");
+}
+
 }  // namespace
 
 void read_control(const YamlValue& v, Model& model) {
-    const YamlMap m = v.map({"end_time", "time_step_scale", "mode", "tolerance", "bending",
-                             "energy_error_limit", "max_relaxation_iterations", "thickness_update",
-                             "membrane", "end_when_body_stops", "rotary_inertia", "mass_scaling"});
+    const YamlMap m =
+        v.map({"end_time", "time_step_scale", "mode", "tolerance", "bending", "energy_error_limit",
+               "max_relaxation_iterations", "thickness_update", "membrane", "end_when_body_stops",
+               "rotary_inertia", "mass_scaling", "minimum_time_step"});
     Control& c = model.control;
     c.end_time = m.at("end_time", "the duration of the run, a number > 0").positive();
     if (const auto s = m.find("time_step_scale")) {
@@ -111,6 +133,7 @@ void read_control(const YamlValue& v, Model& model) {
                        : inertia == "radioss" ? RotaryInertia::Radioss
                                               : RotaryInertia::Belytschko;
     if (const auto s = m.find("mass_scaling")) read_mass_scaling(*s, c);
+    if (const auto s = m.find("minimum_time_step")) read_minimum_time_step(*s, c);
 }
 
 void read_end_when_body_stops(const YamlValue& v, Model& model) {

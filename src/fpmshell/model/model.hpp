@@ -195,6 +195,17 @@ struct MassScaling {
     Real added_mass_limit = 0.05;  ///< a warning past this fraction of a section's mass
 };
 
+/// control.minimum_time_step (LS-DYNA's *CONTROL_TERMINATION DTMIN with *CONTROL_TIMESTEP
+/// ERODE): a floor on the stable step, `factor` times the run's first step or `time_step`
+/// itself; with `erode` the elements whose step falls below it erode (theory.md §7.6), without
+/// it the run stops there.
+struct MinimumTimeStep {
+    Real factor = 0;     ///< of the first step (0: not given)
+    Real time_step = 0;  ///< the floor itself (0: not given)
+    bool erode = false;
+    [[nodiscard]] bool active() const { return factor > 0 || time_step > 0; }
+};
+
 struct Control {
     Real end_time = 0;
     Real time_step_scale = 0.9;
@@ -215,6 +226,7 @@ struct Control {
     Index end_body = -1;
     RotaryInertia rotary_inertia = RotaryInertia::Belytschko;
     MassScaling mass_scaling;
+    MinimumTimeStep minimum_time_step;
 };
 
 /// One entry of `rigid_bodies`: a rigid impactor with a plane face (theory.md §8.3). It moves

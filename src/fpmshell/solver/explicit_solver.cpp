@@ -149,6 +149,12 @@ ExplicitSolver::ExplicitSolver(const Model& model)
         for (const TiedSurface& tie : model.tied_surfaces)
             for (const Index p : tie.nodes) pinned_[static_cast<std::size_t>(p)] = 1;
     }
+    // control.minimum_time_step: the floor, from the first step (LS-DYNA's TSMIN = DTMIN x the
+    // initial step); with erode, the elements below it erode (their unscaled critical step)
+    if (const MinimumTimeStep& floor = model.control.minimum_time_step; floor.active()) {
+        min_step_ = floor.time_step > 0 ? floor.time_step : floor.factor * stable_dt();
+        if (floor.erode) elements_.set_erosion_step(min_step_ / model.control.time_step_scale);
+    }
     fused_particle_pass_ = !bc_->has_prescribed_motions() &&
                            !(contact_ && contact_->has_lagrange()) && nodal_rigid_bodies_.empty() &&
                            !tied_;
@@ -335,6 +341,13 @@ ExplicitSolver::StepLengths ExplicitSolver::next_step_lengths(
     const CyclePolicy& policy, const ShellElements::StepTotals& elements, Real dt_cap) {
     StepLengths dt;
     dt.dt_new = policy.step_scale * elements.min_dt;
+    if (dt.dt_new < min_step_) {  // control.minimum_time_step without erode (with it, the
+        std::ostringstream msg;   // elements below it have eroded in the loop)
+        msg << "the stable time step " << dt.dt_new << " fell below control.minimum_time_step ("
+            << min_step_ << ") at step " << steps_ << " (t = " << time_ << "), set by element "
+            << elements.min_dt_element + 1;
+        throw RunFailure(msg.str());
+    }
     if (dt_half_ > 0 && policy.cap_step_growth) dt.dt_new = std::min(dt.dt_new, 1.2 * dt_half_);
     dt.dt_new = std::min(dt.dt_new, dt_cap);
     if (!(dt.dt_new > 0) || !std::isfinite(dt.dt_new)) {

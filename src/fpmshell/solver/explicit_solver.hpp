@@ -295,6 +295,7 @@ private:
     long element_steps_ = 0;
     Real residual2_ = 0, reference2_ = 0;  ///< relaxation residual of the last cycle
     Index min_dt_element_ = -1;            ///< the element of the last step's smallest step
+    Real min_step_ = 0;  ///< control.minimum_time_step's floor on the step (0: none)
 };
 
 }  // namespace fpmshell

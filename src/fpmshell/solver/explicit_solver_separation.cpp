@@ -135,6 +135,9 @@ void ExplicitSolver::take_state(ExplicitSolver& before, const Separation& separa
     residual2_ = before.residual2_;
     reference2_ = before.reference2_;
     min_dt_element_ = before.min_dt_element_;
+    min_step_ = before.min_step_;  // of the run's first step, not the separated mesh's
+    if (model_.control.minimum_time_step.erode)
+        elements_.set_erosion_step(min_step_ / model_.control.time_step_scale);
     energy_ = before.energy_;
     bodies_ = before.bodies_;
     added_mass_ = before.added_mass_;

@@ -105,6 +105,9 @@ public:
     /// Whether some section's material can fail (theory.md §7.6), and whether element e has
     /// eroded: it no longer acts (no loads, no time step), its particles keep their mass.
     [[nodiscard]] bool can_erode() const { return !eroded_.empty(); }
+    /// control.minimum_time_step with erode: an element whose critical step (unscaled, §6.4)
+    /// falls below dt erodes (§7.6), whatever its material (0: none).
+    void set_erosion_step(Real dt) { erosion_step_ = dt; }
     [[nodiscard]] bool eroded(Index e) const {
         return !eroded_.empty() && eroded_[static_cast<std::size_t>(e)] != 0;
     }
@@ -277,6 +280,7 @@ private:
     const MeshTopology* topology_;
     /// per element: eroded on some rank (steady_small_pieces' view; eroded_ holds this rank's)
     std::vector<std::uint8_t> gone_;
+    Real erosion_step_ = 0;  ///< set_erosion_step's
     [[nodiscard]] bool gone(Index e) const { return gone_[static_cast<std::size_t>(e)] != 0; }
     std::vector<std::unique_ptr<ElementGroup>> groups_;  ///< per section
     ElementTimeSteps time_steps_;

@@ -1,6 +1,7 @@
 // Erosion in the element loop (theory.md §7.6): which elements have eroded, the booking of
 // their work, and the check after each element's step.
 #include <cmath>
+#include <limits>
 
 #include "fpmshell/core/kept_places.hpp"
 #include "fpmshell/solver/shell_elements.hpp"
@@ -19,6 +20,10 @@ void ShellElements::init_erosion(const Model& model) {
         has_state = has_state || erosion_.back().fields() > 0;
         separates = separates || erosion_.back().separates();
     }
+    // control.minimum_time_step with erode: any element may erode (its step set by the
+    // solver, set_erosion_step)
+    const MinimumTimeStep& floor = model.control.minimum_time_step;
+    can_fail = can_fail || (floor.active() && floor.erode);
     if (!can_fail) {
         erosion_.clear();
         return;
@@ -209,13 +214,19 @@ void ShellElements::book_last_half_step(std::size_t e, const ParticleState& s, E
 void ShellElements::check_erosion(std::size_t e, Real work, Real dt, ElementTotals& t,
                                   const std::array<Real, 18>& loads, const bool* verdict) {
     const ElementErosion& rule = erosion_[static_cast<std::size_t>(section_[e])];
-    if (!rule.active()) return;
-    element_work_[e] += work;
-    if (rule.separates() && cracked_[e] != 0) return;  // §7.7: failed before
-    if (verdict ? !*verdict : !erodes_alone(e, dt)) return;
-    if (rule.separates()) {  // §7.7: it keeps acting, and opens an edge
-        cracked_[e] = k_failed;
-        return;
+    if (!rule.active() && !(erosion_step_ > 0)) return;
+    element_work_[e] += work;    // (of every element where any may erode below the step)
+    if (t.dt < erosion_step_) {  // control.minimum_time_step: it erodes, whatever its material
+        t.dt = std::numeric_limits<Real>::infinity();  // and no longer sets the step
+        t.dt_element = -1;
+    } else {
+        if (!rule.active()) return;
+        if (rule.separates() && cracked_[e] != 0) return;  // §7.7: failed before
+        if (verdict ? !*verdict : !erodes_alone(e, dt)) return;
+        if (rule.separates()) {  // §7.7: it keeps acting, and opens an edge
+            cracked_[e] = k_failed;
+            return;
+        }
     }
     eroded_[e] = k_eroded_pending;  // from the next step on (this step's loads stand)
     last_loads_[e] = loads;

@@ -586,5 +586,34 @@ TEST(ModelReader, ReadsRotaryInertiaAndMassScaling) {
                  "control.mass_scaling", "dynamic runs");
 }
 
+// control.minimum_time_step (LS-DYNA's DTMIN and ERODE): a factor or a step, erode or not;
+// exactly one of the two, the factor below 1, dynamic runs only.
+TEST(ModelReader, ReadsTheMinimumTimeStep) {
+    const TempDir dir;
+    const Model plain = read_model(dir.write("plain.yaml", k_base));
+    EXPECT_FALSE(plain.control.minimum_time_step.active());
+    const Model factor =
+        read_model(dir.write("factor.yaml", k_base + "  minimum_time_step: {factor: 0.01}\n"));
+    EXPECT_EQ(factor.control.minimum_time_step.factor, 0.01);
+    EXPECT_FALSE(factor.control.minimum_time_step.erode);
+    const Model step = read_model(
+        dir.write("step.yaml", k_base + "  minimum_time_step: {time_step: 1.0e-9, erode: true}\n"));
+    EXPECT_EQ(step.control.minimum_time_step.time_step, 1e-9);
+    EXPECT_TRUE(step.control.minimum_time_step.erode);
+
+    expect_error(k_base + "  minimum_time_step: {factor: 1}\n", 9,
+                 "control.minimum_time_step.factor", "below 1");
+    expect_error(k_base + "  minimum_time_step: {factor: 0}\n", 9,
+                 "control.minimum_time_step.factor", "greater than 0");
+    expect_error(k_base + "  minimum_time_step: {factor: 0.1, time_step: 1.0e-9}\n", 9,
+                 "control.minimum_time_step", "one of factor");
+    expect_error(k_base + "  minimum_time_step: {erode: true}\n", 9, "control.minimum_time_step",
+                 "one of factor");
+    expect_error(k_base + "  minimum_time_step: {factor: 0.1, erode: yes}\n", 9,
+                 "control.minimum_time_step.erode", "expected one of true, false");
+    expect_error(k_base + "  mode: relaxation\n  minimum_time_step: {factor: 0.1}\n", 10,
+                 "control.minimum_time_step", "dynamic runs");
+}
+
 }  // namespace
 }  // namespace fpmshell

@@ -10,9 +10,12 @@ void DeckTranslator::control(const DeckBlock& b) {
     const Origin at{&b, f.line()};
     if (k == "CONTROL_TERMINATION") {
         end_time_ = Line{num(f.real(0, "ENDTIM")), at};
-        if (f.id(1, "ENDCYC") != 0 || f.real(2, "DTMIN") != 0 || f.real(3, "ENDENG") != 0 ||
-            f.real(4, "ENDMAS") != 0)
-            note(b, f.line(), "only ENDTIM is read (ENDCYC, DTMIN, ENDENG, ENDMAS ignored)");
+        const Real dtmin = f.real(2, "DTMIN");
+        if (dtmin < 0 || dtmin >= 1)
+            f.fail("DTMIN must be in [0, 1) (a fraction of the first step)");
+        if (dtmin > 0) min_step_factor_ = Line{num(dtmin), at};
+        if (f.id(1, "ENDCYC") != 0 || f.real(3, "ENDENG") != 0 || f.real(4, "ENDMAS") != 0)
+            note(b, f.line(), "only ENDTIM and DTMIN are read (ENDCYC, ENDENG, ENDMAS ignored)");
     } else if (k == "CONTROL_TIMESTEP") {
         Real tssfac = f.real(1, "TSSFAC");
         if (tssfac == 0) tssfac = 0.9;
@@ -27,6 +30,16 @@ void DeckTranslator::control(const DeckBlock& b) {
             control_.push_back({"  mass_scaling: {time_step: " + num(tssfac * -dt2ms) + "}", at});
         if (f.id(2, "ISDO") != 0 || f.real(3, "TSLIMT") != 0)
             note(b, f.line(), "ISDO and TSLIMT ignored (fpmshell's own element step)");
+        if (f.real(0, "DTINIT") != 0)
+            note(b, f.line(), "DTINIT ignored: the run starts with its own stable step");
+        // ERODE: shells erode below TSMIN (DTMIN of *CONTROL_TERMINATION) with 10, 11, 110,
+        // 111; with 0, 1, 100, 101 the run stops there (1 and 100 erode solids and beams,
+        // which fpmshell's shells are not)
+        const long long erode = f.id(6, "ERODE");
+        if (erode != 0 && erode != 1 && erode != 10 && erode != 11 && erode != 100 &&
+            erode != 101 && erode != 110 && erode != 111)
+            f.fail("ERODE must be 0, 1, 10, 11, 100, 101, 110 or 111");
+        erode_shells_ = erode % 100 >= 10;
     } else if (k == "CONTROL_SHELL") {
         const long long istupd = f.id(3, "ISTUPD");
         if (istupd == 1 || istupd == 4) control_.push_back({"  thickness_update: true", at});
@@ -151,6 +164,11 @@ void DeckTranslator::write_control(std::vector<Line>& out) {
     add(out, "control:", end_time_->at);
     add(out, "  end_time: " + end_time_->text, end_time_->at);
     out.insert(out.end(), control_.begin(), control_.end());
+    if (min_step_factor_)  // TSMIN = DTMIN x the first step; ERODE of *CONTROL_TIMESTEP
+        add(out,
+            "  minimum_time_step: {factor: " + min_step_factor_->text +
+                (erode_shells_ ? ", erode: true}" : "}"),
+            min_step_factor_->at);
 }
 
 void DeckTranslator::write_output(std::vector<Line>& out) {

@@ -375,6 +375,8 @@ private:
     long long welds_ = 0;               ///< spot welds read (their sets are numbered by it)
     std::vector<WallDef> walls_;
     std::optional<Line> end_time_, damping_, every_, fields_every_;
+    std::optional<Line> min_step_factor_;  ///< *CONTROL_TERMINATION DTMIN > 0
+    bool erode_shells_ = false;            ///< *CONTROL_TIMESTEP ERODE 10, 11, 110, 111
     Real every_value_ = 0;
     long long fields_every_npltc_ = 0;
     bool wall_forces_ = false;
