@@ -344,6 +344,13 @@ for erode, words in (("11", "{factor: 0.01, erode: true}"), ("1", "{factor: 0.01
     lines = [l.strip() for l in read(converted).splitlines()] if c.returncode == 0 else []
     check(f"DTMIN 0.01 with ERODE {erode}: control.minimum_time_step: {words}",
           r.returncode == 0 and f"minimum_time_step: {words}" in lines, c.stderr + str(lines))
+path, r = deck_case("ms1st", "*CONTROL_TIMESTEP\n       0.0       0.9         0       0.0"
+                    "   -1.0e-6         0         0         1\n")
+converted = os.path.join(os.path.dirname(path), "ms1st.yaml")
+c = fpmshell("convert", path, "-o", converted)
+lines = [l.strip() for l in read(converted).splitlines()] if c.returncode == 0 else []
+check("DT2MS < 0 with MS1ST 1: mass scaling at set-up only", r.returncode == 0 and
+      "mass_scaling: {time_step: 9e-07, during_run: false}" in lines, c.stderr + str(lines))
 path, r = deck_case("dtmin one", "", base=BASE.replace("     0.001\n", "     0.001         0       1.0\n"))
 check("DTMIN 1: refused, naming the card and the field", r.returncode == 2 and
       "*CONTROL_TERMINATION" in r.stderr and "DTMIN must be in [0, 1)" in r.stderr, r.stderr)

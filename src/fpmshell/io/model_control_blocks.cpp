@@ -65,13 +65,15 @@ void contact_quantity(const Model& model, const YamlValue& q, HistoryRequest& re
     req.contact = static_cast<Index>(n - 1);
 }
 
-/// control.mass_scaling: {time_step: > 0, added_mass_limit: >= 0}, dynamic runs only.
+/// control.mass_scaling: {time_step: > 0, added_mass_limit: >= 0, during_run}, dynamic runs
+/// only.
 void read_mass_scaling(const YamlValue& v, Control& c) {
-    const YamlMap m = v.map({"time_step", "added_mass_limit"});
+    const YamlMap m = v.map({"time_step", "added_mass_limit", "during_run"});
     c.mass_scaling.time_step =
         m.at("time_step", "the target time step of the run, a number > 0").positive();
     c.mass_scaling.added_mass_limit =
         m.non_negative_or("added_mass_limit", c.mass_scaling.added_mass_limit);
+    c.mass_scaling.during_run = m.choice_or("during_run", {"true", "false"}, "true") == "true";
     if (c.mode == SolutionMode::Relaxation)
         v.fail(
             "mass scaling is for dynamic runs; relaxation (control.mode) has no time to "

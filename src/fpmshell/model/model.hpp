@@ -193,6 +193,9 @@ enum class RotaryInertia { Belytschko, Abaqus, Radioss };
 struct MassScaling {
     Real time_step = 0;            ///< the target step of the run (0: no mass scaling)
     Real added_mass_limit = 0.05;  ///< a warning past this fraction of a section's mass
+    /// also the elements whose step falls below the target during the run (LS-DYNA's MS1ST 0);
+    /// false: at set-up only, the step may then fall below the target (MS1ST 1)
+    bool during_run = true;
 };
 
 /// control.minimum_time_step (LS-DYNA's *CONTROL_TERMINATION DTMIN with *CONTROL_TIMESTEP

@@ -37,7 +37,8 @@ ExplicitSolver::ExplicitSolver(const Model& model)
     // §6.10 mass scaling of the elements below the target step, then the §6.1 lumped mass
     // and §6.2 rotary inertia (summed by the topology).
     added_mass_ = apply_mass_scaling(model, topology_, elements_.time_steps());
-    if (model.control.mass_scaling.time_step > 0)  // and during the run
+    if (model.control.mass_scaling.time_step > 0 &&
+        model.control.mass_scaling.during_run)  // and during the run
         elements_.time_steps().enable_run_scaling(model.control.mass_scaling.time_step /
                                                   model.control.time_step_scale);
     s_.mass = topology_.particle_mass;

@@ -568,6 +568,10 @@ TEST(ModelReader, ReadsRotaryInertiaAndMassScaling) {
         read_model(dir.write("overridden.yaml", k_base + "  mass_scaling: {time_step: 2.5e-7}\n"),
                    {"control.mass_scaling.time_step=1e-6"});
     EXPECT_EQ(overridden.control.mass_scaling.time_step, 1e-6);
+    EXPECT_TRUE(scaled.control.mass_scaling.during_run);
+    const Model at_setup = read_model(dir.write(
+        "at_setup.yaml", k_base + "  mass_scaling: {time_step: 2.5e-7, during_run: false}\n"));
+    EXPECT_FALSE(at_setup.control.mass_scaling.during_run);
 
     expect_error(k_base + "  rotary_inertia: lsdyna\n", 9, "control.rotary_inertia",
                  "expected one of belytschko, abaqus, radioss");

@@ -154,6 +154,28 @@ TEST(MassScaling, DuringACrushTheStepStaysAtTheTargetAndTheBalanceCloses) {
     EXPECT_LT(worst_error, 1e-3);
 }
 
+TEST(MassScaling, AtSetUpOnlyTheCrushedElementsGainNoMassAndTheStepFalls) {
+    // the crush above with during_run: false (LS-DYNA's MS1ST = 1): the mass of the set-up
+    // stays, the step falls below the target as the elements are crushed
+    const std::string file = std::string(FPMSHELL_SOURCE_DIR) + "/examples/square_tube/model.yaml";
+    Model m = read_model(file, {"mesh.divisions_width=6", "mesh.divisions_length=24"});
+    const Real target = 1.3 * ExplicitSolver(m).stable_dt();
+    m.control.mass_scaling.time_step = target;
+    m.control.mass_scaling.during_run = false;
+    ExplicitSolver s(m);
+    const Real at_setup = s.added_mass().total_added();
+    const Real mass = sum(s.state().mass);
+    EXPECT_GT(at_setup, 0.0);
+    Real smallest_step = std::numeric_limits<Real>::infinity();
+    for (int i = 0; i < 3000; ++i) {
+        s.step(1e30);
+        smallest_step = std::min(smallest_step, s.last_dt());
+    }
+    EXPECT_LT(smallest_step, target * 0.99);
+    EXPECT_EQ(s.added_mass().total_added(), at_setup);
+    EXPECT_EQ(sum(s.state().mass), mass);
+}
+
 TEST(MassScaling, TheKineticEnergyOfTheMassAddedDuringTheRunClosesTheBalance) {
     // A jittered plate in plane stress, nearly perfectly plastic (yield 1e-4 E), flung inwards
     // by v = -k (x - c): its elements shrink by about a third, their steps fall below the target

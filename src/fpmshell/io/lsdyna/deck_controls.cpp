@@ -26,8 +26,13 @@ void DeckTranslator::control(const DeckBlock& b) {
             f.fail(
                 "DT2MS > 0 is not supported; DT2MS < 0 (mass added where the step is "
                 "below TSSFAC x |DT2MS|) is");
+        // MS1ST 1: mass added at the first step only, the step may fall below the target later
+        const long long ms1st = f.id(7, "MS1ST");
+        if (ms1st != 0 && ms1st != 1) f.fail("MS1ST must be 0 or 1");
         if (dt2ms < 0)
-            control_.push_back({"  mass_scaling: {time_step: " + num(tssfac * -dt2ms) + "}", at});
+            control_.push_back({"  mass_scaling: {time_step: " + num(tssfac * -dt2ms) +
+                                    (ms1st == 1 ? ", during_run: false}" : "}"),
+                                at});
         if (f.id(2, "ISDO") != 0 || f.real(3, "TSLIMT") != 0)
             note(b, f.line(), "ISDO and TSLIMT ignored (fpmshell's own element step)");
         if (f.real(0, "DTINIT") != 0)
