@@ -351,6 +351,13 @@ c = fpmshell("convert", path, "-o", converted)
 lines = [l.strip() for l in read(converted).splitlines()] if c.returncode == 0 else []
 check("DT2MS < 0 with MS1ST 1: mass scaling at set-up only", r.returncode == 0 and
       "mass_scaling: {time_step: 9e-07, during_run: false}" in lines, c.stderr + str(lines))
+for name, card_2, words in (("dt2msf", "      0.05", "DT2MSF (mass scaling to a factor"),
+                             ("dt2mslc", "       0.0         7", "DT2MSLC (a curve"),
+                             ("imscl", "       0.0         0         3", "IMSCL (selective")):
+    path, r = deck_case(name, "*CONTROL_TIMESTEP\n       0.0       0.9\n" + card_2 + "\n")
+    check(f"*CONTROL_TIMESTEP {name.upper()}: refused, naming card 2's line", r.returncode == 2
+          and f"{path}:{line_of(path, '*CONTROL_TIMESTEP') + 2}: *CONTROL_TIMESTEP: {words}"
+          in r.stderr, r.stderr)
 path, r = deck_case("dtmin one", "", base=BASE.replace("     0.001\n", "     0.001         0       1.0\n"))
 check("DTMIN 1: refused, naming the card and the field", r.returncode == 2 and
       "*CONTROL_TERMINATION" in r.stderr and "DTMIN must be in [0, 1)" in r.stderr, r.stderr)

@@ -35,6 +35,16 @@ void DeckTranslator::control(const DeckBlock& b) {
                                 at});
         if (f.id(2, "ISDO") != 0 || f.real(3, "TSLIMT") != 0)
             note(b, f.line(), "ISDO and TSLIMT ignored (fpmshell's own element step)");
+        if (b.cards.size() > 1) {  // DT2MSF, DT2MSLC, IMSCL: mass scaling fpmshell has not
+            const Card g = card(b, 1);
+            if (g.real(0, "DT2MSF") != 0 && dt2ms == 0)
+                g.fail(
+                    "DT2MSF (mass scaling to a factor of the first step) is not supported; "
+                    "DT2MS < 0 (mass scaling to a given step) is");
+            if (g.id(1, "DT2MSLC") != 0)
+                g.fail("DT2MSLC (a curve of the mass-scaling step) is not supported");
+            if (g.id(2, "IMSCL") != 0) g.fail("IMSCL (selective mass scaling) is not supported");
+        }
         if (f.real(0, "DTINIT") != 0)
             note(b, f.line(), "DTINIT ignored: the run starts with its own stable step");
         // ERODE: shells erode below TSMIN (DTMIN of *CONTROL_TERMINATION) with 10, 11, 110,
