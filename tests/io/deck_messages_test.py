@@ -344,6 +344,9 @@ for erode, words in (("11", "{factor: 0.01, erode: true}"), ("1", "{factor: 0.01
     lines = [l.strip() for l in read(converted).splitlines()] if c.returncode == 0 else []
     check(f"DTMIN 0.01 with ERODE {erode}: control.minimum_time_step: {words}",
           r.returncode == 0 and f"minimum_time_step: {words}" in lines, c.stderr + str(lines))
+    check(f"DTMIN 0.01 with ERODE {erode}: fpmshell check prints the floor", "minimum time step "
+          in r.stdout and ("falls below it erode" if erode == "11" else "the run stops if")
+          in r.stdout, r.stdout)
 path, r = deck_case("ms1st", "*CONTROL_TIMESTEP\n       0.0       0.9         0       0.0"
                     "   -1.0e-6         0         0         1\n")
 converted = os.path.join(os.path.dirname(path), "ms1st.yaml")

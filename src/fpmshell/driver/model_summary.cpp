@@ -124,6 +124,11 @@ std::string model_summary(const Model& model) {
     const Real dt = solver.stable_dt();
     out += fmt::format("\nstable time step {:.6g} (time_step_scale {} x critical)\n", dt,
                        model.control.time_step_scale);
+    if (solver.minimum_step() > 0)  // control.minimum_time_step
+        out += fmt::format("minimum time step {:.6g}: {}\n", solver.minimum_step(),
+                           model.control.minimum_time_step.erode
+                               ? "the elements whose step falls below it erode"
+                               : "the run stops if the step falls below it");
     if (model.control.mode == SolutionMode::Dynamic) {
         out += fmt::format("steps      about {:.0f} to end_time {}\n",
                            std::ceil(model.control.end_time / dt), model.control.end_time);

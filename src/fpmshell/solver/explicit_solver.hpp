@@ -68,6 +68,8 @@ public:
     [[nodiscard]] long steps() const { return steps_; }
     [[nodiscard]] long element_steps() const { return element_steps_; }
     [[nodiscard]] Real last_dt() const { return dt_half_; }
+    /// control.minimum_time_step's floor on the step (0: none).
+    [[nodiscard]] Real minimum_step() const { return min_step_; }
     [[nodiscard]] const ParticleState& state() const { return s_; }
     [[nodiscard]] const ShellElements& elements() const { return elements_; }
     [[nodiscard]] const EnergyBalance& energy() const { return energy_; }
