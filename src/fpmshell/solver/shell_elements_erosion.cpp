@@ -20,10 +20,8 @@ void ShellElements::init_erosion(const Model& model) {
         has_state = has_state || erosion_.back().fields() > 0;
         separates = separates || erosion_.back().separates();
     }
-    // control.minimum_time_step with erode: any element may erode (its step set by the
-    // solver, set_erosion_step)
-    const MinimumTimeStep& floor = model.control.minimum_time_step;
-    can_fail = can_fail || (floor.active() && floor.erode);
+    // or with control.minimum_time_step's erode: any element may erode (set_erosion_step)
+    can_fail = can_fail || model_can_erode(model);
     if (!can_fail) {
         erosion_.clear();
         return;
