@@ -8,10 +8,13 @@ variants of examples/decks/block_drop against YAML twins, the same history.csv b
   form) is the same model;
 - refusals with exit 2 and one sentence naming the place: *PART_INERTIA of a deformable part,
   IRCS 1, NODEID, TM 0;
-- *PART_MOVE: the block lifted before the run -> `moves`, against its twin; CID refused.
+- *PART_MOVE: the block lifted before the run -> `moves`, against its twin; CID refused;
+- *CONTACT_ERODING_SINGLE_SURFACE and _NODES_TO_SURFACE: the block thrown through the plate that
+  fails, as the self-contact of the twin; its fourth card checked.
 
 usage: deck_solid_test.py FPMSHELL WORKDIR
 """
+import json
 import os
 import sys
 
@@ -101,6 +104,44 @@ if rows and "node205_uz" in rows[0]:
 refused("a move in local axes", deck.replace("*END", MOVE.replace("       0       0\n",
                                                                      "       3       0\n") + "*END"),
         "model.k:", "*PART_MOVE", "CID")
+
+
+# *CONTACT_ERODING_SINGLE_SURFACE (its fourth card ISYM, EROSOP, IADJ) with the plate failing at
+# a plastic strain of 0.1 (*MAT_PLASTIC_KINEMATIC FS) and the block thrown at 50 m/s: the block
+# perforates the plate, whose eroded faces leave the contact (theory.md §7.6); the same bytes as
+# the twin with `failure: {plastic_strain: 0.1}` and its self-contact; the two-sided eroding form
+# (the block's nodes against the plate) as the self-contact over both parts
+CONTACT = deck[deck.index("*CONTACT_AUTOMATIC_SINGLE_SURFACE"):deck.index("*BOUNDARY_SPC_SET")]
+ERODING = CONTACT.replace("*CONTACT_AUTOMATIC_SINGLE_SURFACE", "*CONTACT_ERODING_SINGLE_SURFACE") + (
+    "$#    sfsa      sfsb      sast      sbst\n       1.0       1.0\n"
+    "$#    isym    erosop      iadj\n         0         1         0\n")
+MAT_003 = "         1    7850.0   2.1e+11       0.3   2.5e+08   1.0e+09       1.0\n"
+FAILING = MAT_003 + "$#     src       srp        fs\n       0.0       0.0       0.1\n"
+TWIN_STEEL = "hardening_mix: 1}"
+assert CONTACT in deck and MAT_003 in deck and TWIN_STEEL in twin
+fast = deck.replace("      -5.0\n", "     -50.0\n").replace(MAT_003, FAILING)
+fast_twin = twin.replace(TWIN_STEEL, "hardening_mix: 1,\n          failure: {plastic_strain: 0.1}}").replace(
+    "velocity: [0, 0, -5]", "velocity: [0, 0, -50]")
+d = write(os.path.join(WORK, "eroding"), "model.k", fast.replace(CONTACT, ERODING))
+t = write(os.path.join(WORK, "eroding"), "model.yaml", fast_twin)
+perforated = twin_pair("*CONTACT_ERODING_SINGLE_SURFACE: the block through the failing plate", d, t)
+summary = os.path.join(WORK, "eroding", "out_k", "summary.json")
+eroded = json.load(open(summary)).get("eroded_elements", 0) if os.path.exists(summary) else 0
+check("*CONTACT_ERODING_SINGLE_SURFACE: the plate's elements under the block erode", eroded > 20, eroded)
+c = fpmshell("check", d)
+check("*CONTACT_ERODING_SINGLE_SURFACE: a note on the eroding contact",
+      c.returncode == 0 and "an eroding contact" in c.stdout, c.stdout + c.stderr)
+TWO_SIDED = ("*CONTACT_ERODING_NODES_TO_SURFACE\n$#    ssid      msid     sstyp     mstyp\n"
+             "         2         1         3         3\n\n\n         0         1         0\n")
+d = write(os.path.join(WORK, "eroding_nodes"), "model.k", fast.replace(CONTACT, TWO_SIDED))
+t = write(os.path.join(WORK, "eroding_nodes"), "model.yaml",
+          fast_twin.replace("  - {type: self, elements: all}", "  - {type: self, elements: [part_2, part_1]}"))
+twin_pair("*CONTACT_ERODING_NODES_TO_SURFACE: the block's nodes against the failing plate", d, t)
+refused("an eroding contact without its fourth card", deck.replace(CONTACT, ERODING[:ERODING.index("$#    isym")]),
+        "model.k:", "*CONTACT_ERODING_SINGLE_SURFACE", "ISYM, EROSOP, IADJ")
+refused("EROSOP 2", deck.replace(CONTACT, ERODING.replace("         0         1         0\n",
+                                                           "         0         2         0\n")),
+        "model.k:", "*CONTACT_ERODING_SINGLE_SURFACE", "EROSOP must be 0 or 1")
 
 
 PLATE = "*PART\nplate\n         1         1         1\n"

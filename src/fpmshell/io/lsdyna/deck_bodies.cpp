@@ -264,6 +264,15 @@ const ContactForm k_contact_forms[] = {
     {"CONTACT_FORMING_NODES_TO_SURFACE", 5, false,
      "a forming contact (a sheet's nodes against its tools), read as the automatic, two-sided "
      "one"},
+    // the eroding forms: fpmshell's self-contact is eroding already (theory.md §7.6: an eroded
+    // element's faces leave it, its particles stay as contact nodes)
+    {"CONTACT_ERODING_SINGLE_SURFACE", 4, true, nullptr},
+    {"CONTACT_ERODING_SURFACE_TO_SURFACE", 5, false,
+     "a one-sided contact (the side its segments' normals point to), read as the automatic, "
+     "two-sided one"},
+    {"CONTACT_ERODING_NODES_TO_SURFACE", 5, false,
+     "a one-sided contact (the side its segments' normals point to), read as the automatic, "
+     "two-sided one"},
 };
 
 }  // namespace
@@ -304,6 +313,7 @@ void DeckTranslator::contact(const DeckBlock& b) {
         note(b, g.line(),
              "VDC ignored: the contact is enforced by Lagrange multipliers, without "
              "viscous damping");
+    if (starts_with(b.keyword, "CONTACT_ERODING_")) eroding_contact_card(b, c + 3);
     std::vector<std::string> sides{contact_side(f, f.id(0, "SSID"), f.id(2, "SSTYP"), "SSTYP")};
     if (!single) sides.push_back(contact_side(f, f.id(1, "MSID"), f.id(3, "MSTYP"), "MSTYP"));
     std::string elements;
@@ -323,6 +333,24 @@ void DeckTranslator::contact(const DeckBlock& b) {
                             : "as fpmshell's shell self-contact over both sides together "
                               "(each side is kept from itself too)") +
              " (Lagrange multipliers, each shell's thickness as its contact thickness)");
+}
+
+/// The fourth card of the *CONTACT_ERODING_ forms (LS-DYNA requires it): ISYM, EROSOP, IADJ.
+/// fpmshell's self-contact erodes as LS-DYNA's does with EROSOP 1: an eroded element's faces
+/// leave it and its nodes stay in it (theory.md §7.6); a shell has no interior faces that
+/// erosion would expose, nor solids beside it (IADJ), nor faces on symmetry planes to drop
+/// (ISYM, which concerns the faces of solids).
+void DeckTranslator::eroding_contact_card(const DeckBlock& b, std::size_t index) {
+    const Card e = required_card(b, index, "ISYM, EROSOP, IADJ");
+    const long long isym = e.id(0, "ISYM"), erosop = e.id(1, "EROSOP"), iadj = e.id(2, "IADJ");
+    if (isym != 0 && isym != 1) e.fail("ISYM must be 0 or 1");
+    if (erosop != 0 && erosop != 1) e.fail("EROSOP must be 0 or 1");
+    if (iadj != 0 && iadj != 1) e.fail("IADJ must be 0 or 1");
+    note(b, e.line(),
+         "an eroding contact: an eroded element's faces leave fpmshell's self-contact and its "
+         "particles stay in it as nodes with their mass (LS-DYNA's EROSOP 1 with *CONTROL_CONTACT "
+         "ENMASS 2; a shell exposes no inner faces, so EROSOP 0 is the same here); ISYM and IADJ "
+         "concern solids and are not used");
 }
 
 /// Coulomb friction of a contact's second card: FS, FD, DC as `friction`, `friction_dynamic`,

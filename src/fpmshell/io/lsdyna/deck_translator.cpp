@@ -71,6 +71,7 @@ const std::vector<CardReader>& card_readers() {
         {"CONTACT_FORMING_ONE_WAY_SURFACE_TO_SURFACE", true, P::References, &T::contact},
         {"CONTACT_FORMING_SURFACE_TO_SURFACE", true, P::References, &T::contact},
         {"CONTACT_FORMING_NODES_TO_SURFACE", true, P::References, &T::contact},
+        {"CONTACT_ERODING_", true, P::References, &T::contact},
         {"CONSTRAINED_NODAL_RIGID_BODY", true, P::References, &T::nodal_rigid_body},
         {"CONSTRAINED_RIGID_BODIES", true, P::References, &T::rigid_bodies_joined},
         {"CONSTRAINED_EXTRA_NODES", true, P::References, &T::extra_nodes},
@@ -254,7 +255,8 @@ std::string DeckTranslator::unsupported_reason(const std::string& k) {
     if (starts_with(k, "CONTACT_"))
         return "fpmshell reads *CONTACT_AUTOMATIC_SINGLE_SURFACE, _SURFACE_TO_SURFACE, "
                "_NODES_TO_SURFACE, _GENERAL, *CONTACT_SINGLE_SURFACE, _SURFACE_TO_SURFACE, "
-               "_NODES_TO_SURFACE and *CONTACT_FORMING_ (as its shell self-contact), and "
+               "_NODES_TO_SURFACE, *CONTACT_FORMING_ and *CONTACT_ERODING_SINGLE_SURFACE, "
+               "_SURFACE_TO_SURFACE and _NODES_TO_SURFACE (as its shell self-contact), and "
                "*CONTACT_TIED_NODES_TO_SURFACE, _SHELL_EDGE_TO_SURFACE, _SURFACE_TO_SURFACE and "
                "*CONTACT_TIEBREAK_NODES_TO_SURFACE and _SURFACE_TO_SURFACE (other tiebreak forms "
                "are not supported)";

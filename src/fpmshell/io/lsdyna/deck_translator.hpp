@@ -309,6 +309,9 @@ public:
     /// 3 part, 5 all; SID 0 is all).
     void tied_contact(const DeckBlock& b);
     std::string contact_friction(const Card& g);
+    /// The fourth card of a *CONTACT_ERODING_ form (ISYM, EROSOP, IADJ), at `index`: checked
+    /// and noted (fpmshell's self-contact erodes already).
+    void eroding_contact_card(const DeckBlock& b, std::size_t index);
     std::string contact_side(const Card& f, long long sid, long long typ, const char* name);
     void write_walls(std::vector<Line>& out);
     /// The constant velocity of a geometric wall's _MOTION: a flat velocity curve (OPT 0) or a
