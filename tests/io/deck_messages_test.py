@@ -189,10 +189,23 @@ path, r = deck_case("surface to surface", "*CONTACT_AUTOMATIC_SURFACE_TO_SURFACE
 check("surface to surface: self-contact over both parts", r.returncode == 0 and
       "contact self over 2 elements" in r.stdout and "over both sides together" in r.stdout,
       r.stdout + r.stderr)
+# a node set as the slave side of a nodes-to-surface contact: those nodes against the faces
 path, r = deck_case("nodes to surface", "*CONTACT_AUTOMATIC_NODES_TO_SURFACE\n"
-                    "         1         2         4         3\n", base=two_parts)
-check("nodes to surface with a node set: refused", r.returncode == 2 and "SSTYP 4" in r.stderr,
-      r.stderr)
+                    "         1         2         4         3\n"
+                    "*SET_NODE_LIST\n         1\n         1         2         3\n", base=two_parts)
+check("nodes to surface with a node set: the set's particles against part 2's faces",
+      r.returncode == 0 and "contact self over 1 elements" in r.stdout and
+      "the node set's particles against the master side's faces" in r.stdout, r.stdout + r.stderr)
+converted = os.path.join(os.path.dirname(path), "converted.yaml")
+fpmshell("convert", path, "-o", converted)
+check("nodes to surface with a node set: converted as `nodes` of the self-contact",
+      os.path.exists(converted) and "{type: self, elements: part_2, nodes: node_set_1}" in read(converted),
+      read(converted) if os.path.exists(converted) else "no file")
+path, r = deck_case("surface to surface of a node set", "*CONTACT_AUTOMATIC_SURFACE_TO_SURFACE\n"
+                    "         1         2         4         3\n"
+                    "*SET_NODE_LIST\n         1\n         1         2         3\n", base=two_parts)
+check("surface to surface with a node set: refused", r.returncode == 2 and "SSTYP 4" in r.stderr
+      and "nodes-to-surface" in r.stderr, r.stderr)
 
 # the fixed-column habits of decks written by other tools give BASE's model: lower-case
 # keywords, a blank line inside a block (a part's blank heading: a card of defaults) and between

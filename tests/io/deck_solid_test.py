@@ -9,8 +9,9 @@ variants of examples/decks/block_drop against YAML twins, the same history.csv b
 - refusals with exit 2 and one sentence naming the place: *PART_INERTIA of a deformable part,
   IRCS 1, NODEID, TM 0;
 - *PART_MOVE: the block lifted before the run -> `moves`, against its twin; CID refused;
-- *CONTACT_ERODING_SINGLE_SURFACE and _NODES_TO_SURFACE: the block thrown through the plate that
-  fails, as the self-contact of the twin; its fourth card checked.
+- *CONTACT_ERODING_SINGLE_SURFACE and _NODES_TO_SURFACE (of the block's part, and of a node set
+  of its nodes: one-way): the block thrown through the plate that fails, as the self-contact of
+  the twin; its fourth card checked.
 
 usage: deck_solid_test.py FPMSHELL WORKDIR
 """
@@ -137,6 +138,21 @@ d = write(os.path.join(WORK, "eroding_nodes"), "model.k", fast.replace(CONTACT, 
 t = write(os.path.join(WORK, "eroding_nodes"), "model.yaml",
           fast_twin.replace("  - {type: self, elements: all}", "  - {type: self, elements: [part_2, part_1]}"))
 twin_pair("*CONTACT_ERODING_NODES_TO_SURFACE: the block's nodes against the failing plate", d, t)
+# its slave side a node set (SSTYP 4): the block's outer nodes alone against the plate's faces
+# (one-way), as the twin's self-contact with `nodes`
+BLOCK_SET = "*SET_NODE_LIST\n         2\n" + "".join(
+    "%10d" % n + ("\n" if i % 8 == 7 else "")
+    for i, n in enumerate([n for n in range(201, 228) if n != 214] + list(range(301, 308)))) + "\n"
+NODE_SET_SIDE = TWO_SIDED.replace("         2         1         3         3",
+                                  "         2         1         4         3")
+d = write(os.path.join(WORK, "eroding_node_set"), "model.k",
+          fast.replace(CONTACT, NODE_SET_SIDE).replace("*END", BLOCK_SET + "*END"))
+t = write(os.path.join(WORK, "eroding_node_set"), "model.yaml",
+          fast_twin.replace("  - {type: self, elements: all}",
+                            "  - {type: self, elements: part_1, nodes: block_nodes}"))
+one_way = twin_pair("*CONTACT_ERODING_NODES_TO_SURFACE of a node set: the block's nodes against the plate", d, t)
+check("a node set against the plate's faces (one-way) is not the two-way contact of both parts",
+      one_way is not None and perforated is not None and one_way != perforated)
 refused("an eroding contact without its fourth card", deck.replace(CONTACT, ERODING[:ERODING.index("$#    isym")]),
         "model.k:", "*CONTACT_ERODING_SINGLE_SURFACE", "ISYM, EROSOP, IADJ")
 refused("EROSOP 2", deck.replace(CONTACT, ERODING.replace("         0         1         0\n",

@@ -387,6 +387,22 @@ if h_never:
     check("failure strain 1e21: no criterion (energy.csv without eroded_internal)",
           "eroded_internal" not in header, header)
 
+# ---- *MAT_024 TDEL: an element erodes once its step falls below it (its steps fall from
+# 5.87e-7 to 5.82e-7 as the strip is drawn), as the twin's failure: {minimum_time_step}
+h_tdel = deck_against_twin(
+    "TDEL", os.path.join(WORK, "tdel"), os.path.join(STRIP, "strip_pull_mesh.k"),
+    strip_deck.replace(STRIP_MAT, STRIP_MAT.replace("sigy\n", "sigy      etan      fail      tdel\n").replace(
+        "3.0e+08\n", "3.0e+08       0.0       0.0   5.85e-7\n")),
+    strip_twin.replace("    poisson_ratio: 0.3\n    flow_curves:",
+                       "    poisson_ratio: 0.3\n    failure: {minimum_time_step: 5.85e-7}\n    flow_curves:"))
+check_erodes("TDEL: the strip's elements erode below the step", h_tdel)
+folder = write_case("tdel_bad", strip_deck.replace(STRIP_MAT, STRIP_MAT.replace(
+    "sigy\n", "sigy      etan      fail      tdel\n").replace("3.0e+08\n", "3.0e+08       0.0       0.0     -1e-7\n")),
+    os.path.join(STRIP, "strip_pull_mesh.k"))
+r = subprocess.run([FPM, "check", os.path.join(folder, "model.k")], capture_output=True, text=True)
+check("TDEL < 0 refused with exit 2 and one sentence",
+      r.returncode == 2 and r.stderr.count("error:") == 1 and "TDEL must be >= 0" in r.stderr, r.stderr)
+
 # ---- *MAT_ADD_DAMAGE_GISSMO: strip_pull.k's steel with GISSMO's failure strain against
 # triaxiality (LCSDG), its regularization by element size (LCREGD), DMGEXP and NUMFIP, and its
 # fading from the start (ECRIT and DCRIT 0, FADEXP 1), against the twin with failure: {tabulated}

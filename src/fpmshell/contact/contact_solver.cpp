@@ -49,9 +49,12 @@ ContactSolver::ContactSolver(const Model& model, const MeshTopology& topology,
         if (def.type == ContactType::Self) {
             Real h_max = 0;
             for (Index e : def.elements) {
-                for (Index p : model.triangles[static_cast<std::size_t>(e)]) d.slaves.push_back(p);
+                if (def.nodes.empty())
+                    for (Index p : model.triangles[static_cast<std::size_t>(e)])
+                        d.slaves.push_back(p);
                 h_max = std::max(h_max, element_thickness[static_cast<std::size_t>(e)]);
             }
+            if (!def.nodes.empty()) d.slaves = def.nodes;  // given: they alone touch the faces
             std::sort(d.slaves.begin(), d.slaves.end());
             d.slaves.erase(std::unique(d.slaves.begin(), d.slaves.end()), d.slaves.end());
             // Edge neighbours of every slave (over all the model's triangles): a triangle that

@@ -6,6 +6,7 @@ namespace fpmshell {
 
 ElementErosion::ElementErosion(const Material& material, int n_inplane, int n_through)
     : separates_(material.failure.separates),
+      minimum_step_(material.failure.minimum_time_step),
       points_(material.failure.points),
       n_inplane_(n_inplane),
       n_through_(n_through) {

@@ -36,7 +36,11 @@ public:
     /// n_through points, in-plane major.
     ElementErosion(const Material& material, int n_inplane, int n_through);
 
+    /// Whether its points can fail (some criterion judges them).
     [[nodiscard]] bool active() const { return !criteria_.empty(); }
+    /// The material's step below which an element erodes whatever its points (`failure:
+    /// {minimum_time_step}`, LS-DYNA's TDEL); 0: none.
+    [[nodiscard]] Real minimum_step() const { return minimum_step_; }
     /// Whether a failed element opens an edge instead of eroding (`fracture: separate`, §7.7).
     [[nodiscard]] bool separates() const { return separates_; }
     /// Whether some criterion reads more of a point than its plastic strain.
@@ -119,6 +123,7 @@ private:
     std::size_t fading_field_ = PointFailure::k_no_field;
     bool reads_point_ = false;
     bool separates_ = false;
+    Real minimum_step_ = 0;
     int points_ = 0;  ///< failed points that erode it; 0: one in-plane point's every point
     int n_inplane_ = 0, n_through_ = 0;
 };

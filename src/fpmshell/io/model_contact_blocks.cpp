@@ -159,9 +159,9 @@ void read_contact(const YamlValue& v, Model& model) {
         const std::string type = any.at("type", "self or rigid").choice({"self", "rigid"});
         ContactDefinition c;
         if (type == "self") {
-            const YamlMap m =
-                item.map({"type", "elements", "method", "exclusion_radius", "penalty_scale",
-                          "max_iterations", "friction", "friction_dynamic", "friction_decay"});
+            const YamlMap m = item.map({"type", "elements", "nodes", "method", "exclusion_radius",
+                                        "penalty_scale", "max_iterations", "friction",
+                                        "friction_dynamic", "friction_decay"});
             c.type = ContactType::Self;
             c.elements = model.element_sets.at("all");
             if (const auto e = m.find("elements"); e && e->is_list()) {
@@ -179,6 +179,12 @@ void read_contact(const YamlValue& v, Model& model) {
                                  c.elements.end());
             } else if (e) {
                 c.elements = named_element_set(model, *e);
+            }
+            // a node set: those particles alone touch the faces (one-way, LS-DYNA's
+            // NODES_TO_SURFACE with a node set)
+            if (const auto n = m.find("nodes")) {
+                c.nodes = named_node_set(model, *n);
+                if (c.nodes.empty()) n->fail("the node set of a self-contact must not be empty");
             }
             c.exclusion_radius = m.non_negative_or("exclusion_radius", 0.0);
             read_contact_method(m, c);

@@ -30,12 +30,16 @@ void read_failure(const YamlValue& v, Material& mat) {
     }
     keys.push_back("points");
     keys.push_back("fracture");
+    keys.push_back("minimum_time_step");
     const YamlMap f = v.map(keys);
     for (const auto& [key, value] : f.entries())
         if (const FailureCriterion* c = find_failure_criterion(key))
             mat.failure.criteria.push_back({c->name, c->read(value, mat)});
-    if (mat.failure.criteria.empty())
-        v.fail("names no failure criterion; give " + names + ", e.g. {plastic_strain: 0.3}");
+    // an element erodes below this step, whatever its points (LS-DYNA's TDEL)
+    mat.failure.minimum_time_step = f.positive_or("minimum_time_step", 0.0);
+    if (!mat.failure.active())
+        v.fail("names no failure criterion; give " + names +
+               " or minimum_time_step, e.g. {plastic_strain: 0.3}");
     if (const auto n = f.find("points"))
         mat.failure.points = static_cast<int>(n->integer(1, 7 * k_max_thickness_points));
     if (const auto kind = f.find("fracture")) {  // theory.md §7.7

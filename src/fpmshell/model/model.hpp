@@ -50,8 +50,11 @@ struct MaterialFailure {
     /// separate`, keeps acting and opens one of its edges, the particles separating along the
     /// open edges (§7.7)
     bool separates = false;
+    /// An element erodes once its step (time_step_scale x its critical step) falls below it
+    /// (LS-DYNA's *MAT_024 and *MAT_081 TDEL); 0: never
+    Real minimum_time_step = 0;
 
-    [[nodiscard]] bool active() const { return !criteria.empty(); }
+    [[nodiscard]] bool active() const { return !criteria.empty() || minimum_time_step > 0; }
 };
 
 /// A material: the constants every law has, and its law's own (units as in the model file;
@@ -308,9 +311,11 @@ enum class ContactMethod { LagrangeMultiplier, Penalty };
 struct ContactDefinition {
     ContactType type = ContactType::Self;
     ContactMethod method = ContactMethod::LagrangeMultiplier;
-    std::vector<Index> elements;  ///< self
-    std::vector<Index> nodes;     ///< rigid
-    Index body = -1;              ///< rigid: index into Model::rigid_bodies
+    std::vector<Index> elements;  ///< self: the faces (and, without `nodes`, their particles)
+    /// rigid: the particles; self: the particles that touch `elements`' faces (LS-DYNA's
+    /// NODES_TO_SURFACE with a node set), empty: the particles of `elements`
+    std::vector<Index> nodes;
+    Index body = -1;  ///< rigid: index into Model::rigid_bodies
     /// self: pairs whose initial distance is below it are never in contact (0 = automatic,
     /// 1.5 x the largest thickness; theory.md R8)
     Real exclusion_radius = 0;

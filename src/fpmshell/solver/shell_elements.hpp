@@ -281,6 +281,9 @@ private:
     /// per element: eroded on some rank (steady_small_pieces' view; eroded_ holds this rank's)
     std::vector<std::uint8_t> gone_;
     Real erosion_step_ = 0;  ///< set_erosion_step's
+    /// per section: its material's `failure: {minimum_time_step}` as an unscaled critical step
+    /// (over time_step_scale, as erosion_step_), 0: none
+    std::vector<Real> material_erosion_step_;
     [[nodiscard]] bool gone(Index e) const { return gone_[static_cast<std::size_t>(e)] != 0; }
     std::vector<std::unique_ptr<ElementGroup>> groups_;  ///< per section
     ElementTimeSteps time_steps_;

@@ -1,5 +1,6 @@
 // Erosion in the element loop (theory.md §7.6): which elements have eroded, the booking of
 // their work, and the check after each element's step.
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -16,6 +17,9 @@ void ShellElements::init_erosion(const Model& model) {
         const ShellRule& rule = groups_[g]->rule();
         erosion_.emplace_back(mat, static_cast<int>(rule.inplane.size()),
                               static_cast<int>(rule.through.size()));
+        // compared with the elements' unscaled critical steps, as set_erosion_step's
+        material_erosion_step_.push_back(erosion_.back().minimum_step() /
+                                         model.control.time_step_scale);
         can_fail = can_fail || erosion_.back().active();
         has_state = has_state || erosion_.back().fields() > 0;
         separates = separates || erosion_.back().separates();
@@ -24,6 +28,7 @@ void ShellElements::init_erosion(const Model& model) {
     can_fail = can_fail || model_can_erode(model);
     if (!can_fail) {
         erosion_.clear();
+        material_erosion_step_.clear();
         return;
     }
     eroded_.assign(ne, 0);
@@ -211,10 +216,13 @@ void ShellElements::book_last_half_step(std::size_t e, const ParticleState& s, E
 
 void ShellElements::check_erosion(std::size_t e, Real work, Real dt, ElementTotals& t,
                                   const std::array<Real, 18>& loads, const bool* verdict) {
-    const ElementErosion& rule = erosion_[static_cast<std::size_t>(section_[e])];
-    if (!rule.active() && !(erosion_step_ > 0)) return;
-    element_work_[e] += work;    // (of every element where any may erode below the step)
-    if (t.dt < erosion_step_) {  // control.minimum_time_step: it erodes, whatever its material
+    const auto section = static_cast<std::size_t>(section_[e]);
+    const ElementErosion& rule = erosion_[section];
+    // control.minimum_time_step's with erode, or its material's (LS-DYNA's TDEL)
+    const Real floor = std::max(erosion_step_, material_erosion_step_[section]);
+    if (!rule.active() && !(floor > 0)) return;
+    element_work_[e] += work;  // (of every element where any may erode below the step)
+    if (t.dt < floor) {        // it erodes, whatever its points
         t.dt = std::numeric_limits<Real>::infinity();  // and no longer sets the step
         t.dt_element = -1;
     } else {

@@ -266,6 +266,36 @@ TEST(Contact, SeparatePartsStartingWithinTheExclusionRadiusStillTouch) {
     EXPECT_LT(std::abs(s.energy().error()), 1e-3);
 }
 
+TEST(Contact, ANodeSetAloneTouchesTheFacesOneWay) {
+    // model-format.md contact `nodes` (LS-DYNA's nodes-to-surface with a node set): the plates of
+    // TwoPlatesDrivenTogetherDoNotInterpenetrate, 1.5 h apart, the top one moving down at 10 m/s.
+    // The top plate's particles against the bottom plate's faces: it stops on them. The bottom
+    // plate's particles against its own faces: nothing holds the top plate, which passes through
+    // (the contact is one-way: the faces' particles touch only as members of `nodes`).
+    for (const bool top_touches : {true, false}) {
+        PlateOverPlate pp = plate_over_plate(0.015, 10, DiagonalPattern::Right);
+        Model& m = pp.model;
+        m.contacts[0].elements = pp.bottom_elements;
+        m.contacts[0].nodes = top_touches ? pp.top_nodes : pp.bottom_nodes;
+        ExplicitSolver s(m);
+        Real lowest = 1e30, closest = 1e30;  // of the top plate; to the bottom plate's faces
+        while (s.time() < 3e-3) {
+            s.step(1e30);
+            for (const Index p : pp.top_nodes)
+                lowest = std::min(lowest, s.state().x[static_cast<std::size_t>(p)].z());
+            closest = std::min(closest,
+                               min_face_distance(m, s.state().x, pp.top_nodes, pp.bottom_elements));
+        }
+        EXPECT_LT(std::abs(s.energy().error()), 1e-3) << top_touches;
+        if (top_touches) {  // held a thickness off the bottom plate (10 % of h allowed)
+            EXPECT_GT(s.contact_statistics()->max_active, 0);
+            EXPECT_GE(closest, 0.9 * 0.01);
+        } else {  // free fall through the bottom plate: 0.015 - 10 m/s x 3 ms
+            EXPECT_NEAR(lowest, 0.015 - 10 * s.time(), 1e-9);
+        }
+    }
+}
+
 TEST(Contact, FallingShellOnAPlaneKeepsTheEnergyBalance) {
     // A shallow cylindrical panel (R = 1, 20 deg, convex side up, h = 0.01) falls at 5 m/s on
     // a fixed plane, lands on its straight edges, flexes and bounces off.

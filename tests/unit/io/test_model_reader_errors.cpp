@@ -165,6 +165,13 @@ TEST(ModelReader, EveryErrorNamesFileLineAndKey) {
                   "poisson_ratio: 0.3, yield_stress: 250, failure: {plastic_strain: 0.2, "
                   "fracture: split}}"),
          4, "materials.steel.failure.fracture", "is 'split'; give erode"},
+        // a material's floor of the element step (LS-DYNA's TDEL): > 0, and enough alone
+        {replaced(replaced(k_base, "type: elastic", "type: j2_plastic"), steel,
+                  "poisson_ratio: 0.3, yield_stress: 250, failure: {minimum_time_step: -1e-7}}"),
+         4, "materials.steel.failure.minimum_time_step", "must be greater than 0"},
+        {replaced(replaced(k_base, "type: elastic", "type: j2_plastic"), steel,
+                  "poisson_ratio: 0.3, yield_stress: 250, failure: {points: 2}}"),
+         4, "materials.steel.failure", "names no failure criterion"},
         {tabulated("poisson_ratio: 0.3, flow_curve: [[0, 200], [1, 300]], flow_curves: []}"), 4,
          "materials.steel.flow_curves", "either flow_curve"},
         {tabulated("poisson_ratio: 0.3, flow_curves: [{strain_rate: 10, points: [[0, 200], [1, "

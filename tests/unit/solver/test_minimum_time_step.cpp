@@ -9,6 +9,8 @@
 //   the second element to erode there releases its compression violently and the error grows
 //   to 1-4 % as the released particles fling the distorted elements left; not this test's.)
 // - Without erode the run stops at the floor, naming the element.
+// - A material's own floor (`failure: {minimum_time_step}`, LS-DYNA's TDEL) erodes its elements
+//   as the control's does: the same floor gives the same bits.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -18,6 +20,7 @@
 #include "../one_section_model.hpp"
 #include "fpmshell/core/errors.hpp"
 #include "fpmshell/failure/element_erosion.hpp"
+#include "fpmshell/materials/bilinear/bilinear_law.hpp"
 #include "fpmshell/solver/explicit_solver.hpp"
 
 namespace fpmshell {
@@ -83,6 +86,33 @@ TEST(MinimumTimeStep, WithoutErodeTheRunStopsThereNamingTheElement) {
     }
     EXPECT_GT(steps, 3);  // the steps fall steadily: not at once
     EXPECT_EQ(s.eroded_elements(), 0);
+}
+
+TEST(MinimumTimeStep, AMaterialsOwnFloorErodesItsElementsAsTheControlsDoes) {
+    // the squeezed plate of a plastic material that never yields (failure takes a plastic law),
+    // its floor given once by the control and once by the material: the same number
+    Model plain = squeezed_plate(true);
+    plain.control.minimum_time_step = {};
+    make_bilinear(plain.materials[0], 1e30, 0);
+    const Real floor = k_factor * ExplicitSolver(plain).stable_dt();
+    Model by_control = plain;
+    by_control.control.minimum_time_step.time_step = floor;
+    by_control.control.minimum_time_step.erode = true;
+    Model by_material = plain;
+    by_material.materials[0].failure.minimum_time_step = floor;
+    ASSERT_TRUE(model_can_erode(by_material));
+    ExplicitSolver a(by_control), b(by_material);
+    int after = 0;
+    for (int n = 0; n < 1000 && after < 3; ++n) {
+        a.step(1e30);
+        b.step(1e30);
+        EXPECT_GE(b.last_dt(), floor) << "step " << n;
+        if (b.eroded_elements() > 0) ++after;
+    }
+    EXPECT_GE(b.eroded_elements(), 1);
+    EXPECT_EQ(a.eroded_elements(), b.eroded_elements());
+    EXPECT_EQ(a.state().x, b.state().x);  // the same bits
+    EXPECT_LT(std::abs(b.energy().error()), 1e-3);
 }
 
 }  // namespace

@@ -314,6 +314,23 @@ void DeckTranslator::contact(const DeckBlock& b) {
              "VDC ignored: the contact is enforced by Lagrange multipliers, without "
              "viscous damping");
     if (starts_with(b.keyword, "CONTACT_ERODING_")) eroding_contact_card(b, c + 3);
+    // a node set on the slave side of a nodes-to-surface form: those nodes alone against the
+    // master side's faces (one-way, as LS-DYNA's)
+    if (f.id(2, "SSTYP") == 4 && b.keyword.find("NODES_TO_SURFACE") != std::string::npos) {
+        const std::string nodes = yaml_name(set_name(f, "node", f.id(0, "SSID")));
+        const std::string faces =
+            yaml_name(contact_side(f, f.id(1, "MSID"), f.id(3, "MSTYP"), "MSTYP"));
+        contact_.push_back(
+            {"  - {type: self, elements: " + faces + ", nodes: " + nodes + friction + "}",
+             {&b, f.line()}});
+        const long long cid = opt.count("ID") || opt.count("TITLE") ? card(b, 0).id(0, "CID") : 0;
+        contact_ids_.push_back({cid > 0 ? cid : reading_number(b), {&b, f.line()}});
+        note(b, f.line(),
+             "as fpmshell's contact of the node set's particles against the master side's "
+             "faces (one-way; Lagrange multipliers, each shell's thickness as its contact "
+             "thickness)");
+        return;
+    }
     std::vector<std::string> sides{contact_side(f, f.id(0, "SSID"), f.id(2, "SSTYP"), "SSTYP")};
     if (!single) sides.push_back(contact_side(f, f.id(1, "MSID"), f.id(3, "MSTYP"), "MSTYP"));
     std::string elements;
@@ -476,8 +493,8 @@ std::string DeckTranslator::contact_side(const Card& f, long long sid, long long
     if (typ == 2) return set_name(f, "part", sid);
     if (typ == 3) return "part_" + std::to_string(sid);
     f.fail(std::string(name) + " " + std::to_string(typ) +
-           " is not supported: 1 (shell set), 2 (part set), 3 (part) or 5 (all); give a node "
-           "set's shells as a part or shell set");
+           " is not supported: 1 (shell set), 2 (part set), 3 (part) or 5 (all), and 4 (node "
+           "set) for the slave side of a nodes-to-surface contact");
 }
 
 void DeckTranslator::write_walls(std::vector<Line>& out) {

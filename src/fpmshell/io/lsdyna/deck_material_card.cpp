@@ -44,6 +44,12 @@ void MaterialCard::failure_strain(const Card& c, std::size_t k, const char* name
     if (strain > 0 && strain < 1e16) failure("plastic_strain: " + num(strain));
 }
 
+void MaterialCard::deletion_time_step(const Card& c, std::size_t k, const char* name) {
+    const Real step = c.real(k, name);
+    if (step < 0) c.fail(std::string(name) + " must be >= 0 (0: no element deletion by its step)");
+    if (step > 0) failure("minimum_time_step: " + num(step));
+}
+
 void MaterialCard::failure(const std::string& criterion) { material_.failure.push_back(criterion); }
 
 void MaterialCard::failure_points(long long points) {

@@ -38,6 +38,9 @@ public:
     /// FAIL, *MAT_098 PSFAIL; theory.md §7.6): > 0 erodes the elements whose points reach it,
     /// 0 or 1e16 and above none (LS-DYNA's defaults 1e21, 1e17 written out), < 0 refused.
     void failure_strain(const Card& c, std::size_t k, const char* name);
+    /// Field k of c (`name`, *MAT_024's and *MAT_081's TDEL) as `failure: {minimum_time_step}`
+    /// where > 0: an element erodes once its step falls below it.
+    void deletion_time_step(const Card& c, std::size_t k, const char* name);
     /// A failure criterion, "name: value" (the material's `failure` key joins them), and the
     /// failed points that erode an element (> 0).
     void failure(const std::string& criterion);

@@ -53,7 +53,7 @@ void mat_plasticity_with_damage(deck::MaterialCard& card) {
     const long long lcss = g.id(2, "LCSS");
     if (g.id(6, "LCDM") != 0) g.fail("LCDM (a nonlinear damage curve) is not supported");
     if (g.real(5, "VP") != 0) card.note(g, "VP = 1 read as the scaled yield stress (VP = 0)");
-    if (f.real(7, "TDEL") != 0) card.note(f, "TDEL ignored: elements erode at rupture");
+    card.deletion_time_step(f, 7, "TDEL");
     card.key("type: plastic_damage");
     card.elastic(f, e, f.real(3, "PR"));
     card.flow_curve_id(lcss);

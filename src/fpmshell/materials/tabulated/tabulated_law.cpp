@@ -163,6 +163,7 @@ void mat_piecewise_linear(deck::MaterialCard& card) {
     }
     if (g.real(4, "VP") != 0) card.note(g, "VP = 1 read as the scaled yield stress (VP = 0)");
     card.failure_strain(f, 6, "FAIL");
+    card.deletion_time_step(f, 7, "TDEL");
     std::vector<deck::Point2> points = deck::MaterialCard::curve_of(eps, es);
     const bool tabulated = lcss != 0 || points.size() >= 2;
     card.key(tabulated ? "type: tabulated" : "type: j2_plastic");
