@@ -492,6 +492,14 @@ h_erosion = deck_against_twin(
                        "    poisson_ratio: 0.3\n    failure: {thresholds: {max_effective_strain: 0.02}, "
                        "points: 1}\n    flow_curves:"))
 check_erodes("MAT_ADD_EROSION: the strip's elements erode", h_erosion)
+# NUMFIP < 0: a percentage of the layers through the thickness (of shells), as layer_fraction
+h_layers = deck_against_twin(
+    "MAT_ADD_EROSION NUMFIP < 0", os.path.join(WORK, "add_erosion_layers"), os.path.join(STRIP, "strip_pull_mesh.k"),
+    strip_deck.replace("*END\n", EROSION.replace("      0.02       0.0       1.0", "      0.02       0.0     -50.0") + "*END\n"),
+    strip_twin.replace("    poisson_ratio: 0.3\n    flow_curves:",
+                       "    poisson_ratio: 0.3\n    failure: {thresholds: {max_effective_strain: 0.02}, "
+                       "layer_fraction: 0.5}\n    flow_curves:"))
+check_erodes("MAT_ADD_EROSION NUMFIP < 0: the strip's elements erode", h_layers)
 
 
 
@@ -511,6 +519,8 @@ for name, card, message in (
         ("a forming limit", EROSION + "         0         0         0\n" + "       901\n",
          "forming limits"),
         ("IDAM 2", EROSION + "         2\n", "IDAM 2 is not supported"),
+        ("NUMFIP below -100", EROSION.replace("      0.02       0.0       1.0", "      0.02       0.0    -150.0"),
+         "NUMFIP must be at least -100"),
         ("SIGP1 a curve", EROSION.replace("       0.0       0.0       0.0       0.0       0.0       0.0       0.0       0.0\n",
                                           "       0.0    -901.0       0.0       0.0       0.0       0.0       0.0       0.0\n"),
          "SIGP1 < 0")):

@@ -1,5 +1,7 @@
 #include "fpmshell/failure/element_erosion.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 namespace fpmshell {
@@ -10,6 +12,10 @@ ElementErosion::ElementErosion(const Material& material, int n_inplane, int n_th
       points_(material.failure.points),
       n_inplane_(n_inplane),
       n_through_(n_through) {
+    // |NUMFIP| per cent of the layers: the least whole number of layers that reaches it (the
+    // fraction's rounding, 1e-9, left out: 50 % of 4 layers is 2)
+    if (const Real f = material.failure.layer_fraction; f > 0)
+        layers_ = std::max(1, static_cast<int>(std::ceil(f * n_through - 1e-9)));
     for (const FailureCriterionSpec& spec : material.failure.criteria) {
         const FailureCriterion* c = find_failure_criterion(spec.name);
         if (!c) throw std::logic_error("failure criterion '" + spec.name + "' of no kind");

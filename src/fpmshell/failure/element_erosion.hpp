@@ -3,7 +3,9 @@
 // step, each keeping its own state per point; the rule counts the failed points: by default the
 // element erodes once every point through the thickness at one of its in-plane points has
 // failed (LS-DYNA's rule for its shells of one in-plane point), or, with `points: N` (LS-DYNA's
-// NUMFIP), once N of its points have.
+// NUMFIP), once N of its points have, or, with `layer_fraction: f` (LS-DYNA's NUMFIP < 0), once
+// that fraction of its layers through the thickness has failed, a layer where one of its
+// points has.
 //
 // The criteria run on packs: the k_lanes elements of a SIMD block point by point (their state
 // kept [number][point] as packs, a lane per element), or the points of one element computed
@@ -105,6 +107,16 @@ private:
     /// The rule on the failed points of one element (failed(p), in-plane major).
     template <class Failed>
     [[nodiscard]] bool counts(const Failed& failed) const {
+        if (layers_ > 0) {  // the failed layers: one of whose points has failed
+            int failed_layers = 0;
+            for (int k = 0; k < n_through_; ++k)
+                for (int g = 0; g < n_inplane_; ++g)
+                    if (failed(static_cast<std::size_t>(g * n_through_ + k))) {
+                        ++failed_layers;
+                        break;
+                    }
+            return failed_layers >= layers_;
+        }
         int total = 0;
         bool one_inplane_point = false;
         for (int g = 0; g < n_inplane_; ++g) {
@@ -125,6 +137,7 @@ private:
     bool separates_ = false;
     Real minimum_step_ = 0;
     int points_ = 0;  ///< failed points that erode it; 0: one in-plane point's every point
+    int layers_ = 0;  ///< failed layers that erode it (layer_fraction of n_through_); 0: points_
     int n_inplane_ = 0, n_through_ = 0;
 };
 

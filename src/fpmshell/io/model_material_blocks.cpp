@@ -31,6 +31,7 @@ void read_failure(const YamlValue& v, Material& mat) {
     keys.push_back("points");
     keys.push_back("fracture");
     keys.push_back("minimum_time_step");
+    keys.push_back("layer_fraction");
     const YamlMap f = v.map(keys);
     for (const auto& [key, value] : f.entries())
         if (const FailureCriterion* c = find_failure_criterion(key))
@@ -42,6 +43,11 @@ void read_failure(const YamlValue& v, Material& mat) {
                " or minimum_time_step, e.g. {plastic_strain: 0.3}");
     if (const auto n = f.find("points"))
         mat.failure.points = static_cast<int>(n->integer(1, 7 * k_max_thickness_points));
+    if (const auto l = f.find("layer_fraction")) {  // LS-DYNA's NUMFIP < 0, as a fraction
+        if (f.find("points")) l->fail("give points or layer_fraction, not both");
+        mat.failure.layer_fraction = l->positive();
+        if (mat.failure.layer_fraction > 1) l->fail("must be at most 1 (every layer)");
+    }
     if (const auto kind = f.find("fracture")) {  // theory.md §7.7
         const std::string k = kind->name();
         if (k != "erode" && k != "separate")

@@ -46,6 +46,9 @@ struct MaterialFailure {
     /// failed points that erode an element; 0: every point through the thickness at one of
     /// its in-plane points
     int points = 0;
+    /// instead of points: the fraction of its layers through the thickness that erodes an
+    /// element, a layer failed where one of its points has (LS-DYNA's NUMFIP < 0); 0: not used
+    Real layer_fraction = 0;
     /// What a failed element does: erodes (stops acting, §7.6), or, with `fracture:
     /// separate`, keeps acting and opens one of its edges, the particles separating along the
     /// open edges (§7.7)

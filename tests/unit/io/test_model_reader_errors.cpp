@@ -172,6 +172,15 @@ TEST(ModelReader, EveryErrorNamesFileLineAndKey) {
         {replaced(replaced(k_base, "type: elastic", "type: j2_plastic"), steel,
                   "poisson_ratio: 0.3, yield_stress: 250, failure: {points: 2}}"),
          4, "materials.steel.failure", "names no failure criterion"},
+        // the failed layers that erode an element (LS-DYNA's NUMFIP < 0)
+        {replaced(replaced(k_base, "type: elastic", "type: j2_plastic"), steel,
+                  "poisson_ratio: 0.3, yield_stress: 250, failure: {plastic_strain: 0.2, "
+                  "layer_fraction: 1.5}}"),
+         4, "materials.steel.failure.layer_fraction", "must be at most 1"},
+        {replaced(replaced(k_base, "type: elastic", "type: j2_plastic"), steel,
+                  "poisson_ratio: 0.3, yield_stress: 250, failure: {plastic_strain: 0.2, "
+                  "points: 2, layer_fraction: 0.5}}"),
+         4, "materials.steel.failure.layer_fraction", "give points or layer_fraction, not both"},
         {tabulated("poisson_ratio: 0.3, flow_curve: [[0, 200], [1, 300]], flow_curves: []}"), 4,
          "materials.steel.flow_curves", "either flow_curve"},
         {tabulated("poisson_ratio: 0.3, flow_curves: [{strain_rate: 10, points: [[0, 200], [1, "

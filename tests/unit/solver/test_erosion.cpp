@@ -1,6 +1,7 @@
 // Failure and erosion (theory.md §7.6):
 // - the erosion rule counts failed points as documented (one in-plane point's every point
-//   through the thickness, or `points` of them anywhere);
+//   through the thickness, or `points` of them anywhere, or the failed layers of
+//   `layer_fraction`);
 // - homogeneous paths (equibiaxial, plane strain, shear, uniaxial) erode every element once its
 //   points reach the failure strain, within 1 % (the overshoot of one step), and the eroded
 //   elements carry nothing after;
@@ -47,6 +48,24 @@ TEST(Erosion, TheRuleCountsTheFailedPointsAsDocumented) {
     const ElementErosion three(m, 3, 2);
     EXPECT_TRUE(three.erodes(strains({0.2, 0, 0.2, 0, 0.2, 0}), 1, nullptr));
     EXPECT_FALSE(three.erodes(strains({0.2, 0, 0.2, 0, 0.05, 0}), 1, nullptr));
+    // layer_fraction (LS-DYNA's NUMFIP < 0): 3 in-plane x 4 through (points 4g + k); a layer k
+    // fails where one of its in-plane points has; half of 4 layers is 2
+    m.failure.points = 0;
+    m.failure.layer_fraction = 0.5;
+    const ElementErosion half(m, 3, 4);
+    auto layers = [&](std::vector<std::size_t> failed) {  // the failed points
+        std::vector<Real> a(12, 0.0);
+        for (const std::size_t p : failed) a[p] = 0.2;
+        return half.erodes(strains(a), 1, nullptr);
+    };
+    EXPECT_TRUE(layers({0, 5}));      // layers 0 and 1, at different in-plane points
+    EXPECT_FALSE(layers({0, 4, 8}));  // layer 0 alone, at every in-plane point
+    EXPECT_FALSE(layers({3, 11}));    // layer 3 at two in-plane points: one layer
+    m.failure.layer_fraction = 0.51;  // 2.04 layers: 3
+    EXPECT_FALSE(ElementErosion(m, 3, 4).erodes(strains({0.2, 0.2, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0}),
+                                                1, nullptr));
+    EXPECT_TRUE(ElementErosion(m, 3, 4).erodes(strains({0.2, 0.2, 0, 0, 0, 0, 0.2, 0, 0, 0, 0, 0}),
+                                               1, nullptr));
     m.failure.criteria.clear();  // cannot fail
     EXPECT_FALSE(ElementErosion(m, 3, 2).active());
 }

@@ -168,9 +168,9 @@ void mat_add_damage_gissmo(deck::FailureCard& card) {
         return;
     }
     const Real numfip = f.real(4, "NUMFIP", 1.0);
-    if (numfip < 0) f.fail("NUMFIP < 0 (a percentage of layers) is not supported");
     card.failure(tabulated_deck_failure(card, g, 0));
     if (numfip > 0) card.failure_points(static_cast<long long>(std::llround(numfip)));
+    if (numfip < 0) card.failure_layers(f, 4, "NUMFIP");  // a percentage of the layers
     for (std::size_t k = 0; k < 8; ++k)
         if (h.real(k, "LCSRS, SHRF, BIAXF, LCDLIM, MIDFAIL, HISVN, SOFT, LP2BI") != 0) {
             card.note(h,

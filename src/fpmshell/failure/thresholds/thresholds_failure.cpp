@@ -217,9 +217,10 @@ void mat_add_erosion(deck::FailureCard& card) {
                     "are not supported; leave it blank");
     }
     const Real numfip = f.real(6, "NUMFIP", 1.0);
-    if (numfip < 0) f.fail("NUMFIP < 0 (a percentage of layers) is not supported");
     if (numfip > 0 && (!keys.empty() || idam == 1))
         card.failure_points(static_cast<long long>(std::llround(numfip)));
+    if (numfip < 0 && (!keys.empty() || idam == 1))
+        card.failure_layers(f, 6, "NUMFIP");  // a percentage of the layers
     if (keys.empty() && idam == 0)
         card.note(f, "no criterion is set (every value blank, 0 or EXCL): nothing erodes");
 }

@@ -29,7 +29,13 @@ void FailureCard::material(const Card& c, std::size_t k) {
 void FailureCard::failure(const std::string& criterion) { material_->failure.push_back(criterion); }
 
 void FailureCard::failure_points(long long points) {
-    material_->failure_points = std::to_string(points);
+    material_->failure_points = "points: " + std::to_string(points);
+}
+
+void FailureCard::failure_layers(const Card& c, std::size_t k, const char* name) {
+    const Real percent = -c.real(k, name);
+    if (percent > 100) c.fail(std::string(name) + " must be at least -100 (every layer)");
+    material_->failure_points = "layer_fraction: " + num(percent / 100);
 }
 
 std::string FailureCard::curve_points(const Card& c, long long id, const char* name) const {

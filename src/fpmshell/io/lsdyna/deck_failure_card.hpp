@@ -29,6 +29,9 @@ public:
     /// erode an element.
     void failure(const std::string& criterion);
     void failure_points(long long points);
+    /// NUMFIP < 0 in field k of card c (`name`): -NUMFIP per cent of the layers through the
+    /// thickness erode an element (`layer_fraction`; below -100 refused).
+    void failure_layers(const Card& c, std::size_t k, const char* name);
     /// `[[x, y], ...]` of the *DEFINE_CURVE `id` (field `name` of card c; refused where none).
     [[nodiscard]] std::string curve_points(const Card& c, long long id, const char* name) const;
 

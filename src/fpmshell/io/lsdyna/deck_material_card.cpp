@@ -53,7 +53,7 @@ void MaterialCard::deletion_time_step(const Card& c, std::size_t k, const char* 
 void MaterialCard::failure(const std::string& criterion) { material_.failure.push_back(criterion); }
 
 void MaterialCard::failure_points(long long points) {
-    material_.failure_points = std::to_string(points);
+    material_.failure_points = "points: " + std::to_string(points);
 }
 
 void MaterialCard::flow_curve_id(long long lcss) { material_.lcss = lcss; }

@@ -215,7 +215,7 @@ void DeckTranslator::write_materials(std::vector<Line>& out) {
         if (!m.failure.empty()) {  // every criterion of its card and of *MAT_ADD_... cards
             std::string f;
             for (const std::string& c : m.failure) f += (f.empty() ? "" : ", ") + c;
-            if (!m.failure_points.empty()) f += ", points: " + m.failure_points;
+            if (!m.failure_points.empty()) f += ", " + m.failure_points;
             keys += ", failure: {" + f + "}";
         }
         add(out, "  mat_" + std::to_string(mid) + ": {" + keys + "}", m.at);

@@ -54,8 +54,8 @@ struct MaterialDef {
     long long lcss = 0;             ///< *MAT_024: the curve or table of the flow stress
     long long lcsr = 0;             ///< *MAT_024: the curve of the yield stress's rate factor
     bool plastic = false;
-    /// its failure criteria ("plastic_strain: 0.2", ...) and the failed points that erode an
-    /// element ("" for the default), written as one `failure` key
+    /// its failure criteria ("plastic_strain: 0.2", ...) and what erodes an element ("points:
+    /// 3", "layer_fraction: 0.5", "" for the default), written as one `failure` key
     std::vector<std::string> failure{};
     std::string failure_points{};
 };
