@@ -462,6 +462,30 @@ gissmo_twin(
     "{critical_strain: 0.006, exponent: [[0.001, 1.5], [0.01, 3]]}")
 check("GISSMO ECRIT: fading from an instability gives another history than fading from the start",
       h_ecrit is not None and h_gissmo is not None and read(h_ecrit) != read(h_gissmo))
+# LCSRS (card 3): the failure strain's factor against the plastic strain rate as `rate_scaling`
+# (a first rate < 0: logarithms, `log_rate_scaling`); LCSRS > 0 scales ECRIT too, < 0 not
+RATES = "*DEFINE_CURVE\n       905\n                 0.0                 0.5\n" \
+        "              1000.0                 2.0\n"
+LOG_RATES = "*DEFINE_CURVE\n       906\n                -5.0                 0.5\n" \
+            "                 7.0                 2.0\n"
+ECRIT_CARD = "       901    -903.0       2.0       0.0       2.0       902"
+ECRIT_CURVE = "*DEFINE_CURVE\n       903\n               -0.33               0.015\n" \
+              "                0.67               0.004\n"
+ECRIT_FADING = "{critical_strain: [[-0.33, 0.015], [0.67, 0.004]], exponent: 2"
+h_lcsrs = gissmo_twin("GISSMO LCSRS", "gissmo_lcsrs", GISSMO_CARD_2 + "\n       905", RATES,
+                      "{critical_damage: 0, exponent: 1}, rate_scaling: [[0, 0.5], [1000, 2]]")
+check("GISSMO LCSRS: the rate's factor changes the history",
+      h_lcsrs is not None and h_gissmo is not None and read(h_lcsrs) != read(h_gissmo))
+gissmo_twin("GISSMO LCSRS of logarithms", "gissmo_lcsrs_log", GISSMO_CARD_2 + "\n       906", LOG_RATES,
+            "{critical_damage: 0, exponent: 1}, log_rate_scaling: [[-5, 0.5], [7, 2]]")
+h_ecrit_scaled = gissmo_twin(
+    "GISSMO LCSRS > 0 with ECRIT", "gissmo_lcsrs_ecrit", ECRIT_CARD + "\n       905", ECRIT_CURVE + RATES,
+    ECRIT_FADING + "}, rate_scaling: [[0, 0.5], [1000, 2]]")
+h_ecrit_kept = gissmo_twin(
+    "GISSMO LCSRS < 0 with ECRIT", "gissmo_lcsrs_ecrit_kept", ECRIT_CARD + "\n      -905", ECRIT_CURVE + RATES,
+    ECRIT_FADING + ", rate_scaled: false}, rate_scaling: [[0, 0.5], [1000, 2]]")
+check("GISSMO LCSRS: its sign says whether it scales ECRIT (two histories)",
+      h_ecrit_scaled is not None and h_ecrit_kept is not None and read(h_ecrit_scaled) != read(h_ecrit_kept))
 for name, gissmo, message in (
         ("LCSDG not a curve", GISSMO.replace("       901       0.0", "       777       0.0"),
          "no *DEFINE_CURVE defines it"),

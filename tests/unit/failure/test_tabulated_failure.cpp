@@ -1,6 +1,7 @@
 // Damage on a failure strain tabulated against triaxiality, regularized by the element size
 // (failure/tabulated/, theory.md eq. 7.6-3): homogeneous paths erode at the table's failure
-// strain of their triaxiality, times the regularization factor of the elements' size.
+// strain of their triaxiality, times the regularization factor of the elements' size, times the
+// rate scaling's factor of their plastic strain rate.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -71,6 +72,35 @@ TEST(TabulatedFailure, TheRegularizationScalesTheFailureStrainByTheElementSize) 
     const auto [first, last] = erosion_strains(uniaxial, p);
     EXPECT_GT(first, 0.99 * 0.2 * 1.125);
     EXPECT_LT(last, 1.01 * 0.2 * 1.125);
+}
+
+TEST(TabulatedFailure, TheRateScalingScalesTheFailureStrainByThePlasticStrainRate) {
+    // GISSMO's LCSRS: the uniaxial path stretches at 1 /s (a constant velocity field, so the
+    // plastic strain rate falls from 1 to 0.77 /s by a strain of 0.3); a factor of 1.5 at rates
+    // above 0.5 /s puts its failure at 0.3, one of 1 below 5 /s leaves it at 0.2
+    const test::HomogeneousPath uniaxial = test::homogeneous_paths()[2];
+    TabulatedFailureParameters fast = table();
+    fast.rate_scaling = {{0.1, 1.0}, {0.5, 1.5}};
+    EXPECT_DOUBLE_EQ(TabulatedFailure(fast).rate_factor(0.3), 1.25);
+    EXPECT_DOUBLE_EQ(TabulatedFailure(fast).rate_factor(0.0), 1.0);  // held past the ends
+    const auto [first, last] = erosion_strains(uniaxial, fast);
+    EXPECT_GT(first, 0.99 * 0.2 * 1.5);
+    EXPECT_LT(last, 1.01 * 0.2 * 1.5);
+    TabulatedFailureParameters slow = table();
+    slow.rate_scaling = {{5.0, 1.0}, {10.0, 1.5}};
+    const auto [first_slow, last_slow] = erosion_strains(uniaxial, slow);
+    EXPECT_GT(first_slow, 0.99 * 0.2);
+    EXPECT_LT(last_slow, 1.01 * 0.2);
+    // the rates as logarithms (LS-DYNA's curve whose first rate is negative), interpolated
+    // linearly in ln rate: 1.25 at sqrt(0.1 x 0.5)
+    TabulatedFailureParameters log_fast = table();
+    log_fast.rate_scaling = {{std::log(0.1), 1.0}, {std::log(0.5), 1.5}};
+    log_fast.log_rates = true;
+    EXPECT_NEAR(TabulatedFailure(log_fast).rate_factor(std::sqrt(0.05)), 1.25, 1e-12);
+    EXPECT_DOUBLE_EQ(TabulatedFailure(log_fast).rate_factor(0.0), 1.0);  // ln 0: below them all
+    const auto [first_log, last_log] = erosion_strains(uniaxial, log_fast);
+    EXPECT_GT(first_log, 0.99 * 0.2 * 1.5);
+    EXPECT_LT(last_log, 1.01 * 0.2 * 1.5);
 }
 
 }  // namespace

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 
 #include "fpmshell/failure/damage_accumulation.hpp"
@@ -32,6 +33,14 @@ Real TabulatedFailure::failure_strain(Real eta, Real element_size) const {
     return interpolate(p_.failure_strain, eta) * factor;
 }
 
+Real TabulatedFailure::rate_factor(Real rate) const {
+    if (p_.rate_scaling.empty()) return 1.0;
+    // a rate of 0 (a point that does not flow) lies below every logarithm: the first factor
+    return interpolate(
+        p_.rate_scaling,
+        p_.log_rates ? (rate > 0 ? std::log(rate) : -std::numeric_limits<Real>::infinity()) : rate);
+}
+
 Real TabulatedFailure::damage(Real indicator) const { return std::pow(indicator, p_.exponent); }
 
 Real TabulatedFailure::fading(Real damage, Real critical_damage, Real element_size) const {
@@ -45,7 +54,7 @@ Real TabulatedFailure::fading(Real damage, Real critical_damage, Real element_si
 // (damage_accumulation), then with fading the instability measure (1 once unstable), D_c, the
 // fading w of the next step and the element's w of the last one. A point's numbers change only in a
 // step it flows in: judging twice changes nothing.
-bool TabulatedFailure::judge(const FailurePacks& in, Real /*dt*/, RealPack* state,
+bool TabulatedFailure::judge(const FailurePacks& in, Real dt, RealPack* state,
                              MaskOf<RealPack>* failed) const {
     return accumulate_damage(
         in, state, failed,
@@ -56,17 +65,19 @@ bool TabulatedFailure::judge(const FailurePacks& in, Real /*dt*/, RealPack* stat
             for (int l = 0; l < k_lanes; ++l) {
                 if (!lane(flowing, l)) continue;
                 const Real size = lane(in.element_size, l);
-                set_lane(eps, l, failure_strain(lane(eta, l), size));
+                // the point's plastic strain rate over the step (LCSRS's rate)
+                const Real rate = rate_factor(dt > 0 ? lane(d_alpha, l) / dt : Real(0));
+                set_lane(eps, l, failure_strain(lane(eta, l), size) * rate);
                 if (p_.fading)  // F after the step, as accumulate_damage will sum it
                     fade(state, in.m, j, l, lane(state[j], l) + lane(d_alpha, l) / lane(eps, l),
-                         lane(d_alpha, l), lane(eta, l), size);
+                         lane(d_alpha, l), lane(eta, l), size, rate);
             }
             return eps;
         });
 }
 
 void TabulatedFailure::fade(RealPack* state, std::size_t m, std::size_t j, int l, Real indicator,
-                            Real d_alpha, Real eta, Real element_size) const {
+                            Real d_alpha, Real eta, Real element_size, Real rate) const {
     const Fading& f = *p_.fading;
     RealPack *instability = state + 2 * m, *critical = state + 3 * m, *next = state + 4 * m;
     const Real D = damage(std::min(indicator, 1.0));
@@ -77,7 +88,8 @@ void TabulatedFailure::fade(RealPack* state, std::size_t m, std::size_t j, int l
             measure = D >= f.critical_damage ? 1.0 : 0.0;
             d_c = f.critical_damage;
         } else {
-            measure += d_alpha / interpolate(f.critical_strain, eta);
+            measure +=
+                d_alpha / (interpolate(f.critical_strain, eta) * (f.rate_scaled ? rate : Real(1)));
         }
         set_lane(instability[j], l, std::min(measure, 1.0));
         if (measure >= 1.0) set_lane(critical[j], l, d_c);
@@ -110,7 +122,7 @@ std::vector<std::pair<Real, Real>> read_points_or_constant(const YamlValue& v, c
 
 /// `fading: {critical_strain | critical_damage, exponent}`.
 TabulatedFailureParameters::Fading read_fading(const YamlValue& v) {
-    const YamlMap m = v.map({"critical_strain", "critical_damage", "exponent"});
+    const YamlMap m = v.map({"critical_strain", "critical_damage", "exponent", "rate_scaled"});
     TabulatedFailureParameters::Fading f;
     if (m.count({"critical_strain", "critical_damage"}) > 1)
         v.fail("takes critical_strain or critical_damage, not both");
@@ -123,13 +135,15 @@ TabulatedFailureParameters::Fading read_fading(const YamlValue& v) {
     }
     if (const auto e = m.find("exponent"))
         f.exponent = read_points_or_constant(*e, "[element size, fading exponent] points");
+    f.rate_scaled = m.choice_or("rate_scaled", {"true", "false"}, "true") == "true";
     return f;
 }
 
 /// `tabulated: {failure_strain: [[eta, eps_f], ...], regularization: [[size, factor], ...],
 /// exponent, fading: {...}}`.
 std::any read_tabulated(const YamlValue& v, const Material& /*material*/) {
-    const YamlMap m = v.map({"failure_strain", "regularization", "exponent", "fading"});
+    const YamlMap m = v.map({"failure_strain", "regularization", "exponent", "fading",
+                             "rate_scaling", "log_rate_scaling"});
     TabulatedFailureParameters p;
     p.failure_strain = read_points(m.at("failure_strain", "[[triaxiality, failure strain], ...]"),
                                    "[triaxiality, failure strain] points");
@@ -140,6 +154,14 @@ std::any read_tabulated(const YamlValue& v, const Material& /*material*/) {
         if (p.exponent < 1) n->fail("must be >= 1 (GISSMO's DMGEXP), got " + n->describe());
     }
     if (const auto f = m.find("fading")) p.fading = read_fading(*f);
+    if (m.count({"rate_scaling", "log_rate_scaling"}) > 1)
+        v.fail("takes rate_scaling or log_rate_scaling, not both");
+    if (const auto r = m.find("rate_scaling"))
+        p.rate_scaling = read_points(*r, "[plastic strain rate, factor] points");
+    if (const auto r = m.find("log_rate_scaling")) {
+        p.rate_scaling = read_points(*r, "[ln of the plastic strain rate, factor] points");
+        p.log_rates = true;
+    }
     return p;
 }
 
@@ -168,14 +190,22 @@ void mat_add_damage_gissmo(deck::FailureCard& card) {
         return;
     }
     const Real numfip = f.real(4, "NUMFIP", 1.0);
-    card.failure(tabulated_deck_failure(card, g, 0));
+    // LCSRS: the failure strain's factor against the plastic strain rate (a first rate < 0: the
+    // rates are logarithms); > 0 scales ECRIT too, < 0 not
+    std::string rate;
+    const long long lcsrs = h.id(0, "LCSRS");
+    if (lcsrs != 0) {
+        const long long id = lcsrs < 0 ? -lcsrs : lcsrs;
+        rate = (card.curve_first_abscissa(h, id, "LCSRS") < 0 ? ", log_rate_scaling: "
+                                                              : ", rate_scaling: ") +
+               card.curve_points(h, id, "LCSRS");
+    }
+    card.failure(tabulated_deck_failure(card, g, 0, rate, lcsrs >= 0));
     if (numfip > 0) card.failure_points(static_cast<long long>(std::llround(numfip)));
     if (numfip < 0) card.failure_layers(f, 4, "NUMFIP");  // a percentage of the layers
-    for (std::size_t k = 0; k < 8; ++k)
-        if (h.real(k, "LCSRS, SHRF, BIAXF, LCDLIM, MIDFAIL, HISVN, SOFT, LP2BI") != 0) {
-            card.note(h,
-                      "LCSRS, SHRF, BIAXF, LCDLIM, MIDFAIL, HISVN, SOFT, LP2BI ignored (not "
-                      "modelled)");
+    for (std::size_t k = 1; k < 8; ++k)
+        if (h.real(k, "SHRF, BIAXF, LCDLIM, MIDFAIL, HISVN, SOFT, LP2BI") != 0) {
+            card.note(h, "SHRF, BIAXF, LCDLIM, MIDFAIL, HISVN, SOFT, LP2BI ignored (not modelled)");
             break;
         }
 }
@@ -185,7 +215,8 @@ void mat_add_damage_gissmo(deck::FailureCard& card) {
 // LS-DYNA couples the damage to the stress in every GISSMO: ECRIT 0 takes the instability at
 // D = DCRIT (blank: 0, coupled from the start), FADEXP blank is 1.
 std::string tabulated_deck_failure(deck::FailureCard& card, const deck::Card& c,
-                                   std::size_t lcsdg_at) {
+                                   std::size_t lcsdg_at, const std::string& rate,
+                                   bool critical_rate_scaled) {
     const std::size_t ecrit_at = lcsdg_at + 1, dmgexp_at = lcsdg_at + 2, dcrit_at = lcsdg_at + 3,
                       fadexp_at = lcsdg_at + 4, lcregd_at = lcsdg_at + 5;
     const long long lcsdg = c.id(lcsdg_at, "LCSDG");
@@ -198,6 +229,7 @@ std::string tabulated_deck_failure(deck::FailureCard& card, const deck::Card& c,
         if (lcregd < 0) c.fail("LCREGD < 0 (a table over triaxiality) is not supported");
         t += ", regularization: " + card.curve_points(c, lcregd, "LCREGD");
     }
+    t += rate;
     std::string fading = "fading: {";
     const Real ecrit = c.real(ecrit_at, "ECRIT");
     if (ecrit < 0) {
@@ -216,6 +248,7 @@ std::string tabulated_deck_failure(deck::FailureCard& card, const deck::Card& c,
                   card.curve_points(c, static_cast<long long>(std::llround(-fadexp)), "FADEXP");
     else
         fading += ", exponent: " + deck::num(fadexp == 0 ? 1.0 : fadexp);
+    if (!rate.empty() && !critical_rate_scaled) fading += ", rate_scaled: false";
     return t + ", " + fading + "}}";
 }
 

@@ -10,6 +10,9 @@
 // sum d alpha / eps_crit(eta) reaches 1 (or where D reaches DCRIT), the point carries
 // (1 - w) sigma, w = ((D - D_c) / (1 - D_c))^m; its state then also keeps that sum, D_c, and
 // the w of the next step and of the last (solver/shell_elements_erosion.cpp).
+// With `rate_scaling` (GISSMO's LCSRS) eps_f, and eps_crit unless told not to, are multiplied by
+// a factor of the point's plastic strain rate d alpha / dt (or of its logarithm), piecewise
+// linear and flat past its ends.
 #pragma once
 
 #include <optional>
@@ -26,6 +29,10 @@ struct TabulatedFailureParameters {
     std::vector<std::pair<Real, Real>> failure_strain;
     /// (element size, factor) points, sizes increasing, factors > 0; empty: 1
     std::vector<std::pair<Real, Real>> regularization;
+    /// (plastic strain rate, factor) points, or (ln of the rate, factor) with log_rates; rates
+    /// increasing, factors > 0; empty: 1
+    std::vector<std::pair<Real, Real>> rate_scaling;
+    bool log_rates = false;
     Real exponent = 1;  ///< n >= 1
     struct Fading {
         /// (eta, eps_crit) points; empty: the instability at D = critical_damage
@@ -33,6 +40,8 @@ struct TabulatedFailureParameters {
         Real critical_damage = 0;  ///< DCRIT, in [0, 1)
         /// m against the element size (one point: a constant m > 0)
         std::vector<std::pair<Real, Real>> exponent{{0.0, 1.0}};
+        /// whether rate_scaling's factor scales critical_strain too (GISSMO's LCSRS > 0)
+        bool rate_scaled = true;
     };
     std::optional<Fading> fading;
 };
@@ -49,6 +58,8 @@ public:
 
     /// eps_f(eta) r(size).
     [[nodiscard]] Real failure_strain(Real eta, Real element_size) const;
+    /// rate_scaling's factor at the plastic strain rate `rate` (1 without it).
+    [[nodiscard]] Real rate_factor(Real rate) const;
     /// The damage D = F^n of a point of indicator F.
     [[nodiscard]] Real damage(Real indicator) const;
     /// w of eq. 7.6-6 at damage D, D_c the damage at the instability, on an element of that size.
@@ -57,9 +68,10 @@ public:
 private:
     using Fading = TabulatedFailureParameters::Fading;
     /// eq. 7.6-6 on lane l of pack j (state: state_fields() x m packs) whose indicator after the
-    /// step is `indicator`, of a step of plastic strain d_alpha at triaxiality eta.
+    /// step is `indicator`, of a step of plastic strain d_alpha at triaxiality eta and of
+    /// rate_factor `rate`.
     void fade(RealPack* state, std::size_t m, std::size_t j, int l, Real indicator, Real d_alpha,
-              Real eta, Real element_size) const;
+              Real eta, Real element_size, Real rate) const;
 
     TabulatedFailureParameters p_;
 };
@@ -71,8 +83,10 @@ class Card;
 }
 /// The `tabulated: {...}` of a GISSMO card c whose fields LCSDG, ECRIT, DMGEXP, DCRIT, FADEXP,
 /// LCREGD start at lcsdg_at (*MAT_ADD_DAMAGE_GISSMO's card 2; *MAT_ADD_EROSION's card 3 with
-/// IDAM 1).
+/// IDAM 1); rate: its rate_scaling key (", rate_scaling: ..." or ""), critical_rate_scaled:
+/// whether it scales the critical strain too.
 [[nodiscard]] std::string tabulated_deck_failure(deck::FailureCard& card, const deck::Card& c,
-                                                 std::size_t lcsdg_at);
+                                                 std::size_t lcsdg_at, const std::string& rate = "",
+                                                 bool critical_rate_scaled = true);
 
 }  // namespace fpmshell

@@ -38,6 +38,13 @@ void FailureCard::failure_layers(const Card& c, std::size_t k, const char* name)
     material_->failure_points = "layer_fraction: " + num(percent / 100);
 }
 
+Real FailureCard::curve_first_abscissa(const Card& c, long long id, const char* name) const {
+    const std::vector<Point2>* points = translator_.curve_points(id);
+    if (!points || points->empty())
+        c.fail(std::string(name) + " " + std::to_string(id) + ": no *DEFINE_CURVE defines it");
+    return points->front().x;
+}
+
 std::string FailureCard::curve_points(const Card& c, long long id, const char* name) const {
     const std::vector<Point2>* points = translator_.curve_points(id);
     if (!points)

@@ -34,6 +34,8 @@ public:
     void failure_layers(const Card& c, std::size_t k, const char* name);
     /// `[[x, y], ...]` of the *DEFINE_CURVE `id` (field `name` of card c; refused where none).
     [[nodiscard]] std::string curve_points(const Card& c, long long id, const char* name) const;
+    /// The first x of that *DEFINE_CURVE (refused where none).
+    [[nodiscard]] Real curve_first_abscissa(const Card& c, long long id, const char* name) const;
 
 private:
     DeckTranslator& translator_;
