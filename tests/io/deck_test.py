@@ -554,6 +554,45 @@ for name, card, message in (
     check(f"MAT_ADD_EROSION: {name} refused with exit 2 and one sentence",
           r.returncode == 2 and r.stderr.count("error:") == 1 and message in r.stderr, r.stderr)
 
+# ---- *MAT_TABULATED_JOHNSON_COOK (224): strip_pull.k's flow table as LCK1, its failure strain
+# against triaxiality (LCF) times factors of the plastic strain rate (LCG) and the element size
+# (LCI), against the twin's tabulated law with failure: {tabulated: {failure_strain,
+# rate_scaling, regularization}} (theory.md eq. 7.6-3); NUMINT -50 as layer_fraction 0.5
+MAT_224_CURVES = ("*DEFINE_CURVE\n       907\n               -0.33                0.03\n"
+                  "                0.33                0.01\n                0.67               0.008\n"
+                  "*DEFINE_CURVE\n       908\n                 0.0                 0.8\n"
+                  "               100.0                 1.2\n"
+                  "*DEFINE_CURVE\n       909\n               0.001                 1.2\n"
+                  "                0.01                 0.8\n")
+
+
+def mat_224(numint, lckt="0"):
+    return ("*MAT_TABULATED_JOHNSON_COOK\n"
+            "$#     mid        ro         e        pr        cp        tr      beta    numint\n"
+            "         1    7850.0   2.1e+11       0.3     452.0     293.0       0.9%10s\n" % numint +
+            "$#    lck1      lckt       lcf       lcg       lch       lci\n"
+            "         5%10s       907       908         0       909\n" % lckt)
+
+
+MAT_024_CARD = strip_deck[strip_deck.index("*MAT_PIECEWISE_LINEAR_PLASTICITY"):strip_deck.index("*DEFINE_TABLE")]
+TWIN_224 = ("    failure: {tabulated: {failure_strain: [[-0.33, 0.03], [0.33, 0.01], [0.67, 0.008]], "
+            "rate_scaling: [[0, 0.8], [100, 1.2]], regularization: [[0.001, 1.2], [0.01, 0.8]]}, %s}\n")
+for name, numint, erode_key in (("MAT_224", "1.0", "points: 1"), ("MAT_224 NUMINT < 0", "-50.0", "layer_fraction: 0.5")):
+    h_224 = deck_against_twin(
+        name, os.path.join(WORK, name.replace(" ", "_").replace("<", "lt")), os.path.join(STRIP, "strip_pull_mesh.k"),
+        strip_deck.replace(MAT_024_CARD, mat_224(numint)).replace("*END\n", MAT_224_CURVES + "*END\n"),
+        strip_twin.replace("    poisson_ratio: 0.3\n    flow_curves:",
+                           "    poisson_ratio: 0.3\n" + TWIN_224 % erode_key + "    flow_curves:"))
+    check_erodes(name + ": the strip's elements erode", h_224)
+for name, text, message in (
+        ("LCKT", strip_deck.replace(MAT_024_CARD, mat_224("1.0", "11")), "LCKT (flow curves per temperature)"),
+        ("LCF a table", strip_deck.replace(MAT_024_CARD, mat_224("1.0").replace("       907", "         5")),
+         "LCF 5: a table")):
+    folder = write_case("mat224_bad", text.replace("*END\n", MAT_224_CURVES + "*END\n"), os.path.join(STRIP, "strip_pull_mesh.k"))
+    r = subprocess.run([FPM, "check", os.path.join(folder, "model.k")], capture_output=True, text=True)
+    check(f"MAT_224: {name} refused with exit 2 and one sentence",
+          r.returncode == 2 and r.stderr.count("error:") == 1 and message in r.stderr, r.stderr)
+
 # ---- *MAT_PLASTICITY_WITH_DAMAGE (081): strip_pull.k's steel softened by damage from a plastic
 # strain of 1 % (EPPF) to 3 % (EPPFR), eroding there (NUMINT 1), against the twin with
 # type: plastic_damage (theory.md eq. 7.6-4)

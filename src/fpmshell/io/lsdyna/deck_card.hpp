@@ -84,6 +84,14 @@ inline std::string vec(Real x, Real y, Real z) {
     return fmt::format("[{}, {}, {}]", x, y, z);  // each as num() writes it
 }
 
+/// A negative NUMFIP or NUMINT (field k of c, `name`), -value per cent of the layers through the
+/// thickness that erode a shell, as `layer_fraction: f` (below -100 refused).
+inline std::string layer_fraction_key(const Card& c, std::size_t k, const char* name) {
+    const Real percent = -c.real(k, name);
+    if (percent > 100) c.fail(std::string(name) + " must be at least -100 (every layer)");
+    return "layer_fraction: " + num(percent / 100);
+}
+
 /// A YAML scalar for a name: plain when it is a word, else double-quoted.
 inline std::string yaml_name(const std::string& s) {
     const bool plain = !s.empty() &&

@@ -33,9 +33,7 @@ void FailureCard::failure_points(long long points) {
 }
 
 void FailureCard::failure_layers(const Card& c, std::size_t k, const char* name) {
-    const Real percent = -c.real(k, name);
-    if (percent > 100) c.fail(std::string(name) + " must be at least -100 (every layer)");
-    material_->failure_points = "layer_fraction: " + num(percent / 100);
+    material_->failure_points = layer_fraction_key(c, k, name);
 }
 
 Real FailureCard::curve_first_abscissa(const Card& c, long long id, const char* name) const {

@@ -56,6 +56,16 @@ void MaterialCard::failure_points(long long points) {
     material_.failure_points = "points: " + std::to_string(points);
 }
 
+void MaterialCard::failure_layers(const Card& c, std::size_t k, const char* name) {
+    material_.failure_points = layer_fraction_key(c, k, name);
+}
+
+void MaterialCard::failure_curves(long long lcf, long long lcg, long long lci) {
+    material_.failure_curve = lcf;
+    material_.failure_rate_curve = lcg;
+    material_.failure_size_curve = lci;
+}
+
 void MaterialCard::flow_curve_id(long long lcss) { material_.lcss = lcss; }
 
 void MaterialCard::rate_curve_id(long long lcsr) { material_.lcsr = lcsr; }

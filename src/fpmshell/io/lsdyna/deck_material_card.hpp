@@ -45,6 +45,11 @@ public:
     /// failed points that erode an element (> 0).
     void failure(const std::string& criterion);
     void failure_points(long long points);
+    /// A negative NUMINT (field k of c, `name`): -NUMINT per cent of the layers through the
+    /// thickness erode an element (`layer_fraction`; below -100 refused).
+    void failure_layers(const Card& c, std::size_t k, const char* name);
+    /// *MAT_224's LCF, LCG, LCI: its failure written from the deck's curves once they are known.
+    void failure_curves(long long lcf, long long lcg, long long lci);
     /// The curve or table of the flow stress (*MAT_024 LCSS): written with the material once the
     /// deck's curves are known.
     void flow_curve_id(long long lcss);

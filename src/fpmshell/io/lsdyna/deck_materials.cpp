@@ -212,9 +212,11 @@ void DeckTranslator::write_materials(std::vector<Line>& out) {
             const std::string scaling = rate_scaling(m);
             if (!scaling.empty()) keys += ", " + scaling;
         }
-        if (!m.failure.empty()) {  // every criterion of its card and of *MAT_ADD_... cards
+        std::vector<std::string> failure = m.failure;
+        if (const std::string t = failure_curves(m); !t.empty()) failure.push_back(t);
+        if (!failure.empty()) {  // every criterion of its card and of *MAT_ADD_... cards
             std::string f;
-            for (const std::string& c : m.failure) f += (f.empty() ? "" : ", ") + c;
+            for (const std::string& c : failure) f += (f.empty() ? "" : ", ") + c;
             if (!m.failure_points.empty()) f += ", " + m.failure_points;
             keys += ", failure: {" + f + "}";
         }
@@ -259,6 +261,36 @@ std::string DeckTranslator::rate_scaling(const MaterialDef& m) {
     if (c == curves_.end())
         deck_fail(b, m.at.line, "LCSR " + std::to_string(m.lcsr) + ": no *DEFINE_CURVE defines it");
     return "rate_scaling: " + points_text(c->second.points);
+}
+
+/// *MAT_224's LCF, LCG, LCI (theory.md eq. 7.6-3): eps_f = f(eta) g(rate) i(size), a criterion
+/// `tabulated` of exponent 1 (D = sum d alpha / eps_f, as MAT_224's); without LCF the failure
+/// strain is the product of the others (LCI then the failure strain against the size).
+std::string DeckTranslator::failure_curves(const MaterialDef& m) {
+    if (m.failure_curve == 0 && m.failure_rate_curve == 0 && m.failure_size_curve == 0) return "";
+    const DeckBlock& b = *m.at.block;
+    const auto points = [&](long long id, const char* name) -> const std::vector<Point2>& {
+        const auto c = curves_.find(id);
+        if (c == curves_.end())
+            deck_fail(b, m.at.line,
+                      std::string(name) + " " + std::to_string(id) +
+                          (tables_.count(id) ? ": a table (over the Lode angle, or the "
+                                               "triaxiality) is not supported; give a curve"
+                                             : ": no *DEFINE_CURVE defines it"));
+        return c->second.points;
+    };
+    std::string t = "tabulated: {failure_strain: ";
+    t += m.failure_curve != 0 ? points_text(points(m.failure_curve, "LCF")) : "[[0, 1]]";
+    if (m.failure_rate_curve != 0) {
+        const std::vector<Point2>& g = points(m.failure_rate_curve, "LCG");
+        // a first rate < 0: the rates are their logarithms (as LS-DYNA reads LCG)
+        t += std::string(!g.empty() && g.front().x < 0 ? ", log_rate_scaling: "
+                                                       : ", rate_scaling: ") +
+             points_text(g);
+    }
+    if (m.failure_size_curve != 0)
+        t += ", regularization: " + points_text(points(m.failure_size_curve, "LCI"));
+    return t + "}";
 }
 
 void DeckTranslator::write_curves(std::vector<Line>& out) {

@@ -58,6 +58,9 @@ struct MaterialDef {
     /// 3", "layer_fraction: 0.5", "" for the default), written as one `failure` key
     std::vector<std::string> failure{};
     std::string failure_points{};
+    /// *MAT_224: the curves of its failure strain against triaxiality (LCF), its factors against
+    /// the plastic strain rate (LCG) and the element size (LCI); 0 none
+    long long failure_curve = 0, failure_rate_curve = 0, failure_size_curve = 0;
 };
 
 struct SectionDef {
@@ -233,6 +236,8 @@ public:
     /// The flow curve (or the curves per rate) of a *MAT_024's LCSS.
     std::string rate_scaling(const MaterialDef& m);
     std::string flow_curves(const MaterialDef& m);
+    /// *MAT_224's failure curves as a `tabulated: {...}` criterion ("" for none).
+    std::string failure_curves(const MaterialDef& m);
     void write_sections(std::vector<Line>& out);
     std::string thickness_rule_keys(const SectionDef& s, const MaterialDef& m, long long pid);
     void write_curves(std::vector<Line>& out);

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cmath>
 #include <string>
 #include <utility>
 
@@ -203,6 +204,47 @@ void mat_modified_piecewise_linear(deck::MaterialCard& card) {
     if (numint > 0) card.failure_points(numint);
 }
 
+/// *MAT_TABULATED_JOHNSON_COOK (224): MID, RO, E, PR, CP, TR, BETA, NUMINT; LCK1, LCKT, LCF,
+/// LCG, LCH, LCI; FAILOPT, NUMAVG, NCYFAIL, ERODE, LCPS. The flow stress of LCK1 (a curve, or a
+/// table of curves per strain rate) as *MAT_024's LCSS; its failure strain f(eta) g(rate) i(size)
+/// (LCF, LCG, LCI) as `failure: {tabulated}` (theory.md eq. 7.6-3), NUMINT > 0 as `points`,
+/// < 0 as `layer_fraction`. Its temperature terms (LCKT, LCH) are refused; without them the
+/// adiabatic heating (CP, TR, BETA) changes nothing.
+void mat_tabulated_johnson_cook(deck::MaterialCard& card) {
+    const deck::Card f = card.required(0, "MID, RO, E, PR, CP, TR, BETA, NUMINT");
+    const deck::Card g = card.required(1, "LCK1, LCKT, LCF, LCG, LCH, LCI");
+    const deck::Card h = card.optional(2);
+    card.id(f);
+    card.plastic();
+    const long long lck1 = g.id(0, "LCK1");
+    if (lck1 <= 0) g.fail("LCK1 must be the *DEFINE_CURVE or *DEFINE_TABLE of the flow stress");
+    if (g.id(1, "LCKT") != 0)
+        g.fail("LCKT (flow curves per temperature) is not supported: give LCKT 0");
+    if (g.id(4, "LCH") != 0)
+        g.fail("LCH (the failure strain against temperature) is not supported: give LCH 0");
+    if (g.id(6, "BFLGI") != 0) g.fail("BFLGI is not supported (0 only)");
+    if (h.id(0, "FAILOPT") != 0) h.fail("FAILOPT is not supported (0 only)");
+    if (h.id(3, "ERODE") != 0) h.fail("ERODE is not supported (0: failed elements erode)");
+    if (h.id(4, "LCPS") != 0) h.fail("LCPS is not supported (0 only)");
+    if (const long long numavg = h.id(1, "NUMAVG"), ncyfail = h.id(2, "NCYFAIL");
+        numavg > 1 || ncyfail > 1)
+        card.note(h, "NUMAVG, NCYFAIL ignored: the rate and the failure are those of each step");
+    card.note(f,
+              "CP, TR, BETA ignored: without LCKT and LCH the temperature changes nothing; the "
+              "curves per rate are interpolated in the filtered strain rate (LS-DYNA's: the "
+              "plastic strain rate)");
+    card.key("type: tabulated");
+    card.elastic(f, f.real(2, "E"), f.real(3, "PR"));
+    card.flow_curve_id(lck1);
+    const long long lcf = g.id(2, "LCF"), lcg = g.id(3, "LCG"), lci = g.id(5, "LCI");
+    if (lcf < 0 || lcg < 0 || lci < 0) g.fail("LCF, LCG and LCI must be curve IDs (> 0) or 0");
+    if (lcf == 0 && lcg == 0 && lci == 0) return;  // no failure
+    card.failure_curves(lcf, lcg, lci);
+    const Real numint = f.real(7, "NUMINT", 1.0);
+    if (numint > 0) card.failure_points(static_cast<long long>(std::llround(numint)));
+    if (numint < 0) card.failure_layers(f, 7, "NUMINT");  // a percentage of the layers
+}
+
 /// *MAT_TRANSVERSELY_ANISOTROPIC_ELASTIC_PLASTIC: MID, RO, E, PR, SIGY, ETAN, R, HLCID;
 /// IDSCALE, EA, COE, ICFLD, STRAINLT. Hill's normal anisotropy R (theory.md eq. 7.1-3) on a
 /// bilinear curve (SIGY, ETAN) or the flow curve HLCID.
@@ -269,6 +311,7 @@ MaterialLaw tabulated_law() {
         make_j2_group,
         {{{"MAT_PIECEWISE_LINEAR_PLASTICITY", "MAT_024"}, mat_piecewise_linear},
          {{"MAT_MODIFIED_PIECEWISE_LINEAR_PLASTICITY", "MAT_123"}, mat_modified_piecewise_linear},
+         {{"MAT_TABULATED_JOHNSON_COOK", "MAT_224"}, mat_tabulated_johnson_cook},
          {{"MAT_TRANSVERSELY_ANISOTROPIC_ELASTIC_PLASTIC", "MAT_037"},
           mat_transversely_anisotropic}}};
 }
