@@ -201,6 +201,35 @@ fpmshell("convert", path, "-o", converted)
 check("nodes to surface with a node set: converted as `nodes` of the self-contact",
       os.path.exists(converted) and "{type: self, elements: part_2, nodes: node_set_1}" in read(converted),
       read(converted) if os.path.exists(converted) else "no file")
+# ICOMP 1: a material angle per point (a third card), which isotropic laws do not need: noted
+SECTION = "*SECTION_SHELL\n         1         2         0         2\n      0.01\n"
+assert SECTION in BASE
+angled = BASE.replace(SECTION, "*SECTION_SHELL\n         1         2       0.0         2       0.0         0"
+                      "         1\n      0.01\n       0.0      45.0\n")
+path, r = deck_case("angles", "", base=angled)
+check("ICOMP 1: the angles noted as changing nothing", r.returncode == 0 and "ICOMP 1" in r.stdout,
+      r.stdout + r.stderr)
+path, r = deck_case("angles 2", "", base=angled.replace("         0         1\n      0.01",
+                                                         "         0         2\n      0.01"))
+check("ICOMP 2: refused", r.returncode == 2 and "ICOMP must be 0 or 1" in r.stderr, r.stderr)
+
+# a segment set as a side (SSTYP 0): the shells its segments cover
+path, r = deck_case("segment side", "*CONTACT_ERODING_SURFACE_TO_SURFACE\n"
+                    "         1         1         0         3\n\n\n         0         1         0\n"
+                    "*SET_SEGMENT\n         1\n         2         4         3         3\n", base=two_parts)
+check("a segment set as a contact's side: the shells it covers, with the other side",
+      r.returncode == 0 and "contact self over 2 elements" in r.stdout, r.stdout + r.stderr)
+converted = os.path.join(os.path.dirname(path), "converted.yaml")
+fpmshell("convert", path, "-o", converted)
+check("a segment set as a contact's side: converted as the element set of its shells",
+      os.path.exists(converted) and "contact_segments_1: {element_ids: [2]}" in read(converted)
+      and "elements: [contact_segments_1, part_1]" in read(converted),
+      read(converted) if os.path.exists(converted) else "no file")
+path, r = deck_case("segment side of no shell", "*CONTACT_AUTOMATIC_SINGLE_SURFACE\n"
+                    "         1         0         0\n*SET_SEGMENT\n         1\n"
+                    "         1         2         4         4\n", base=two_parts)
+check("a contact's segment that covers no shell: refused naming the segment",
+      r.returncode == 2 and "no shell element has the nodes of this segment" in r.stderr, r.stderr)
 path, r = deck_case("surface to surface of a node set", "*CONTACT_AUTOMATIC_SURFACE_TO_SURFACE\n"
                     "         1         2         4         3\n"
                     "*SET_NODE_LIST\n         1\n         1         2         3\n", base=two_parts)

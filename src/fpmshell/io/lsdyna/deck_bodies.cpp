@@ -489,12 +489,17 @@ void DeckTranslator::tied_contact(const DeckBlock& b) {
 std::string DeckTranslator::contact_side(const Card& f, long long sid, long long typ,
                                          const char* name) {
     if (typ == 5 || sid == 0) return "all";
+    if (typ == 0) {  // a segment set: the shells its segments cover (write_segment_loads)
+        const std::string group = "contact_segments_" + std::to_string(sid);
+        segment_sides_.push_back({group, sid, {&f.block(), f.line()}});
+        return group;
+    }
     if (typ == 1) return set_name(f, "shell", sid);
     if (typ == 2) return set_name(f, "part", sid);
     if (typ == 3) return "part_" + std::to_string(sid);
     f.fail(std::string(name) + " " + std::to_string(typ) +
-           " is not supported: 1 (shell set), 2 (part set), 3 (part) or 5 (all), and 4 (node "
-           "set) for the slave side of a nodes-to-surface contact");
+           " is not supported: 0 (segment set), 1 (shell set), 2 (part set), 3 (part) or 5 (all), "
+           "and 4 (node set) for the slave side of a nodes-to-surface contact");
 }
 
 void DeckTranslator::write_walls(std::vector<Line>& out) {

@@ -132,26 +132,49 @@ Segment DeckTranslator::segment(const Card& f, std::size_t first, const DeckBloc
 
 /// The element sets and pressures of the segment loads: each segment's shell (the one with
 /// its nodes), in a set of the shells whose normal the segment's node order follows and one
-/// (`<name>_reversed`, the pressure negated) of those it opposes.
+/// (`<name>_reversed`, the pressure negated) of those it opposes. The contacts' segment sets:
+/// the set of the shells their segments cover.
 void DeckTranslator::write_segment_loads() {
-    if (segment_loads_.empty()) return;
+    if (segment_loads_.empty() && segment_sides_.empty()) return;
     std::vector<std::pair<std::array<long long, 4>, std::size_t>> by_nodes;
     by_nodes.reserve(shells_.size());
     for (std::size_t k = 0; k < shells_.size(); ++k)
         by_nodes.emplace_back(node_key(shells_[k].nodes), k);
     std::sort(by_nodes.begin(), by_nodes.end());
+    const auto shell_of = [&](const Segment& seg, const char* what) -> const Shell& {
+        const auto key = node_key(seg.nodes);
+        const auto it =
+            std::lower_bound(by_nodes.begin(), by_nodes.end(), std::make_pair(key, std::size_t{0}));
+        if (it == by_nodes.end() || it->first != key)
+            deck_fail(
+                *seg.at.block, seg.at.line,
+                std::string("no shell element has the nodes of this segment; fpmshell ") + what);
+        return shells_[it->second];
+    };
+    for (const SegmentSide& side : segment_sides_) {
+        const auto& names = set_names_["segment"];
+        const auto name = names.find(side.set_id);
+        if (name == names.end())
+            deck_fail(*side.at.block, side.at.line,
+                      "no *SET_SEGMENT defines set " + std::to_string(side.set_id) +
+                          " anywhere in the deck");
+        auto& group = element_groups_[side.group];
+        if (!group.ids.empty()) continue;  // (the same set on another contact)
+        group.at = side.at;
+        for (const Segment& seg : segment_sets_.at(name->second)) {
+            const long long id = shell_of(seg, "takes the segments of its shells in contact").id;
+            if (std::find(group.ids.begin(), group.ids.end(), id) == group.ids.end())
+                group.ids.push_back(id);
+        }
+        if (group.ids.empty())
+            deck_fail(*side.at.block, side.at.line,
+                      "segment set " + std::to_string(side.set_id) + " lists no segment");
+    }
     std::map<std::size_t, std::vector<Line>> pressures;  // by the slot of their card
     for (const SegmentLoad& load : segment_loads_) {
         std::vector<long long> aligned, reversed;
         for (const Segment& seg : load.segments) {
-            const auto key = node_key(seg.nodes);
-            const auto it = std::lower_bound(by_nodes.begin(), by_nodes.end(),
-                                             std::make_pair(key, std::size_t{0}));
-            if (it == by_nodes.end() || it->first != key)
-                deck_fail(*seg.at.block, seg.at.line,
-                          "no shell element has the nodes of this segment; fpmshell loads "
-                          "segments of its shells");
-            const Shell& shell = shells_[it->second];
+            const Shell& shell = shell_of(seg, "loads segments of its shells");
             (same_order(shell.nodes, seg.nodes) ? aligned : reversed).push_back(shell.id);
         }
         for (const bool flip : {false, true}) {

@@ -20,7 +20,14 @@ void DeckTranslator::section_shell(const DeckBlock& b) {
     long long nip = f.id(3, "NIP", 2);
     if (nip == 0) nip = 2;  // LS-DYNA's default
     const long long qr = f.id(5, "QR/IRID");
-    if (f.id(6, "ICOMP") != 0) f.fail("ICOMP = 1 (composite layers) is not supported");
+    // ICOMP 1: a material angle per point (the cards after the second, not read): every law of
+    // fpmshell is isotropic in the plane of the shell, so the angles change nothing
+    const long long icomp = f.id(6, "ICOMP");
+    if (icomp != 0 && icomp != 1) f.fail("ICOMP must be 0 or 1");
+    if (icomp == 1)
+        note(b, f.line(),
+             "ICOMP 1: the points' material angles ignored (fpmshell's materials are isotropic in "
+             "the plane of the shell, so the angles change nothing)");
     if (qr > 0)
         f.fail("QR " + std::to_string(qr) +
                ": the trapezoidal rule is not supported (QR 0: Gauss or Lobatto, QR < 0: a "

@@ -366,6 +366,14 @@ private:
     };
     std::vector<Shell> shells_;  // every shell's number and nodes (for segments)
     std::map<std::string, std::vector<Segment>> segment_sets_;
+    /// A contact's side given as a segment set (SSTYP or MSTYP 0): the element group `group`
+    /// of the shells its segments cover, filled once every card is read.
+    struct SegmentSide {
+        std::string group;
+        long long set_id = 0;
+        Origin at;
+    };
+    std::vector<SegmentSide> segment_sides_;
     std::vector<SegmentLoad> segment_loads_;
     /// *LOAD_BODY_X, _Y, _Z: its place among the loads (filled by write_body_loads) and text
     /// without the parts; *LOAD_BODY_PARTS: the part set's name and card
