@@ -213,6 +213,12 @@ path, r = deck_case("angles 2", "", base=angled.replace("         0         1\n 
                                                          "         0         2\n      0.01"))
 check("ICOMP 2: refused", r.returncode == 2 and "ICOMP must be 0 or 1" in r.stderr, r.stderr)
 
+# *CONTROL_SHELL NFAIL1 1 (LS-DYNA deletes distorted quadrilaterals): a note of what fpmshell does
+path, r = deck_case("nfail", "*CONTROL_SHELL\n        20         0        -1         0\n"
+                    "       0.0         0         0         0         0         1         1\n")
+check("*CONTROL_SHELL NFAIL1: noted as not read, saying what happens instead",
+      r.returncode == 0 and "NFAIL1, NFAIL4 not read" in r.stdout, r.stdout + r.stderr)
+
 # a segment set as a side (SSTYP 0): the shells its segments cover
 path, r = deck_case("segment side", "*CONTACT_ERODING_SURFACE_TO_SURFACE\n"
                     "         1         1         0         3\n\n\n         0         1         0\n"

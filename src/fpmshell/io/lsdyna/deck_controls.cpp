@@ -63,6 +63,13 @@ void DeckTranslator::control(const DeckBlock& b) {
             const long long intgrd = g.id(1, "INTGRD");
             if (intgrd != 0 && intgrd != 1) g.fail("INTGRD must be 0 (Gauss) or 1 (Lobatto)");
             if (intgrd == 1) lobatto_shells_ = Origin{&b, g.line()};
+            // NFAIL1, NFAIL4 > 0: LS-DYNA deletes (1) or stops at (2) badly distorted shells
+            if (g.id(5, "NFAIL1") > 0 || g.id(6, "NFAIL4") > 0)
+                note(b, g.line(),
+                     "NFAIL1, NFAIL4 not read: LS-DYNA's check of badly distorted quadrilaterals; "
+                     "fpmshell's triangles have no such distortion, and a run stops (exit 1, "
+                     "naming the element) at a degenerate one, or one turned over within a "
+                     "step, instead of deleting it (theory.md §2.8)");
         }
         note(b, f.line(),
              "only ISTUPD and INTGRD are read (fpmshell's element has no other options here)");
