@@ -524,6 +524,22 @@ h_layers = deck_against_twin(
                        "    poisson_ratio: 0.3\n    failure: {thresholds: {max_effective_strain: 0.02}, "
                        "layer_fraction: 0.5}\n    flow_curves:"))
 check_erodes("MAT_ADD_EROSION NUMFIP < 0: the strip's elements erode", h_layers)
+# card 4's EPSTHIN (each point's thinning) as thinning_strain; card 5's DTMIN as the material's
+# minimum_time_step (its steps fall from 5.87e-7 to 5.82e-7 as the strip is drawn)
+NO_EFFEPS = EROSION.replace("      0.02       0.0       1.0", "       0.0       0.0       1.0")
+CARD_3 = "$#    idam\n         0\n"
+for name, cards, twin_failure in (
+        ("EPSTHIN", CARD_3 + "$#   lcfld      nsff   epsthin\n         0        10     0.004\n",
+         "{thresholds: {thinning_strain: 0.004}, points: 1}"),
+        ("DTMIN", CARD_3 + "         0        10       0.0\n$#  dteflt   volfrac     mxtmp     dtmin\n"
+                  "       0.0       0.0       0.0   5.85e-7\n", "{minimum_time_step: 5.85e-7}")):
+    h_card = deck_against_twin(
+        "MAT_ADD_EROSION " + name, os.path.join(WORK, "add_erosion_" + name.lower()),
+        os.path.join(STRIP, "strip_pull_mesh.k"),
+        strip_deck.replace("*END\n", NO_EFFEPS + cards + "*END\n"),
+        strip_twin.replace("    poisson_ratio: 0.3\n    flow_curves:",
+                           "    poisson_ratio: 0.3\n    failure: " + twin_failure + "\n    flow_curves:"))
+    check_erodes("MAT_ADD_EROSION " + name + ": the strip's elements erode", h_card)
 
 
 
@@ -543,6 +559,9 @@ for name, card, message in (
         ("a forming limit", EROSION + "         0         0         0\n" + "       901\n",
          "forming limits"),
         ("IDAM 2", EROSION + "         2\n", "IDAM 2 is not supported"),
+        ("EPSTHIN < 0", EROSION + "         0\n         0        10    -0.004\n", "EPSTHIN < 0"),
+        ("DTMIN < 0", EROSION + "         0\n         0        10       0.0\n       0.0       0.0       0.0    -1e-7\n",
+         "DTMIN < 0 is not supported"),
         ("NUMFIP below -100", EROSION.replace("      0.02       0.0       1.0", "      0.02       0.0    -150.0"),
          "NUMFIP must be at least -100"),
         ("SIGP1 a curve", EROSION.replace("       0.0       0.0       0.0       0.0       0.0       0.0       0.0       0.0\n",

@@ -140,10 +140,11 @@ std::unique_ptr<PointFailure> make_thresholds(const std::any& parameters,
 
 /// *MAT_ADD_EROSION: card 1: MID, EXCL, MXPRES, MNEPS, EFFEPS, VOLEPS, NUMFIP, NCS; card 2:
 /// MNPRES, SIGP1, SIGVM, MXEPS, EPSSH, SIGTH, IMPULSE, FAILTM; card 3: IDAM (1: GISSMO as R10 and
-/// before, with DMGTYP, LCSDG, ECRIT, DMGEXP, DCRIT, FADEXP, LCREGD), ... LCREGD; cards 4 to 6
-/// (forming limits, thinning, nonlocal and size-dependent strains, filters, temperature, time
-/// step, functions) refused where set. A value equal to EXCL is left out; MXPRES, MNEPS,
-/// EFFEPS, VOLEPS and FAILTM also at 0.
+/// before, with DMGTYP, LCSDG, ECRIT, DMGEXP, DCRIT, FADEXP, LCREGD), ... LCREGD; card 4: EPSTHIN
+/// > 0 as `thinning_strain`; card 5: DTMIN > 0 as the material's `minimum_time_step`; the rest
+/// of cards 4 to 6 (forming limits, nonlocal and size-dependent strains, filters, temperature,
+/// functions) refused where set. A value equal to EXCL is left out; MXPRES, MNEPS, EFFEPS,
+/// VOLEPS and FAILTM also at 0.
 void mat_add_erosion(deck::FailureCard& card) {
     const deck::Card f = card.required(0, "MID, EXCL, MXPRES, MNEPS, EFFEPS, VOLEPS, NUMFIP, NCS");
     const deck::Card g = card.optional(1);
@@ -184,6 +185,17 @@ void mat_add_erosion(deck::FailureCard& card) {
                 g, "FAILTM < 0: |FAILTM| taken (fpmshell has no dynamic relaxation phase to skip)");
         keys += ", time: " + deck::num(std::abs(t));
     }
+    // card 4's EPSTHIN: the thinning strain of each point (< 0, from the element's thickness
+    // change, refused)
+    const deck::Card thin = card.optional(3);
+    if (const Real v = thin.real(2, "EPSTHIN"); v != 0 && v != excl) {
+        if (v < 0)
+            thin.fail(
+                "EPSTHIN < 0 (the thinning averaged over the element's thickness) is not "
+                "supported; give EPSTHIN > 0 (each point's thinning)");
+        keys += ", thinning_strain: " + deck::num(v);
+        ++given;
+    }
     const Real ncs = f.real(7, "NCS", 1.0);
     if (ncs != 1 && given > 0) {
         if (ncs < 1 || ncs > given || ncs != std::round(ncs))
@@ -207,21 +219,32 @@ void mat_add_erosion(deck::FailureCard& card) {
                   "LCREGD without a damage model ignored (fpmshell regularizes GISSMO's "
                   "failure strain, IDAM 1)");
     }
+    // card 5's DTMIN: an element erodes once its step falls below it (as *MAT_024's TDEL)
+    const deck::Card filters = card.optional(4);
+    const Real dtmin = filters.real(3, "DTMIN");
+    if (dtmin < 0) filters.fail("DTMIN < 0 is not supported; give the minimum step (> 0)");
+    if (dtmin > 0) {
+        if (card.has_failure("minimum_time_step"))
+            filters.fail("DTMIN: the material's own card gives a minimum step (TDEL) already");
+        card.failure("minimum_time_step: " + deck::num(dtmin));
+    }
     for (std::size_t c = 3; c < 6; ++c) {
         const deck::Card more = card.optional(c);
         for (std::size_t k = 0; k < 8; ++k)
-            if (more.real(k, "LCFLD .. EDGER") != 0 && !(c == 3 && k == 1))  // NSFF has a default
+            // NSFF has a default; EPSTHIN and DTMIN are read above
+            if (more.real(k, "LCFLD .. EDGER") != 0 && !(c == 3 && (k == 1 || k == 2)) &&
+                !(c == 4 && k == 3))
                 more.fail(
-                    "the criteria of this card (forming limits, thinning, nonlocal, "
-                    "size-dependent strains, filters, temperature, time step, functions) "
-                    "are not supported; leave it blank");
+                    "the criteria of this card (forming limits, nonlocal, size-dependent "
+                    "strains, filters, temperature, functions) are not supported; leave them "
+                    "blank");
     }
     const Real numfip = f.real(6, "NUMFIP", 1.0);
     if (numfip > 0 && (!keys.empty() || idam == 1))
         card.failure_points(static_cast<long long>(std::llround(numfip)));
     if (numfip < 0 && (!keys.empty() || idam == 1))
         card.failure_layers(f, 6, "NUMFIP");  // a percentage of the layers
-    if (keys.empty() && idam == 0)
+    if (keys.empty() && idam == 0 && !(dtmin > 0))
         card.note(f, "no criterion is set (every value blank, 0 or EXCL): nothing erodes");
 }
 

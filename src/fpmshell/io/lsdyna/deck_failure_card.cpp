@@ -28,6 +28,12 @@ void FailureCard::material(const Card& c, std::size_t k) {
 
 void FailureCard::failure(const std::string& criterion) { material_->failure.push_back(criterion); }
 
+bool FailureCard::has_failure(const std::string& key) const {
+    for (const std::string& c : material_->failure)
+        if (c.rfind(key + ":", 0) == 0) return true;
+    return false;
+}
+
 void FailureCard::failure_points(long long points) {
     material_->failure_points = "points: " + std::to_string(points);
 }

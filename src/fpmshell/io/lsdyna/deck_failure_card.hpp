@@ -28,6 +28,8 @@ public:
     /// Adds a criterion "name: value" to the material's `failure`, and the failed points that
     /// erode an element.
     void failure(const std::string& criterion);
+    /// Whether the material's `failure` has the key already (from its own card or another).
+    [[nodiscard]] bool has_failure(const std::string& key) const;
     void failure_points(long long points);
     /// NUMFIP < 0 in field k of card c (`name`): -NUMFIP per cent of the layers through the
     /// thickness erode an element (`layer_fraction`; below -100 refused).
