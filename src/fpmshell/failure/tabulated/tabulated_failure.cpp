@@ -65,19 +65,21 @@ bool TabulatedFailure::judge(const FailurePacks& in, Real dt, RealPack* state,
             for (int l = 0; l < k_lanes; ++l) {
                 if (!lane(flowing, l)) continue;
                 const Real size = lane(in.element_size, l);
-                // the point's plastic strain rate over the step (LCSRS's rate)
-                const Real rate = rate_factor(dt > 0 ? lane(d_alpha, l) / dt : Real(0));
-                set_lane(eps, l, failure_strain(lane(eta, l), size) * rate);
+                // the factor of the point's plastic strain rate over the step (LCSRS's)
+                const Real rate_scale = p_.rate_scaling.empty()
+                                            ? Real(1)
+                                            : rate_factor(dt > 0 ? lane(d_alpha, l) / dt : Real(0));
+                set_lane(eps, l, failure_strain(lane(eta, l), size) * rate_scale);
                 if (p_.fading)  // F after the step, as accumulate_damage will sum it
                     fade(state, in.m, j, l, lane(state[j], l) + lane(d_alpha, l) / lane(eps, l),
-                         lane(d_alpha, l), lane(eta, l), size, rate);
+                         lane(d_alpha, l), lane(eta, l), size, rate_scale);
             }
             return eps;
         });
 }
 
 void TabulatedFailure::fade(RealPack* state, std::size_t m, std::size_t j, int l, Real indicator,
-                            Real d_alpha, Real eta, Real element_size, Real rate) const {
+                            Real d_alpha, Real eta, Real element_size, Real rate_scale) const {
     const Fading& f = *p_.fading;
     RealPack *instability = state + 2 * m, *critical = state + 3 * m, *next = state + 4 * m;
     const Real D = damage(std::min(indicator, 1.0));
@@ -88,8 +90,8 @@ void TabulatedFailure::fade(RealPack* state, std::size_t m, std::size_t j, int l
             measure = D >= f.critical_damage ? 1.0 : 0.0;
             d_c = f.critical_damage;
         } else {
-            measure +=
-                d_alpha / (interpolate(f.critical_strain, eta) * (f.rate_scaled ? rate : Real(1)));
+            measure += d_alpha / (interpolate(f.critical_strain, eta) *
+                                  (f.rate_scaled ? rate_scale : Real(1)));
         }
         set_lane(instability[j], l, std::min(measure, 1.0));
         if (measure >= 1.0) set_lane(critical[j], l, d_c);

@@ -69,9 +69,9 @@ private:
     using Fading = TabulatedFailureParameters::Fading;
     /// eq. 7.6-6 on lane l of pack j (state: state_fields() x m packs) whose indicator after the
     /// step is `indicator`, of a step of plastic strain d_alpha at triaxiality eta and of
-    /// rate_factor `rate`.
+    /// rate_factor rate_scale.
     void fade(RealPack* state, std::size_t m, std::size_t j, int l, Real indicator, Real d_alpha,
-              Real eta, Real element_size, Real rate) const;
+              Real eta, Real element_size, Real rate_scale) const;
 
     TabulatedFailureParameters p_;
 };

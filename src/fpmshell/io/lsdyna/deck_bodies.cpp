@@ -316,39 +316,33 @@ void DeckTranslator::contact(const DeckBlock& b) {
     if (starts_with(b.keyword, "CONTACT_ERODING_")) eroding_contact_card(b, c + 3);
     // a node set on the slave side of a nodes-to-surface form: those nodes alone against the
     // master side's faces (one-way, as LS-DYNA's)
-    if (f.id(2, "SSTYP") == 4 && b.keyword.find("NODES_TO_SURFACE") != std::string::npos) {
-        const std::string nodes = yaml_name(set_name(f, "node", f.id(0, "SSID")));
-        const std::string faces =
-            yaml_name(contact_side(f, f.id(1, "MSID"), f.id(3, "MSTYP"), "MSTYP"));
-        contact_.push_back(
-            {"  - {type: self, elements: " + faces + ", nodes: " + nodes + friction + "}",
-             {&b, f.line()}});
-        const long long cid = opt.count("ID") || opt.count("TITLE") ? card(b, 0).id(0, "CID") : 0;
-        contact_ids_.push_back({cid > 0 ? cid : reading_number(b), {&b, f.line()}});
-        note(b, f.line(),
-             "as fpmshell's contact of the node set's particles against the master side's "
-             "faces (one-way; Lagrange multipliers, each shell's thickness as its contact "
-             "thickness)");
-        return;
-    }
-    std::vector<std::string> sides{contact_side(f, f.id(0, "SSID"), f.id(2, "SSTYP"), "SSTYP")};
-    if (!single) sides.push_back(contact_side(f, f.id(1, "MSID"), f.id(3, "MSTYP"), "MSTYP"));
-    std::string elements;
-    if (std::find(sides.begin(), sides.end(), "all") != sides.end()) {
-        elements = "all";
-    } else if (sides.size() == 1 || sides[0] == sides[1]) {
-        elements = yaml_name(sides[0]);
+    const bool node_set =
+        f.id(2, "SSTYP") == 4 && b.keyword.find("NODES_TO_SURFACE") != std::string::npos;
+    std::string elements, nodes;
+    if (node_set) {
+        nodes = ", nodes: " + yaml_name(set_name(f, "node", f.id(0, "SSID")));
+        elements = yaml_name(contact_side(f, f.id(1, "MSID"), f.id(3, "MSTYP"), "MSTYP"));
     } else {
-        elements = "[" + yaml_name(sides[0]) + ", " + yaml_name(sides[1]) + "]";
+        std::vector<std::string> sides{contact_side(f, f.id(0, "SSID"), f.id(2, "SSTYP"), "SSTYP")};
+        if (!single) sides.push_back(contact_side(f, f.id(1, "MSID"), f.id(3, "MSTYP"), "MSTYP"));
+        if (std::find(sides.begin(), sides.end(), "all") != sides.end())
+            elements = "all";
+        else if (sides.size() == 1 || sides[0] == sides[1])
+            elements = yaml_name(sides[0]);
+        else
+            elements = "[" + yaml_name(sides[0]) + ", " + yaml_name(sides[1]) + "]";
     }
-    contact_.push_back({"  - {type: self, elements: " + elements + friction + "}", {&b, f.line()}});
+    contact_.push_back(
+        {"  - {type: self, elements: " + elements + nodes + friction + "}", {&b, f.line()}});
     // its number in RCFORC's columns: CID of _ID or _TITLE, else its place among the cards
     const long long cid = opt.count("ID") || opt.count("TITLE") ? card(b, 0).id(0, "CID") : 0;
     contact_ids_.push_back({cid > 0 ? cid : reading_number(b), {&b, f.line()}});
     note(b, f.line(),
-         std::string(single ? "as fpmshell's shell self-contact"
-                            : "as fpmshell's shell self-contact over both sides together "
-                              "(each side is kept from itself too)") +
+         std::string(node_set ? "as fpmshell's contact of the node set's particles against the "
+                                "master side's faces (one-way)"
+                     : single ? "as fpmshell's shell self-contact"
+                              : "as fpmshell's shell self-contact over both sides together "
+                                "(each side is kept from itself too)") +
              " (Lagrange multipliers, each shell's thickness as its contact thickness)");
 }
 
